@@ -1,0 +1,62 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file FogLogIO.h
+ * Reading and writing FOG logs: MRPT rawlogs (gz-compressed, MRPT's format) of
+ * CObservationFOG streams, and lab CSV files (format in README.md, "CSV format").
+ *
+ * Readers never stop silently: a truncated or partially unreadable file throws FogIoError
+ * saying what was read, where it stopped and why. Writers are atomic (temporary file +
+ * rename): on failure nothing is left under the requested name and a previous file there is
+ * intact. */
+
+#include <mrpt/obs/CObservation.h>
+#include <mrpt_fog/obs/FogSeries.h>
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace mrpt_fog
+{
+/** A read/write failure with a one-line message naming the file (and line/column or object
+ * index where it applies). */
+class FogIoError : public std::runtime_error
+{
+   public:
+	using std::runtime_error::runtime_error;
+};
+
+/** What a rawlog holds: one FOG sensor's series plus every other observation, untouched. */
+struct FogRawlogContents
+{
+	FogSeries fog;  //!< the CObservationFOG stream of the selected sensor label
+	/** All other observations (odometry, IMU, ground truth, other FOG labels...) in file order. */
+	std::vector<mrpt::obs::CObservation::Ptr> others;
+	std::size_t objects_read = 0;  //!< total objects in the file
+};
+
+/** Reads a rawlog. fog_label selects the FOG sensor ("" = the only one present; throws if
+ * several labels are present and none is selected, or if the label is absent). Observations
+ * inside CSensoryFrame objects are unpacked. */
+FogRawlogContents readFogRawlog(const std::string& path, const std::string& fog_label = "");
+
+/** Writes a rawlog (gz-compressed, observations-only format): the FOG series as
+ * CObservationFOG objects merged by timestamp with `others`. Atomic. */
+void writeFogRawlog(const std::string& path, const FogSeries& fog,
+					const std::vector<mrpt::obs::CObservation::Ptr>& others = {});
+
+/** Reads a lab CSV file (.csv, or gz-compressed .csv.gz). */
+FogSeries readFogCsv(const std::string& path);
+
+/** Writes a lab CSV file (gz-compressed when the name ends in .gz). Atomic. */
+void writeFogCsv(const std::string& path, const FogSeries& series);
+
+/** Reads by extension: .rawlog -> readFogRawlog(path, fog_label).fog; .csv/.csv.gz -> CSV. */
+FogSeries readFogLog(const std::string& path, const std::string& fog_label = "");
+
+/** Writes by extension (.rawlog or .csv/.csv.gz). */
+void writeFogLog(const std::string& path, const FogSeries& series);
+
+}  // namespace mrpt_fog
