@@ -1,0 +1,73 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file AllanDeviation.h
+ * Allan deviation of a uniformly sampled rate record (IEEE Std 952-1997, Annex C), both the
+ * non-overlapping and the fully overlapping estimator, on a list of cluster sizes m
+ * (tau = m tau0). Rates are in whatever unit the caller uses (deg/h here); the deviation comes
+ * out in the same unit.
+ *
+ *   non-overlapping:  M = floor(N/m) cluster averages ybar_j,
+ *                     AVAR = 1 / (2 (M-1)) sum_j (ybar_{j+1} - ybar_j)^2
+ *   overlapping:      x_i = tau0 sum_{k<i} y_k (i = 0..N),
+ *                     AVAR = 1 / (2 m^2 tau0^2 (N - 2m + 1)) sum_i (x_{i+2m} - 2 x_{i+m} + x_i)^2
+ *
+ * Checked against the NBS-14 reference values (tests/metrics/test_AllanDeviation.cpp).
+ * The input must be uniformly sampled and free of NaN: use resampleUniform() first for a
+ * record with irregular timestamps or dropouts.
+ */
+
+#include <cstddef>
+#include <vector>
+
+namespace mrpt_fog
+{
+/** One point of an Allan deviation curve. */
+struct AllanPoint
+{
+	double tau_s = 0;  //!< averaging time m tau0 [s]
+	std::size_t m = 0;  //!< cluster size [samples]
+	double adev = 0;  //!< Allan deviation [unit of the input rate]
+	/** Number of non-overlapping clusters N/m: the statistical weight of the point (the
+	 * relative 1-sigma error of the deviation is roughly 1/sqrt(clusters) or better). */
+	std::size_t clusters = 0;
+};
+
+enum class AllanKind
+{
+	NonOverlapping,
+	Overlapping
+};
+
+/** Octave cluster sizes 1, 2, 4, ... with at least `min_clusters` (>= 2) clusters of m samples
+ * in n samples (m <= n / min_clusters). Empty when n < min_clusters; never throws. */
+std::vector<std::size_t> octaveClusterSizes(std::size_t n, std::size_t min_clusters = 2);
+
+/** Allan deviation of y (uniform sample period tau0_s, no NaN) at the given cluster sizes.
+ * Sizes that do not fit (non-overlapping: fewer than 2 clusters; overlapping: 2m > N) are
+ * skipped. Throws std::invalid_argument for tau0_s <= 0, a non-finite sample (names the index),
+ * fewer than 2 samples or m == 0. */
+std::vector<AllanPoint> allanDeviation(const std::vector<double>& y, double tau0_s,
+									   const std::vector<std::size_t>& cluster_sizes, AllanKind kind);
+
+/** Same, on octave cluster sizes (octaveClusterSizes(y.size())). */
+std::vector<AllanPoint> allanDeviation(const std::vector<double>& y, double tau0_s,
+									   AllanKind kind = AllanKind::Overlapping);
+
+/** A uniformly sampled copy of an irregular record, for the Allan deviation: period
+ * period_s (<= 0: the median sample interval), values by linear interpolation between the
+ * neighbouring finite samples; NaN samples are skipped. Each gap longer than max_gap_s
+ * (<= 0: 5 periods) splits the record, and only the longest gap-free segment is returned
+ * (an Allan deviation across a gap would be wrong). Throws std::invalid_argument on size
+ * mismatch, non-increasing time or fewer than 2 finite samples. */
+struct UniformRecord
+{
+	double t0_s = 0;  //!< time of the first sample [s]
+	double period_s = 0;  //!< sample period [s]
+	std::vector<double> value;  //!< resampled values
+	std::size_t segments = 1;  //!< gap-free segments found (only the longest is kept)
+};
+UniformRecord resampleUniform(const std::vector<double>& time_s, const std::vector<double>& value,
+							  double period_s = 0, double max_gap_s = 0);
+
+}  // namespace mrpt_fog
