@@ -59,4 +59,26 @@ FogSeries readFogLog(const std::string& path, const std::string& fog_label = "")
 /** Writes by extension (.rawlog or .csv/.csv.gz). */
 void writeFogLog(const std::string& path, const FogSeries& series);
 
+// ---- Lower-level rawlog pieces (used by writeFogRawlog and by programs writing other layouts)
+
+/** The objects writeFogRawlog() writes for a series: a metadata CObservationComment (see
+ * io/FogRawlogMetadata.h) followed by one CObservationFOG per sample, timestamps exact to MRPT's
+ * 100 ns tick (epoch_s + time_s). Throws std::invalid_argument if the series is invalid. */
+std::vector<mrpt::obs::CObservation::Ptr> fogObservationsForRawlog(const FogSeries& fog);
+
+/** Stock-MRPT form of a series, readable without the mrpt_fog plugin: per sample a
+ * CObservationIMU (label = sensor label; rates in IMU_WX/WY/WZ [rad/s], mean valid temperature
+ * in IMU_TEMPERATURE [degC]) followed by a CObservationRawDAQ ("<label>_THERMISTORS", one
+ * AIN_double channel per thermistor [degC], NaN = dropout). */
+std::vector<mrpt::obs::CObservation::Ptr> stockObservationsForRawlog(const FogSeries& fog);
+
+/** Two time-ordered observation lists merged by timestamp (stable: on equal timestamps `a`
+ * comes first; each list keeps its own order). */
+std::vector<mrpt::obs::CObservation::Ptr> mergeByTimestamp(const std::vector<mrpt::obs::CObservation::Ptr>& a,
+														   const std::vector<mrpt::obs::CObservation::Ptr>& b);
+
+/** Writes observations in this order as a gz-compressed observations-only rawlog. Atomic;
+ * throws FogIoError naming the file. */
+void writeRawlogObservations(const std::string& path, const std::vector<mrpt::obs::CObservation::Ptr>& objs);
+
 }  // namespace mrpt_fog

@@ -1,0 +1,54 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt_fog/io/FogLogIO.h>
+#include <mrpt_fog/obs/FogSeriesConversion.h>
+
+namespace mrpt_fog
+{
+namespace
+{
+enum class LogKind
+{
+	Rawlog,
+	Csv
+};
+
+LogKind kindOf(const std::string& path)
+{
+	const std::string ext = fileExtension(path);
+	if (ext == ".rawlog") return LogKind::Rawlog;
+	if (ext == ".csv" || ext == ".csv.gz") return LogKind::Csv;
+	throw FogIoError(path + ": unknown file type '" + ext + "' (expected .rawlog, .csv or .csv.gz)");
+}
+}  // namespace
+
+FogSeries readFogLog(const std::string& path, const std::string& fog_label)
+{
+	if (kindOf(path) == LogKind::Rawlog) return readFogRawlog(path, fog_label).fog;
+	FogSeries s = readFogCsv(path);
+	if (!fog_label.empty() && s.sensor_label != fog_label)
+		throw FogIoError(path + ": the CSV holds sensor '" + s.sensor_label + "', not '" + fog_label + "'");
+	return s;
+}
+
+void writeFogLog(const std::string& path, const FogSeries& series)
+{
+	if (kindOf(path) == LogKind::Rawlog) writeFogRawlog(path, series);
+	else writeFogCsv(path, series);
+}
+
+std::vector<mrpt::obs::CObservation::Ptr> stockObservationsForRawlog(const FogSeries& fog)
+{
+	std::vector<mrpt::obs::CObservation::Ptr> out;
+	out.reserve(2 * fog.size());
+	const auto fogs = fogObservationsForRawlog(fog);  // exact timestamps
+	for (std::size_t k = 1; k < fogs.size(); k++)
+	{
+		const auto& f = dynamic_cast<const CObservationFOG&>(*fogs[k]);
+		out.push_back(f.toIMU());
+		out.push_back(f.toRawDAQ());
+	}
+	return out;
+}
+
+}  // namespace mrpt_fog

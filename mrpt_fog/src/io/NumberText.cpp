@@ -1,0 +1,35 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/io/NumberText.h>
+
+#include <charconv>
+#include <cmath>
+
+namespace mrpt_fog::io
+{
+std::string formatNumber(double v)
+{
+	if (std::isnan(v)) return "nan";
+	char buf[64];
+	const auto r = std::to_chars(buf, buf + sizeof(buf), v);
+	return std::string(buf, r.ptr);
+}
+
+std::optional<double> parseNumber(const std::string& text)
+{
+	std::string::size_type b = text.find_first_not_of(" \t");
+	if (b == std::string::npos) return std::nullopt;
+	const std::string::size_type e = text.find_last_not_of(" \t") + 1;
+	if (text[b] == '+')
+	{
+		b++;
+		if (b >= e || text[b] == '-' || text[b] == '+') return std::nullopt;
+	}
+	double v = 0;
+	const char* first = text.data() + b;
+	const char* last = text.data() + e;
+	const auto r = std::from_chars(first, last, v);
+	if (r.ec != std::errc() || r.ptr != last) return std::nullopt;
+	return v;
+}
+
+}  // namespace mrpt_fog::io
