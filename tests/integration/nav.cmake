@@ -1,0 +1,33 @@
+# Navigation integration: MRPT's own pf-localization reads the dead-reckoned odometry rawlog
+# written by mrpt_fog_nav, and its odometry estimate (odo_est.txt) must equal our trajectory.
+# Three ctest tests chained by a fixture: write -> pf-localization -> compare.
+find_program(NAV_PF_LOCALIZATION pf-localization)
+if(NOT NAV_PF_LOCALIZATION)
+  message(STATUS "nav integration: pf-localization not found (package mrpt-apps); test skipped")
+  return()
+endif()
+
+add_executable(nav_pf_check ${FOG_SOURCE_DIR}/tests/nav/pf/PfLocalizationCheck.cpp)
+target_link_libraries(nav_pf_check PRIVATE mrpt_fog_nav mrpt::io mrpt::serialization)
+
+set(NAV_PF_DIR ${CMAKE_CURRENT_BINARY_DIR}/nav_pf)
+set(NAV_PF_RAWLOG ${NAV_PF_DIR}/nav_odometry.rawlog)
+set(NAV_PF_LOGDIR ${NAV_PF_DIR}/LOG_LOCALIZATION)
+configure_file(${FOG_TEST_DATA_DIR}/nav/pf_localization_odometry.ini.in ${NAV_PF_DIR}/pf.ini @ONLY)
+
+add_test(NAME nav.pf_localization.write COMMAND nav_pf_check write ${NAV_PF_DIR})
+set_tests_properties(nav.pf_localization.write PROPERTIES FIXTURES_SETUP nav_pf_rawlog LABELS "nav;integration")
+
+# pf-localization's usage is "pf-localization <config.ini>"; with no display and no 3D window
+# it runs to the end of the rawlog and exits. stdin from /dev/null (it polls for ESC).
+add_test(NAME nav.pf_localization.run
+  COMMAND sh -c "'${NAV_PF_LOCALIZATION}' '${NAV_PF_DIR}/pf.ini' < /dev/null"
+  WORKING_DIRECTORY ${NAV_PF_DIR})
+set_tests_properties(nav.pf_localization.run PROPERTIES FIXTURES_REQUIRED nav_pf_rawlog
+  FIXTURES_SETUP nav_pf_output TIMEOUT 300 ENVIRONMENT "DISPLAY=" LABELS "nav;integration")
+
+# Output directory: <logOutput_dir>_<repetition %03u>_<particles %07i>.
+add_test(NAME nav.pf_localization.compare
+  COMMAND nav_pf_check compare ${NAV_PF_DIR} ${NAV_PF_LOGDIR}_000_0000100/odo_est.txt)
+set_tests_properties(nav.pf_localization.compare PROPERTIES FIXTURES_REQUIRED nav_pf_output
+  LABELS "nav;integration")
