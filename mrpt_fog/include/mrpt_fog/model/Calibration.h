@@ -1,0 +1,119 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file Calibration.h
+ * A FOG thermal-bias calibration and how to make one.
+ *
+ *   Calibration cal = fitCalibration({runA}, "multipoint");      // fit (library API)
+ *   CompensatedSeries out = compensate(cal, runB);               // see Compensator.h
+ *   saveCalibrationYaml(cal, "cal.yaml");                         // see CalibrationYaml.h
+ *
+ * What the fit does (fitCalibration):
+ *  1. bias y = gyro rate - applied table rate (if the log has one) [deg/h]; samples with the
+ *     gyro powered off, a thermistor dropout, or no rate estimate yet are left out;
+ *  2. rates dT/dt with the chosen estimator (default: the same causal estimator the real-time
+ *     compensator runs, so the compensator reproduces the fitted model);
+ *  3. every signal normalised to [-1, 1] over the calibration data (ThermalFeatureSet.h);
+ *  4. normal equations accumulated per validation fold (BiasFit.h): memory independent of the
+ *     log length. Folds: one per run when several runs are given (leave-one-run-out), else
+ *     `folds` contiguous time blocks of the single run (blocked k-fold);
+ *  5. term selection (default "auto"): greedy forward selection of whole signal groups (e.g. all
+ *     powers of T(Ti1)) and a ridge value from a grid, both by held-out (cross-validated) error;
+ *     a group is added only if it lowers the held-out RMS. More thermistors only enlarge the
+ *     candidate pool, so by construction they cannot make the cross-validated error worse.
+ *     "none" fits every preset term (plain least squares, optional fixed ridge): the seed's way,
+ *     which generalises badly on collinear thermistors;
+ *  6. fallback models: for each thermistor of the model, the same selection without it;
+ *  7. figures: in-sample (the fitted model, run through the causal compensator) and held-out
+ *     (each fold predicted by the model fitted on the other folds), always labelled.
+ *
+ * Refusals (std::invalid_argument, one line with the reason): no runs, runs with different
+ * layouts, fewer than min_samples_per_term x terms usable samples, a temperature span narrower
+ * than min_temp_span_per_order_C x order, a rank-deficient system with plain least squares.
+ */
+
+#include <mrpt_fog/model/RateEstimator.h>
+#include <mrpt_fog/model/ThermalFeatureSet.h>
+#include <mrpt_fog/obs/FogSeries.h>
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+namespace mrpt_fog
+{
+struct FitOptions
+{
+	RateEstimatorSettings rate_estimator;  //!< default causal, 60 s window
+	std::string selection = "auto";  //!< "auto" (groups + ridge by held-out error) or "none"
+	double ridge = 0.0;  //!< fixed ridge for selection "none" (relative, unit-diagonal system)
+	std::size_t folds = 5;  //!< blocked folds when a single run is given (>= 2)
+	double min_samples_per_term = 10.0;
+	double min_temp_span_per_order_C = 0.5;  //!< T(a) of order k needs a span >= k x this [degC]
+	double tau_s = 100.0;  //!< averaging time of the stability figures [s]
+	bool fallbacks = true;  //!< fit one fallback model per thermistor
+};
+
+/** Figures of one evaluation, labelled by how they were obtained. */
+struct FitFigures
+{
+	std::string label;  //!< e.g. "in-sample", "held-out (blocked 5-fold)", "validation run"
+	bool valid = false;
+	std::size_t samples = 0;
+	double rms_dph = 0.0;  //!< RMS of the compensated bias about its mean [deg/h]
+	double stability_dph = 0.0;  //!< std of tau-s averages of the compensated output [deg/h]
+	double range_dph = 0.0;  //!< max - min of the tau-s averages, compensated [deg/h]
+	double raw_stability_dph = 0.0;  //!< the same for the uncompensated output
+	double raw_range_dph = 0.0;
+	double tau_s = 100.0;
+};
+
+/** One fitted bias model: bias_dph = sum_i coef_dph[i] * feature_i (features normalised). */
+struct BiasModel
+{
+	std::string dropped;  //!< "" for the main model; the missing thermistor for a fallback
+	ThermalFeatureSet features;  //!< terms + normalisation + calibrated ranges
+	std::vector<double> coef_dph;  //!< [deg/h], one per term
+	Eigen::MatrixXd covariance;  //!< of coef_dph [(deg/h)^2]
+	double ridge = 0.0;
+	double condition_number = 0.0;
+	std::size_t numerical_rank = 0;
+	double effective_dof = 0.0;
+	std::size_t samples = 0;
+	double rms_in_sample_dph = 0.0;  //!< residual RMS on the fitted samples
+	double rms_held_out_dph = 0.0;  //!< cross-validated residual RMS
+
+	/** Bias [deg/h] from signal values (features.signals() order); with clamp, values are
+	 * clamped to the calibrated ranges and *clamped (if given) receives how many were. */
+	double evaluate(const double* signal_values, bool clamp, int* clamped = nullptr) const;
+};
+
+struct Calibration
+{
+	std::string sensor_label;
+	GyroAxis axis = GyroAxis::Z;
+	std::vector<ThermistorInfo> layout;  //!< the layout the calibration was made for
+	std::string preset;  //!< as given to the fit
+	std::string selection;  //!< "auto" or "none"
+	RateEstimatorSettings rate_estimator;
+	BiasModel model;
+	std::vector<BiasModel> fallbacks;  //!< one per thermistor of the model
+	double mean_bias_dph = 0.0;  //!< used when no model applies (>= 2 thermistors missing)
+	std::vector<std::string> runs;  //!< labels of the calibration runs
+	FitFigures in_sample, held_out, validation;
+
+	/** Fallback model for a missing thermistor, or nullptr. */
+	const BiasModel* fallbackFor(const std::string& thermistor) const;
+};
+
+/** Fits a calibration (see the file comment). run_labels (optional) names the runs in the file
+ * and messages. Throws std::invalid_argument with the reason on data that cannot support the
+ * model. */
+Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string& preset, const FitOptions& options = {},
+						   const std::vector<std::string>& run_labels = {});
+
+/** Runs the compensator over a series (e.g. a validation run) and returns labelled figures. */
+FitFigures evaluateCalibration(const Calibration& cal, const FogSeries& series, const std::string& label,
+							   double tau_s = 100.0);
+
+}  // namespace mrpt_fog

@@ -1,0 +1,114 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file Compensator.h
+ * Real-time thermal-bias compensation, sample by sample, causal, O(1) per sample:
+ *   compensated_dph = raw_dph - bias_dph(temperatures, causal rates).
+ *
+ * Rates come from the causal estimator recorded in the calibration (a calibration fitted with
+ * the non-causal "savgol" estimator is refused: it cannot run in real time). Each model is
+ * compiled into one Horner polynomial per signal.
+ *
+ * Per sample:
+ *  - a thermistor is "missing" when its reading is NaN or its rate has no estimate yet (< 2
+ *    valid samples in the window). One missing -> its fallback model (flag Fallback); two or
+ *    more -> the mean calibration bias only (flag NoModel). When the thermistor returns the main
+ *    model is used again from that sample on.
+ *  - signals outside the calibrated range are clamped to it (flag Clamped, counted): a
+ *    polynomial is never extrapolated.
+ *  - RateWarmup: some rate window covers less than half its length (start, after a gap).
+ * Batch compensate() is exactly the streaming loop, so batch == streaming by construction; the
+ * tests also check it against an independent evaluation of the fitted feature set.
+ *
+ * Construction throws std::invalid_argument when the series layout does not match the
+ * calibration (a thermistor missing, or at another side/angle; the message lists both).
+ */
+
+#include <mrpt_fog/model/Calibration.h>
+#include <mrpt_fog/model/RateEstimator.h>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace mrpt_fog
+{
+namespace compflags
+{
+constexpr std::uint8_t Fallback = 1;
+constexpr std::uint8_t NoModel = 2;
+constexpr std::uint8_t Clamped = 4;
+constexpr std::uint8_t RateWarmup = 8;
+}  // namespace compflags
+
+struct CompensationCounters
+{
+	std::size_t samples = 0;
+	std::size_t fallback_samples = 0;
+	std::size_t no_model_samples = 0;
+	std::size_t clamped_samples = 0;  //!< samples with at least one clamped signal
+	std::size_t clamped_signals = 0;  //!< total clamped signal values
+	std::size_t warmup_samples = 0;
+	std::size_t model_switches = 0;  //!< changes of the model in use
+};
+
+class Compensator
+{
+   public:
+	/** layout: the thermistors of the series to be compensated, in its column order. */
+	Compensator(const Calibration& cal, const std::vector<ThermistorInfo>& layout);
+
+	struct Output
+	{
+		double bias_dph = 0;
+		double compensated_dph = 0;
+		std::uint8_t flags = 0;
+		int model = 0;  //!< 0 main, 1 + i fallback i, -1 no model
+	};
+	/** One sample: time [s] strictly increasing, raw gyro rate [deg/h], temperatures [degC] in
+	 * layout order (NaN = dropout). */
+	Output step(double time_s, double raw_dph, const double* temp_C);
+	const CompensationCounters& counters() const { return counters_; }
+	void reset();
+
+   private:
+	struct Compiled
+	{
+		double c0 = 0;
+		std::vector<int> kind, a, b;  // per signal; a/b index into the tracked channels
+		std::vector<double> centre, inv_scale, lo, hi;
+		std::vector<std::array<double, 6>> poly;  // coefficient of z^1..z^5 at [1..5]
+		std::vector<int> degree;
+	};
+	static Compiled compile(const BiasModel& m, const std::vector<std::string>& channel_names);
+	double evaluate(const Compiled& m, int& clamped) const;
+
+	double window_s_;
+	double mean_bias_dph_;
+	std::vector<int> channel_col_;  // layout column of each tracked channel
+	std::vector<Compiled> models_;  // [0] main, [1 + c] fallback without channel c (may be empty)
+	std::vector<bool> has_fallback_;
+	CausalRateTracker tracker_;
+	std::vector<double> temp_, rate_, x_;
+	CompensationCounters counters_;
+	int last_model_ = 0;
+	bool first_ = true;
+};
+
+/** Output of compensate(): columns of the same length as the input. */
+struct CompensatedSeries
+{
+	std::vector<double> time_s;
+	std::vector<double> raw_dph;  //!< primary-axis gyro rate [deg/h]
+	std::vector<double> bias_dph;  //!< estimated thermal bias [deg/h]
+	std::vector<double> compensated_dph;  //!< raw - bias [deg/h]
+	std::vector<std::uint8_t> flags;  //!< compflags bits per sample
+	CompensationCounters counters;
+};
+
+/** Compensates the calibrated axis of a series (validated first; throws std::invalid_argument
+ * on a layout mismatch or a missing axis). */
+CompensatedSeries compensate(const Calibration& cal, const FogSeries& series);
+
+}  // namespace mrpt_fog

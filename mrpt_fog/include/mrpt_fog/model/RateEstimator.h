@@ -1,0 +1,128 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file RateEstimator.h
+ * Temperature rates dT/dt [degC/s] from noisy, quantised (0.01 degC) thermistor samples with
+ * irregular timestamps, NaN dropouts and gaps. Two estimators share one interface:
+ *
+ *  - "causal" (CausalRateEstimator): slope of a least-squares line through the samples of the
+ *    trailing window (t - window_s, t]. Uses only past samples, O(1) amortised per sample
+ *    (running sums over a ring buffer, recomputed exactly once per buffer turn so round-off
+ *    cannot drift). Delay: for a smooth signal the slope is the derivative at the centre of the
+ *    window, i.e. about window_s / 2 late. This is what the real-time compensator uses, and the
+ *    fit uses it by default so that the compensator reproduces the fitted model exactly.
+ *  - "savgol" (SavitzkyGolayRateEstimator): derivative at t of a local polynomial (order 1..4)
+ *    fitted by least squares over the centred window [t - window_s/2, t + window_s/2] (a
+ *    Savitzky-Golay filter generalised to irregular timestamps). Non-causal, no delay; for
+ *    calibration studies only.
+ *
+ * NaN samples are skipped (they never enter a window). A rate is NaN where it cannot be
+ * estimated: a NaN input sample, or fewer than 2 valid samples (2 distinct times) in the window
+ * (start of the log, after a gap longer than the window). Settings are recorded by name +
+ * parameters (RateEstimatorSettings) in calibration files.
+ */
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mrpt_fog
+{
+/** Which estimator and its parameters, as stored in a calibration file. */
+struct RateEstimatorSettings
+{
+	std::string kind = "causal";  //!< "causal" or "savgol"
+	double window_s = 60.0;  //!< window length [s]
+	int poly_order = 1;  //!< local polynomial order (causal: always 1; savgol: 1..4)
+
+	/** e.g. "causal(window_s=60)" or "savgol(window_s=60, order=2)". */
+	std::string describe() const;
+	/** Throws std::invalid_argument (naming the field) for an unknown kind, window_s not
+	 * finite or <= 0, or an order outside the kind's range. */
+	void validate() const;
+	bool operator==(const RateEstimatorSettings& o) const
+	{
+		return kind == o.kind && window_s == o.window_s && poly_order == o.poly_order;
+	}
+};
+
+/** Batch interface: the rate of a whole column. */
+class RateEstimator
+{
+   public:
+	virtual ~RateEstimator() = default;
+	virtual RateEstimatorSettings settings() const = 0;
+	virtual bool isCausal() const = 0;
+	/** dx/dt [unit of x per s] at every sample; NaN where not estimable (see file comment).
+	 * Throws std::invalid_argument if sizes differ or time is not strictly increasing. */
+	virtual std::vector<double> estimate(const std::vector<double>& time_s, const std::vector<double>& x) const = 0;
+};
+
+/** Builds the estimator named by settings (validated first; throws std::invalid_argument). */
+std::unique_ptr<RateEstimator> makeRateEstimator(const RateEstimatorSettings& settings);
+
+/** Streaming, multi-channel form of the causal estimator: all channels share the timestamps
+ * (one thermistor per channel). push() is O(1) amortised; memory is the samples of one window.
+ * Times must be strictly increasing across push() calls (throws std::invalid_argument). */
+class CausalRateTracker
+{
+   public:
+	CausalRateTracker(std::size_t channels, double window_s);
+	/** Adds one sample; x[c] NaN = channel c missing at this time. */
+	void push(double time_s, const double* x);
+	/** Current slope of channel c [unit/s]; NaN with fewer than 2 valid samples in the window. */
+	double rate(std::size_t c) const;
+	/** Valid samples of channel c now inside the window. */
+	std::size_t validCount(std::size_t c) const { return n_[c]; }
+	/** Time spread of the valid samples of channel c in the window, as sqrt(12) x their
+	 * standard deviation in time [s] (= the span for uniform sampling; 0 when < 2 samples).
+	 * The compensator flags "rate warm-up" while this is below half the window. */
+	double coveredSpan_s(std::size_t c) const;
+	std::size_t channels() const { return channels_; }
+	double window_s() const { return window_s_; }
+	void reset();
+
+   private:
+	void dropOldest();
+	void rebuildSums();
+	std::size_t channels_;
+	double window_s_;
+	// Ring buffer: time, and per channel value (NaN when missing).
+	std::vector<double> t_;
+	std::vector<double> x_;  // [slot * channels_ + c]
+	std::size_t head_ = 0, count_ = 0, since_rebuild_ = 0;
+	double t_ref_ = 0.0;
+	double last_t_ = 0.0;
+	bool any_ = false;
+	std::vector<double> x_ref_;
+	std::vector<double> s1_, s2_, sx_, stx_;  // sums over valid samples (relative to refs)
+	std::vector<std::size_t> n_;
+};
+
+class CausalRateEstimator : public RateEstimator
+{
+   public:
+	explicit CausalRateEstimator(double window_s);
+	RateEstimatorSettings settings() const override;
+	bool isCausal() const override { return true; }
+	std::vector<double> estimate(const std::vector<double>& time_s, const std::vector<double>& x) const override;
+
+   private:
+	double window_s_;
+};
+
+class SavitzkyGolayRateEstimator : public RateEstimator
+{
+   public:
+	SavitzkyGolayRateEstimator(double window_s, int poly_order);
+	RateEstimatorSettings settings() const override;
+	bool isCausal() const override { return false; }
+	std::vector<double> estimate(const std::vector<double>& time_s, const std::vector<double>& x) const override;
+
+   private:
+	double window_s_;
+	int order_;
+};
+
+}  // namespace mrpt_fog

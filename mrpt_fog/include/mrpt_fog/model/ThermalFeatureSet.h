@@ -1,0 +1,124 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file ThermalFeatureSet.h
+ * The regressors of the bias model, by name. A term is a power of one thermal signal:
+ *
+ *   `1`                   constant
+ *   `T(Ti1)^k`            temperature of thermistor Ti1, k = 1..5
+ *   `dT/dt(Ti1)^k`        its rate, k = 1..3
+ *   `dT(Ti1-To1)^k`       difference of two thermistors (e.g. inner - outer), k = 1..5
+ *   `d/dt dT(Ti1-To1)^k`  rate of that difference, k = 1..3
+ *
+ * ("^1" may be omitted when parsing; names are always printed with it.)
+ * Never raw powers of degC: every signal v is normalised, z = (v - centre) / scale, with centre
+ * and scale chosen at calibration so that z spans [-1, 1] over the calibration data (rates and
+ * differences: centre 0, scale = max |v|), and the term is z^k (dimensionless). The calibrated
+ * range [min, max] of each signal is stored with it; evaluation can clamp to it so a 5th-order
+ * polynomial is never extrapolated.
+ */
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace mrpt_fog
+{
+enum class SignalKind : unsigned char
+{
+	Temp = 0,  //!< T(a) [degC]
+	Rate = 1,  //!< dT/dt(a) [degC/s]
+	Diff = 2,  //!< T(a) - T(b) [degC]
+	DiffRate = 3  //!< d/dt (T(a) - T(b)) [degC/s]
+};
+
+/** One thermal signal: a thermistor's temperature or rate, or a difference of two. */
+struct ThermalSignal
+{
+	SignalKind kind = SignalKind::Temp;
+	std::string a, b;  //!< thermistor names (b only for differences)
+
+	/** "T(a)", "dT/dt(a)", "dT(a-b)", "d/dt dT(a-b)". */
+	std::string name() const;
+	/** "degC" or "degC/s". */
+	const char* unit() const;
+	bool isRate() const { return kind == SignalKind::Rate || kind == SignalKind::DiffRate; }
+	bool isDifference() const { return kind == SignalKind::Diff || kind == SignalKind::DiffRate; }
+	bool references(const std::string& thermistor) const { return a == thermistor || (isDifference() && b == thermistor); }
+	bool operator==(const ThermalSignal& o) const { return kind == o.kind && a == o.a && b == o.b; }
+};
+
+/** A model term: constant, or signal^power. */
+struct ThermalTerm
+{
+	bool constant = true;
+	ThermalSignal signal;
+	int power = 0;
+
+	std::string name() const;
+	/** Parses a term name (see file comment). Throws std::invalid_argument naming the text and
+	 * what is wrong (unknown form, bad thermistor name, power out of 1..max for the kind). */
+	static ThermalTerm parse(const std::string& text);
+	/** Highest power allowed for a signal kind (5 for temperatures/differences, 3 for rates). */
+	static int maxPower(SignalKind kind);
+	static ThermalTerm constantTerm() { return ThermalTerm{}; }
+	static ThermalTerm of(SignalKind kind, const std::string& a, const std::string& b, int power);
+};
+
+/** Normalisation and calibrated range of one signal (units of the signal). */
+struct SignalNormalisation
+{
+	double centre = 0.0;
+	double scale = 1.0;  //!< > 0
+	double min = -std::numeric_limits<double>::infinity();  //!< calibrated range
+	double max = std::numeric_limits<double>::infinity();
+};
+
+/** An ordered list of terms (the constant is always term 0) with per-signal normalisation. */
+class ThermalFeatureSet
+{
+   public:
+	ThermalFeatureSet() : ThermalFeatureSet(std::vector<ThermalTerm>{}) {}
+	/** Adds the constant as term 0 if absent. Throws std::invalid_argument on a repeated term. */
+	explicit ThermalFeatureSet(const std::vector<ThermalTerm>& terms);
+	/** Parses names (see ThermalTerm::parse). */
+	static ThermalFeatureSet fromNames(const std::vector<std::string>& names);
+
+	std::size_t termCount() const { return terms_.size(); }
+	const std::vector<ThermalTerm>& terms() const { return terms_; }
+	std::vector<std::string> termNames() const;
+	/** Thermistors referenced, in order of first appearance. */
+	const std::vector<std::string>& thermistors() const { return thermistors_; }
+	/** Distinct signals, in order of first appearance. */
+	const std::vector<ThermalSignal>& signals() const { return signals_; }
+	/** Signal index of term i (-1 for the constant). */
+	int termSignal(std::size_t i) const { return term_signal_[i]; }
+	bool references(const std::string& thermistor) const;
+	/** The same set without every term that references `thermistor` (a fallback model). */
+	ThermalFeatureSet without(const std::string& thermistor) const;
+	/** The subset of terms whose signal index is in `signal_keep` (true = kept; constant kept). */
+	ThermalFeatureSet selectSignals(const std::vector<bool>& signal_keep) const;
+
+	std::vector<SignalNormalisation>& normalisation() { return norm_; }
+	const std::vector<SignalNormalisation>& normalisation() const { return norm_; }
+	/** Normalisation of the signal with this name (throws std::out_of_range if absent). */
+	const SignalNormalisation& normalisationOf(const ThermalSignal& s) const;
+
+	/** Signal values from per-thermistor temperatures [degC] and rates [degC/s], both indexed in
+	 * thermistors() order. */
+	void signalValues(const double* temp_C, const double* rate_C_s, double* values) const;
+	/** Features (termCount() values) from signal values. With clamp, values outside the
+	 * calibrated range are clamped to it; returns how many signals were clamped. A NaN value
+	 * gives NaN features. */
+	int features(const double* values, double* f, bool clamp) const;
+
+   private:
+	std::vector<ThermalTerm> terms_;
+	std::vector<std::string> thermistors_;
+	std::vector<ThermalSignal> signals_;
+	std::vector<int> term_signal_;
+	std::vector<int> sig_a_, sig_b_;  // thermistor index of each signal's a and b
+	std::vector<SignalNormalisation> norm_;
+};
+
+}  // namespace mrpt_fog

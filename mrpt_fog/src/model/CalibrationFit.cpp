@@ -1,0 +1,495 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/metrics/BiasMetrics.h>
+#include <mrpt_fog/model/BiasFit.h>
+#include <mrpt_fog/model/Calibration.h>
+#include <mrpt_fog/model/Compensator.h>
+#include <mrpt_fog/model/ModelPreset.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace mrpt_fog
+{
+double BiasModel::evaluate(const double* values, bool clamp, int* clamped) const
+{
+	std::vector<double> f(features.termCount());
+	const int c = features.features(values, f.data(), clamp);
+	if (clamped) *clamped = c;
+	double sum = 0;
+	for (std::size_t i = 0; i < f.size(); i++) sum += coef_dph[i] * f[i];
+	return sum;
+}
+
+const BiasModel* Calibration::fallbackFor(const std::string& thermistor) const
+{
+	for (const auto& f : fallbacks)
+		if (f.dropped == thermistor) return &f;
+	return nullptr;
+}
+
+namespace
+{
+const std::vector<double> kRidgeGrid = {0.0, 1e-9, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1};
+
+/** One calibration run prepared for the fit: bias, per-thermistor temperatures and rates. */
+struct PreparedRun
+{
+	const FogSeries* s = nullptr;
+	std::vector<int> col;  // layout column of each feature-set thermistor
+	std::vector<std::vector<double>> rate;  // [thermistor][sample] degC/s
+	std::vector<double> y;  // bias [deg/h]
+	std::vector<bool> ok;  // usable sample
+	std::size_t usable = 0;
+};
+
+PreparedRun prepare(const FogSeries& s, const ThermalFeatureSet& fs, const RateEstimatorSettings& est, GyroAxis axis)
+{
+	PreparedRun r;
+	r.s = &s;
+	const std::size_t n = s.size(), nt = fs.thermistors().size();
+	for (const auto& name : fs.thermistors()) r.col.push_back(s.thermistorIndex(name));
+	const auto& rate = s.rate_dph[static_cast<int>(axis)];
+	r.y.resize(n);
+	for (std::size_t k = 0; k < n; k++) r.y[k] = rate[k] - (s.table_rate_dph.empty() ? 0.0 : s.table_rate_dph[k]);
+	r.rate.resize(nt);
+	if (est.kind == "causal")
+	{
+		// The same multi-channel tracker as the compensator: identical numbers.
+		CausalRateTracker tr(nt, est.window_s);
+		std::vector<double> x(nt);
+		for (auto& v : r.rate) v.resize(n);
+		for (std::size_t k = 0; k < n; k++)
+		{
+			for (std::size_t i = 0; i < nt; i++) x[i] = s.temp_C[r.col[i]][k];
+			tr.push(s.time_s[k], x.data());
+			for (std::size_t i = 0; i < nt; i++) r.rate[i][k] = tr.rate(i);
+		}
+	}
+	else
+	{
+		auto e = makeRateEstimator(est);
+		for (std::size_t i = 0; i < nt; i++) r.rate[i] = e->estimate(s.time_s, s.temp_C[r.col[i]]);
+	}
+	r.ok.assign(n, true);
+	for (std::size_t k = 0; k < n; k++)
+	{
+		bool ok = std::isfinite(r.y[k]) && (s.power.empty() || s.power[k] != 0.0);
+		for (std::size_t i = 0; i < nt && ok; i++) ok = std::isfinite(s.temp_C[r.col[i]][k]) && std::isfinite(r.rate[i][k]);
+		r.ok[k] = ok;
+		r.usable += ok;
+	}
+	return r;
+}
+
+void rowSignals(const PreparedRun& r, const ThermalFeatureSet& fs, std::size_t k, std::vector<double>& temp,
+				std::vector<double>& rate, std::vector<double>& values)
+{
+	for (std::size_t i = 0; i < r.col.size(); i++)
+	{
+		temp[i] = r.s->temp_C[r.col[i]][k];
+		rate[i] = r.rate[i][k];
+	}
+	fs.signalValues(temp.data(), rate.data(), values.data());
+}
+
+/** Columns (sorted, constant first) of the terms whose signal is in `groups`. */
+std::vector<int> columnsOf(const ThermalFeatureSet& fs, const std::vector<bool>& groups)
+{
+	std::vector<int> cols{0};
+	for (std::size_t i = 1; i < fs.termCount(); i++)
+		if (groups[static_cast<std::size_t>(fs.termSignal(i))]) cols.push_back(static_cast<int>(i));
+	return cols;
+}
+
+struct Choice
+{
+	std::vector<bool> groups;
+	double ridge = 0;
+	double cv_rms = std::numeric_limits<double>::infinity();
+};
+
+/** Best ridge for a group set; returns the choice with its CV RMS. */
+Choice scoreGroups(std::vector<NormalEquations>& folds, const ThermalFeatureSet& fs, const std::vector<bool>& groups,
+				   const std::vector<double>& ridges)
+{
+	Choice c;
+	c.groups = groups;
+	const auto cv = crossValidatedRms(folds, columnsOf(fs, groups), ridges);
+	for (std::size_t r = 0; r < ridges.size(); r++)
+		if (cv[r] < c.cv_rms * (1 - 1e-9))
+		{
+			c.cv_rms = cv[r];
+			c.ridge = ridges[r];
+		}
+	return c;
+}
+
+/** Greedy forward selection of signal groups among `allowed`, by CV error. */
+Choice selectForward(std::vector<NormalEquations>& folds, const ThermalFeatureSet& fs, const std::vector<bool>& allowed)
+{
+	const std::size_t ng = fs.signals().size();
+	Choice best = scoreGroups(folds, fs, std::vector<bool>(ng, false), {0.0});
+	while (true)
+	{
+		Choice step;
+		for (std::size_t g = 0; g < ng; g++)
+		{
+			if (!allowed[g] || best.groups[g]) continue;
+			auto groups = best.groups;
+			groups[g] = true;
+			Choice c = scoreGroups(folds, fs, groups, kRidgeGrid);
+			if (c.cv_rms < step.cv_rms) step = c;
+		}
+		// A group must lower the held-out error by a meaningful amount (0.5 %) to be added.
+		if (!(step.cv_rms < best.cv_rms * 0.995)) break;
+		best = step;
+	}
+	return best;
+}
+
+Choice selectAll(std::vector<NormalEquations>& folds, const ThermalFeatureSet& fs, const std::vector<bool>& allowed,
+				 double ridge)
+{
+	return scoreGroups(folds, fs, allowed, {ridge});
+}
+
+std::string runName(const std::vector<std::string>& labels, std::size_t i)
+{
+	return i < labels.size() ? labels[i] : "run " + std::to_string(i + 1);
+}
+
+BiasModel makeModel(NormalEquations& total, const ThermalFeatureSet& fs, const Choice& c, const std::string& dropped,
+					const FitOptions& opt)
+{
+	const auto cols = columnsOf(fs, c.groups);
+	const double need = opt.min_samples_per_term * static_cast<double>(cols.size());
+	if (static_cast<double>(total.count()) < need)
+		throw std::invalid_argument("too few samples: " + std::to_string(total.count()) + " usable for " +
+									std::to_string(cols.size()) + " terms (need at least " +
+									std::to_string(static_cast<std::size_t>(need)) + ")");
+	const LinearFit fit = solveBiasFit(total, cols, c.ridge);
+	if (c.ridge == 0 && fit.numerical_rank < cols.size())
+		throw std::invalid_argument("rank deficient: only " + std::to_string(fit.numerical_rank) + " of " +
+									std::to_string(cols.size()) + " terms are independent on this data (condition " +
+									"number " + std::to_string(fit.condition_number) +
+									"); use fewer terms, --selection auto, or a ridge");
+	BiasModel m;
+	m.dropped = dropped;
+	m.features = fs.selectSignals(c.groups);
+	m.coef_dph.assign(fit.coef_dph.data(), fit.coef_dph.data() + fit.coef_dph.size());
+	m.covariance = fit.covariance;
+	m.ridge = c.ridge;
+	m.condition_number = fit.condition_number;
+	m.numerical_rank = fit.numerical_rank;
+	m.effective_dof = fit.effective_dof;
+	m.samples = fit.samples;
+	m.rms_in_sample_dph = fit.rms_dph;
+	m.rms_held_out_dph = c.cv_rms;
+	return m;
+}
+
+void statsInto(FitFigures& f, const std::vector<double>& t, const std::vector<double>& raw, const std::vector<double>& comp,
+			   double tau_s)
+{
+	f.tau_s = tau_s;
+	double sum = 0, sum2 = 0;
+	std::size_t n = 0;
+	for (double v : comp)
+		if (std::isfinite(v))
+		{
+			sum += v;
+			n++;
+		}
+	if (n == 0) return;
+	const double mean = sum / static_cast<double>(n);
+	for (double v : comp)
+		if (std::isfinite(v)) sum2 += (v - mean) * (v - mean);
+	f.samples = n;
+	f.rms_dph = std::sqrt(sum2 / static_cast<double>(n));
+	try
+	{
+		const BiasStats cs = biasStats(t, comp, tau_s), rs = biasStats(t, raw, tau_s);
+		f.stability_dph = cs.stability_dph;
+		f.range_dph = cs.range_dph;
+		f.raw_stability_dph = rs.stability_dph;
+		f.raw_range_dph = rs.range_dph;
+		f.valid = true;
+	}
+	catch (const std::invalid_argument&)
+	{
+		f.valid = false;  // run shorter than 2 tau: RMS only
+		f.stability_dph = f.range_dph = f.raw_stability_dph = f.raw_range_dph = std::numeric_limits<double>::quiet_NaN();
+	}
+}
+}  // namespace
+
+Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string& preset_text, const FitOptions& opt,
+						   const std::vector<std::string>& labels)
+{
+	if (runs.empty()) throw std::invalid_argument("fit: no calibration runs given");
+	opt.rate_estimator.validate();
+	if (opt.selection != "auto" && opt.selection != "none")
+		throw std::invalid_argument("fit: selection must be 'auto' or 'none', got '" + opt.selection + "'");
+	if (!(opt.ridge >= 0)) throw std::invalid_argument("fit: ridge must be >= 0");
+	if (runs.size() == 1 && opt.folds < 2) throw std::invalid_argument("fit: folds must be >= 2");
+	for (std::size_t i = 0; i < runs.size(); i++)
+	{
+		try
+		{
+			runs[i].validate();
+		}
+		catch (const std::exception& e)
+		{
+			throw std::invalid_argument(runName(labels, i) + ": " + e.what());
+		}
+		if (runs[i].empty()) throw std::invalid_argument(runName(labels, i) + ": no samples");
+		if (i > 0 && !runs[i].sameLayout(runs[0]))
+			throw std::invalid_argument(runName(labels, i) + " has another sensor layout (thermistors or axes) than " +
+										runName(labels, 0));
+	}
+	const FogSeries& first = runs[0];
+	const GyroAxis axis = first.primaryAxis();
+	const ModelPreset preset = parseModelPreset(preset_text, first.thermistors);
+	ThermalFeatureSet fs = presetFeatures(preset);
+
+	std::vector<PreparedRun> prep;
+	std::size_t usable = 0;
+	for (const auto& r : runs)
+	{
+		prep.push_back(prepare(r, fs, opt.rate_estimator, axis));
+		usable += prep.back().usable;
+	}
+	if (usable == 0) throw std::invalid_argument("fit: no usable sample (every sample has a dropout or no rate yet)");
+
+	// Pass 1: signal ranges -> normalisation; mean bias as y reference.
+	const std::size_t ns = fs.signals().size(), nt = fs.thermistors().size();
+	std::vector<double> lo(ns, std::numeric_limits<double>::infinity()), hi(ns, -std::numeric_limits<double>::infinity());
+	std::vector<double> temp(nt), rate(nt), values(ns), f(fs.termCount());
+	double ysum = 0;
+	for (const auto& r : prep)
+		for (std::size_t k = 0; k < r.s->size(); k++)
+		{
+			if (!r.ok[k]) continue;
+			rowSignals(r, fs, k, temp, rate, values);
+			for (std::size_t s = 0; s < ns; s++)
+			{
+				lo[s] = std::min(lo[s], values[s]);
+				hi[s] = std::max(hi[s], values[s]);
+			}
+			ysum += r.y[k];
+		}
+	const double y_ref = ysum / static_cast<double>(usable);
+	for (std::size_t s = 0; s < ns; s++)
+	{
+		const auto& sig = fs.signals()[s];
+		int order = 0;
+		for (std::size_t i = 0; i < fs.termCount(); i++)
+			if (fs.termSignal(i) == static_cast<int>(s)) order = std::max(order, fs.terms()[i].power);
+		const double span = hi[s] - lo[s];
+		std::ostringstream why;
+		if (sig.kind == SignalKind::Temp && span < order * opt.min_temp_span_per_order_C)
+		{
+			why << sig.name() << " spans only " << span << " degC in the calibration data; an order-" << order
+				<< " polynomial needs at least " << order * opt.min_temp_span_per_order_C << " degC ("
+				<< opt.min_temp_span_per_order_C << " degC per order): calibrate over a wider range or lower the order";
+			throw std::invalid_argument(why.str());
+		}
+		if (!(span > 0))
+			throw std::invalid_argument(sig.name() + " is constant in the calibration data: it cannot be fitted");
+		auto& nm = fs.normalisation()[s];
+		nm.min = lo[s];
+		nm.max = hi[s];
+		if (sig.kind == SignalKind::Temp)
+		{
+			nm.centre = 0.5 * (lo[s] + hi[s]);
+			nm.scale = 0.5 * span;
+		}
+		else
+		{
+			nm.centre = 0.0;
+			nm.scale = std::max(std::abs(lo[s]), std::abs(hi[s]));
+		}
+	}
+
+	// Pass 2: normal equations per fold.
+	const bool by_run = runs.size() >= 2;
+	const std::size_t nfolds = by_run ? runs.size() : opt.folds;
+	std::vector<NormalEquations> folds(nfolds, NormalEquations(fs.termCount(), y_ref));
+	const auto foldOf = [&](std::size_t run, std::size_t k) {
+		if (by_run) return run;
+		const auto& t = runs[0].time_s;
+		const double u = (t[k] - t.front()) / (t.back() - t.front() + 1e-300);
+		return std::min(nfolds - 1, static_cast<std::size_t>(u * static_cast<double>(nfolds)));
+	};
+	for (std::size_t ri = 0; ri < prep.size(); ri++)
+	{
+		const auto& r = prep[ri];
+		for (std::size_t k = 0; k < r.s->size(); k++)
+		{
+			if (!r.ok[k]) continue;
+			rowSignals(r, fs, k, temp, rate, values);
+			fs.features(values.data(), f.data(), false);
+			folds[foldOf(ri, k)].add(f.data(), r.y[k]);
+		}
+	}
+	NormalEquations total(fs.termCount(), y_ref);
+	for (auto& fo : folds) total.merge(fo);
+
+	// Candidate pools: all preset signals, or every K-subset of thermistors for points:K.
+	std::vector<std::vector<std::string>> pools;
+	if (preset.kind == "points")
+	{
+		const std::size_t n = preset.thermistors.size(), K = static_cast<std::size_t>(preset.points_k);
+		std::vector<bool> pick(n, false);
+		std::fill(pick.begin(), pick.begin() + static_cast<long>(K), true);
+		do
+		{
+			std::vector<std::string> sub;
+			for (std::size_t i = 0; i < n; i++)
+				if (pick[i]) sub.push_back(preset.thermistors[i]);
+			pools.push_back(sub);
+		} while (std::prev_permutation(pick.begin(), pick.end()) && pools.size() < 256);
+	}
+	else
+		pools.push_back(fs.thermistors());
+	const auto allowedFor = [&](const std::vector<std::string>& pool, const std::string& dropped) {
+		std::vector<bool> allowed(ns);
+		for (std::size_t s = 0; s < ns; s++)
+		{
+			const auto& sig = fs.signals()[s];
+			const auto in = [&](const std::string& n) { return std::find(pool.begin(), pool.end(), n) != pool.end(); };
+			allowed[s] = in(sig.a) && (!sig.isDifference() || in(sig.b)) && !sig.references(dropped);
+		}
+		return allowed;
+	};
+	const auto choose = [&](const std::vector<bool>& allowed) {
+		return opt.selection == "auto" ? selectForward(folds, fs, allowed) : selectAll(folds, fs, allowed, opt.ridge);
+	};
+	Choice best;
+	std::vector<std::string> best_pool;
+	for (const auto& pool : pools)
+	{
+		const Choice c = choose(allowedFor(pool, ""));
+		if (best_pool.empty() || c.cv_rms < best.cv_rms)
+		{
+			best = c;
+			best_pool = pool;
+		}
+	}
+
+	Calibration cal;
+	cal.sensor_label = first.sensor_label;
+	cal.axis = axis;
+	cal.layout = first.thermistors;
+	cal.preset = preset_text;
+	cal.selection = opt.selection;
+	cal.rate_estimator = opt.rate_estimator;
+	cal.mean_bias_dph = y_ref;
+	for (std::size_t i = 0; i < runs.size(); i++) cal.runs.push_back(runName(labels, i));
+	cal.model = makeModel(total, fs, best, "", opt);
+	if (opt.fallbacks)
+		for (const auto& name : cal.model.features.thermistors())
+		{
+			const Choice c = choose(allowedFor(best_pool, name));
+			cal.fallbacks.push_back(makeModel(total, fs, c, name, opt));
+		}
+
+	// In-sample figures: the calibration runs through the real-time compensator (only when the
+	// model can run in real time), else through the fitted feature set directly.
+	{
+		std::vector<double> t, raw, comp;
+		double offset = 0;
+		for (std::size_t ri = 0; ri < runs.size(); ri++)
+		{
+			const auto& r = prep[ri];
+			const double t0 = r.s->time_s.front();
+			std::vector<double> bias(r.s->size(), std::numeric_limits<double>::quiet_NaN());
+			if (opt.rate_estimator.kind == "causal")
+				bias = compensate(cal, *r.s).bias_dph;
+			else
+				for (std::size_t k = 0; k < r.s->size(); k++)
+					if (r.ok[k])
+					{
+						rowSignals(r, fs, k, temp, rate, values);
+						std::vector<double> mv(cal.model.features.signals().size());
+						for (std::size_t s = 0; s < mv.size(); s++)
+							for (std::size_t q = 0; q < ns; q++)
+								if (fs.signals()[q] == cal.model.features.signals()[s]) mv[s] = values[q];
+						bias[k] = cal.model.evaluate(mv.data(), true);
+					}
+			for (std::size_t k = 0; k < r.s->size(); k++)
+			{
+				t.push_back(offset + r.s->time_s[k] - t0);
+				raw.push_back(r.y[k]);
+				comp.push_back(r.ok[k] ? r.y[k] - bias[k] : std::numeric_limits<double>::quiet_NaN());
+			}
+			offset = t.back() + opt.tau_s;  // runs concatenated with a one-window gap
+		}
+		cal.in_sample.label = "in-sample";
+		statsInto(cal.in_sample, t, raw, comp, opt.tau_s);
+	}
+	// Held-out figures: every fold predicted by the chosen model fitted on the other folds.
+	{
+		const auto cols = columnsOf(fs, best.groups);
+		std::vector<Eigen::VectorXd> coef(nfolds);
+		std::vector<bool> has(nfolds, false);
+		for (std::size_t fo = 0; fo < nfolds; fo++)
+		{
+			NormalEquations train(fs.termCount(), y_ref);
+			for (std::size_t g = 0; g < nfolds; g++)
+				if (g != fo) train.merge(folds[g]);
+			if (train.count() < cols.size()) continue;
+			coef[fo] = solveBiasFit(train, cols, best.ridge).coef_dph;
+			has[fo] = true;
+		}
+		std::vector<double> t, raw, comp;
+		double offset = 0;
+		for (std::size_t ri = 0; ri < prep.size(); ri++)
+		{
+			const auto& r = prep[ri];
+			const double t0 = r.s->time_s.front();
+			for (std::size_t k = 0; k < r.s->size(); k++)
+			{
+				const std::size_t fo = foldOf(ri, k);
+				double c = std::numeric_limits<double>::quiet_NaN();
+				if (r.ok[k] && has[fo])
+				{
+					rowSignals(r, fs, k, temp, rate, values);
+					fs.features(values.data(), f.data(), false);
+					double pred = 0;
+					for (std::size_t j = 0; j < cols.size(); j++) pred += coef[fo][static_cast<Eigen::Index>(j)] * f[cols[j]];
+					c = r.y[k] - pred;
+				}
+				t.push_back(offset + r.s->time_s[k] - t0);
+				raw.push_back(r.y[k]);
+				comp.push_back(c);
+			}
+			offset = t.back() + opt.tau_s;
+		}
+		cal.held_out.label = by_run ? "held-out (leave-one-run-out, " + std::to_string(nfolds) + " runs)"
+									: "held-out (blocked " + std::to_string(nfolds) + "-fold)";
+		statsInto(cal.held_out, t, raw, comp, opt.tau_s);
+	}
+	return cal;
+}
+
+FitFigures evaluateCalibration(const Calibration& cal, const FogSeries& series, const std::string& label, double tau_s)
+{
+	const CompensatedSeries out = compensate(cal, series);
+	FitFigures f;
+	f.label = label;
+	std::vector<double> raw(out.raw_dph);
+	if (!series.table_rate_dph.empty())
+		for (std::size_t k = 0; k < raw.size(); k++) raw[k] -= series.table_rate_dph[k];
+	std::vector<double> comp(raw.size());
+	for (std::size_t k = 0; k < raw.size(); k++)
+		comp[k] = (series.power.empty() || series.power[k] != 0.0) ? raw[k] - out.bias_dph[k]
+																	: std::numeric_limits<double>::quiet_NaN();
+	statsInto(f, out.time_s, raw, comp, tau_s);
+	return f;
+}
+
+}  // namespace mrpt_fog
