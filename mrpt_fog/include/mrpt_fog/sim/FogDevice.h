@@ -1,0 +1,99 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file FogDevice.h
+ * Everything that describes one simulated FOG: coil thermal network, winding, the
+ * coefficients of each error source (see ErrorEffects.h), thermistors and gyro noise.
+ * Defaults are the project's default device (docs/sim.md explains every choice; values marked
+ * "estimate" are engineering estimates within the ranges of PHYSICS.md, not measurements).
+ *
+ * YAML overlay (every key optional; unknown keys are errors):
+ *
+ *   latitude_deg: 40
+ *   coil:    {pattern: quadrupolar, fiber_length_m: 1500, mean_diameter_m: 0.1, fiber_layers: 48,
+ *             midpoint_offset_m: 1.0, refractive_index: 1.46, dn_dT_per_K: 1e-5, expansion_per_K: 5.5e-7}
+ *   thermal: {layers: 8, sectors: 8, <any CoilThermalParams field>}
+ *   errors:  {constant_bias_dph, radial_gradient_dph_per_C, gradient_rate_dph_per_C_per_min,
+ *             hysteresis_dph, hysteresis_span_C, warmup_dph, warmup_tau_s, sf_ppm_per_C,
+ *             sf_ref_C, magnetic_dph_per_uT, temp_poly_dph: [c1, c2, ...], temp_poly_ref_C}
+ *   noise:   {arw_deg_rt_h, bias_instability_dph, bias_corr_time_s, rrw_deg_h_rt_h, angle_quantum_arcsec}
+ *   thermistors: [{name: Ti1, side: inner, angle_deg: 0, tau_s: 5, offset_C: 0.05}, ...]
+ *   thermistor_noise_C: 0.003
+ *   thermistor_quantum_C: 0.01
+ */
+
+#include <mrpt/containers/yaml_frwd.h>
+#include <mrpt_fog/obs/FogSeries.h>
+#include <mrpt_fog/sim/CoilThermalModel.h>
+#include <mrpt_fog/sim/CoilWinding.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace mrpt_fog::sim
+{
+/** Coefficients of the non-Shupe error sources (deg/h unless the name says otherwise). */
+struct ErrorCoefficients
+{
+	double constant_bias_dph = 0.3;  //!< turn-on bias, constant (estimate)
+	double radial_gradient_dph_per_C = 0.02;  //!< elasto-optic, x (Tin - Tout) (estimate)
+	double gradient_rate_dph_per_C_per_min = 0.1;  //!< x d(Tin - Tout)/dt [C/min] (estimate)
+	double hysteresis_dph = 0.02;  //!< heating minus cooling offset (estimate)
+	double hysteresis_span_C = 5.0;  //!< temperature change to swap branch (1/e) (estimate)
+	double warmup_dph = 0.1;  //!< extra bias at power-on (estimate)
+	double warmup_tau_s = 600.0;  //!< decay time after power-on (estimate)
+	double sf_ppm_per_C = 20.0;  //!< scale factor vs coil temperature (PHYSICS.md: tens-hundreds)
+	double sf_ref_C = 25.0;  //!< temperature of the nominal scale factor
+	double magnetic_dph_per_uT = 2e-4;  //!< shielded coil (estimate)
+	/** Static bias c1 x + c2 x^2 + ... with x = T_electronics - temp_poly_ref_C (estimate). */
+	std::vector<double> temp_poly_dph = {1.0e-3, 1.0e-5};
+	double temp_poly_ref_C = 25.0;
+};
+
+/** Gyro noise (IEEE Std 952 terms). */
+struct GyroNoiseParams
+{
+	double arw_deg_rt_h = 0.001;  //!< angle random walk N [deg/sqrt(h)] (PHYSICS.md)
+	/** Bias instability [deg/h], simulated as a Gauss-Markov process of this sigma. */
+	double bias_instability_dph = 0.003;  //!< PHYSICS.md: 0.003-0.01
+	double bias_corr_time_s = 300.0;  //!< Gauss-Markov correlation time (estimate)
+	double rrw_deg_h_rt_h = 1e-4;  //!< rate random walk K [deg/h/sqrt(h)] (PHYSICS.md: small)
+	double angle_quantum_arcsec = 0.005;  //!< output angle LSB (estimate); 0 = none
+};
+
+/** One thermistor glued on the coil. */
+struct ThermistorSpec
+{
+	ThermistorInfo info;  //!< name, side (inner/outer), angle on the coil [deg]
+	double tau_s = 5.0;  //!< first-order lag (PHYSICS.md: 2-20 s bonded)
+	double offset_C = 0.0;  //!< calibration offset (PHYSICS.md: ~0.1 C)
+};
+
+struct FogDevice
+{
+	std::string name = "default";
+	double latitude_deg = 40.0;  //!< for the vertical Earth rate (PHYSICS.md example)
+	CoilThermalParams thermal;
+	WindingParams winding;
+	ErrorCoefficients errors;
+	GyroNoiseParams noise;
+	std::vector<ThermistorSpec> thermistors;  //!< default: the seed's Ti1/To1 at 0, Ti2/To2 at 180 deg
+	double thermistor_noise_C = 0.003;  //!< white reading noise (estimate)
+	double thermistor_quantum_C = 0.01;  //!< reading resolution (PHYSICS.md)
+
+	/** The project's default device (see docs/sim.md). */
+	static FogDevice defaultDevice();
+	/** Default device overlaid with a YAML document (see file comment); `source` names it in
+	 * errors. Throws std::invalid_argument "<source>: <field>: <reason>". */
+	static FogDevice fromYaml(const mrpt::containers::yaml& doc, const std::string& source);
+	/** Reads a YAML device file (overlay on the default device). */
+	static FogDevice fromFile(const std::string& path);
+
+	/** Consistency checks (throws std::invalid_argument naming the field). */
+	void validate() const;
+	/** Every parameter as (key, value) text pairs, keys "device.<section>.<field>". */
+	std::vector<std::pair<std::string, std::string>> describe() const;
+};
+
+}  // namespace mrpt_fog::sim

@@ -1,0 +1,302 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/sim/FogDevice.h>
+
+#include <mrpt/containers/yaml.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "YamlFields.h"
+
+namespace mrpt_fog::sim
+{
+using namespace detail;
+
+namespace
+{
+struct NumField
+{
+	const char* key;
+	double* value;
+};
+
+std::vector<NumField> thermalFields(CoilThermalParams& t)
+{
+	return {{"mean_diameter_m", &t.mean_diameter_m},
+			{"radial_thickness_m", &t.radial_thickness_m},
+			{"axial_height_m", &t.axial_height_m},
+			{"volumetric_heat_capacity_J_m3K", &t.volumetric_heat_capacity_J_m3K},
+			{"radial_conductivity_W_mK", &t.radial_conductivity_W_mK},
+			{"tangential_conductivity_W_mK", &t.tangential_conductivity_W_mK},
+			{"hub_capacity_J_K", &t.hub_capacity_J_K},
+			{"hub_to_inner_W_K", &t.hub_to_inner_W_K},
+			{"housing_capacity_J_K", &t.housing_capacity_J_K},
+			{"housing_to_air_W_K", &t.housing_to_air_W_K},
+			{"outer_to_housing_W_K", &t.outer_to_housing_W_K},
+			{"faces_to_housing_W_K", &t.faces_to_housing_W_K},
+			{"mount_capacity_J_K", &t.mount_capacity_J_K},
+			{"mount_to_air_W_K", &t.mount_to_air_W_K},
+			{"mount_to_housing_W_K", &t.mount_to_housing_W_K},
+			{"mount_to_hub_W_K", &t.mount_to_hub_W_K},
+			{"mount_to_coil_W_K", &t.mount_to_coil_W_K},
+			{"electronics_capacity_J_K", &t.electronics_capacity_J_K},
+			{"electronics_to_housing_W_K", &t.electronics_to_housing_W_K},
+			{"electronics_to_coil_W_K", &t.electronics_to_coil_W_K},
+			{"electronics_power_W", &t.electronics_power_W}};
+}
+
+std::vector<NumField> coilFields(WindingParams& w)
+{
+	return {{"fiber_length_m", &w.fiber_length_m},	 {"mean_diameter_m", &w.mean_diameter_m},
+			{"midpoint_offset_m", &w.midpoint_offset_m}, {"refractive_index", &w.refractive_index},
+			{"dn_dT_per_K", &w.dn_dT_per_K},			 {"expansion_per_K", &w.expansion_per_K}};
+}
+
+std::vector<NumField> errorFields(ErrorCoefficients& e)
+{
+	return {{"constant_bias_dph", &e.constant_bias_dph},
+			{"radial_gradient_dph_per_C", &e.radial_gradient_dph_per_C},
+			{"gradient_rate_dph_per_C_per_min", &e.gradient_rate_dph_per_C_per_min},
+			{"hysteresis_dph", &e.hysteresis_dph},
+			{"hysteresis_span_C", &e.hysteresis_span_C},
+			{"warmup_dph", &e.warmup_dph},
+			{"warmup_tau_s", &e.warmup_tau_s},
+			{"sf_ppm_per_C", &e.sf_ppm_per_C},
+			{"sf_ref_C", &e.sf_ref_C},
+			{"magnetic_dph_per_uT", &e.magnetic_dph_per_uT},
+			{"temp_poly_ref_C", &e.temp_poly_ref_C}};
+}
+
+std::vector<NumField> noiseFields(GyroNoiseParams& n)
+{
+	return {{"arw_deg_rt_h", &n.arw_deg_rt_h},
+			{"bias_instability_dph", &n.bias_instability_dph},
+			{"bias_corr_time_s", &n.bias_corr_time_s},
+			{"rrw_deg_h_rt_h", &n.rrw_deg_h_rt_h},
+			{"angle_quantum_arcsec", &n.angle_quantum_arcsec}};
+}
+
+std::set<std::string> keysOf(const std::vector<NumField>& f, std::set<std::string> extra = {})
+{
+	for (const auto& x : f) extra.insert(x.key);
+	return extra;
+}
+
+void readFields(const mrpt::containers::yaml& node, const std::vector<NumField>& fields, const std::string& where)
+{
+	for (const auto& f : fields) *f.value = readNumber(node, f.key, where, *f.value);
+}
+
+std::string num(double v)
+{
+	std::ostringstream ss;
+	ss.precision(10);
+	ss << v;
+	return ss.str();
+}
+
+int readInt(const mrpt::containers::yaml& node, const std::string& key, const std::string& where, int fallback)
+{
+	const double v = readNumber(node, key, where, fallback);
+	if (v != std::floor(v) || std::abs(v) > 1e6) fieldError(where + "." + key, "expected an integer");
+	return static_cast<int>(v);
+}
+}  // namespace
+
+FogDevice FogDevice::defaultDevice()
+{
+	FogDevice d;
+	// Length asymmetry of the quadrupole halves: the one knob chosen so that the UNCOMPENSATED
+	// seed-profile figures land near the seed's (docs/sim.md, "default device").
+	d.winding.midpoint_offset_m = 1.0;
+	// The seed's four thermistors: inner/outer pairs at 0 and 180 deg (seed Fig. 1).
+	// Offsets: fixed values of the ~0.1 C size PHYSICS.md gives (estimate).
+	d.thermistors = {{{"Ti1", CoilSide::Inner, 0.0}, 5.0, 0.05},
+					 {{"To1", CoilSide::Outer, 0.0}, 5.0, -0.08},
+					 {{"Ti2", CoilSide::Inner, 180.0}, 5.0, 0.03},
+					 {{"To2", CoilSide::Outer, 180.0}, 5.0, -0.04}};
+	return d;
+}
+
+FogDevice FogDevice::fromYaml(const mrpt::containers::yaml& doc, const std::string& source)
+{
+	FogDevice d = defaultDevice();
+	if (doc.isNullNode()) return d;
+	checkKeys(doc,
+			  {"name", "latitude_deg", "coil", "thermal", "errors", "noise", "thermistors", "thermistor_noise_C",
+			   "thermistor_quantum_C"},
+			  source);
+	d.name = readString(doc, "name", source, "custom");
+	d.latitude_deg = readNumber(doc, "latitude_deg", source, d.latitude_deg);
+	if (std::abs(d.latitude_deg) > 90) fieldError(source + ".latitude_deg", "must be within [-90, 90]");
+	d.thermistor_noise_C = readNonNegative(doc, "thermistor_noise_C", source, d.thermistor_noise_C);
+	d.thermistor_quantum_C = readNonNegative(doc, "thermistor_quantum_C", source, d.thermistor_quantum_C);
+	if (doc.has("coil"))
+	{
+		const auto node = doc["coil"];
+		const std::string w = source + ": coil";
+		checkKeys(node, keysOf(coilFields(d.winding), {"pattern", "fiber_layers"}), w);
+		readFields(node, coilFields(d.winding), w);
+		d.winding.fiber_layers = readInt(node, "fiber_layers", w, d.winding.fiber_layers);
+		if (node.has("pattern"))
+		{
+			try
+			{
+				d.winding.pattern = windingPatternFromString(readString(node, "pattern", w, ""));
+			}
+			catch (const std::invalid_argument& e)
+			{
+				fieldError(w + ".pattern", e.what());
+			}
+		}
+	}
+	if (doc.has("thermal"))
+	{
+		const auto node = doc["thermal"];
+		const std::string w = source + ": thermal";
+		checkKeys(node, keysOf(thermalFields(d.thermal), {"layers", "sectors"}), w);
+		readFields(node, thermalFields(d.thermal), w);
+		d.thermal.layers = readInt(node, "layers", w, d.thermal.layers);
+		d.thermal.sectors = readInt(node, "sectors", w, d.thermal.sectors);
+	}
+	if (doc.has("errors"))
+	{
+		const auto node = doc["errors"];
+		const std::string w = source + ": errors";
+		checkKeys(node, keysOf(errorFields(d.errors), {"temp_poly_dph"}), w);
+		readFields(node, errorFields(d.errors), w);
+		if (node.has("temp_poly_dph"))
+		{
+			if (!node["temp_poly_dph"].isSequence()) fieldError(w + ".temp_poly_dph", "expected a list [c1, c2, ...]");
+			d.errors.temp_poly_dph.clear();
+			const auto& seq = node["temp_poly_dph"].asSequence();
+			for (std::size_t i = 0; i < seq.size(); i++)
+			{
+				double v = 0;
+				try
+				{
+					v = mrpt::containers::yaml(seq[i]).as<double>();
+				}
+				catch (const std::exception&)
+				{
+					fieldError(w + ".temp_poly_dph[" + std::to_string(i) + "]", "expected a number");
+				}
+				d.errors.temp_poly_dph.push_back(v);
+			}
+		}
+	}
+	if (doc.has("noise"))
+	{
+		const auto node = doc["noise"];
+		const std::string w = source + ": noise";
+		checkKeys(node, keysOf(noiseFields(d.noise)), w);
+		readFields(node, noiseFields(d.noise), w);
+	}
+	if (doc.has("thermistors"))
+	{
+		if (!doc["thermistors"].isSequence()) fieldError(source + ": thermistors", "expected a list");
+		d.thermistors.clear();
+		const auto& seq = doc["thermistors"].asSequence();
+		for (std::size_t i = 0; i < seq.size(); i++)
+		{
+			const mrpt::containers::yaml node(seq[i]);
+			const std::string w = source + ": thermistors[" + std::to_string(i) + "]";
+			checkKeys(node, {"name", "side", "angle_deg", "tau_s", "offset_C"}, w);
+			ThermistorSpec t;
+			t.info.name = readString(node, "name", w, "");
+			if (!isValidThermistorName(t.info.name)) fieldError(w + ".name", "missing or not [A-Za-z0-9_]+");
+			try
+			{
+				t.info.side = coilSideFromString(readString(node, "side", w, "inner"));
+			}
+			catch (const std::invalid_argument& e)
+			{
+				fieldError(w + ".side", e.what());
+			}
+			if (t.info.side == CoilSide::Other) fieldError(w + ".side", "the simulator places thermistors inner or outer");
+			t.info.angle_deg = readNumber(node, "angle_deg", w, 0.0);
+			t.tau_s = readNonNegative(node, "tau_s", w, 5.0);
+			t.offset_C = readNumber(node, "offset_C", w, 0.0);
+			d.thermistors.push_back(t);
+		}
+	}
+	try
+	{
+		d.validate();
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::invalid_argument(source + ": " + e.what());
+	}
+	return d;
+}
+
+FogDevice FogDevice::fromFile(const std::string& path)
+{
+	std::ifstream f(path);
+	if (!f) throw std::invalid_argument(path + ": cannot open device file");
+	mrpt::containers::yaml doc;
+	try
+	{
+		doc = mrpt::containers::yaml::FromStream(f);
+	}
+	catch (const std::exception& e)
+	{
+		std::string msg = e.what();
+		throw std::invalid_argument(path + ": not valid YAML: " + msg.substr(0, msg.find('\n')));
+	}
+	return fromYaml(doc, path);
+}
+
+void FogDevice::validate() const
+{
+	thermal.validate();
+	winding.validate();
+	const std::pair<const char*, double> nonneg[] = {
+		{"noise.arw_deg_rt_h", noise.arw_deg_rt_h},
+		{"noise.bias_instability_dph", noise.bias_instability_dph},
+		{"noise.rrw_deg_h_rt_h", noise.rrw_deg_h_rt_h},
+		{"noise.angle_quantum_arcsec", noise.angle_quantum_arcsec},
+		{"errors.hysteresis_dph", errors.hysteresis_dph},
+	};
+	for (const auto& [name, v] : nonneg)
+		if (!(v >= 0)) throw std::invalid_argument(std::string(name) + ": must be >= 0");
+	if (!(noise.bias_corr_time_s > 0)) throw std::invalid_argument("noise.bias_corr_time_s: must be > 0");
+	if (!(errors.hysteresis_span_C > 0)) throw std::invalid_argument("errors.hysteresis_span_C: must be > 0");
+	if (!(errors.warmup_tau_s > 0)) throw std::invalid_argument("errors.warmup_tau_s: must be > 0");
+	std::set<std::string> names;
+	for (const auto& t : thermistors)
+		if (!names.insert(t.info.name).second)
+			throw std::invalid_argument("thermistors: duplicate name '" + t.info.name + "'");
+}
+
+std::vector<std::pair<std::string, std::string>> FogDevice::describe() const
+{
+	FogDevice c = *this;  // the field tables take non-const pointers
+	std::vector<std::pair<std::string, std::string>> out;
+	out.emplace_back("device.name", name);
+	out.emplace_back("device.latitude_deg", num(latitude_deg));
+	out.emplace_back("device.coil.pattern", toString(winding.pattern));
+	out.emplace_back("device.coil.fiber_layers", std::to_string(winding.fiber_layers));
+	for (const auto& f : coilFields(c.winding)) out.emplace_back(std::string("device.coil.") + f.key, num(*f.value));
+	out.emplace_back("device.thermal.layers", std::to_string(thermal.layers));
+	out.emplace_back("device.thermal.sectors", std::to_string(thermal.sectors));
+	for (const auto& f : thermalFields(c.thermal))
+		out.emplace_back(std::string("device.thermal.") + f.key, num(*f.value));
+	for (const auto& f : errorFields(c.errors)) out.emplace_back(std::string("device.errors.") + f.key, num(*f.value));
+	std::string poly;
+	for (double v : errors.temp_poly_dph) poly += (poly.empty() ? "" : ",") + num(v);
+	out.emplace_back("device.errors.temp_poly_dph", "[" + poly + "]");
+	for (const auto& f : noiseFields(c.noise)) out.emplace_back(std::string("device.noise.") + f.key, num(*f.value));
+	for (const auto& t : thermistors)
+		out.emplace_back("device.thermistor." + t.info.name, std::string("side=") + toString(t.info.side) +
+																  " angle_deg=" + num(t.info.angle_deg) +
+																  " tau_s=" + num(t.tau_s) + " offset_C=" + num(t.offset_C));
+	out.emplace_back("device.thermistor_noise_C", num(thermistor_noise_C));
+	out.emplace_back("device.thermistor_quantum_C", num(thermistor_quantum_C));
+	return out;
+}
+
+}  // namespace mrpt_fog::sim

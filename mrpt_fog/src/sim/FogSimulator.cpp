@@ -1,0 +1,183 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/obs/Units.h>
+#include <mrpt_fog/sim/FogSimulator.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace mrpt_fog::sim
+{
+namespace
+{
+constexpr double kArcsecPerDeg = 3600.0;
+constexpr double kSecondsPerMinute = 60.0;
+
+double quantise(double v, double q) { return q > 0 ? q * std::round(v / q) : v; }
+}  // namespace
+
+FogSimulator::FogSimulator(const FogDevice& device, const EffectSet& effects, std::uint64_t seed)
+	: dev_(device),
+	  effects_(effects),
+	  thermal_((device.validate(), device.thermal)),
+	  winding_(device.winding, device.thermal.layers, device.thermal.sectors),
+	  rng_gyro_(seed, RandomStream::GyroNoise),
+	  rng_therm_(seed, RandomStream::Thermistors)
+{
+	for (const auto& id : effects_) checkEffectId(id);
+}
+
+double FogSimulator::powerW(const ChamberState& s) const
+{
+	return (s.power_on && enabled("heat_source")) ? dev_.thermal.electronics_power_W : 0.0;
+}
+
+double FogSimulator::nodeAt(const Eigen::VectorXd& T, CoilSide side, double angle_deg) const
+{
+	const int S = dev_.thermal.sectors;
+	const int layer = side == CoilSide::Outer ? dev_.thermal.layers - 1 : 0;
+	double x = std::fmod(angle_deg, 360.0);
+	if (x < 0) x += 360.0;
+	x *= S / 360.0;
+	const int j0 = static_cast<int>(std::floor(x)) % S;
+	const double f = x - std::floor(x);
+	return (1 - f) * T(thermal_.coilNode(layer, j0)) + f * T(thermal_.coilNode(layer, (j0 + 1) % S));
+}
+
+FogSample FogSimulator::start(const ChamberState& s0, InitialThermalState init)
+{
+	state_ = s0;
+	const bool cold = init == InitialThermalState::Cold;
+	T_ = thermal_.steadyState(s0.air_C, cold ? 0.0 : powerW(s0));
+	time_since_power_on_s_ = (cold && s0.power_on) ? 0.0 : std::numeric_limits<double>::infinity();
+	therm_lag_C_.clear();
+	for (const auto& t : dev_.thermistors) therm_lag_C_.push_back(nodeAt(T_, t.info.side, t.info.angle_deg));
+	hysteresis_dph_ = 0;
+	gm_bias_dph_ = dev_.noise.bias_instability_dph * rng_gyro_.normal();
+	rrw_dph_ = 0;
+	acc_deg_ = acc_ideal_deg_ = 0;
+	q_prev_ = q_ideal_prev_ = 0;
+	return makeSample(0.0, T_, s0, true);
+}
+
+FogSample FogSimulator::advance(double dt_s, const ChamberState& s1)
+{
+	if (!(dt_s > 0) || !std::isfinite(dt_s)) throw std::invalid_argument("FogSimulator::advance: dt must be > 0");
+	const Eigen::VectorXd Tprev = T_;
+	T_ = thermal_.step(T_, dt_s, state_.air_C, s1.air_C, powerW(state_), powerW(s1));
+	if (s1.power_on && !state_.power_on) time_since_power_on_s_ = 0.0;
+	else if (s1.power_on) time_since_power_on_s_ += dt_s;
+	if (!s1.power_on) acc_deg_ = acc_ideal_deg_ = 0, q_prev_ = q_ideal_prev_ = 0;
+	state_ = s1;
+	return makeSample(dt_s, Tprev, s1, false);
+}
+
+FogSample FogSimulator::makeSample(double dt_s, const Eigen::VectorXd& Tprev, const ChamberState& s, bool first)
+{
+	const auto& e = dev_.errors;
+	const int L = dev_.thermal.layers;
+	FogSample out;
+	out.power_on = s.power_on;
+	out.coil_mean_C = T_.head(thermal_.coilNodeCount()).mean();
+	out.inner_C = thermal_.layerMean_C(T_, 0);
+	out.outer_C = thermal_.layerMean_C(T_, L - 1);
+
+	// --- thermistors (lag with inputs linear over the step, exact first-order response)
+	const bool lag = enabled("thermistor_lag");
+	for (std::size_t i = 0; i < dev_.thermistors.size(); i++)
+	{
+		const auto& t = dev_.thermistors[i];
+		const double x1 = nodeAt(T_, t.info.side, t.info.angle_deg);
+		if (first || !lag || t.tau_s <= 0)
+			therm_lag_C_[i] = x1;
+		else
+		{
+			const double x0 = nodeAt(Tprev, t.info.side, t.info.angle_deg);
+			const double r = dt_s / t.tau_s, one_minus_e = -std::expm1(-r);
+			const double b = r < 1e-4 ? 0.5 * r : 1.0 - one_minus_e / r;  // weight of (x1 - x0)
+			therm_lag_C_[i] = (1 - one_minus_e) * therm_lag_C_[i] + one_minus_e * x0 + b * (x1 - x0);
+		}
+		const double v = therm_lag_C_[i] + t.offset_C + dev_.thermistor_noise_C * rng_therm_.normal();
+		out.temp_C.push_back(quantise(v, dev_.thermistor_quantum_C));
+	}
+
+	// --- noise (advanced every step, powered or not, so the realisation does not depend on power)
+	const auto& nz = dev_.noise;
+	double white_dph = 0;
+	if (!first)
+	{
+		white_dph = 60.0 * nz.arw_deg_rt_h / std::sqrt(dt_s) * rng_gyro_.normal();
+		const double a = std::exp(-dt_s / nz.bias_corr_time_s);
+		gm_bias_dph_ = a * gm_bias_dph_ + nz.bias_instability_dph * std::sqrt(1 - a * a) * rng_gyro_.normal();
+		rrw_dph_ += nz.rrw_deg_h_rt_h * std::sqrt(dt_s / units::kSecondsPerHour) * rng_gyro_.normal();
+	}
+	const double noise_dph = white_dph + gm_bias_dph_ + rrw_dph_;
+
+	// --- thermal error terms [deg/h]
+	double thermal = 0;
+	const double dTin_out = out.inner_C - out.outer_C;
+	if (!first)
+	{
+		const Eigen::VectorXd Tdot = (T_ - Tprev) / dt_s;
+		if (enabled("shupe_rate")) out.shupe_dph = winding_.shupeRate_rad_s(Tdot) * units::kRadPerSecToDegPerHour;
+		thermal += out.shupe_dph;
+		if (enabled("gradient_rate"))
+		{
+			const double prev = thermal_.layerMean_C(Tprev, 0) - thermal_.layerMean_C(Tprev, L - 1);
+			thermal += e.gradient_rate_dph_per_C_per_min * (dTin_out - prev) / dt_s * kSecondsPerMinute;
+		}
+		if (enabled("hysteresis"))
+		{
+			const double dT = out.coil_mean_C - Tprev.head(thermal_.coilNodeCount()).mean();
+			if (dT != 0)
+			{
+				const double target = (dT > 0 ? 0.5 : -0.5) * e.hysteresis_dph;
+				hysteresis_dph_ = target + (hysteresis_dph_ - target) * std::exp(-std::abs(dT) / e.hysteresis_span_C);
+			}
+		}
+	}
+	if (enabled("hysteresis")) thermal += hysteresis_dph_;
+	if (enabled("radial_gradient")) thermal += e.radial_gradient_dph_per_C * dTin_out;
+	if (enabled("warmup") && std::isfinite(time_since_power_on_s_))
+		thermal += e.warmup_dph * std::exp(-time_since_power_on_s_ / e.warmup_tau_s);
+	if (enabled("magnetic")) thermal += e.magnetic_dph_per_uT * s.field_uT;
+	if (enabled("temp_poly_order"))
+	{
+		const double x = T_(thermal_.electronicsNode()) - e.temp_poly_ref_C;
+		double xp = 1;
+		for (double c : e.temp_poly_dph) thermal += c * (xp *= x);
+	}
+
+	// --- applied rate and scale factor
+	double applied_dph = s.table_rate_dph;
+	if (enabled("earth_rate")) applied_dph += units::kEarthRate_dph * std::sin(dev_.latitude_deg * units::kDegToRad);
+	double sf_error = 0;
+	if (enabled("scale_factor_temp")) sf_error = e.sf_ppm_per_C * 1e-6 * (out.coil_mean_C - e.sf_ref_C);
+	thermal += sf_error * applied_dph;
+	out.thermal_error_dph = thermal;
+
+	const double ideal = applied_dph + noise_dph;
+	const double full = ideal + e.constant_bias_dph + thermal;
+	if (!s.power_on)
+	{
+		out.rate_dph = out.ideal_rate_dph = 0;
+		return out;
+	}
+	const double q_deg = nz.angle_quantum_arcsec / kArcsecPerDeg;
+	if (first || q_deg <= 0)
+	{
+		out.rate_dph = full;
+		out.ideal_rate_dph = ideal;
+		return out;
+	}
+	// Quantise the accumulated angle (the FOG's digital output), not the rate.
+	acc_deg_ += full * dt_s / units::kSecondsPerHour;
+	acc_ideal_deg_ += ideal * dt_s / units::kSecondsPerHour;
+	const long long q = std::llround(acc_deg_ / q_deg), qi = std::llround(acc_ideal_deg_ / q_deg);
+	out.rate_dph = (q - q_prev_) * q_deg * units::kSecondsPerHour / dt_s;
+	out.ideal_rate_dph = (qi - q_ideal_prev_) * q_deg * units::kSecondsPerHour / dt_s;
+	q_prev_ = q;
+	q_ideal_prev_ = qi;
+	return out;
+}
+
+}  // namespace mrpt_fog::sim
