@@ -322,7 +322,8 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 		if (by_run) return run;
 		const auto& t = runs[0].time_s;
 		const double u = (t[k] - t.front()) / (t.back() - t.front() + 1e-300);
-		return std::min(nfolds - 1, static_cast<std::size_t>(u * static_cast<double>(nfolds)));
+		const std::size_t nblocks = nfolds * opt.blocks_per_fold;
+		return std::min(nblocks - 1, static_cast<std::size_t>(u * static_cast<double>(nblocks))) % nfolds;
 	};
 	for (std::size_t ri = 0; ri < prep.size(); ri++)
 	{

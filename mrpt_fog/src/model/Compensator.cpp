@@ -58,17 +58,29 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 	return c;
 }
 
+std::vector<bool> Compensator::usesMask(const BiasModel& m, const std::vector<std::string>& names)
+{
+	std::vector<bool> u(names.size(), false);
+	for (std::size_t c = 0; c < names.size(); c++) u[c] = m.features.references(names[c]);
+	return u;
+}
+
 Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInfo>& layout)
 	: window_s_(cal.rate_estimator.window_s),
 	  mean_bias_dph_(cal.mean_bias_dph),
-	  tracker_(cal.model.features.thermistors().size(), cal.rate_estimator.window_s)
+	  tracker_(1, cal.rate_estimator.window_s)
 {
 	cal.rate_estimator.validate();
 	if (cal.rate_estimator.kind != "causal")
 		throw std::invalid_argument("calibration was fitted with the non-causal rate estimator " +
 									cal.rate_estimator.describe() +
 									": it cannot run in real time; refit with the causal estimator");
-	const auto& names = cal.model.features.thermistors();
+	// Channels: every thermistor used by the main model or a fallback.
+	std::vector<std::string> names = cal.model.features.thermistors();
+	for (const auto& fb : cal.fallbacks)
+		for (const auto& n : fb.features.thermistors())
+			if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
+	tracker_ = CausalRateTracker(names.size(), cal.rate_estimator.window_s);
 	for (const auto& n : names)
 	{
 		const ThermistorInfo* want = nullptr;
@@ -88,12 +100,15 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 		channel_col_.push_back(col);
 	}
 	models_.push_back(compile(cal.model, names));
+	uses_.push_back(usesMask(cal.model, names));
 	for (const auto& n : names)
 	{
 		const BiasModel* fb = cal.fallbackFor(n);
 		has_fallback_.push_back(fb != nullptr);
 		models_.push_back(fb ? compile(*fb, names) : Compiled{});
+		uses_.push_back(fb ? usesMask(*fb, names) : std::vector<bool>(names.size(), true));
 	}
+	missing_.assign(names.size(), false);
 	temp_.assign(names.size(), 0.0);
 	rate_.assign(names.size(), 0.0);
 	x_.assign(names.size(), 0.0);
@@ -145,25 +160,35 @@ Compensator::Output Compensator::step(double time_s, double raw_dph, const doubl
 	const std::size_t nc = channel_col_.size();
 	for (std::size_t c = 0; c < nc; c++) x_[c] = temp_C[channel_col_[c]];
 	tracker_.push(time_s, x_.data());
-	int missing = 0, missing_channel = -1;
 	bool warm = false;
 	for (std::size_t c = 0; c < nc; c++)
 	{
 		temp_[c] = x_[c];
 		rate_[c] = tracker_.rate(c);
-		if (std::isnan(temp_[c]) || std::isnan(rate_[c]))
-		{
-			missing++;
-			missing_channel = static_cast<int>(c);
-			temp_[c] = rate_[c] = 0.0;  // never read by the model in use
-		}
-		else if (tracker_.coveredSpan_s(c) < 0.5 * window_s_)
-			warm = true;
+		missing_[c] = std::isnan(temp_[c]) || std::isnan(rate_[c]);
+		if (missing_[c]) temp_[c] = rate_[c] = 0.0;  // never read by the model in use
 	}
+	// Main model unless it needs a missing channel; then the fallback without that channel if
+	// exactly one is missing and the fallback needs no other missing channel; else none.
+	const auto usable = [&](int m) {
+		for (std::size_t c = 0; c < nc; c++)
+			if (missing_[c] && uses_[m][c]) return false;
+		return true;
+	};
+	int model = -1;
+	if (usable(0))
+		model = 0;
+	else
+		for (std::size_t c = 0; c < nc; c++)
+			if (missing_[c] && uses_[0][c])
+			{
+				if (has_fallback_[c] && usable(1 + static_cast<int>(c))) model = 1 + static_cast<int>(c);
+				break;
+			}
+	if (model >= 0)
+		for (std::size_t c = 0; c < nc; c++)
+			if (uses_[model][c] && tracker_.coveredSpan_s(c) < 0.5 * window_s_) warm = true;
 	Output out;
-	int model = 0;
-	if (missing == 1 && has_fallback_[missing_channel]) model = 1 + missing_channel;
-	else if (missing >= 1) model = -1;
 	int clamped = 0;
 	if (model >= 0)
 		out.bias_dph = evaluate(models_[model], clamped);

@@ -48,6 +48,10 @@ struct FitOptions
 	std::string selection = "auto";  //!< "auto" (groups + ridge by held-out error) or "none"
 	double ridge = 0.0;  //!< fixed ridge for selection "none" (relative, unit-diagonal system)
 	std::size_t folds = 5;  //!< blocked folds when a single run is given (>= 2)
+	/** The single run is cut into folds x blocks_per_fold contiguous blocks, block b held out in
+	 * fold b mod folds: every fold then samples the whole temperature range (1 = plain blocked
+	 * k-fold, which makes the end folds pure polynomial extrapolation). */
+	std::size_t blocks_per_fold = 4;
 	double min_samples_per_term = 10.0;
 	double min_temp_span_per_order_C = 0.5;  //!< T(a) of order k needs a span >= k x this [degC]
 	double tau_s = 100.0;  //!< averaging time of the stability figures [s]

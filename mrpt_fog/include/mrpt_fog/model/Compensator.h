@@ -83,12 +83,15 @@ class Compensator
 	};
 	static Compiled compile(const BiasModel& m, const std::vector<std::string>& channel_names);
 	double evaluate(const Compiled& m, int& clamped) const;
+	static std::vector<bool> usesMask(const BiasModel& m, const std::vector<std::string>& names);
 
 	double window_s_;
 	double mean_bias_dph_;
 	std::vector<int> channel_col_;  // layout column of each tracked channel
 	std::vector<Compiled> models_;  // [0] main, [1 + c] fallback without channel c (may be empty)
 	std::vector<bool> has_fallback_;
+	std::vector<std::vector<bool>> uses_;  // per model: which channels it reads
+	std::vector<bool> missing_;
 	CausalRateTracker tracker_;
 	std::vector<double> temp_, rate_, x_;
 	CompensationCounters counters_;
