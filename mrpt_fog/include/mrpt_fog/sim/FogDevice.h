@@ -37,7 +37,9 @@ namespace mrpt_fog::sim
 struct ErrorCoefficients
 {
 	double constant_bias_dph = 0.3;  //!< turn-on bias, constant (estimate)
-	double radial_gradient_dph_per_C = 0.02;  //!< elasto-optic, x (Tin - Tout) (estimate)
+	/** Elasto-optic (thermal stress) bias x (Tin - Tout) [deg/h per C] (estimate; one of the two
+	 * knobs set to match the seed's uncompensated figures, docs/sim.md). */
+	double radial_gradient_dph_per_C = 0.07;
 	double gradient_rate_dph_per_C_per_min = 0.1;  //!< x d(Tin - Tout)/dt [C/min] (estimate)
 	double hysteresis_dph = 0.02;  //!< heating minus cooling offset (estimate)
 	double hysteresis_span_C = 5.0;  //!< temperature change to swap branch (1/e) (estimate)
