@@ -31,3 +31,24 @@ add_test(NAME nav.pf_localization.compare
   COMMAND nav_pf_check compare ${NAV_PF_DIR} ${NAV_PF_LOGDIR}_000_0000100/odo_est.txt)
 set_tests_properties(nav.pf_localization.compare PROPERTIES FIXTURES_REQUIRED nav_pf_output
   LABELS "nav;integration")
+
+# fog-drift end to end on a synthetic drive with closed-form truth (tests/nav/drive/TestDrive.cpp):
+# the ideal gyro must reproduce the truth, the raw gyro's final heading error must equal the
+# integral of its known bias.
+if(TARGET fog-drift)
+  add_executable(nav_test_drive ${FOG_SOURCE_DIR}/tests/nav/drive/TestDrive.cpp)
+  target_link_libraries(nav_test_drive PRIVATE mrpt_fog)
+  set(NAV_DRIVE_DIR ${CMAKE_CURRENT_BINARY_DIR}/nav_drive)
+  file(MAKE_DIRECTORY ${NAV_DRIVE_DIR})
+  add_test(NAME nav.fog_drift.write_drive COMMAND nav_test_drive write ${NAV_DRIVE_DIR}/drive.rawlog)
+  set_tests_properties(nav.fog_drift.write_drive PROPERTIES FIXTURES_SETUP nav_drive LABELS "nav;integration")
+  add_test(NAME nav.fog_drift.run COMMAND fog-drift -i ${NAV_DRIVE_DIR}/drive.rawlog --json ${NAV_DRIVE_DIR}/drift.json
+    --plots ${NAV_DRIVE_DIR}/plots --odometry-out ${NAV_DRIVE_DIR}/odometry.rawlog)
+  set_tests_properties(nav.fog_drift.run PROPERTIES FIXTURES_REQUIRED nav_drive FIXTURES_SETUP nav_drift_json
+    LABELS "nav;integration")
+  add_test(NAME nav.fog_drift.check COMMAND nav_test_drive check ${NAV_DRIVE_DIR}/drift.json)
+  set_tests_properties(nav.fog_drift.check PROPERTIES FIXTURES_REQUIRED nav_drift_json LABELS "nav;integration")
+  # Bad input: a missing file and a drive without truth give one line and a non-zero exit.
+  add_test(NAME nav.fog_drift.missing_input COMMAND fog-drift -i ${NAV_DRIVE_DIR}/no_such.rawlog)
+  set_tests_properties(nav.fog_drift.missing_input PROPERTIES WILL_FAIL TRUE LABELS "nav;integration")
+endif()

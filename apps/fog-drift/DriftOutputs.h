@@ -1,0 +1,38 @@
+/* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
+#pragma once
+
+/** \file DriftOutputs.h
+ * fog-drift's outputs: the JSON report (stable keys, see docs/nav.md), the two PNGs
+ * (trajectories over the truth; heading error vs time) and the odometry rawlog for MRPT's
+ * localization apps. Every file is written atomically. */
+
+#include <mrpt_fog_nav/DriftReport.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace mrpt_fog::drift
+{
+/** Extra figures recorded in the JSON next to the report. */
+struct DriftContext
+{
+	std::string input;
+	std::string calibration;  //!< "" when none
+	double latitude_deg = 0.0;
+	double earth_rate_removed_dph = 0.0;
+	bool transport_rate = false;
+	std::string rate_sampling;
+};
+
+void writeDriftJson(const std::string& path, const nav::DriftReport& report, const DriftContext& ctx);
+
+/** trajectories.png and heading_error.png in dir (created if missing). */
+void writeDriftPlots(const std::string& dir, const nav::Trajectory& truth, const std::vector<nav::NamedTrajectory>& variants,
+					 const nav::DriftReport& report);
+
+/** Observations-only rawlog: CObservationOdometry + CObservationIMU per pose (see
+ * mrpt_fog_nav/OdometryRawlog.h), gz-compressed, atomic. */
+void writeOdometryRawlog(const std::string& path, const nav::Trajectory& traj, const std::vector<double>& imu_rate_z_rad_s);
+
+}  // namespace mrpt_fog::drift

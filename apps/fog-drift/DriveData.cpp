@@ -1,0 +1,94 @@
+/* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
+#include "DriveData.h"
+
+#include <mrpt/core/Clock.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CObservationRobotPose.h>
+#include <mrpt_fog/io/FogLogIO.h>
+#include <mrpt_fog/obs/CObservationFOG.h>
+#include <mrpt_fog/obs/FogSeriesConversion.h>
+#include <mrpt_fog_nav/Rotation.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace mrpt_fog::drift
+{
+std::vector<double> absoluteTimes(const FogSeries& s)
+{
+	std::vector<double> t(s.size());
+	for (std::size_t k = 0; k < s.size(); ++k) t[k] = s.epoch_s + s.time_s[k];
+	return t;
+}
+
+namespace
+{
+std::optional<double> latitudeFrom(const FogSeries& s)
+{
+	for (const char* key : {"latitude_deg", "device.latitude_deg"})
+	{
+		const std::string v = s.metadataValue(key);
+		if (v.empty()) continue;
+		try
+		{
+			std::size_t pos = 0;
+			const double lat = std::stod(v, &pos);
+			if (pos == v.size() && std::abs(lat) <= 90) return lat;
+		}
+		catch (const std::exception&)
+		{
+		}
+		throw std::runtime_error(std::string("metadata ") + key + ": '" + v + "' is not a latitude in [-90, 90] deg");
+	}
+	return std::nullopt;
+}
+}  // namespace
+
+DriveData readDrive(const std::string& path, const DriveLabels& labels)
+{
+	FogRawlogContents c = readFogRawlog(path, labels.fog);
+	DriveData d;
+	d.fog = std::move(c.fog);
+	if (d.fog.size() < 2) throw std::runtime_error(path + ": FOG '" + labels.fog + "' has fewer than 2 samples");
+	d.latitude_deg = latitudeFrom(d.fog);
+
+	std::vector<CObservationFOG::Ptr> ideal;
+	for (const auto& o : c.others)
+	{
+		if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o); f && o->sensorLabel == labels.fog_ideal)
+			ideal.push_back(f);
+		else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(o);
+				 odo && o->sensorLabel == labels.odometry)
+		{
+			const double t = mrpt::Clock::toDouble(o->timestamp);
+			if (!d.odometry.t_s.empty() && !(t > d.odometry.t_s.back()))
+				continue;  // a repeated timestamp carries no motion; an earlier one is skipped
+			d.odometry.t_s.push_back(t);
+			d.odometry.x_m.push_back(odo->odometry.x());
+			d.odometry.y_m.push_back(odo->odometry.y());
+			d.odometry.phi_rad.push_back(odo->odometry.phi());
+		}
+		else if (auto gt = std::dynamic_pointer_cast<mrpt::obs::CObservationRobotPose>(o);
+				 gt && o->sensorLabel == labels.truth)
+		{
+			nav::TrajectoryPoint p;
+			p.t_s = mrpt::Clock::toDouble(o->timestamp);
+			if (!d.truth.empty() && !(p.t_s > d.truth.back().t_s)) continue;
+			const mrpt::poses::CPose3D& m = gt->pose.mean;
+			p.x_m = m.x();
+			p.y_m = m.y();
+			p.z_m = m.z();
+			p.yaw_rad = m.yaw();
+			p.q_nb = nav::quatFromYawPitchRoll(m.yaw(), m.pitch(), m.roll());
+			d.truth.push_back(p);
+		}
+	}
+	if (!ideal.empty()) d.fog_ideal = seriesFromObservations(ideal);
+	if (d.odometry.t_s.size() < 2)
+		throw std::runtime_error(path + ": fewer than 2 CObservationOdometry with label '" + labels.odometry + "'");
+	if (d.truth.size() < 2)
+		throw std::runtime_error(path + ": fewer than 2 CObservationRobotPose with label '" + labels.truth + "'");
+	return d;
+}
+
+}  // namespace mrpt_fog::drift

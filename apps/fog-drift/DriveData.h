@@ -1,0 +1,47 @@
+/* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
+#pragma once
+
+/** \file DriveData.h
+ * What fog-drift needs from a vehicle-drive rawlog: the FOG series (label "FOG", with thermal
+ * error), the ideal FOG series ("FOG_IDEAL", optional), wheel odometry (CObservationOdometry
+ * "ODOMETRY") and the truth (CObservationRobotPose "GROUND_TRUTH"), plus the latitude
+ * (metadata latitude_deg or device.latitude_deg). Missing required parts throw
+ * std::runtime_error naming the file and what is missing. */
+
+#include <mrpt_fog/obs/FogSeries.h>
+#include <mrpt_fog_nav/Trajectory.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mrpt_fog::drift
+{
+struct DriveLabels
+{
+	std::string fog = "FOG";
+	std::string fog_ideal = "FOG_IDEAL";
+	std::string odometry = "ODOMETRY";
+	std::string truth = "GROUND_TRUTH";
+};
+
+struct OdometryPoses
+{
+	std::vector<double> t_s, x_m, y_m, phi_rad;  //!< cumulative wheel odometry (UNIX time)
+};
+
+struct DriveData
+{
+	FogSeries fog;  //!< with thermal error
+	std::optional<FogSeries> fog_ideal;  //!< same noise, no thermal error
+	OdometryPoses odometry;
+	nav::Trajectory truth;  //!< UNIX-time poses
+	std::optional<double> latitude_deg;  //!< from the metadata, when present
+};
+
+DriveData readDrive(const std::string& path, const DriveLabels& labels = {});
+
+/** Absolute times [s] (epoch_s + time_s) of a series. */
+std::vector<double> absoluteTimes(const FogSeries& s);
+
+}  // namespace mrpt_fog::drift

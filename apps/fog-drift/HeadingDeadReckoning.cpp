@@ -1,0 +1,75 @@
+/* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
+#include "HeadingDeadReckoning.h"
+
+#include <mrpt_fog/obs/Units.h>
+#include <mrpt_fog_nav/DeadReckoning.h>
+#include <mrpt_fog_nav/EarthModel.h>
+#include <mrpt_fog_nav/Rotation.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace mrpt_fog::drift
+{
+VariantResult deadReckonVariant(const std::vector<double>& t_s, const std::vector<double>& rate_dph,
+								const DriveData& drive, const HeadingOptions& options)
+{
+	if (t_s.size() != rate_dph.size() || t_s.size() < 2)
+		throw std::runtime_error("gyro series: sizes differ or fewer than 2 samples");
+	const auto& odo = drive.odometry;
+	const double t0 = std::max({t_s.front(), odo.t_s.front(), drive.truth.front().t_s});
+	const double t_end = std::min({t_s.back(), odo.t_s.back(), drive.truth.back().t_s});
+	if (!(t_end > t0)) throw std::runtime_error("the gyro, the odometry and the truth do not overlap in time");
+
+	nav::StrapdownOptions so;
+	so.latitude_rad = options.latitude_deg * units::kDegToRad;
+	so.use_transport_rate = options.transport_rate;
+	so.sampling = options.sampling;
+	nav::StrapdownAttitude att(so, nav::StrapdownAttitude::Mode::VerticalOnly);
+	const nav::TrajectoryPoint start = nav::interpolate(drive.truth, t0);
+	att.initialize(t0, nav::quatFromYawPitchRoll(start.yaw_rad, 0, 0));
+	nav::AttitudeTrack track;
+	track.push_back(t0, att.attitude());
+
+	VariantResult out;
+	const double earth_up = nav::earthRateEnu(so.latitude_rad).z();
+	const double dt_truth = 1.0;  // velocity for the transport rate: truth differenced over 1 s
+	for (std::size_t k = 0; k < t_s.size(); ++k)
+	{
+		if (t_s[k] < t0 || (t_s[k] == t0 && options.sampling == nav::RateSampling::IntervalAverage)) continue;
+		if (t_s[k] > t_end) break;
+		if (!std::isfinite(rate_dph[k]))
+			throw std::runtime_error("gyro rate is not finite at sample " + std::to_string(k));
+		const double w = rate_dph[k] * units::kDegPerHourToRadPerSec;
+		Eigen::Vector3d vel = Eigen::Vector3d::Zero();
+		if (options.transport_rate)
+		{
+			const double ta = std::max(drive.truth.front().t_s, t_s[k] - dt_truth / 2);
+			const double tb = std::min(drive.truth.back().t_s, t_s[k] + dt_truth / 2);
+			const auto a = nav::interpolate(drive.truth, ta), b = nav::interpolate(drive.truth, tb);
+			vel = Eigen::Vector3d(b.x_m - a.x_m, b.y_m - a.y_m, b.z_m - a.z_m) / (tb - ta);
+		}
+		att.updateRateZ(t_s[k], w, vel);
+		if (t_s[k] > track.backTime()) track.push_back(t_s[k], att.attitude());
+		out.t_s.push_back(t_s[k]);
+		out.yaw_rate_rad_s.push_back(w - earth_up);
+	}
+
+	// Odometry inside the attitude track; dead reckoning from the truth position.
+	std::vector<double> ot, ox, oy, op;
+	for (std::size_t k = 0; k < odo.t_s.size(); ++k)
+		if (odo.t_s[k] >= t0 && odo.t_s[k] <= track.backTime())
+		{
+			ot.push_back(odo.t_s[k]);
+			ox.push_back(odo.x_m[k]);
+			oy.push_back(odo.y_m[k]);
+			op.push_back(odo.phi_rad[k]);
+		}
+	if (ot.size() < 2) throw std::runtime_error("fewer than 2 odometry samples inside the gyro's time span");
+	const nav::TrajectoryPoint p0 = nav::interpolate(drive.truth, ot.front());
+	out.trajectory = nav::deadReckon2D(ot.front(), p0.x_m, p0.y_m, nav::odometryFromPoses2D(ot, ox, oy, op), track);
+	return out;
+}
+
+}  // namespace mrpt_fog::drift

@@ -1,0 +1,143 @@
+/* A synthetic vehicle drive with closed-form truth, for the fog-drift integration test
+ * (tests/integration/nav.cmake):
+ *
+ *   nav_test_drive write DRIVE.rawlog
+ *       20 min on a circle (v = 10 m/s, one lap per 300 s, latitude 40 deg), 10 Hz:
+ *       "FOG"       = yaw rate + Earth rate Omega sin(40 deg) + bias b0 + b1 t
+ *                     (b0 = 5 deg/h, b1 = 3 deg/h per hour): a known "thermal" error
+ *       "FOG_IDEAL" = yaw rate + Earth rate
+ *       "ODOMETRY"  = wheel odometry whose own heading is 1 % off (curvature 1.01 r) but
+ *                     whose distances are exact: fog-drift must take heading from the gyro
+ *       "GROUND_TRUTH" = the circle at 1 Hz
+ *   nav_test_drive check DRIFT.json
+ *       ideal: heading error < 1e-4 deg and position error < 1e-3 m (constant-rate circle:
+ *              the trapezoid and arc models are exact; the limit is float rounding);
+ *       raw: final heading error = (b0 T + b1 T^2 / 2) / 3600 deg with T = 1200 s
+ *              (= (6000 + 600) / 3600 = 1.8333 deg), to 1e-4 deg.
+ * Exit 0 = pass. */
+#include <mrpt/core/Clock.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CObservationRobotPose.h>
+#include <mrpt_fog/io/FogLogIO.h>
+#include <mrpt_fog/obs/CObservationFOG.h>
+#include <mrpt_fog/obs/FogSeriesConversion.h>
+#include <mrpt_fog/obs/Units.h>
+#include <mrpt_fog/obs/registerAllClasses.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <regex>
+#include <sstream>
+
+using namespace mrpt_fog;
+
+namespace
+{
+constexpr double kEpoch = 1.7e9, kDuration = 1200.0, kDt = 0.1, kLat = 40.0;
+constexpr double kV = 10.0, kR = 2 * units::kPi / 300.0;
+constexpr double kB0_dph = 5.0, kB1_dph_per_h = 3.0;
+
+FogSeries gyro(const std::string& label, bool with_bias)
+{
+	FogSeries s;
+	s.sensor_label = label;
+	s.epoch_s = kEpoch;
+	s.has_axis = {false, false, true};
+	s.thermistors = {{"Ti1", CoilSide::Inner, 0.0}};
+	s.setMetadata("latitude_deg", "40");
+	const int n = static_cast<int>(kDuration / kDt);
+	s.resize(n + 1);
+	for (int k = 0; k <= n; ++k)
+	{
+		const double t = k * kDt;
+		s.time_s[k] = t;
+		double r = kR * units::kRadPerSecToDegPerHour + units::kEarthRate_dph * std::sin(kLat * units::kDegToRad);
+		if (with_bias) r += kB0_dph + kB1_dph_per_h * t / 3600.0;
+		s.rate_dph[2][k] = r;
+		s.temp_C[0][k] = 25.0;
+	}
+	return s;
+}
+
+int write(const std::string& path)
+{
+	std::vector<mrpt::obs::CObservation::Ptr> others;
+	const FogSeries ideal = gyro("FOG_IDEAL", false);
+	const auto ideal_obs = observationsFromSeries(ideal);
+	for (std::size_t k = 0; k < ideal_obs.size(); ++k)
+	{
+		ideal_obs[k]->timestamp = mrpt::Clock::fromDouble(kEpoch + ideal.time_s[k]);
+		others.push_back(ideal_obs[k]);
+	}
+	const double r_odo = 1.01 * kR, radius_odo = kV / r_odo, radius = kV / kR;
+	const int n = static_cast<int>(kDuration / kDt);
+	for (int k = 0; k <= n; ++k)
+	{
+		const double t = k * kDt;
+		auto odo = mrpt::obs::CObservationOdometry::Create();
+		odo->sensorLabel = "ODOMETRY";
+		odo->timestamp = mrpt::Clock::fromDouble(kEpoch + t);
+		odo->odometry = mrpt::poses::CPose2D(radius_odo * std::sin(r_odo * t), radius_odo * (1 - std::cos(r_odo * t)), r_odo * t);
+		others.push_back(odo);
+		if (k % 10 == 0)
+		{
+			auto gt = mrpt::obs::CObservationRobotPose::Create();
+			gt->sensorLabel = "GROUND_TRUTH";
+			gt->timestamp = mrpt::Clock::fromDouble(kEpoch + t);
+			gt->pose.mean = mrpt::poses::CPose3D(radius * std::sin(kR * t), radius * (1 - std::cos(kR * t)), 0, kR * t, 0, 0);
+			others.push_back(gt);
+		}
+	}
+	std::stable_sort(others.begin(), others.end(), [](const auto& a, const auto& b) { return a->timestamp < b->timestamp; });
+	writeFogRawlog(path, gyro("FOG", true), others);
+	std::printf("nav_test_drive: wrote %s\n", path.c_str());
+	return 0;
+}
+
+double jsonNumber(const std::string& text, const std::string& table, const std::string& variant)
+{
+	const std::regex re("\"" + table + "\"\\s*:\\s*\\{[^}]*\"" + variant + "\"\\s*:\\s*([-+0-9.eE]+)");
+	std::smatch m;
+	if (!std::regex_search(text, m, re)) throw std::runtime_error("JSON: no number for " + table + "." + variant);
+	return std::stod(m[1]);
+}
+
+int check(const std::string& json_path)
+{
+	std::ifstream in(json_path);
+	std::stringstream ss;
+	ss << in.rdbuf();
+	const std::string j = ss.str();
+	if (j.empty()) throw std::runtime_error(json_path + ": empty or missing");
+	const double ideal_h = jsonNumber(j, "heading_error_max_deg", "ideal");
+	const double ideal_p = jsonNumber(j, "position_error_max_m", "ideal");
+	const double raw_h = jsonNumber(j, "heading_error_final_deg", "raw");
+	const double expected = (kB0_dph * kDuration + kB1_dph_per_h / 3600.0 * kDuration * kDuration / 2) / 3600.0;
+	std::printf("nav_test_drive: ideal heading max %.3g deg, position max %.3g m; raw heading final %.6f deg "
+				"(closed form %.6f deg)\n",
+				ideal_h, ideal_p, raw_h, expected);
+	const bool ok = ideal_h < 1e-4 && ideal_p < 1e-3 && std::abs(raw_h - expected) < 1e-4;
+	return ok ? 0 : 1;
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	try
+	{
+		registerAllClasses_mrpt_fog();
+		const std::string mode = argc == 3 ? argv[1] : "";
+		if (mode == "write") return write(argv[2]);
+		if (mode == "check") return check(argv[2]);
+		std::cerr << "usage: nav_test_drive write DRIVE.rawlog | check DRIFT.json\n";
+		return 2;
+	}
+	catch (const std::exception& e)
+	{
+		std::cerr << "nav_test_drive: error: " << e.what() << "\n";
+		return 1;
+	}
+}
