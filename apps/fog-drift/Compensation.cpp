@@ -1,18 +1,34 @@
 /* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
 #include "Compensation.h"
 
+#include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/Compensator.h>
 
+#include <cstdio>
 #include <stdexcept>
 
 namespace mrpt_fog::drift
 {
 std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string& cal_path)
 {
-	// The calibration YAML reader (model/CalibrationYaml.h) is not in the tree yet: the
-	// compensated path is wired up to Compensator::compensate and waits for the loader.
-	(void)fog;
-	throw std::runtime_error(cal_path + ": cannot load: the calibration YAML reader is not available in this build");
+	const Calibration cal = loadCalibrationYaml(cal_path);
+	CompensatedSeries out;
+	try
+	{
+		out = compensate(cal, fog);
+	}
+	catch (const std::exception& e)
+	{
+		throw std::runtime_error(cal_path + ": cannot compensate the drive's FOG: " + e.what());
+	}
+	if (out.compensated_dph.size() != fog.size())
+		throw std::runtime_error(cal_path + ": the compensator returned a different number of samples");
+	const auto& c = out.counters;
+	if (c.fallback_samples || c.no_model_samples || c.clamped_samples)
+		std::printf("  compensation: %zu samples, %zu on a fallback model, %zu without model, %zu clamped to the "
+					"calibrated range\n",
+					c.samples, c.fallback_samples, c.no_model_samples, c.clamped_samples);
+	return out.compensated_dph;
 }
 
 }  // namespace mrpt_fog::drift
