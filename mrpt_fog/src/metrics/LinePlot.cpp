@@ -163,7 +163,7 @@ std::vector<double> niceTicks(double lo, double hi, bool log, int target)
 std::string tickLabel(double v)
 {
 	char buf[32];
-	std::snprintf(buf, sizeof(buf), "%.4g", v);
+	std::snprintf(buf, sizeof(buf), "%.6g", v);
 	return buf;
 }
 

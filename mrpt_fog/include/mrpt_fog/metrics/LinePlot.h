@@ -103,7 +103,7 @@ class LinePlot
 /** "Nice" tick positions (1, 2, 5 x 10^k steps) covering [lo, hi] with about `target` ticks;
  * on a log axis the decades (and 2, 5 multiples when fewer than 3 decades). */
 std::vector<double> niceTicks(double lo, double hi, bool log, int target = 6);
-/** Short tick text: %g with up to 4 significant digits. */
+/** Short tick text: %g with up to 6 significant digits. */
 std::string tickLabel(double v);
 
 }  // namespace mrpt_fog

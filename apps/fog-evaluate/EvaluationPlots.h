@@ -1,0 +1,36 @@
+/* fog-evaluate: the PNG figures. */
+#pragma once
+
+/** \file EvaluationPlots.h
+ * fog-evaluate's figures (metrics/PlotCanvas.h), written atomically into a directory:
+ *  - bias_vs_time.png: bias about its mean, samples and tau-s averages, raw and compensated;
+ *    thermistor temperatures below on the same time axis;
+ *  - bias_vs_temperature.png: tau-s averaged bias (about its mean) against the tau-s averaged
+ *    mean coil temperature, in time order (loops show heating/cooling hysteresis);
+ *  - allan_deviation.png: overlapping Allan deviation, log-log, with the fitted IEEE 952 lines.
+ * Each bias is drawn about its own mean so raw (which holds the vertical Earth rate and the
+ * turn-on bias) and compensated output share one axis; the means are in the legend. */
+
+#include "RateEvaluation.h"
+
+#include <string>
+#include <vector>
+
+namespace mrpt_fog::evaluate
+{
+struct PlotInputs
+{
+	const FogSeries* series = nullptr;
+	const std::vector<double>* raw_bias_dph = nullptr;
+	const RateEvaluation* raw = nullptr;
+	const std::vector<double>* comp_bias_dph = nullptr;  //!< nullptr without --cal
+	const RateEvaluation* comp = nullptr;  //!< nullptr without --cal
+	double tau_s = 100.0;
+};
+
+/** Writes the figures into dir (created when missing). Returns the files written. Throws
+ * std::runtime_error naming the file on a write failure. bias_vs_temperature.png is skipped
+ * (not in the list) when the log has no thermistor. */
+std::vector<std::string> writeEvaluationPlots(const std::string& dir, const PlotInputs& in);
+
+}  // namespace mrpt_fog::evaluate
