@@ -13,6 +13,9 @@ TEST(NumberText, ShortestFormReadsBackExactly)
 	EXPECT_EQ(formatNumber(0.1), "0.1");
 	EXPECT_EQ(formatNumber(25.0), "25");
 	EXPECT_EQ(formatNumber(-1e-7), "-1e-07");
+	EXPECT_EQ(formatNumber(1700000000.0), "1700000000");
+	EXPECT_EQ(formatNumber(1700000000.25), "1700000000.25");
+	EXPECT_EQ(formatNumber(0.00012), "0.00012");
 	std::mt19937_64 rng(7);
 	for (int i = 0; i < 100000; i++)
 	{

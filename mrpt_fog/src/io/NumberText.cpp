@@ -9,8 +9,13 @@ namespace mrpt_fog::io
 std::string formatNumber(double v)
 {
 	if (std::isnan(v)) return "nan";
-	char buf[64];
-	const auto r = std::to_chars(buf, buf + sizeof(buf), v);
+	char buf[400];
+	// Plain decimals for everyday magnitudes (UNIX times, temperatures), exponents otherwise;
+	// either form is the shortest that reads back to exactly v.
+	const double a = std::fabs(v);
+	const bool fixed = v == 0.0 || (a >= 1e-4 && a < 1e16);
+	const auto r = fixed ? std::to_chars(buf, buf + sizeof(buf), v, std::chars_format::fixed)
+						 : std::to_chars(buf, buf + sizeof(buf), v);
 	return std::string(buf, r.ptr);
 }
 

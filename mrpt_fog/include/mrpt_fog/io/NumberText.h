@@ -11,7 +11,8 @@
 
 namespace mrpt_fog::io
 {
-/** Shortest decimal text that parses back to exactly `v` ("0.1", "1e-07", "nan", "inf"). */
+/** Shortest text that parses back to exactly `v`: plain decimals for 1e-4 <= |v| < 1e16
+ * ("0.1", "1700000000"), exponent form otherwise ("1e-07"); "nan", "inf". */
 std::string formatNumber(double v);
 
 /** Parses the whole of `text` (surrounding blanks allowed, a leading '+' accepted, "nan" and

@@ -1,0 +1,227 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+/* fog-convert: FOG logs between lab CSV and MRPT rawlog (by file extension), with an optional
+ * stock-MRPT output (CObservationIMU + CObservationRawDAQ) readable without the plugin. */
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt_fog/common/JsonWriter.h>
+#include <mrpt_fog/io/FogLogIO.h>
+#include <mrpt_fog/io/NumberText.h>
+#include <mrpt_fog/obs/CObservationFOG.h>
+
+#include <cmath>
+#include <iostream>
+#include <map>
+
+#include "AppMain.h"
+
+using namespace mrpt_fog;
+
+namespace
+{
+const char* const kFormatHelp = R"(
+WHAT IT DOES
+  Converts a FOG log between the lab CSV format and MRPT rawlogs, chosen by the file
+  extensions: .csv / .csv.gz (gzip) <-> .rawlog (also rawlog -> rawlog, csv -> csv).
+  Readers check the whole file: a truncated or partly unreadable input is an error (never a
+  silently shorter output), and on any error no file is left under the -o name.
+
+CSV FORMAT
+  '# key: value' metadata lines, then one header row, then one row per sample:
+    # sensor: FOG                              (sensor label; default FOG)
+    # epoch_s: 1700000000                      (UNIX time [s] of time_s = 0)
+    # latitude_deg: 30.5
+    # thermistor Ti1: side=inner angle_deg=0   (side = inner|outer|other)
+    # thermistor To1: side=outer angle_deg=0
+    time_s,rate_z_dph,temp_Ti1_C,temp_To1_C
+    0,0.1234,25.01,25.30
+    0.1,0.1240,,25.31                          (empty cell = thermistor dropout)
+  Columns: time_s [s] (required, strictly increasing); rate_x_dph, rate_y_dph, rate_z_dph
+  [deg/h] (at least one); temp_<name>_C [degC] per thermistor; optional table_rate_dph,
+  field_uT, power (1 on, 0 off). Unknown '#' keys are kept. CRLF line ends are accepted.
+
+RAWLOG
+  gz-compressed, observations-only: a CObservationComment with the run metadata, then one
+  mrpt_fog::CObservationFOG per sample; other observations (odometry, IMU, other FOG labels)
+  are kept, merged by timestamp. Timestamps resolve 100 ns. MRPT tools read it with the
+  plugin: rawlog-edit -p /path/to/libmrpt_fog.so --info -i run.rawlog
+  --to-stock writes stock classes instead (readable by any MRPT tool without the plugin):
+  per sample a CObservationIMU (IMU_WX/WY/WZ [rad/s], mean temperature in IMU_TEMPERATURE)
+  and a CObservationRawDAQ '<label>_THERMISTORS' (AIN_double, one channel per thermistor,
+  NaN = dropout).
+
+EXAMPLES
+  fog-convert -i chamber.csv -o chamber.rawlog --json summary.json
+  fog-convert -i drive.rawlog --label FOG_IDEAL -o ideal.csv
+  fog-convert -i chamber.rawlog -o chamber_stock.rawlog --to-stock
+)";
+
+/** TCLAP's usage followed by the format summary and examples. */
+class ConvertHelpOutput : public TCLAP::StdOutput
+{
+   public:
+	void usage(TCLAP::CmdLineInterface& c) override
+	{
+		TCLAP::StdOutput::usage(c);
+		std::cout << kFormatHelp;
+	}
+	/** One-line usage error (TCLAP's default prints a page). */
+	void failure(TCLAP::CmdLineInterface&, TCLAP::ArgException& e) override
+	{
+		std::cerr << "fog-convert: error: " << e.error() << " (" << e.argId() << "); see fog-convert --help\n";
+		failed = true;
+	}
+	bool failed = false;
+};
+
+bool isRawlog(const std::string& path) { return fileExtension(path) == ".rawlog"; }
+
+void requireKnownExtension(const std::string& path, const char* what)
+{
+	const std::string ext = fileExtension(path);
+	if (ext != ".rawlog" && ext != ".csv" && ext != ".csv.gz")
+		throw std::runtime_error(std::string(what) + " '" + path + "': unknown file type '" + ext +
+								 "' (expected .rawlog, .csv or .csv.gz)");
+}
+
+std::size_t dropoutsOf(const std::vector<double>& column)
+{
+	std::size_t n = 0;
+	for (double v : column)
+		if (std::isnan(v)) n++;
+	return n;
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	return app::runApp("fog-convert", [&]() -> int {
+		TCLAP::CmdLine cmd(
+			"fog-convert: FOG logs between lab CSV (.csv, .csv.gz) and MRPT rawlog (.rawlog), by file "
+			"extension. Format summary and examples below.",
+			' ', "0.1");
+		ConvertHelpOutput help_output;
+		cmd.setOutput(&help_output);
+		TCLAP::ValueArg<std::string> arg_in("i", "input", "Input log (.csv, .csv.gz or .rawlog)", true, "", "IN", cmd);
+		TCLAP::ValueArg<std::string> arg_out("o", "output", "Output log (.csv, .csv.gz or .rawlog)", true, "", "OUT", cmd);
+		TCLAP::ValueArg<std::string> arg_label("", "label",
+			"FOG sensor label to take from a rawlog holding several (e.g. FOG_IDEAL)", false, "", "L", cmd);
+		TCLAP::ValueArg<std::string> arg_json("", "json", "Write a JSON summary (counts, time span, sensors, "
+			"thermistors, axes, dropouts) to FILE", false, "", "FILE", cmd);
+		TCLAP::SwitchArg arg_stock("", "to-stock", "Write stock MRPT CObservationIMU + CObservationRawDAQ instead "
+			"of CObservationFOG (output must be .rawlog)", cmd);
+		if (!cmd.parse(argc, argv)) return help_output.failed ? app::kExitUsage : app::kExitOk;  // error or --help
+
+		const std::string in = arg_in.getValue(), out = arg_out.getValue();
+		requireKnownExtension(in, "input");
+		requireKnownExtension(out, "output");
+		if (arg_stock.getValue() && !isRawlog(out))
+			throw std::runtime_error("--to-stock writes a rawlog: the output '" + out + "' must end in .rawlog");
+
+		// Read.
+		FogRawlogContents input;
+		if (isRawlog(in)) input = readFogRawlog(in, arg_label.getValue());
+		else
+		{
+			input.fog = readFogLog(in, arg_label.getValue());
+			input.objects_read = 0;
+		}
+		const FogSeries& s = input.fog;
+
+		// Write.
+		std::size_t objects_written = 0;
+		std::size_t others_written = 0;
+		if (!isRawlog(out))
+		{
+			writeFogCsv(out, s);
+			if (!input.others.empty())
+				std::cerr << "fog-convert: note: " << input.others.size()
+						  << " other observations of the rawlog (not FOG sensor '" << s.sensor_label
+						  << "') have no place in a CSV and were not written\n";
+		}
+		else if (arg_stock.getValue())
+		{
+			std::vector<mrpt::obs::CObservation::Ptr> others;
+			for (const auto& o : input.others)
+			{
+				if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o))
+				{
+					others.push_back(f->toIMU());
+					others.push_back(f->toRawDAQ());
+				}
+				else others.push_back(o);
+			}
+			const auto objs = mergeByTimestamp(stockObservationsForRawlog(s), others);
+			writeRawlogObservations(out, objs);
+			objects_written = objs.size();
+			others_written = others.size();
+		}
+		else
+		{
+			writeFogRawlog(out, s, input.others);
+			objects_written = 1 + s.size() + input.others.size();
+			others_written = input.others.size();
+		}
+
+		// Summary.
+		std::size_t dropouts = 0;
+		for (const auto& c : s.temp_C) dropouts += dropoutsOf(c);
+		std::string axes;
+		for (int a = 0; a < 3; a++)
+			if (s.has_axis[a]) axes += axes.empty() ? "" : ",", axes += axisLetter(static_cast<GyroAxis>(a));
+		const double t0 = s.time_s.front(), t1 = s.time_s.back();
+		std::cout << "fog-convert: " << in << " -> " << out << (arg_stock.getValue() ? " (stock IMU+DAQ)" : "")
+				  << "\n  sensor '" << s.sensor_label << "': " << s.size() << " samples, axes " << axes << ", "
+				  << s.thermistorCount() << " thermistors, " << dropouts << " dropouts, time "
+				  << io::formatNumber(t0) << " .. " << io::formatNumber(t1) << " s\n";
+		if (isRawlog(out)) std::cout << "  wrote " << objects_written << " objects (" << others_written << " other observations)\n";
+
+		if (!arg_json.getValue().empty())
+		{
+			std::map<std::string, std::size_t> fog_labels{{s.sensor_label, s.size()}};
+			std::map<std::string, std::size_t> other_classes;
+			for (const auto& o : input.others)
+			{
+				if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o)) fog_labels[f->sensorLabel]++;
+				other_classes[o->GetRuntimeClass()->className]++;
+			}
+			JsonValue j = JsonValue::object();
+			j["input"] = in;
+			j["output"] = out;
+			j["output_kind"] = isRawlog(out) ? (arg_stock.getValue() ? "rawlog-stock" : "rawlog") : "csv";
+			j["sensor"] = s.sensor_label;
+			j["samples"] = static_cast<unsigned long>(s.size());
+			if (isRawlog(in)) j["input_objects"] = static_cast<unsigned long>(input.objects_read);
+			j["other_observations"] = static_cast<unsigned long>(input.others.size());
+			j["objects_written"] = static_cast<unsigned long>(objects_written);
+			JsonValue& sensors = j["fog_sensors"] = JsonValue::object();
+			for (const auto& [label, n] : fog_labels) sensors[label] = static_cast<unsigned long>(n);
+			JsonValue& classes = j["other_classes"] = JsonValue::object();
+			for (const auto& [cls, n] : other_classes) classes[cls] = static_cast<unsigned long>(n);
+			j["epoch_s"] = s.epoch_s;
+			j["time_start_s"] = t0;
+			j["time_end_s"] = t1;
+			j["time_span_s"] = t1 - t0;
+			JsonValue& ax = j["axes"] = JsonValue::array();
+			for (int a = 0; a < 3; a++)
+				if (s.has_axis[a]) ax.push_back(std::string(1, axisLetter(static_cast<GyroAxis>(a))));
+			JsonValue& th = j["thermistors"] = JsonValue::array();
+			for (std::size_t i = 0; i < s.thermistorCount(); i++)
+			{
+				JsonValue t = JsonValue::object();
+				t["name"] = s.thermistors[i].name;
+				t["side"] = toString(s.thermistors[i].side);
+				t["angle_deg"] = s.thermistors[i].angle_deg;
+				t["dropouts"] = static_cast<unsigned long>(dropoutsOf(s.temp_C[i]));
+				th.push_back(t);
+			}
+			j["dropouts"] = static_cast<unsigned long>(dropouts);
+			JsonValue& opt = j["optional_columns"] = JsonValue::array();
+			if (!s.table_rate_dph.empty()) opt.push_back("table_rate_dph");
+			if (!s.field_uT.empty()) opt.push_back("field_uT");
+			if (!s.power.empty()) opt.push_back("power");
+			writeTextFileAtomically(arg_json.getValue(), j.dump());
+		}
+		return app::kExitOk;
+	});
+}

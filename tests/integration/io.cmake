@@ -1,0 +1,32 @@
+# I/O integration tests: fog-convert on bad inputs, MRPT's rawlog-edit reading our rawlogs (with
+# libmrpt_fog.so as plugin, and the stock form without it), and an out-of-tree find_package
+# consumer built against the installed package. Scripts: tests/io/integration/*.cmake.
+set(io_scripts ${FOG_SOURCE_DIR}/tests/io/integration)
+set(io_data ${FOG_SOURCE_DIR}/tests/data/io)
+set(io_work ${CMAKE_CURRENT_BINARY_DIR}/io)
+
+if(TARGET fog-convert)
+  add_test(NAME io_convert_bad_inputs COMMAND ${CMAKE_COMMAND} -DFOG_CONVERT=$<TARGET_FILE:fog-convert>
+    -DDATA=${io_data} -DWORK=${io_work}/bad_inputs -P ${io_scripts}/convert_bad_inputs.cmake)
+  set_tests_properties(io_convert_bad_inputs PROPERTIES LABELS "io;integration")
+
+  find_program(FOG_RAWLOG_EDIT rawlog-edit)
+  if(FOG_RAWLOG_EDIT)
+    foreach(mode plugin-info export-txt stock-info)
+      add_test(NAME io_rawlog_edit_${mode} COMMAND ${CMAKE_COMMAND} -DFOG_CONVERT=$<TARGET_FILE:fog-convert>
+        -DRAWLOG_EDIT=${FOG_RAWLOG_EDIT} -DPLUGIN=$<TARGET_FILE:mrpt_fog> -DDATA=${io_data}
+        -DWORK=${io_work}/rawlog_edit_${mode} -DMODE=${mode} -P ${io_scripts}/rawlog_edit.cmake)
+      set_tests_properties(io_rawlog_edit_${mode} PROPERTIES LABELS "io;integration")
+    endforeach()
+  else()
+    # Fail loudly rather than skip: the acceptance test needs MRPT's rawlog-edit (mrpt-apps).
+    message(WARNING "rawlog-edit not found: install the Debian package mrpt-apps (scripts/setup.sh)")
+    add_test(NAME io_rawlog_edit_missing COMMAND ${CMAKE_COMMAND} -E false)
+    set_tests_properties(io_rawlog_edit_missing PROPERTIES LABELS "io;integration")
+  endif()
+endif()
+
+add_test(NAME io_find_package_consumer COMMAND ${CMAKE_COMMAND} -DBUILD_DIR=${PROJECT_BINARY_DIR}
+  -DCONSUMER_SRC=${FOG_SOURCE_DIR}/tests/consumer -DWORK=${io_work}/consumer
+  -DCMAKE_GENERATOR=${CMAKE_GENERATOR} -P ${io_scripts}/find_package_consumer.cmake)
+set_tests_properties(io_find_package_consumer PROPERTIES LABELS "io;integration" TIMEOUT 600)
