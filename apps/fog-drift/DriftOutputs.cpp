@@ -47,6 +47,7 @@ void writeDriftJson(const std::string& path, const nav::DriftReport& report, con
 	j["rate_sampling"] = ctx.rate_sampling;
 	j["input"] = ctx.input;
 	j["calibration"] = ctx.calibration.empty() ? JsonValue() : JsonValue(ctx.calibration);
+	j["calibration_earth_rate_dph"] = ctx.calibration_earth_rate_dph;
 	writeTextFileAtomically(path, j.dump());
 }
 

@@ -23,6 +23,7 @@ struct DriftContext
 	double earth_rate_removed_dph = 0.0;
 	bool transport_rate = false;
 	std::string rate_sampling;
+	double calibration_earth_rate_dph = 0.0;  //!< vertical Earth rate the calibration's bias held
 };
 
 void writeDriftJson(const std::string& path, const nav::DriftReport& report, const DriftContext& ctx);

@@ -65,6 +65,16 @@ int main(int argc, char** argv)
 											 false, "", "F.rawlog", cmd);
 		TCLAP::ValueArg<double> lat("", "latitude-deg", "latitude [deg] (default: from the drive's metadata)", false,
 									NAN, "DEG", cmd);
+		TCLAP::ValueArg<double> cal_lat("", "cal-latitude-deg",
+										"latitude [deg] of the calibration runs (default: the drive's): a static "
+										"calibration's bias absorbs the vertical Earth rate there, which the "
+										"compensator then removes; fog-drift adds it back before its own "
+										"Earth-rate removal so that it is not removed twice",
+										false, NAN, "DEG", cmd);
+		TCLAP::SwitchArg cal_no_earth("", "cal-no-earth-rate",
+									  "the calibration runs' table rate already included the Earth rate (their bias "
+									  "does not contain it)",
+									  cmd);
 		TCLAP::SwitchArg transport("", "transport-rate",
 								   "also remove the vertical transport rate (for real drives over the curved Earth; "
 								   "the simulator's drive is flat-Earth)",
@@ -96,7 +106,16 @@ int main(int argc, char** argv)
 		};
 		const std::vector<double> t_fog = drift::absoluteTimes(drive.fog);
 		run("raw", t_fog, drive.fog.primaryRate_dph());
-		if (!cal.getValue().empty()) run("compensated", t_fog, drift::compensatedRate_dph(drive.fog, cal.getValue()));
+		double cal_earth_dph = 0.0;  // vertical Earth rate inside the calibration's bias
+		if (!cal.getValue().empty())
+		{
+			const double cal_lat_deg = std::isfinite(cal_lat.getValue()) ? cal_lat.getValue() : hopt.latitude_deg;
+			if (!(std::abs(cal_lat_deg) <= 90)) throw std::runtime_error("--cal-latitude-deg: must be within [-90, 90]");
+			if (!cal_no_earth.getValue()) cal_earth_dph = units::kEarthRate_dph * std::sin(cal_lat_deg * units::kDegToRad);
+			std::vector<double> comp = drift::compensatedRate_dph(drive.fog, cal.getValue());
+			for (double& r : comp) r += cal_earth_dph;
+			run("compensated", t_fog, comp);
+		}
 		if (drive.fog_ideal) run("ideal", drift::absoluteTimes(*drive.fog_ideal), drive.fog_ideal->primaryRate_dph());
 
 		const nav::DriftReport rep = nav::computeDriftReport(drive.truth, variants);
@@ -119,6 +138,7 @@ int main(int argc, char** argv)
 			ctx.earth_rate_removed_dph = units::kEarthRate_dph * std::sin(hopt.latitude_deg * units::kDegToRad);
 			ctx.transport_rate = hopt.transport_rate;
 			ctx.rate_sampling = sampling.getValue();
+			ctx.calibration_earth_rate_dph = cal_earth_dph;
 			drift::writeDriftJson(json.getValue(), rep, ctx);
 		}
 		if (!plots.getValue().empty()) drift::writeDriftPlots(plots.getValue(), drive.truth, variants, rep);

@@ -34,15 +34,16 @@ set_tests_properties(nav.pf_localization.compare PROPERTIES FIXTURES_REQUIRED na
 
 # fog-drift end to end on a synthetic drive with closed-form truth (tests/nav/drive/TestDrive.cpp):
 # the ideal gyro must reproduce the truth, the raw gyro's final heading error must equal the
-# integral of its known bias.
+# integral of its known thermal bias, and the compensated one (calibration fitted on a static
+# chamber run of the same law) must come back to the truth.
 if(TARGET fog-drift)
   add_executable(nav_test_drive ${FOG_SOURCE_DIR}/tests/nav/drive/TestDrive.cpp)
   target_link_libraries(nav_test_drive PRIVATE mrpt_fog)
   set(NAV_DRIVE_DIR ${CMAKE_CURRENT_BINARY_DIR}/nav_drive)
   file(MAKE_DIRECTORY ${NAV_DRIVE_DIR})
-  add_test(NAME nav.fog_drift.write_drive COMMAND nav_test_drive write ${NAV_DRIVE_DIR}/drive.rawlog)
+  add_test(NAME nav.fog_drift.write_drive COMMAND nav_test_drive write ${NAV_DRIVE_DIR}/drive.rawlog ${NAV_DRIVE_DIR}/cal.yaml)
   set_tests_properties(nav.fog_drift.write_drive PROPERTIES FIXTURES_SETUP nav_drive LABELS "nav;integration")
-  add_test(NAME nav.fog_drift.run COMMAND fog-drift -i ${NAV_DRIVE_DIR}/drive.rawlog --json ${NAV_DRIVE_DIR}/drift.json
+  add_test(NAME nav.fog_drift.run COMMAND fog-drift -i ${NAV_DRIVE_DIR}/drive.rawlog --cal ${NAV_DRIVE_DIR}/cal.yaml --json ${NAV_DRIVE_DIR}/drift.json
     --plots ${NAV_DRIVE_DIR}/plots --odometry-out ${NAV_DRIVE_DIR}/odometry.rawlog)
   set_tests_properties(nav.fog_drift.run PROPERTIES FIXTURES_REQUIRED nav_drive FIXTURES_SETUP nav_drift_json
     LABELS "nav;integration")
