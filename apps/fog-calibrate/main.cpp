@@ -1,0 +1,197 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+/* fog-calibrate: fits the thermal-bias model of a FOG to one or more chamber runs and writes a
+ * calibration YAML (model, fallbacks, ranges, statistics). Thin main over model/Calibration.h. */
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt_fog/common/JsonWriter.h>
+#include <mrpt_fog/io/FogLogIO.h>
+#include <mrpt_fog/model/Calibration.h>
+#include <mrpt_fog/model/CalibrationYaml.h>
+
+#include <cstdio>
+#include <iostream>
+
+#include "AppMain.h"
+
+using namespace mrpt_fog;
+
+namespace
+{
+const char* const kHelp = R"(
+WHAT IT DOES
+  Fits bias_dph = f(thermistor temperatures, their rates) to static chamber runs (the gyro
+  output IS the bias; an applied table rate column is subtracted) and writes a calibration
+  YAML for fog-compensate / fog-evaluate / fog-drift. Every figure is printed twice, side by
+  side: IN-SAMPLE (the data the model was fitted on: optimistic) and HELD-OUT (data the model
+  did not see: what to expect in use). Held-out = leave-one-run-out with several -i runs,
+  blocked k-fold with one run, plus the --validate run if given.
+
+MODEL PRESETS (--model)
+  multipoint            seed eq. 2: per thermistor T^1..T^5 and dT/dt^1..^3 (all thermistors)
+  multipoint:Ti1,To1    the same on chosen thermistors
+  M1[:A]  M2[:A]        seed eqs. 3/4: poly5(T) [+ poly3(dT/dt)] of one thermistor
+  M3[:IN,OUT]           seed eq. 5: M2(IN) + poly3(IN - OUT)
+  M4[:IN,OUT]           seed eq. 6: poly3(IN - OUT) + poly3(d/dt (IN - OUT))
+  points:K              multipoint on the best K-thermistor subset (by held-out error)
+  terms:T(Ti1)^1;dT/dt(Ti1)^1;dT(Ti1-To1)^1   an explicit term list
+  Append @T/R to change the orders, e.g. multipoint@3/1.
+
+HOW THE FIT GUARDS AGAINST OVER-FITTING (--selection)
+  auto (default): features normalised to [-1, 1]; whole signal groups (e.g. all powers of
+    T(Ti1)) are added one at a time, and a ridge value picked, only when they lower the
+    cross-validated (held-out) error. More thermistors can then not make that error worse.
+  none: every preset term, plain least squares (plus --ridge): the seed's method; with several
+    collinear thermistors it fits the calibration run and fails on others.
+  The fit refuses (with the reason) too few samples, a temperature span too narrow for the
+  polynomial order, and a rank-deficient system with plain least squares.
+
+RATES
+  dT/dt from a causal local line over the trailing --window seconds (default 60; delay about
+  window/2), the same estimator fog-compensate runs in real time. --estimator savgol uses a
+  centred Savitzky-Golay window instead (studies only: such a calibration cannot compensate in
+  real time).
+
+EXAMPLES
+  fog-calibrate -i datasets/chamber_A.rawlog --model multipoint -o cal.yaml --validate datasets/chamber_B.rawlog
+  fog-calibrate -i runA.csv -i runB.csv --model points:2 -o cal2.yaml --json fit.json
+  fog-calibrate -i runA.csv --model M3:Ti1,To1 --selection none -o m3.yaml
+)";
+
+class HelpOutput : public TCLAP::StdOutput
+{
+   public:
+	void usage(TCLAP::CmdLineInterface& c) override
+	{
+		TCLAP::StdOutput::usage(c);
+		std::cout << kHelp;
+	}
+	/** One-line usage error (TCLAP's default prints a page). */
+	void failure(TCLAP::CmdLineInterface&, TCLAP::ArgException& e) override
+	{
+		std::cerr << "fog-calibrate: error: " << e.error() << " (" << e.argId() << "); see fog-calibrate --help\n";
+		failed = true;
+	}
+	bool failed = false;
+};
+
+std::string fmt(double v, const char* f = "%.6g")
+{
+	char b[64];
+	std::snprintf(b, sizeof(b), f, v);
+	return b;
+}
+
+void printFigures(const std::vector<const FitFigures*>& figs)
+{
+	std::printf("  %-28s", "figure [deg/h]");
+	for (const auto* f : figs) std::printf(" %-34s", f->label.c_str());
+	std::printf("\n");
+	const auto row = [&](const char* name, double FitFigures::*m) {
+		std::printf("  %-28s", name);
+		for (const auto* f : figs) std::printf(" %-34s", fmt(f->*m).c_str());
+		std::printf("\n");
+	};
+	row("raw stability (tau avg)", &FitFigures::raw_stability_dph);
+	row("compensated stability", &FitFigures::stability_dph);
+	row("raw range (tau avg)", &FitFigures::raw_range_dph);
+	row("compensated range", &FitFigures::range_dph);
+	row("compensated RMS", &FitFigures::rms_dph);
+}
+
+JsonValue figuresJson(const FitFigures& f)
+{
+	JsonValue j = JsonValue::object();
+	j["label"] = f.label;
+	j["valid"] = f.valid;
+	j["samples"] = static_cast<unsigned long>(f.samples);
+	j["tau_s"] = f.tau_s;
+	j["raw"]["stability_dph"] = f.raw_stability_dph;
+	j["raw"]["range_dph"] = f.raw_range_dph;
+	j["compensated"]["stability_dph"] = f.stability_dph;
+	j["compensated"]["range_dph"] = f.range_dph;
+	j["compensated"]["rms_dph"] = f.rms_dph;
+	return j;
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	return app::runApp("fog-calibrate", [&]() -> int {
+		TCLAP::CmdLine cmd("fog-calibrate: fit the FOG thermal-bias model to chamber runs and write a calibration "
+						   "YAML. Presets, the over-fitting guard and examples below.",
+						   ' ', "0.1");
+		HelpOutput help;
+		cmd.setOutput(&help);
+		TCLAP::MultiArg<std::string> arg_in("i", "input", "Calibration run (.rawlog, .csv, .csv.gz); repeat for several", true, "RUN", cmd);
+		TCLAP::ValueArg<std::string> arg_model("", "model", "Model preset (see below)", false, "multipoint", "PRESET", cmd);
+		TCLAP::ValueArg<std::string> arg_out("o", "output", "Calibration YAML to write", true, "", "CAL.yaml", cmd);
+		TCLAP::ValueArg<std::string> arg_val("", "validate", "Independent run for held-out figures", false, "", "RUN", cmd);
+		TCLAP::ValueArg<std::string> arg_json("", "json", "Write the figures as JSON", false, "", "FILE", cmd);
+		TCLAP::ValueArg<std::string> arg_label("", "label", "FOG sensor label in rawlogs with several", false, "", "L", cmd);
+		TCLAP::ValueArg<std::string> arg_sel("", "selection", "auto (default) or none", false, "auto", "auto|none", cmd);
+		TCLAP::ValueArg<double> arg_ridge("", "ridge", "Fixed ridge for --selection none (relative)", false, 0.0, "X", cmd);
+		TCLAP::ValueArg<std::string> arg_est("", "estimator", "Rate estimator: causal (default) or savgol", false, "causal", "KIND", cmd);
+		TCLAP::ValueArg<double> arg_window("", "window", "Rate window [s]", false, 60.0, "S", cmd);
+		TCLAP::ValueArg<int> arg_order("", "savgol-order", "Savitzky-Golay polynomial order (1..4)", false, 2, "N", cmd);
+		TCLAP::ValueArg<unsigned> arg_folds("", "folds", "Cross-validation folds for a single run", false, 5, "K", cmd);
+		TCLAP::ValueArg<double> arg_tau("", "tau", "Averaging time of the stability figures [s]", false, 100.0, "S", cmd);
+		TCLAP::SwitchArg arg_nofb("", "no-fallbacks", "Do not fit per-thermistor fallback models", cmd);
+		if (!cmd.parse(argc, argv)) return help.failed ? app::kExitUsage : app::kExitOk;  // error or --help
+
+		FitOptions opt;
+		opt.selection = arg_sel.getValue();
+		opt.ridge = arg_ridge.getValue();
+		opt.rate_estimator.kind = arg_est.getValue();
+		opt.rate_estimator.window_s = arg_window.getValue();
+		opt.rate_estimator.poly_order = opt.rate_estimator.kind == "savgol" ? arg_order.getValue() : 1;
+		opt.folds = arg_folds.getValue();
+		opt.tau_s = arg_tau.getValue();
+		opt.fallbacks = !arg_nofb.getValue();
+
+		std::vector<FogSeries> runs;
+		for (const auto& path : arg_in.getValue()) runs.push_back(readFogLog(path, arg_label.getValue()));
+		Calibration cal = fitCalibration(runs, arg_model.getValue(), opt, arg_in.getValue());
+		if (!arg_val.getValue().empty())
+		{
+			const FogSeries val = readFogLog(arg_val.getValue(), arg_label.getValue());
+			cal.validation = evaluateCalibration(cal, val, "validation run " + arg_val.getValue(), opt.tau_s);
+		}
+		else
+			cal.validation.label = "validation run (none given)";
+		saveCalibrationYaml(cal, arg_out.getValue());
+
+		const auto& m = cal.model;
+		std::printf("fog-calibrate: %zu run(s), preset %s, selection %s, rates %s\n", runs.size(), cal.preset.c_str(),
+					cal.selection.c_str(), cal.rate_estimator.describe().c_str());
+		std::printf("  model: %zu terms (%zu thermistors), ridge %g, condition number %.3g, rank %zu, %zu samples\n",
+					m.features.termCount(), m.features.thermistors().size(), m.ridge, m.condition_number,
+					m.numerical_rank, m.samples);
+		std::printf("  fallbacks: %zu (one per thermistor of the model)\n", cal.fallbacks.size());
+		std::printf("  tau = %g s\n", opt.tau_s);
+		std::vector<const FitFigures*> figs{&cal.in_sample, &cal.held_out};
+		if (!arg_val.getValue().empty()) figs.push_back(&cal.validation);
+		printFigures(figs);
+		std::printf("  wrote %s\n", arg_out.getValue().c_str());
+
+		if (!arg_json.getValue().empty())
+		{
+			JsonValue j = JsonValue::object();
+			j["preset"] = cal.preset;
+			j["selection"] = cal.selection;
+			j["rate_estimator"] = cal.rate_estimator.describe();
+			j["tau_s"] = opt.tau_s;
+			j["terms"] = static_cast<unsigned long>(m.features.termCount());
+			JsonValue& names = j["term_names"] = JsonValue::array();
+			for (const auto& n : m.features.termNames()) names.push_back(n);
+			j["condition_number"] = m.condition_number;
+			j["ridge"] = m.ridge;
+			j["samples"] = static_cast<unsigned long>(m.samples);
+			j["in_sample"] = figuresJson(cal.in_sample);
+			j["held_out"] = figuresJson(cal.held_out);
+			if (!arg_val.getValue().empty()) j["validation"] = figuresJson(cal.validation);
+			j["calibration"] = arg_out.getValue();
+			writeTextFileAtomically(arg_json.getValue(), j.dump());
+		}
+		return app::kExitOk;
+	});
+}
