@@ -9,6 +9,9 @@ if(TARGET fog-convert)
   add_test(NAME io_convert_bad_inputs COMMAND ${CMAKE_COMMAND} -DFOG_CONVERT=$<TARGET_FILE:fog-convert>
     -DDATA=${io_data} -DWORK=${io_work}/bad_inputs -P ${io_scripts}/convert_bad_inputs.cmake)
   set_tests_properties(io_convert_bad_inputs PROPERTIES LABELS "io;integration")
+  add_test(NAME io_convert_roundtrip COMMAND ${CMAKE_COMMAND} -DFOG_CONVERT=$<TARGET_FILE:fog-convert>
+    -DDATA=${io_data} -DWORK=${io_work}/roundtrip -P ${io_scripts}/convert_roundtrip.cmake)
+  set_tests_properties(io_convert_roundtrip PROPERTIES LABELS "io;integration")
 
   find_program(FOG_RAWLOG_EDIT rawlog-edit)
   if(FOG_RAWLOG_EDIT)

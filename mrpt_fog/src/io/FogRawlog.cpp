@@ -115,7 +115,7 @@ FogRawlogContents readFogRawlog(const std::string& path, const std::string& fog_
 		if (fog_counts.empty())
 			throw FogIoError(path + ": no CObservationFOG in the file (" + std::to_string(objects) + " objects read)");
 		if (fog_counts.size() > 1)
-			throw FogIoError(path + ": several FOG sensors " + labelList(fog_counts) + "; choose one by its label");
+			throw FogIoError(path + ": several FOG sensors " + labelList(fog_counts) + "; choose one by its label (fog-convert --label L)");
 		label = fog_counts.begin()->first;
 	}
 	else if (!fog_counts.count(label))
