@@ -49,6 +49,23 @@ if(TARGET fog-drift)
     LABELS "nav;integration")
   add_test(NAME nav.fog_drift.check COMMAND nav_test_drive check ${NAV_DRIVE_DIR}/drift.json)
   set_tests_properties(nav.fog_drift.check PROPERTIES FIXTURES_REQUIRED nav_drift_json LABELS "nav;integration")
+  # fog-drift's --odometry-out (the compensated trajectory) read by pf-localization: the circle.
+  set(NAV_PF_RAWLOG ${NAV_DRIVE_DIR}/odometry.rawlog)
+  set(NAV_PF_LOGDIR ${NAV_DRIVE_DIR}/LOG_LOCALIZATION)
+  configure_file(${FOG_TEST_DATA_DIR}/nav/pf_localization_odometry.ini.in ${NAV_DRIVE_DIR}/pf.ini @ONLY)
+  file(READ ${NAV_DRIVE_DIR}/pf.ini nav_pf_ini)
+  string(REGEX REPLACE "initial_odo_x=[^\n]*\ninitial_odo_y=[^\n]*\ninitial_odo_phi=[^\n]*\n"
+    "initial_odo_x=0\ninitial_odo_y=0\ninitial_odo_phi=0\n" nav_pf_ini "${nav_pf_ini}")
+  string(REPLACE "particles_count=100" "particles_count=20" nav_pf_ini "${nav_pf_ini}")
+  file(WRITE ${NAV_DRIVE_DIR}/pf.ini "${nav_pf_ini}")
+  add_test(NAME nav.fog_drift.pf_localization
+    COMMAND sh -c "'${NAV_PF_LOCALIZATION}' '${NAV_DRIVE_DIR}/pf.ini' < /dev/null > pf.log"
+    WORKING_DIRECTORY ${NAV_DRIVE_DIR})
+  set_tests_properties(nav.fog_drift.pf_localization PROPERTIES FIXTURES_REQUIRED nav_drift_json
+    FIXTURES_SETUP nav_drift_pf TIMEOUT 300 ENVIRONMENT "DISPLAY=" LABELS "nav;integration")
+  add_test(NAME nav.fog_drift.pf_check
+    COMMAND nav_pf_check circle ${NAV_DRIVE_DIR}/LOG_LOCALIZATION_000_0000020/odo_est.txt 12001 477.4648292756860)
+  set_tests_properties(nav.fog_drift.pf_check PROPERTIES FIXTURES_REQUIRED nav_drift_pf LABELS "nav;integration")
   # Bad input: a missing file and a drive without truth give one line and a non-zero exit.
   add_test(NAME nav.fog_drift.missing_input COMMAND fog-drift -i ${NAV_DRIVE_DIR}/no_such.rawlog)
   set_tests_properties(nav.fog_drift.missing_input PROPERTIES WILL_FAIL TRUE LABELS "nav;integration")

@@ -12,6 +12,11 @@
  *                              per filter step) must match expected_odo.txt line by line
  *                              within 1e-5 m / 1e-5 rad (odo_est is printed with %f, i.e.
  *                              rounded to 5e-7; the pose composition adds rounding only).
+ *   nav_pf_check circle ODO_EST_FILE N RADIUS
+ *                              for fog-drift's --odometry-out on the closed-form circle drive
+ *                              (tests/nav/drive/TestDrive.cpp): N rows, every pose on the
+ *                              circle of RADIUS centred at (0, RADIUS) within 1e-3 m, and the
+ *                              last pose back at the origin (4 whole laps) within 1e-3 m.
  * Exit 0 = pass, 1 = mismatch or error (one line on stderr). */
 #include <mrpt/core/bits_math.h>
 #include <mrpt/io/CFileGZOutputStream.h>
@@ -22,6 +27,7 @@
 #include <mrpt_fog_nav/Rotation.h>
 #include <mrpt_fog_nav/StrapdownAttitude.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -121,6 +127,21 @@ int compareCase(const std::string& dir, const std::string& odo_est)
 				max_yaw);
 	return (max_pos < 1e-5 && max_yaw < 1e-5) ? 0 : 1;
 }
+int circleCase(const std::string& odo_est, std::size_t n, double radius)
+{
+	const auto got = readRows(odo_est);
+	if (got.size() != n)
+	{
+		std::cerr << "nav_pf_check: " << odo_est << " has " << got.size() << " rows, expected " << n << "\n";
+		return 1;
+	}
+	double max_dev = 0;
+	for (const auto& r : got) max_dev = std::max(max_dev, std::abs(std::hypot(r.at(0), r.at(1) - radius) - radius));
+	const double end = std::hypot(got.back()[0], got.back()[1]);
+	std::printf("nav_pf_check: %zu poses, max distance from the circle %.3g m, end %.3g m from the origin\n", n,
+				max_dev, end);
+	return (max_dev < 1e-3 && end < 1e-3) ? 0 : 1;
+}
 }  // namespace
 
 int main(int argc, char** argv)
@@ -130,7 +151,8 @@ int main(int argc, char** argv)
 		const std::string mode = argc > 2 ? argv[1] : "";
 		if (mode == "write" && argc == 3) return writeCase(argv[2]);
 		if (mode == "compare" && argc == 4) return compareCase(argv[2], argv[3]);
-		std::cerr << "usage: nav_pf_check write DIR | compare DIR ODO_EST_FILE\n";
+		if (mode == "circle" && argc == 5) return circleCase(argv[2], std::stoul(argv[3]), std::stod(argv[4]));
+		std::cerr << "usage: nav_pf_check write DIR | compare DIR ODO_EST_FILE | circle ODO_EST_FILE N RADIUS\n";
 		return 2;
 	}
 	catch (const std::exception& e)
