@@ -97,3 +97,25 @@ TEST(AllanNoiseTerms, EmptyCurveGivesNaN)
 	EXPECT_TRUE(std::isnan(t.rrw_dphsh));
 	EXPECT_TRUE(std::isnan(t.quantization_arcsec));
 }
+
+// A -1 slope at LONG tau (e.g. slow variations removed by a fit) after an ARW part is not
+// quantisation: Q is only read at the shortest taus. Curve: N^2/tau for tau < 100 s, then
+// falling as 1/tau (continuous at 100 s).
+TEST(AllanNoiseTerms, LongTauMinusOneSlopeIsNotQuantization)
+{
+	const double N_s = 0.06;  // deg/h * sqrt(s)
+	std::vector<AllanPoint> c;
+	for (double tau = 1; tau < 1e5; tau *= 2)
+	{
+		AllanPoint p;
+		p.tau_s = tau;
+		p.adev = tau < 100 ? N_s / std::sqrt(tau) : N_s / std::sqrt(100.0) * (100.0 / tau);
+		p.clusters = 1000000;
+		c.push_back(p);
+	}
+	const AllanNoiseTerms t = allanNoiseTerms(c);
+	EXPECT_FALSE(t.quantization.identified());
+	ASSERT_TRUE(t.arw.identified());
+	EXPECT_NEAR(t.arw_dpsh / (N_s / 60.0), 1.0, 1e-9);  // exact: the -1/2 part is pure
+	EXPECT_LE(t.arw.tau_max_s, 64.0);
+}

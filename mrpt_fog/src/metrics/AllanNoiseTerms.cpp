@@ -1,6 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/metrics/AllanNoiseTerms.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace mrpt_fog
@@ -13,14 +14,17 @@ double AllanLineFit::at(double tau_s) const
 
 namespace
 {
-AllanLineFit fitTerm(const std::vector<AllanPoint>& c, double target_slope, const AllanTermOptions& opt)
+/** Fits the term of slope target_slope on points with tau > after_tau_s; with anchored, only a
+ * run that starts at the first usable point counts (quantisation lives at the shortest taus). */
+AllanLineFit fitTerm(const std::vector<AllanPoint>& c, double target_slope, const AllanTermOptions& opt,
+					 double after_tau_s, bool anchored)
 {
 	AllanLineFit fit;
 	fit.slope = target_slope;
 	// Usable points: enough clusters and a positive deviation.
 	std::vector<const AllanPoint*> p;
 	for (const auto& q : c)
-		if (q.clusters >= opt.min_clusters && q.adev > 0 && q.tau_s > 0) p.push_back(&q);
+		if (q.clusters >= opt.min_clusters && q.adev > 0 && q.tau_s > 0 && q.tau_s > after_tau_s) p.push_back(&q);
 	if (p.size() < 2) return fit;
 	std::vector<double> seg(p.size() - 1);
 	for (std::size_t i = 0; i + 1 < p.size(); i++)
@@ -55,7 +59,7 @@ AllanLineFit fitTerm(const std::vector<AllanPoint>& c, double target_slope, cons
 		std::size_t b = a;
 		double w = 0;
 		while (b < p.size() && in[b]) w += static_cast<double>(p[b++]->clusters);
-		if (w > best_w)
+		if (w > best_w && (!anchored || a == 0))
 		{
 			best_w = w;
 			best_a = a;
@@ -82,10 +86,20 @@ AllanLineFit fitTerm(const std::vector<AllanPoint>& c, double target_slope, cons
 AllanNoiseTerms allanNoiseTerms(const std::vector<AllanPoint>& curve_dph, const AllanTermOptions& options)
 {
 	AllanNoiseTerms t;
-	t.quantization = fitTerm(curve_dph, -1.0, options);
-	t.arw = fitTerm(curve_dph, -0.5, options);
-	t.flat = fitTerm(curve_dph, 0.0, options);
-	t.rrw = fitTerm(curve_dph, +0.5, options);
+	// In the IEEE 952 Annex C picture quantisation, ARW, bias instability and RRW dominate at increasing tau;
+	// each term is looked for after the end of the previous identified ones, so that e.g. a
+	// -1 slope at long tau (a slow signal removed by a fit) is not read as quantisation.
+	double after = 0;
+	auto next = [&](const AllanLineFit& f) {
+		if (f.identified()) after = std::max(after, f.tau_max_s);
+	};
+	t.quantization = fitTerm(curve_dph, -1.0, options, after, true);
+	next(t.quantization);
+	t.arw = fitTerm(curve_dph, -0.5, options, after, false);
+	next(t.arw);
+	t.flat = fitTerm(curve_dph, 0.0, options, after, false);
+	next(t.flat);
+	t.rrw = fitTerm(curve_dph, +0.5, options, after, false);
 	// Unit bookkeeping: a rate in deg/h times a time in s is an angle in deg/3600 = arcsec;
 	// deg/h * sqrt(s) = deg/sqrt(h) * sqrt(s/h) = deg/sqrt(h) / 60.
 	if (t.quantization.identified()) t.quantization_arcsec = t.quantization.at(std::sqrt(3.0));  // sigma = sqrt(3) Q / tau

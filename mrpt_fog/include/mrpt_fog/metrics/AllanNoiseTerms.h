@@ -19,7 +19,10 @@
  * log-log slopes of its neighbouring segments is within slope_tolerance of the term's slope;
  * of the contiguous runs of such points the one with the largest statistical weight (sum of
  * clusters) is fitted, the intercept by weighted least squares in log space with weights equal
- * to the clusters (var(log adev) ~ 1/clusters). A term with no such run is NaN (not
+ * to the clusters (var(log adev) ~ 1/clusters). The terms dominate at increasing tau in the
+ * order Q, N, B, K, so each is looked for only beyond the tau range of the previous identified
+ * ones, and Q only in a run that starts at the shortest usable tau (a -1 slope at long tau, e.g.
+ * a slow signal removed by a fit, is not quantisation). A term with no such run is NaN (not
  * identified): e.g. no flat part in a record too short to reach it.
  */
 
