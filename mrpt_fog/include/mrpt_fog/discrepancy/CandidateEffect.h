@@ -1,0 +1,72 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file CandidateEffect.h
+ * The library of physical effects a model may be missing, each with a stable id, a physical
+ * description, what excites it (the test profile that separates it from look-alikes) and the
+ * regressor columns it adds to a bias model, built from RunSignals. Time constants (warm-up)
+ * are nonlinear parameters found by profile search over `theta_grid`.
+ *
+ * Ids: shupe_rate, radial_gradient, gradient_rate, thermistor_lag, hysteresis, warmup,
+ * scale_factor_temp, magnetic, temp_poly_order (bias channel) and heat_source (temperature
+ * channel, see ThermalResidualModel.h).
+ */
+
+#include <mrpt_fog/discrepancy/RunSignals.h>
+
+#include <Eigen/Dense>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace mrpt_fog::discrepancy
+{
+/** What a candidate needs from the current model to build its columns. */
+struct CandidateContext
+{
+	const RunSignals* sig = nullptr;
+	/** The static-temperature part of the fitted base model along the run [deg/h]
+	 * (thermistor_lag differentiates it). */
+	std::vector<double> base_static_dph;
+	int base_static_order = 3;  //!< highest power of the base's static polynomial
+	/** Temperature the base's static polynomial uses (mean when "mean"). */
+	std::vector<double> static_temp_C;
+};
+
+enum class ResidualChannel
+{
+	Bias,
+	Temperature
+};
+
+struct CandidateEffect
+{
+	std::string id;
+	std::string description;  //!< the physics, one sentence
+	std::string excited_by;  //!< which test profile segments excite/separate it
+	std::string coefficient_unit;  //!< unit of the reported coefficient
+	ResidualChannel channel = ResidualChannel::Bias;
+	std::string theta_name;  //!< nonlinear parameter name ("" = none)
+	std::vector<double> theta_grid;  //!< profile-search grid ({0} when none)
+	/** Columns (n x q) for a nonlinear parameter value. */
+	std::function<Eigen::MatrixXd(const CandidateContext&, double theta)> build;
+	/** Reported coefficient = scale * fitted coefficient of the first column. Multi-column
+	 * candidates (q > 1) report the RMS of their fitted contribution in deg/h instead. */
+	double coefficient_scale = 1.0;
+	/** Empty when testable on this run, else why not (e.g. "no table-rate segments"). */
+	std::function<std::string(const RunSignals&)> untestable_reason;
+};
+
+/** The candidate library, in a fixed order. */
+const std::vector<CandidateEffect>& candidateLibrary();
+
+/** Candidate by id; throws std::invalid_argument for an unknown id. */
+const CandidateEffect& candidateById(const std::string& id);
+
+/** Hysteresis regressor: a smoothed sign of the temperature rate, tanh(rate / 0.05 C/min). */
+double heatingCoolingSign(double dtemp_dt_Cpm);
+
+/** The advice (test profile) that would separate two candidates. */
+std::string separationAdvice(const std::string& id_a, const std::string& id_b);
+
+}  // namespace mrpt_fog::discrepancy

@@ -1,0 +1,259 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/discrepancy/BaseModelDesign.h>
+#include <mrpt_fog/discrepancy/CandidateEffect.h>
+
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+namespace mrpt_fog::discrepancy
+{
+double heatingCoolingSign(double dtemp_dt_Cpm) { return std::tanh(dtemp_dt_Cpm / 0.05); }
+
+namespace
+{
+using Mat = Eigen::MatrixXd;
+
+double f0(double v) { return std::isfinite(v) ? v : 0.0; }
+
+Mat column(const std::vector<double>& v, double scale = 1.0)
+{
+	Mat m(static_cast<Eigen::Index>(v.size()), 1);
+	for (std::size_t k = 0; k < v.size(); ++k) m(static_cast<Eigen::Index>(k), 0) = scale * f0(v[k]);
+	return m;
+}
+
+std::string needInnerOuter(const RunSignals& s)
+{
+	return s.has_inner_outer ? "" : "needs inner and outer thermistors";
+}
+std::string always(const RunSignals&) { return ""; }
+
+/** Low-pass (first-order, time constant tau_s) of a column, restarted at each block. */
+std::vector<double> firstOrderLag(const RunSignals& s, const std::vector<double>& u, double tau_s)
+{
+	std::vector<double> y(u.size(), 0.0);
+	for (std::size_t k = 0; k < u.size(); ++k)
+	{
+		if (k == 0 || s.block[k] != s.block[k - 1] || s.block[k] < 0)
+		{
+			y[k] = f0(u[k]);
+			continue;
+		}
+		const double a = std::exp(-(s.time_s[k] - s.time_s[k - 1]) / tau_s);
+		y[k] = a * y[k - 1] + (1 - a) * f0(u[k]);
+	}
+	return y;
+}
+
+std::vector<CandidateEffect> makeLibrary()
+{
+	std::vector<CandidateEffect> lib;
+	{
+		CandidateEffect c;
+		c.id = "shupe_rate";
+		c.description =
+			"Shupe effect: a temperature rate through the coil makes the two counter-propagating beams see "
+			"different optical paths; bias proportional to dT/dt of the coil";
+		c.excited_by = "temperature steps and a sine sweep (rates of several sizes)";
+		c.coefficient_unit = "deg/h per degC/min";
+		c.build = [](const CandidateContext& ctx, double) { return column(ctx.sig->dtemp_dt_Cpm); };
+		c.untestable_reason = always;
+		lib.push_back(c);
+	}
+	{
+		CandidateEffect c;
+		c.id = "radial_gradient";
+		c.description =
+			"elasto-optic / thermal-stress term: bias proportional to the radial gradient Tin - Tout, "
+			"persisting while the gradient lasts";
+		c.excited_by = "a sine sweep near the coil's radial time constant and soaks right after fast steps";
+		c.coefficient_unit = "deg/h per degC";
+		c.build = [](const CandidateContext& ctx, double) { return column(ctx.sig->gradient_C); };
+		c.untestable_reason = needInnerOuter;
+		lib.push_back(c);
+	}
+	{
+		CandidateEffect c;
+		c.id = "gradient_rate";
+		c.description = "rate of the radial gradient d(Tin - Tout)/dt (radial heat-flow transients)";
+		c.excited_by = "temperature steps and a sine sweep near the coil's radial time constant";
+		c.coefficient_unit = "deg/h per degC/min";
+		c.build = [](const CandidateContext& ctx, double) { return column(ctx.sig->dgradient_dt_Cpm); };
+		c.untestable_reason = needInnerOuter;
+		lib.push_back(c);
+	}
+	{
+		CandidateEffect c;
+		c.id = "thermistor_lag";
+		c.description =
+			"thermistor lag: the thermistors read the coil temperature late by tau, so the static model "
+			"f(T) misses tau * d/dt f(T)";
+		c.excited_by = "ramps and steps in temperature bands where the static bias slope differs";
+		c.coefficient_unit = "s (tau)";
+		c.coefficient_scale = 60.0;  // column is per minute
+		c.build = [](const CandidateContext& ctx, double)
+		{
+			const auto d = localSlopePerMin(ctx.sig->time_s, ctx.base_static_dph, ctx.sig->block, 120.0);
+			return column(d);
+		};
+		c.untestable_reason = always;
+		lib.push_back(c);
+	}
+	{
+		CandidateEffect c;
+		c.id = "hysteresis";
+		c.description = "heating vs cooling hysteresis: a bias offset of opposite sign while heating and cooling";
+		c.excited_by = "ramps at several rates (the offset does not scale with the rate)";
+		c.coefficient_unit = "deg/h (half heating-cooling difference)";
+		c.build = [](const CandidateContext& ctx, double)
+		{
+			std::vector<double> v(ctx.sig->size());
+			for (std::size_t k = 0; k < v.size(); ++k) v[k] = heatingCoolingSign(ctx.sig->dtemp_dt_Cpm[k]);
+			return column(v);
+		};
+		c.untestable_reason = always;
+		lib.push_back(c);
+	}
+	{
+		CandidateEffect c;
+		c.id = "warmup";
+		c.description = "turn-on warm-up: a bias decaying as exp(-(t - t_on)/tau) after each power-on";
+		c.excited_by = "power cycles at constant chamber temperature";
+		c.coefficient_unit = "deg/h at power-on";
+		c.theta_name = "tau_s";
+		c.theta_grid = {60, 120, 240, 480, 900, 1800, 3600, 7200};
+		c.build = [](const CandidateContext& ctx, double tau_s)
+		{
+			const auto& s = *ctx.sig;
+			std::vector<double> v(s.size(), 0.0);
+			std::size_t on = 0;
+			for (std::size_t k = 0; k < s.size(); ++k)
+			{
+				while (on + 1 < s.power_on_s.size() && s.power_on_s[on + 1] <= s.time_s[k]) ++on;
+				if (s.power_on_s.empty() || s.time_s[k] < s.power_on_s[on] || s.power[k] < 0.5) continue;
+				v[k] = std::exp(-(s.time_s[k] - s.power_on_s[on]) / tau_s);
+			}
+			return column(v);
+		};
+		c.untestable_reason = [](const RunSignals& s)
+		{ return s.power_on_s.empty() ? std::string("no power-on in the run") : std::string(); };
+		lib.push_back(c);
+	}
+	{
+		CandidateEffect c;
+		c.id = "scale_factor_temp";
+		c.description =
+			"temperature-dependent scale factor (source wavelength): an error (T - Tmean) x applied rate";
+		c.excited_by = "rate-table segments at several temperatures";
+		c.coefficient_unit = "ppm/degC";
+		c.build = [](const CandidateContext& ctx, double)
+		{
+			const auto& s = *ctx.sig;
+			double sum = 0;
+			std::size_t m = 0;
+			for (std::size_t k = 0; k < s.size(); ++k)
+				if (s.usable[k])
+				{
+					sum += s.temp_mean_C[k];
+					++m;
+				}
+			const double Tm = m ? sum / m : 20.0;
+			std::vector<double> v(s.size());
+			for (std::size_t k = 0; k < v.size(); ++k) v[k] = 1e-6 * (f0(s.temp_mean_C[k]) - Tm) * s.table_rate_dph[k];
+			return column(v);
+		};
+		c.untestable_reason = [](const RunSignals& s)
+		{ return s.has_table ? std::string() : std::string("no rate-table segments in the run"); };
+		lib.push_back(c);
+	}
+	{
+		CandidateEffect c;
+		c.id = "magnetic";
+		c.description = "Faraday (magnetic) sensitivity: bias proportional to the axial field";
+		c.excited_by = "field segments (applied axial field switched on and off)";
+		c.coefficient_unit = "deg/h per uT";
+		c.build = [](const CandidateContext& ctx, double) { return column(ctx.sig->field_uT); };
+		c.untestable_reason = [](const RunSignals& s)
+		{ return s.has_field ? std::string() : std::string("no field segments in the run"); };
+		lib.push_back(c);
+	}
+	{
+		CandidateEffect c;
+		c.id = "temp_poly_order";
+		c.description = "static temperature polynomial too low: the next two powers of the temperature";
+		c.excited_by = "soaks at several temperature levels across the full range";
+		c.coefficient_unit = "deg/h (RMS of the added terms)";
+		c.build = [](const CandidateContext& ctx, double)
+		{
+			const auto n = static_cast<Eigen::Index>(ctx.static_temp_C.size());
+			Mat m(n, 2);
+			for (Eigen::Index k = 0; k < n; ++k)
+			{
+				const double x = scaledTemp(f0(ctx.static_temp_C[static_cast<std::size_t>(k)]));
+				m(k, 0) = std::pow(x, ctx.base_static_order + 1);
+				m(k, 1) = std::pow(x, ctx.base_static_order + 2);
+			}
+			return m;
+		};
+		c.untestable_reason = always;
+		lib.push_back(c);
+	}
+	{
+		CandidateEffect c;
+		c.id = "heat_source";
+		c.description =
+			"unmodelled internal heat source (electronics, source): the inner coil warms by a first-order "
+			"response to power";
+		c.excited_by = "power cycles";
+		c.coefficient_unit = "degC at full power";
+		c.channel = ResidualChannel::Temperature;
+		c.theta_name = "tau_s";
+		c.theta_grid = {120, 300, 600, 1200, 2400, 4800};
+		c.build = [](const CandidateContext& ctx, double tau_s)
+		{ return column(firstOrderLag(*ctx.sig, ctx.sig->power, tau_s)); };
+		c.untestable_reason = always;
+		lib.push_back(c);
+	}
+	for (auto& c : lib)
+		if (c.theta_grid.empty()) c.theta_grid = {0.0};
+	return lib;
+}
+}  // namespace
+
+const std::vector<CandidateEffect>& candidateLibrary()
+{
+	static const std::vector<CandidateEffect> lib = makeLibrary();
+	return lib;
+}
+
+const CandidateEffect& candidateById(const std::string& id)
+{
+	for (const auto& c : candidateLibrary())
+		if (c.id == id) return c;
+	throw std::invalid_argument("unknown candidate effect id '" + id + "'");
+}
+
+std::string separationAdvice(const std::string& a, const std::string& b)
+{
+	auto is = [&](const char* x, const char* y)
+	{ return (a == x && b == y) || (a == y && b == x); };
+	if (is("shupe_rate", "thermistor_lag"))
+		return "steps and ramps in several temperature bands (a thermistor lag scales with the local slope of the "
+			   "static bias curve, the Shupe term does not)";
+	if (is("shupe_rate", "hysteresis"))
+		return "ramps at several rates and a sine sweep (Shupe scales with the rate, hysteresis does not)";
+	if (is("shupe_rate", "radial_gradient") || is("radial_gradient", "thermistor_lag"))
+		return "a sine sweep near the coil's radial time constant and fast steps (the gradient lags the rate)";
+	if (is("shupe_rate", "gradient_rate") || is("radial_gradient", "gradient_rate"))
+		return "fast steps and a sine sweep with periods near the coil's radial time constant";
+	if (is("warmup", "temp_poly_order") || is("warmup", "thermistor_lag") || is("warmup", "shupe_rate"))
+		return "power cycles at constant chamber temperature";
+	if (is("magnetic", "scale_factor_temp"))
+		return "field segments and rate-table segments at different times and temperatures";
+	const auto& ca = candidateById(a);
+	const auto& cb = candidateById(b);
+	return ca.excited_by + " (for " + a + "); " + cb.excited_by + " (for " + b + ")";
+}
+
+}  // namespace mrpt_fog::discrepancy

@@ -1,0 +1,477 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/discrepancy/EffectSelector.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+namespace mrpt_fog::discrepancy
+{
+using Mat = Eigen::MatrixXd;
+using Vec = Eigen::VectorXd;
+
+CandidateContext makeCandidateContext(const RunSignals& sig, const BaseDesign& base, const Vec& base_coef)
+{
+	CandidateContext ctx;
+	ctx.sig = &sig;
+	const auto n = static_cast<Eigen::Index>(sig.size());
+	ctx.base_static_dph.assign(sig.size(), 0.0);
+	for (Eigen::Index j = 0; j < base.X.cols() && j < base_coef.size(); ++j)
+		if (base.is_static_temp[static_cast<std::size_t>(j)])
+			for (Eigen::Index k = 0; k < n; ++k) ctx.base_static_dph[static_cast<std::size_t>(k)] += base.X(k, j) * base_coef(j);
+	ctx.base_static_order = std::max(1, base.max_static_order);
+	ctx.static_temp_C = sig.temp_mean_C;
+	return ctx;
+}
+
+Mat AugmentedModel::design(const BaseDesign& base, const RunSignals& sig) const
+{
+	const auto ctx = makeCandidateContext(sig, base, lag_base_coef);
+	std::vector<Mat> blocks{base.X};
+	Eigen::Index cols = base.X.cols();
+	for (const auto& e : effects)
+	{
+		blocks.push_back(candidateById(e.id).build(ctx, e.theta));
+		cols += blocks.back().cols();
+	}
+	Mat X(base.X.rows(), cols);
+	Eigen::Index c = 0;
+	for (const auto& b : blocks)
+	{
+		X.middleCols(c, b.cols()) = b;
+		c += b.cols();
+	}
+	return X;
+}
+
+namespace
+{
+std::vector<std::size_t> rowsOf(const std::vector<unsigned char>& ok)
+{
+	std::vector<std::size_t> r;
+	for (std::size_t k = 0; k < ok.size(); ++k)
+		if (ok[k]) r.push_back(k);
+	return r;
+}
+
+Mat pick(const Mat& M, const std::vector<std::size_t>& rows)
+{
+	Mat out(static_cast<Eigen::Index>(rows.size()), M.cols());
+	for (std::size_t i = 0; i < rows.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = M.row(static_cast<Eigen::Index>(rows[i]));
+	return out;
+}
+
+Mat hcat(const Mat& a, const Mat& b)
+{
+	Mat m(a.rows(), a.cols() + b.cols());
+	m << a, b;
+	return m;
+}
+
+Vec yVector(const RunSignals& sig)
+{
+	Vec y(static_cast<Eigen::Index>(sig.size()));
+	for (std::size_t k = 0; k < sig.size(); ++k) y(static_cast<Eigen::Index>(k)) = sig.bias_dph[k];
+	return y;
+}
+
+/** OLS on rows, residual on every sample. */
+LsFit olsOnRows(const Mat& X, const Vec& y, const std::vector<std::size_t>& rows, Vec& fullResidual)
+{
+	const Mat Xr = pick(X, rows);
+	Vec yr(static_cast<Eigen::Index>(rows.size()));
+	for (std::size_t i = 0; i < rows.size(); ++i) yr(static_cast<Eigen::Index>(i)) = y(static_cast<Eigen::Index>(rows[i]));
+	auto f = leastSquares(Xr, yr);
+	fullResidual = y - X * f.coef;
+	return f;
+}
+
+/** Relative projection residual of the (centred) columns of C onto X, on rows: the largest
+ * over C's columns. */
+double spanResidual(const Mat& X, const Mat& C, const std::vector<std::size_t>& rows)
+{
+	const Mat Xr = pick(X, rows), Cr = pick(C, rows);
+	double worst = 0.0;
+	for (Eigen::Index j = 0; j < Cr.cols(); ++j)
+	{
+		const Vec c = Cr.col(j);
+		const double spread = (c.array() - c.mean()).matrix().norm();
+		if (spread <= 1e-12 * std::max(1.0, c.norm())) continue;  // constant: spanned by the offset
+		const auto f = leastSquares(Xr, c);
+		worst = std::max(worst, std::sqrt(f.rss) / spread);
+	}
+	return worst;
+}
+
+/** Feasible GLS fit of one model: OLS, ARMA noise model of its residual, whitened LS on the
+ * common rows. Its innovation RSS is the model's (conditional) Gaussian likelihood: models fitted
+ * on the same rows compare by likelihood ratio even with different noise models. */
+struct Gls
+{
+	ArNoiseModel ar;
+	LsFit fit;  //!< whitened LS (coef, whitened residual, cov when asked)
+	double rss = 0.0;
+	double lrv = 1.0;
+};
+
+Gls glsFit(const Mat& X, const Vec& y, const RunSignals& sig, const std::vector<unsigned char>& ok,
+		   const std::vector<std::size_t>& common, const SelectionOptions& opt, bool wantCov = false)
+{
+	Gls g;
+	Vec r;
+	olsOnRows(X, y, rowsOf(ok), r);
+	std::vector<double> rv(r.data(), r.data() + r.size());
+	g.ar = fitArNoise(rv, sig.block, ok, opt.max_ar_order);
+	g.fit = leastSquares(whiten(X, g.ar, common), whiten(y, g.ar, common).col(0), wantCov);
+	g.rss = g.fit.rss;
+	g.lrv = longRunVarianceFactor(g.fit.residual, opt.lrv_max_lag);
+	return g;
+}
+
+/** Likelihood-ratio chi-square of model 1 against its sub-model 0 (same rows), deflated by
+ * the long-run variance factor of model 1's whitened residual. */
+double lrChi2(const Gls& m0, const Gls& m1, std::size_t n)
+{
+	if (!(m1.rss > 0)) return 0.0;
+	return std::max(0.0, double(n) * std::log(m0.rss / m1.rss) / m1.lrv);
+}
+
+double sidak(double p, int tests)
+{
+	if (tests <= 1) return p;
+	return -std::expm1(tests * std::log1p(-std::min(p, 1.0 - 1e-16)));
+}
+
+struct CandState
+{
+	const CandidateEffect* eff = nullptr;
+	std::vector<double> thetas;  //!< non-spanned grid values
+	double theta = 0;
+	Mat C;  //!< chosen columns
+	CandidateTest test;
+};
+
+/** Outlier flags: robust z of the AR-whitened base residual. */
+std::size_t flagOutliers(const Mat& X, const Vec& y, const RunSignals& sig, std::vector<unsigned char>& ok,
+						 const SelectionOptions& opt)
+{
+	std::size_t flagged = 0;
+	for (int pass = 0; pass < 2; ++pass)
+	{
+		Vec r;
+		olsOnRows(X, y, rowsOf(ok), r);
+		std::vector<double> rv(r.data(), r.data() + r.size());
+		const auto ar = fitArNoise(rv, sig.block, ok, opt.max_ar_order);
+		const auto rows = whitenableRows(sig.block, ok, ar.order());
+		if (rows.size() < 20) break;
+		const Vec e = whiten(r, ar, rows).col(0);
+		std::vector<double> a(static_cast<std::size_t>(e.size()));
+		for (Eigen::Index i = 0; i < e.size(); ++i) a[static_cast<std::size_t>(i)] = e(i);
+		auto med = [](std::vector<double> v)
+		{
+			std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+			return v[v.size() / 2];
+		};
+		const double m = med(a);
+		for (auto& v : a) v = std::fabs(v - m);
+		const double sd = 1.4826 * med(a);
+		if (!(sd > 0)) break;
+		std::size_t now = 0;
+		for (std::size_t i = 0; i < rows.size(); ++i)
+			if (std::fabs(e(static_cast<Eigen::Index>(i)) - m) > opt.outlier_sigma * sd)
+			{
+				// the innovation at k is large: the outlier is sample k (a spike also disturbs k+1..k+p,
+				// which are excluded by whitenableRows once k is flagged)
+				ok[rows[i]] = 0;
+				++now;
+			}
+		flagged += now;
+		if (now == 0) break;
+	}
+	return flagged;
+}
+
+double logSumExpWeights(const std::vector<double>& halfBic)
+{
+	double mx = 0.0;  // "no effect" has weight exp(0)
+	for (double b : halfBic) mx = std::max(mx, b);
+	double s = std::exp(-mx);
+	for (double b : halfBic) s += std::exp(b - mx);
+	return mx + std::log(s);
+}
+}  // namespace
+
+Vec residualWithCoefficients(const Mat& X, const RunSignals& sig, const Vec& coef)
+{
+	const Vec y = yVector(sig);
+	Vec r = y - X * coef;
+	double s = 0;
+	std::size_t m = 0;
+	for (std::size_t k = 0; k < sig.size(); ++k)
+		if (sig.usable[k])
+		{
+			s += r(static_cast<Eigen::Index>(k));
+			++m;
+		}
+	const double off = m ? s / m : 0.0;
+	for (std::size_t k = 0; k < sig.size(); ++k)
+		r(static_cast<Eigen::Index>(k)) = sig.usable[k] ? r(static_cast<Eigen::Index>(k)) - off : 0.0;
+	return r;
+}
+
+SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& base, const SelectionOptions& opt)
+{
+	SelectionResult res;
+	const Vec y = yVector(sig);
+	std::vector<unsigned char> ok = sig.usable;
+	if (rowsOf(ok).size() < static_cast<std::size_t>(10 * base.X.cols()))
+		throw std::invalid_argument("only " + std::to_string(rowsOf(ok).size()) + " usable samples for " +
+									std::to_string(base.X.cols()) + " base-model columns");
+	res.outliers = flagOutliers(base.X, y, sig, ok, opt);
+	res.fit_rows = ok;
+	const auto rows = rowsOf(ok);
+
+	Vec r;
+	auto baseFit = olsOnRows(base.X, y, rows, r);
+	res.coef_before = baseFit.coef;
+	res.residual_before = r;
+	res.model.lag_base_coef = baseFit.coef;
+
+	std::vector<std::string> ids = opt.candidates;
+	if (ids.empty())
+		for (const auto& c : candidateLibrary())
+			if (c.channel == ResidualChannel::Bias) ids.push_back(c.id);
+	std::vector<std::string> excluded;
+	Mat X = base.X;
+
+	for (int round = 0; round < opt.max_effects; ++round)
+	{
+		Vec rr;
+		const auto fit = olsOnRows(X, y, rows, rr);
+		const auto ctx = makeCandidateContext(sig, base, fit.coef.head(base.X.cols()));
+		std::vector<CandState> cands;
+		std::vector<CandidateTest> report;
+		for (const auto& id : ids)
+		{
+			CandState cs;
+			cs.eff = &candidateById(id);
+			cs.test.id = id;
+			if (std::find(excluded.begin(), excluded.end(), id) != excluded.end()) continue;
+			const auto why = cs.eff->untestable_reason(sig);
+			if (!why.empty())
+			{
+				cs.test.status = "untestable";
+				cs.test.note = why;
+				report.push_back(cs.test);
+				continue;
+			}
+			for (double th : cs.eff->theta_grid)
+				if (spanResidual(X, cs.eff->build(ctx, th), rows) >= opt.span_tolerance) cs.thetas.push_back(th);
+			if (cs.thetas.empty())
+			{
+				cs.test.status = "spanned";
+				cs.test.note = "the model already spans its terms";
+				report.push_back(cs.test);
+				continue;
+			}
+			// OLS profile (for the kitchen-sink noise estimate)
+			double best = std::numeric_limits<double>::infinity();
+			for (double th : cs.thetas)
+			{
+				Vec rc;
+				const double rss = olsOnRows(hcat(X, cs.eff->build(ctx, th)), y, rows, rc).rss;
+				if (rss < best)
+				{
+					best = rss;
+					cs.theta = th;
+				}
+			}
+			cs.C = cs.eff->build(ctx, cs.theta);
+			cs.test.status = "tested";
+			cands.push_back(std::move(cs));
+		}
+		if (cands.empty())
+		{
+			res.rounds.push_back(report);
+			break;
+		}
+		const auto common = whitenableRows(sig.block, ok, opt.max_ar_order);
+		const double nRows = double(common.size());
+		const Gls g0 = glsFit(X, y, sig, ok, common, opt);
+		if (round == 0)
+		{
+			res.ar = g0.ar;
+			res.lrv_factor = g0.lrv;
+		}
+		const double nEff = std::max(2.0, nRows / std::max(1.0, g0.lrv));
+		for (auto& cs : cands)
+		{
+			Gls bestFit;
+			bestFit.rss = std::numeric_limits<double>::infinity();
+			for (double th : cs.thetas)
+			{
+				const Mat C = cs.eff->build(ctx, th);
+				Gls g1 = glsFit(hcat(X, C), y, sig, ok, common, opt);
+				if (g1.rss < bestFit.rss)
+				{
+					bestFit = std::move(g1);
+					cs.theta = th;
+					cs.C = C;
+				}
+			}
+			auto& t = cs.test;
+			t.theta = cs.theta;
+			t.dof = static_cast<int>(cs.C.cols());
+			t.chi2 = lrChi2(g0, bestFit, common.size());
+			const int grid = static_cast<int>(cs.thetas.size());
+			t.p = sidak(chi2Survival(t.chi2, t.dof), grid);
+			t.delta_bic = t.chi2 - t.dof * std::log(nEff) - std::log(double(grid));
+		}
+		// Holm over the tested candidates
+		std::vector<std::size_t> order(cands.size());
+		for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+		std::sort(order.begin(), order.end(), [&](auto a, auto b) { return cands[a].test.p < cands[b].test.p; });
+		double running = 0.0;
+		const std::size_t m = cands.size();
+		for (std::size_t i = 0; i < m; ++i)
+		{
+			auto& t = cands[order[i]].test;
+			running = std::max(running, std::min(1.0, double(m - i) * t.p));
+			t.p_adjusted = running;
+			t.significant = t.p_adjusted < opt.alpha && t.delta_bic > 0;
+		}
+		int bestIdx = -1;
+		for (std::size_t i = 0; i < m; ++i)
+			if (cands[i].test.significant && (bestIdx < 0 || cands[i].test.delta_bic > cands[bestIdx].test.delta_bic))
+				bestIdx = static_cast<int>(i);
+		for (const auto& cs : cands) report.push_back(cs.test);
+		if (bestIdx < 0)
+		{
+			res.rounds.push_back(report);
+			break;
+		}
+		const auto& B = cands[static_cast<std::size_t>(bestIdx)];
+		NamedEffect ne;
+		ne.id = B.eff->id;
+		ne.alias_group = {ne.id};
+		ne.theta_name = B.eff->theta_name;
+		ne.theta = B.theta;
+		ne.coefficient_unit = B.eff->coefficient_unit;
+		ne.chi2 = B.test.chi2;
+		ne.p_adjusted = B.test.p_adjusted;
+		ne.delta_bic = B.test.delta_bic;
+		const Mat XB = hcat(X, B.C);
+		const Gls gB = glsFit(XB, y, sig, ok, common, opt, true);
+		std::vector<double> aliasHalfBic;
+		for (std::size_t i = 0; i < m; ++i)
+		{
+			if (static_cast<int>(i) == bestIdx || !cands[i].test.significant) continue;
+			const Gls gC = glsFit(hcat(X, cands[i].C), y, sig, ok, common, opt);
+			const Gls gBC = glsFit(hcat(XB, cands[i].C), y, sig, ok, common, opt);
+			const double chiBgivenC = lrChi2(gC, gBC, common.size());
+			const double chiCgivenB = lrChi2(gB, gBC, common.size());
+			const double pBgivenC = sidak(chi2Survival(chiBgivenC, double(B.C.cols())), int(B.thetas.size()));
+			const double pCgivenB = sidak(chi2Survival(chiCgivenB, double(cands[i].C.cols())), int(cands[i].thetas.size()));
+			auto it = std::find_if(report.begin(), report.end(), [&](const CandidateTest& t) { return t.id == cands[i].test.id; });
+			if (pBgivenC > opt.alias_alpha)
+			{
+				ne.alias_group.push_back(cands[i].test.id);
+				ne.separating_profiles.push_back(separationAdvice(ne.id, cands[i].test.id));
+				aliasHalfBic.push_back(0.5 * cands[i].test.delta_bic);
+				excluded.push_back(cands[i].test.id);
+				if (it != report.end()) it->note = "alias of " + ne.id;
+			}
+			else if (pCgivenB > opt.alpha / double(m))
+			{
+				excluded.push_back(cands[i].test.id);
+				if (it != report.end()) it->note = "explained by " + ne.id;
+			}
+		}
+		{
+			std::vector<double> all = aliasHalfBic;
+			all.push_back(0.5 * ne.delta_bic);
+			const double lse = logSumExpWeights(all);
+			ne.confidence = std::exp(0.5 * ne.delta_bic - lse);
+			double g = 0;
+			for (double b : all) g += std::exp(b - lse);
+			ne.group_confidence = std::min(1.0, g);
+		}
+		// coefficient and its 95 % interval from the GLS fit
+		{
+			const auto& f = gB.fit;
+			const double dof = std::max(1.0, nRows - f.rank);
+			const double sigma2 = f.rss / dof * gB.lrv;
+			const Eigen::Index q0 = X.cols(), q = B.C.cols();
+			const Vec beta = f.coef.segment(q0, q);
+			const Mat cov = sigma2 * f.cov_unscaled.block(q0, q0, q, q);
+			if (q == 1)
+			{
+				ne.coefficient = B.eff->coefficient_scale * beta(0);
+				const double half = 1.96 * std::sqrt(std::max(0.0, cov(0, 0))) * std::fabs(B.eff->coefficient_scale);
+				ne.ci_low = ne.coefficient - half;
+				ne.ci_high = ne.coefficient + half;
+			}
+			else
+			{
+				const Mat Cr = pick(B.C, rows);
+				const Mat G = Cr.transpose() * Cr / double(rows.size());
+				const double rms = std::sqrt(std::max(0.0, double(beta.transpose() * G * beta)));
+				const Vec grad = rms > 0 ? Vec(G * beta / rms) : Vec::Zero(q);
+				const double half = 1.96 * std::sqrt(std::max(0.0, double(grad.transpose() * cov * grad)));
+				ne.coefficient = rms;
+				ne.ci_low = std::max(0.0, rms - half);
+				ne.ci_high = rms + half;
+			}
+		}
+		res.named.push_back(ne);
+		res.rounds.push_back(report);
+		excluded.push_back(ne.id);
+		if (ne.id == "thermistor_lag") res.model.lag_base_coef = fit.coef.head(base.X.cols());
+		res.model.effects.push_back({ne.id, ne.theta});
+		X = hcat(X, B.C);
+	}
+	Vec ra;
+	res.coef_after = olsOnRows(X, y, rows, ra).coef;
+	res.residual_after = ra;
+	return res;
+}
+
+void confirmOnRun(SelectionResult& result, const RunSignals& sig2, const BaseDesign& base2, const SelectionOptions& opt)
+{
+	const Vec y = yVector(sig2);
+	std::vector<unsigned char> ok = sig2.usable;
+	flagOutliers(base2.X, y, sig2, ok, opt);
+	const auto rows = rowsOf(ok);
+	Mat X = base2.X;
+	Vec r;
+	const auto baseFit = olsOnRows(X, y, rows, r);
+	const auto ctx = makeCandidateContext(sig2, base2, baseFit.coef);
+	for (auto& ne : result.named)
+	{
+		const auto& eff = candidateById(ne.id);
+		ne.confirm_tested = true;
+		if (!eff.untestable_reason(sig2).empty())
+		{
+			ne.confirm_tested = false;
+			continue;
+		}
+		const Mat C = eff.build(ctx, ne.theta);
+		const Mat K = hcat(X, C);
+		const auto common = whitenableRows(sig2.block, ok, opt.max_ar_order);
+		const Gls g0 = glsFit(X, y, sig2, ok, common, opt);
+		const Gls g1 = glsFit(K, y, sig2, ok, common, opt);
+		ne.confirm_p = chi2Survival(lrChi2(g0, g1, common.size()), double(C.cols()));
+		if (C.cols() == 1)
+		{
+			ne.confirm_coefficient = eff.coefficient_scale * g1.fit.coef(X.cols());
+			ne.confirmed = ne.confirm_p < opt.alias_alpha && ne.confirm_coefficient * ne.coefficient > 0;
+		}
+		else
+			ne.confirmed = ne.confirm_p < opt.alias_alpha;
+		X = K;
+	}
+}
+
+}  // namespace mrpt_fog::discrepancy

@@ -1,0 +1,198 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/discrepancy/WhitenedRegression.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace mrpt_fog::discrepancy
+{
+LsFit leastSquares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y, bool wantCov)
+{
+	LsFit f;
+	const Eigen::Index p = X.cols();
+	Eigen::VectorXd scale(p);
+	for (Eigen::Index j = 0; j < p; ++j)
+	{
+		const double nrm = X.col(j).norm();
+		scale(j) = nrm > 0 ? 1.0 / nrm : 1.0;
+	}
+	const Eigen::MatrixXd Xs = X * scale.asDiagonal();
+	Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(Xs);
+	qr.setThreshold(1e-10);
+	f.rank = static_cast<int>(qr.rank());
+	const Eigen::VectorXd cs = qr.solve(y);
+	f.coef = scale.asDiagonal() * cs;
+	f.residual = y - X * f.coef;
+	f.rss = f.residual.squaredNorm();
+	if (wantCov)
+	{
+		const Eigen::MatrixXd XtX = Xs.transpose() * Xs;
+		const Eigen::MatrixXd inv = XtX.completeOrthogonalDecomposition().pseudoInverse();
+		f.cov_unscaled = scale.asDiagonal() * inv * scale.asDiagonal();
+	}
+	return f;
+}
+
+std::vector<std::size_t> whitenableRows(const std::vector<int>& block, const std::vector<unsigned char>& ok, int p)
+{
+	std::vector<std::size_t> rows;
+	const std::size_t n = block.size();
+	std::size_t run = 0;  // consecutive ok samples in the same block ending at k
+	for (std::size_t k = 0; k < n; ++k)
+	{
+		if (!ok[k] || block[k] < 0)
+		{
+			run = 0;
+			continue;
+		}
+		if (k > 0 && run > 0 && block[k - 1] == block[k] && ok[k - 1])
+			++run;
+		else
+			run = 1;
+		if (run >= static_cast<std::size_t>(p) + 1) rows.push_back(k);
+	}
+	return rows;
+}
+
+Eigen::MatrixXd whiten(const Eigen::MatrixXd& M, const ArNoiseModel& ar, const std::vector<std::size_t>& rows)
+{
+	Eigen::MatrixXd W(static_cast<Eigen::Index>(rows.size()), M.cols());
+	for (std::size_t i = 0; i < rows.size(); ++i)
+	{
+		const auto k = static_cast<Eigen::Index>(rows[i]);
+		Eigen::RowVectorXd r = M.row(k);
+		for (int j = 0; j < ar.order(); ++j) r -= ar.phi[static_cast<std::size_t>(j)] * M.row(k - j - 1);
+		if (ar.theta != 0.0 && i > 0 && rows[i - 1] + 1 == rows[i]) r += ar.theta * W.row(static_cast<Eigen::Index>(i - 1));
+		W.row(static_cast<Eigen::Index>(i)) = r;
+	}
+	return W;
+}
+
+ArNoiseModel fitArNoise(const std::vector<double>& residual, const std::vector<int>& block,
+						const std::vector<unsigned char>& ok, int max_order)
+{
+	ArNoiseModel best;
+	double bestBic = std::numeric_limits<double>::infinity();
+	// the same rows (valid for max_order) for every model, so BICs compare
+	const auto rows = whitenableRows(block, ok, max_order);
+	if (rows.size() < static_cast<std::size_t>(4 * max_order + 10))
+	{
+		double s = 0;
+		std::size_t m = 0;
+		for (std::size_t k = 0; k < residual.size(); ++k)
+			if (ok[k])
+			{
+				s += residual[k] * residual[k];
+				++m;
+			}
+		best.innovation_sd = m ? std::sqrt(s / m) : 0.0;
+		return best;
+	}
+	const auto n = static_cast<Eigen::Index>(rows.size());
+	// u = e / (1 - theta B) over the ok samples, restarted at block edges and exclusions
+	const auto allRows = whitenableRows(block, ok, 0);
+	static const double thetas[] = {0.0, 0.2, 0.4, 0.5, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85, 0.9, 0.93, 0.96, 0.98};
+	std::vector<double> u(residual.size(), 0.0);
+	for (double theta : thetas)
+	{
+		for (std::size_t i = 0; i < allRows.size(); ++i)
+		{
+			const std::size_t k = allRows[i];
+			const bool cont = i > 0 && allRows[i - 1] + 1 == k && block[k - 1] == block[k];
+			u[k] = residual[k] + (cont ? theta * u[k - 1] : 0.0);
+		}
+		Eigen::VectorXd y(n);
+		Eigen::MatrixXd L(n, max_order);
+		for (Eigen::Index i = 0; i < n; ++i)
+		{
+			const std::size_t k = rows[static_cast<std::size_t>(i)];
+			y(i) = u[k];
+			for (int j = 0; j < max_order; ++j) L(i, j) = u[k - static_cast<std::size_t>(j) - 1];
+		}
+		for (int p = 0; p <= max_order; ++p)
+		{
+			Eigen::VectorXd phi = Eigen::VectorXd::Zero(p);
+			double rss = y.squaredNorm();
+			if (p > 0)
+			{
+				const auto f = leastSquares(L.leftCols(p), y);
+				phi = f.coef;
+				rss = f.rss;
+			}
+			const int params = p + (theta > 0 ? 1 : 0);
+			const double bic = static_cast<double>(n) * std::log(std::max(rss, 1e-300) / n) + params * std::log(double(n));
+			if (bic < bestBic)
+			{
+				bestBic = bic;
+				best.phi.assign(phi.data(), phi.data() + p);
+				best.theta = theta;
+				best.innovation_sd = std::sqrt(rss / n);
+			}
+		}
+	}
+	return best;
+}
+
+double longRunVarianceFactor(const Eigen::VectorXd& e, int max_lag)
+{
+	const Eigen::Index n = e.size();
+	if (n < 3) return 1.0;
+	const double mean = e.mean();
+	const Eigen::VectorXd c = e.array() - mean;
+	const double c0 = c.squaredNorm();
+	if (c0 <= 0) return 1.0;
+	double f = 1.0;
+	for (int l = 1; l <= max_lag && l < n; ++l)
+	{
+		const double rho = c.head(n - l).dot(c.tail(n - l)) / c0;
+		f += 2.0 * (1.0 - double(l) / (max_lag + 1)) * rho;
+	}
+	return std::max(1.0, f);
+}
+
+namespace
+{
+/** Regularised upper incomplete gamma Q(a, x) (series / continued fraction). */
+double gammaQ(double a, double x)
+{
+	if (x <= 0) return 1.0;
+	const double gln = std::lgamma(a);
+	if (x < a + 1)
+	{
+		double ap = a, sum = 1.0 / a, del = sum;
+		for (int i = 0; i < 1000; ++i)
+		{
+			ap += 1;
+			del *= x / ap;
+			sum += del;
+			if (std::fabs(del) < std::fabs(sum) * 1e-15) break;
+		}
+		return 1.0 - sum * std::exp(-x + a * std::log(x) - gln);
+	}
+	const double fpmin = 1e-300;
+	double b = x + 1 - a, c = 1 / fpmin, d = 1 / b, h = d;
+	for (int i = 1; i < 1000; ++i)
+	{
+		const double an = -i * (i - a);
+		b += 2;
+		d = an * d + b;
+		if (std::fabs(d) < fpmin) d = fpmin;
+		c = b + an / c;
+		if (std::fabs(c) < fpmin) c = fpmin;
+		d = 1 / d;
+		const double del = d * c;
+		h *= del;
+		if (std::fabs(del - 1) < 1e-15) break;
+	}
+	return std::exp(-x + a * std::log(x) - gln) * h;
+}
+}  // namespace
+
+double chi2Survival(double x, double dof)
+{
+	if (!(x > 0)) return 1.0;
+	return std::clamp(gammaQ(0.5 * dof, 0.5 * x), 0.0, 1.0);
+}
+
+}  // namespace mrpt_fog::discrepancy
