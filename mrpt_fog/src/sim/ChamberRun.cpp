@@ -52,6 +52,7 @@ FogSeries simulateChamber(const ChamberProfile& profile, const FogDevice& device
 
 	FogSeries out;
 	out.sensor_label = "FOG";
+	out.epoch_s = kSimEpoch_s;
 	out.has_axis = {false, false, true};
 	for (const auto& t : device.thermistors) out.thermistors.push_back(t.info);
 	out.time_s.reserve(n);
@@ -63,7 +64,7 @@ FogSeries simulateChamber(const ChamberProfile& profile, const FogDevice& device
 
 	for (std::size_t k = 0; k < n; k++)
 	{
-		const double t = k * dt;
+		const double t = static_cast<double>(k) / settings.rate_hz;
 		const ChamberState st = profile.stateAt(t);
 		const FogSample s = k == 0 ? sim.start(st, profile.initialState()) : sim.advance(dt, st);
 		out.time_s.push_back(t);

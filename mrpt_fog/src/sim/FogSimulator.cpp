@@ -12,7 +12,15 @@ namespace
 constexpr double kArcsecPerDeg = 3600.0;
 constexpr double kSecondsPerMinute = 60.0;
 
-double quantise(double v, double q) { return q > 0 ? q * std::round(v / q) : v; }
+// Rounds to a multiple of q; when 1/q is an integer (0.01 C) divides by it, so that the result
+// is the double nearest to the decimal value (prints as "30.06", not "30.060000000000002").
+double quantise(double v, double q)
+{
+	if (!(q > 0)) return v;
+	const double inv = 1.0 / q;
+	if (std::abs(inv - std::round(inv)) < 1e-9 * inv) return std::round(v * inv) / std::round(inv);
+	return q * std::round(v / q);
+}
 }  // namespace
 
 FogSimulator::FogSimulator(const FogDevice& device, const EffectSet& effects, std::uint64_t seed)
@@ -173,8 +181,9 @@ FogSample FogSimulator::makeSample(double dt_s, const Eigen::VectorXd& Tprev, co
 	acc_deg_ += full * dt_s / units::kSecondsPerHour;
 	acc_ideal_deg_ += ideal * dt_s / units::kSecondsPerHour;
 	const long long q = std::llround(acc_deg_ / q_deg), qi = std::llround(acc_ideal_deg_ / q_deg);
-	out.rate_dph = (q - q_prev_) * q_deg * units::kSecondsPerHour / dt_s;
-	out.ideal_rate_dph = (qi - q_ideal_prev_) * q_deg * units::kSecondsPerHour / dt_s;
+	// counts x arcsec / s = deg/h
+	out.rate_dph = static_cast<double>(q - q_prev_) * nz.angle_quantum_arcsec / dt_s;
+	out.ideal_rate_dph = static_cast<double>(qi - q_ideal_prev_) * nz.angle_quantum_arcsec / dt_s;
 	q_prev_ = q;
 	q_ideal_prev_ = qi;
 	return out;

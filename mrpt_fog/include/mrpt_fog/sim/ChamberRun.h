@@ -18,10 +18,13 @@
 
 namespace mrpt_fog::sim
 {
+/** The fixed UNIX epoch of simulated runs: 2024-05-01T00:00:00Z (reproducible timestamps). */
+constexpr double kSimEpoch_s = 1714521600.0;
+
 /** Settings shared by the chamber and vehicle runs. */
 struct SimSettings
 {
-	std::uint64_t seed = 20240501;  //!< run seed (kDefaultSeed)
+	std::uint64_t seed = 20240501;  //!< run seed (= kDefaultSeed, SimRandom.h)
 	double rate_hz = 10.0;  //!< output sample rate [Hz] (> 0, <= 1000)
 	EffectSet effects = defaultEffects();
 	std::string profile_source;  //!< what to record as the profile (preset name or file)

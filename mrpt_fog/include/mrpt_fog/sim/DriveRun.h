@@ -1,0 +1,53 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file DriveRun.h
+ * The vehicle scenario: a ground vehicle drives a DriveTrajectory (exact truth) while its cabin
+ * follows a ChamberProfile (default preset `drive_cabin`: winter cold start, the gyro powered at
+ * t = 0 from an unpowered cold soak, so ambient change and self-heating give a coil transient of
+ * more than 20 C). A level z-axis FOG measures yaw rate + the vertical Earth rate
+ * (15.041 deg/h x sin(latitude)); wheel odometry integrates distance and heading with scale
+ * errors and noise.
+ *
+ * Outputs (all timestamps epoch_s + t):
+ *  - fog: label "FOG", the gyro with every enabled thermal error;
+ *  - fog_ideal: label "FOG_IDEAL", the same noise realisation without thermal error;
+ *  - others: CObservationFOG "FOG_IDEAL" samples, CObservationOdometry "ODOMETRY" (cumulative
+ *    pose2D + local velocities) and CObservationRobotPose "GROUND_TRUTH" (true 3D pose, zero
+ *    covariance), in time order.
+ * Metadata: latitude_deg, sim.* (as chamber runs) and drive.* (odometry errors, coil transient). */
+
+#include <mrpt/obs/CObservation.h>
+#include <mrpt_fog/obs/FogSeries.h>
+#include <mrpt_fog/sim/ChamberProfile.h>
+#include <mrpt_fog/sim/ChamberRun.h>
+#include <mrpt_fog/sim/DriveTrajectory.h>
+#include <mrpt_fog/sim/FogDevice.h>
+
+#include <vector>
+
+namespace mrpt_fog::sim
+{
+/** Wheel-odometry errors (estimates for a car's wheel-speed odometry). */
+struct OdometryErrors
+{
+	double scale_error = 0.004;  //!< distance scale error (tyre radius, 0.4 %)
+	double yaw_scale_error = 0.01;  //!< heading-increment scale error (track width, 1 %)
+	double distance_noise_m_rt_m = 0.002;  //!< white noise on distance [m per sqrt(m)]
+	double yaw_noise_rad_rt_m = 2e-4;  //!< white noise on heading [rad per sqrt(m)]
+};
+
+struct DriveOutput
+{
+	FogSeries fog;
+	FogSeries fog_ideal;
+	std::vector<mrpt::obs::CObservation::Ptr> others;  //!< FOG_IDEAL, ODOMETRY, GROUND_TRUTH
+	double coil_transient_C = 0;  //!< max - min of the coil mean temperature [degC]
+	double duration_s = 0;
+};
+
+/** Simulates the drive over the cabin profile's duration (> 130 s). */
+DriveOutput simulateDrive(const ChamberProfile& cabin, const FogDevice& device, const SimSettings& settings,
+						  const OdometryErrors& odo = {});
+
+}  // namespace mrpt_fog::sim

@@ -1,0 +1,135 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CObservationRobotPose.h>
+#include <mrpt/system/datetime.h>
+#include <mrpt_fog/obs/FogSeriesConversion.h>
+#include <mrpt_fog/obs/Units.h>
+#include <mrpt_fog/sim/DriveRun.h>
+#include <mrpt_fog/sim/FogSimulator.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace mrpt_fog::sim
+{
+namespace
+{
+std::string num(double v)
+{
+	std::ostringstream ss;
+	ss.precision(10);
+	ss << v;
+	return ss.str();
+}
+}  // namespace
+
+DriveOutput simulateDrive(const ChamberProfile& cabin, const FogDevice& device, const SimSettings& settings,
+						  const OdometryErrors& odo)
+{
+	settings.validate();
+	const DriveTrajectory traj = DriveTrajectory::randomDrive(settings.seed, cabin.duration_s());
+	FogSimulator sim(device, settings.effects, settings.seed);
+	SimRandom rng_odo(settings.seed, RandomStream::Odometry);
+	const double dt = 1.0 / settings.rate_hz;
+	const auto n = static_cast<std::size_t>(std::floor(cabin.duration_s() * settings.rate_hz + 1e-9)) + 1;
+
+	DriveOutput out;
+	out.duration_s = static_cast<double>(n - 1) / settings.rate_hz;
+	FogSeries& fog = out.fog;
+	fog.sensor_label = "FOG";
+	fog.epoch_s = kSimEpoch_s;
+	fog.has_axis = {false, false, true};
+	for (const auto& t : device.thermistors) fog.thermistors.push_back(t.info);
+	fog.temp_C.assign(device.thermistors.size(), {});
+	FogSeries& ideal = out.fog_ideal;
+	ideal = fog;
+	ideal.sensor_label = "FOG_IDEAL";
+
+	std::vector<mrpt::obs::CObservation::Ptr> odo_obs, truth_obs;
+	double ox = 0, oy = 0, oyaw = 0;  // odometry pose (starts at the true initial pose: origin)
+	double coil_min = 1e300, coil_max = -1e300;
+	PlanarState prev = traj.at(0);
+	for (std::size_t k = 0; k < n; k++)
+	{
+		const double t = static_cast<double>(k) / settings.rate_hz;
+		const PlanarState now = traj.at(t);
+		ChamberState st = cabin.stateAt(t);
+		// Mean applied yaw rate over (t - dt, t], exact from the heading truth [deg/h].
+		st.table_rate_dph = k == 0 ? now.yaw_rate_rad_s * units::kRadPerSecToDegPerHour
+								   : (now.yaw_rad - prev.yaw_rad) / dt * units::kRadPerSecToDegPerHour;
+		st.field_uT = 0;
+		const FogSample s = k == 0 ? sim.start(st, cabin.initialState()) : sim.advance(dt, st);
+		coil_min = std::min(coil_min, s.coil_mean_C);
+		coil_max = std::max(coil_max, s.coil_mean_C);
+		for (FogSeries* f : {&fog, &ideal})
+		{
+			f->time_s.push_back(t);
+			for (std::size_t i = 0; i < s.temp_C.size(); i++) f->temp_C[i].push_back(s.temp_C[i]);
+			f->power.push_back(s.power_on ? 1.0 : 0.0);
+			f->table_rate_dph.push_back(st.table_rate_dph);
+		}
+		fog.rate_dph[2].push_back(s.rate_dph);
+		ideal.rate_dph[2].push_back(s.ideal_rate_dph);
+
+		// Wheel odometry over the step.
+		double v_odo = 0, w_odo = 0;
+		if (k > 0)
+		{
+			const double ds = now.distance_m - prev.distance_m, dyaw = now.yaw_rad - prev.yaw_rad;
+			double ds_o = ds * (1 + odo.scale_error), dyaw_o = dyaw * (1 + odo.yaw_scale_error);
+			const double n1 = rng_odo.normal(), n2 = rng_odo.normal();  // drawn every step
+			if (ds > 0)
+			{
+				ds_o += odo.distance_noise_m_rt_m * std::sqrt(ds) * n1;
+				dyaw_o += odo.yaw_noise_rad_rt_m * std::sqrt(ds) * n2;
+			}
+			ox += ds_o * std::cos(oyaw + 0.5 * dyaw_o);
+			oy += ds_o * std::sin(oyaw + 0.5 * dyaw_o);
+			oyaw = std::remainder(oyaw + dyaw_o, 2 * units::kPi);
+			v_odo = ds_o / dt;
+			w_odo = dyaw_o / dt;
+		}
+		const auto stamp = mrpt::Clock::fromDouble(kSimEpoch_s + t);
+		auto o = mrpt::obs::CObservationOdometry::Create();
+		o->sensorLabel = "ODOMETRY";
+		o->timestamp = stamp;
+		o->odometry = mrpt::poses::CPose2D(ox, oy, oyaw);
+		o->hasVelocities = true;
+		o->velocityLocal = mrpt::math::TTwist2D(v_odo, 0.0, w_odo);
+		odo_obs.push_back(o);
+		auto g = mrpt::obs::CObservationRobotPose::Create();
+		g->sensorLabel = "GROUND_TRUTH";
+		g->timestamp = stamp;
+		g->pose.mean = mrpt::poses::CPose3D(now.x_m, now.y_m, 0.0, std::remainder(now.yaw_rad, 2 * units::kPi), 0.0, 0.0);
+		g->pose.cov.setZero();
+		truth_obs.push_back(g);
+		prev = now;
+	}
+	out.coil_transient_C = coil_max - coil_min;
+
+	recordSimMetadata(fog, "vehicle", cabin, device, settings);
+	fog.setMetadata("drive.odometry.scale_error", num(odo.scale_error));
+	fog.setMetadata("drive.odometry.yaw_scale_error", num(odo.yaw_scale_error));
+	fog.setMetadata("drive.odometry.distance_noise_m_rt_m", num(odo.distance_noise_m_rt_m));
+	fog.setMetadata("drive.odometry.yaw_noise_rad_rt_m", num(odo.yaw_noise_rad_rt_m));
+	fog.setMetadata("drive.coil_transient_C", num(out.coil_transient_C));
+	fog.setMetadata("drive.distance_m", num(traj.at(out.duration_s).distance_m));
+	fog.setMetadata("drive.streams", "FOG (thermal error), FOG_IDEAL (same noise, no thermal error), ODOMETRY, GROUND_TRUTH");
+	const auto fog_meta = fog.metadata;
+	ideal.metadata = fog_meta;
+	ideal.setMetadata("sim.effects", "none (ideal twin of FOG: same noise realisation)");
+
+	// Interleave FOG_IDEAL, ODOMETRY, GROUND_TRUTH per sample (already in time order).
+	const auto ideal_obs = observationsFromSeries(ideal);
+	out.others.reserve(3 * n);
+	for (std::size_t k = 0; k < n; k++)
+	{
+		out.others.push_back(ideal_obs[k]);
+		out.others.push_back(odo_obs[k]);
+		out.others.push_back(truth_obs[k]);
+	}
+	return out;
+}
+
+}  // namespace mrpt_fog::sim
