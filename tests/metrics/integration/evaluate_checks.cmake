@@ -1,0 +1,136 @@
+# fog-evaluate end to end (run with cmake -P). Variables: EVALUATE, CALIBRATE (MODE cal), DATA,
+# WORK, MODE:
+#   step : closed-form figures of tests/data/metrics/step_2000s.csv (see tests/data/metrics/README.md)
+#   cal  : fog-calibrate + fog-evaluate --cal on chamber_small.csv (known bias law + white noise)
+#   bad  : bad inputs give one error line on stderr, a non-zero exit and no output file
+# CMake has no floating point: numbers are compared with awk (POSIX).
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+
+# expect_near(<json text> "<key> [<key>...]" <expected> <abs tol>)
+function(expect_near json keys expected tol)
+  separate_arguments(key_list UNIX_COMMAND "${keys}")
+  string(JSON v ERROR_VARIABLE err GET "${json}" ${key_list})
+  if(err)
+    message(FATAL_ERROR "JSON key '${keys}': ${err}")
+  endif()
+  execute_process(COMMAND awk "BEGIN { d = ${v} - (${expected}); if (d < 0) d = -d; exit !(d <= ${tol}) }"
+    RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "JSON '${keys}' = ${v}, expected ${expected} +- ${tol}")
+  endif()
+  message(STATUS "ok: ${keys} = ${v} (expected ${expected} +- ${tol})")
+endfunction()
+
+function(expect_key json keys)
+  separate_arguments(key_list UNIX_COMMAND "${keys}")
+  string(JSON v ERROR_VARIABLE err GET "${json}" ${key_list})
+  if(err)
+    message(FATAL_ERROR "JSON key '${keys}' missing: ${err}")
+  endif()
+endfunction()
+
+function(run_ok)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "command failed (${rc}): ${ARGN}\n${out}\n${err}")
+  endif()
+  message(STATUS "${out}")
+endfunction()
+
+# PNG: file exists, signature, and IHDR width/height (big-endian at bytes 16..23).
+function(expect_png path width height)
+  if(NOT EXISTS ${path})
+    message(FATAL_ERROR "missing plot ${path}")
+  endif()
+  file(READ ${path} hex LIMIT 24 HEX)
+  string(SUBSTRING "${hex}" 0 16 sig)
+  string(SUBSTRING "${hex}" 32 8 w)
+  string(SUBSTRING "${hex}" 40 8 h)
+  math(EXPR w "0x${w}")
+  math(EXPR h "0x${h}")
+  if(NOT sig STREQUAL "89504e470d0a1a0a" OR NOT w EQUAL ${width} OR NOT h EQUAL ${height})
+    message(FATAL_ERROR "${path}: signature ${sig}, ${w} x ${h}; expected a ${width} x ${height} PNG")
+  endif()
+endfunction()
+
+# expect_fail(<name> <stderr must contain> <command...>)
+function(expect_fail name needle)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(rc EQUAL 0)
+    message(FATAL_ERROR "${name}: exit 0, expected an error")
+  endif()
+  string(STRIP "${err}" e)
+  string(FIND "${e}" "\n" nl)
+  if(e STREQUAL "" OR NOT nl EQUAL -1)
+    message(FATAL_ERROR "${name}: expected one error line on stderr, got:\n${err}")
+  endif()
+  string(FIND "${e}" "${needle}" pos)
+  if(pos EQUAL -1)
+    message(FATAL_ERROR "${name}: error line does not mention '${needle}': ${e}")
+  endif()
+  message(STATUS "ok: ${name}: exit ${rc}: ${e}")
+endfunction()
+
+if(MODE STREQUAL "step")
+  run_ok(${EVALUATE} -i ${DATA}/step_2000s.csv --json ${WORK}/step.json --plots ${WORK}/plots)
+  file(READ ${WORK}/step.json j)
+  # 20 windows, 10 at 9.67 and 10 at 10.67: std (N-1) = sqrt(20 * 0.25 / 19).
+  expect_near("${j}" "tau_s" 100 0)
+  expect_near("${j}" "raw stability_dph" 0.51298918 1e-7)
+  expect_near("${j}" "raw range_dph" 1 1e-9)
+  expect_near("${j}" "raw raw_peak_to_peak_dph" 1 1e-9)
+  expect_near("${j}" "raw mean_dph" 10.17 1e-9)
+  expect_near("${j}" "raw window_count" 20 0)
+  expect_near("${j}" "raw dropped_tail_s" 0 1e-9)
+  foreach(k arw_dpsh bias_instability_dph rrw_dphsh quantization_arcsec allan_tau_s allan_adev_dph)
+    expect_key("${j}" "raw ${k}")
+  endforeach()
+  expect_png(${WORK}/plots/bias_vs_time.png 1100 800)
+  expect_png(${WORK}/plots/bias_vs_temperature.png 900 650)
+  expect_png(${WORK}/plots/allan_deviation.png 900 700)
+  # tau 300 s: 6 windows (200 s tail dropped) with averages 0, 0, 0, 2/3 (the step at 1000 s is
+  # inside [900, 1200)), 1, 1 (+ 9.67): mean 4/9, std (N-1) = sqrt(102 / 405).
+  run_ok(${EVALUATE} -i ${DATA}/step_2000s.csv --tau 300 --json ${WORK}/step300.json)
+  file(READ ${WORK}/step300.json j)
+  expect_near("${j}" "tau_s" 300 0)
+  expect_near("${j}" "raw stability_dph" 0.50184844 1e-7)
+  expect_near("${j}" "raw mean_dph" 10.11444444 1e-7)
+  expect_near("${j}" "raw window_count" 6 0)
+  expect_near("${j}" "raw dropped_tail_s" 200 1e-9)
+elseif(MODE STREQUAL "cal")
+  run_ok(${CALIBRATE} -i ${DATA}/chamber_small.csv --model multipoint -o ${WORK}/cal.yaml)
+  run_ok(${EVALUATE} -i ${DATA}/chamber_small.csv --cal ${WORK}/cal.yaml --json ${WORK}/cal.json
+    --plots ${WORK}/plots)
+  file(READ ${WORK}/cal.json j)
+  foreach(k "raw stability_dph" "raw range_dph" "compensated stability_dph" "compensated range_dph" "tau_s"
+      "compensated arw_dpsh" "improvement stability_ratio")
+    expect_key("${j}" "${k}")
+  endforeach()
+  # The file's bias is a known law + white noise of sigma 0.05 deg/h at 0.5 Hz. A compensation that
+  # removes the law leaves the noise: 100 s averages of 50 samples have sigma 0.05/sqrt(50) = 0.00707,
+  # and the std of 90 of them has a relative standard error of 1/sqrt(178) = 7.5 %: +-0.0025 is
+  # about 4.7 of them (and leaves room for the small rate-estimation error of the causal model).
+  expect_near("${j}" "compensated stability_dph" 0.00707 0.0025)
+  # ARW of the same noise: N = 0.05 / (60 sqrt(0.5)) = 1.1785e-3 deg/sqrt(h); the Allan fit is
+  # dominated by tau = 2 s with 4500 samples (relative standard error about 1 %): bound 5 %.
+  expect_near("${j}" "raw arw_dpsh" 1.1785e-3 0.6e-4)
+  expect_near("${j}" "compensated arw_dpsh" 1.1785e-3 0.6e-4)
+  # The compensated mean is the residual of a fit with a constant term: about zero.
+  expect_near("${j}" "compensated mean_dph" 0 0.002)
+  expect_png(${WORK}/plots/allan_deviation.png 900 700)
+elseif(MODE STREQUAL "bad")
+  expect_fail(missing_file "no_such_file.csv" ${EVALUATE} -i ${WORK}/no_such_file.csv)
+  expect_fail(tau_zero "--tau" ${EVALUATE} -i ${DATA}/step_2000s.csv --tau 0)
+  expect_fail(tau_negative "--tau" ${EVALUATE} -i ${DATA}/step_2000s.csv --tau -5)
+  expect_fail(tau_longer_than_run "at least 2" ${EVALUATE} -i ${DATA}/short_300s.csv --tau 200
+    --json ${WORK}/never.json)
+  expect_fail(missing_cal "no_such_cal.yaml" ${EVALUATE} -i ${DATA}/step_2000s.csv --cal ${WORK}/no_such_cal.yaml
+    --json ${WORK}/never.json)
+  expect_fail(json_dir_missing "no/such/dir" ${EVALUATE} -i ${DATA}/step_2000s.csv --json ${WORK}/no/such/dir/x.json)
+  if(EXISTS ${WORK}/never.json)
+    message(FATAL_ERROR "an output file was written despite the error")
+  endif()
+else()
+  message(FATAL_ERROR "unknown MODE '${MODE}'")
+endif()
