@@ -46,9 +46,10 @@ ThermalTerm ThermalTerm::of(SignalKind kind, const std::string& a, const std::st
 
 ThermalTerm ThermalTerm::parse(const std::string& text_in)
 {
-	std::string text;
-	for (char c : text_in)
-		if (c != ' ') text += c;
+	// Trim; the only inner space allowed is the one of "d/dt dT(".
+	const auto b = text_in.find_first_not_of(" \t"), e = text_in.find_last_not_of(" \t");
+	std::string text = b == std::string::npos ? std::string() : text_in.substr(b, e - b + 1);
+	if (text.rfind("d/dt dT(", 0) == 0) text = "d/dtdT(" + text.substr(8);
 	const auto fail = [&](const std::string& why) {
 		throw std::invalid_argument("model term '" + text_in + "': " + why +
 									" (expected 1, T(a)^k, dT/dt(a)^k, dT(a-b)^k or d/dt dT(a-b)^k)");
@@ -59,7 +60,7 @@ ThermalTerm ThermalTerm::parse(const std::string& text_in)
 		const char* prefix;
 		SignalKind kind;
 	};
-	// "d/dtdT(" before "dT(" (spaces removed above).
+	// "d/dtdT(" before "dT(" (its space removed above).
 	const Form forms[] = {{"d/dtdT(", SignalKind::DiffRate}, {"dT/dt(", SignalKind::Rate}, {"dT(", SignalKind::Diff},
 						  {"T(", SignalKind::Temp}};
 	for (const Form& f : forms)

@@ -1,0 +1,63 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <gtest/gtest.h>
+#include <mrpt_fog/model/ThermalFeatureSet.h>
+
+#include <cmath>
+
+using namespace mrpt_fog;
+
+TEST(ThermalFeatureSet, TermNamesRoundTrip)
+{
+	for (const std::string n : {"1", "T(Ti1)^5", "dT/dt(To2)^3", "dT(Ti1-To1)^2", "d/dt dT(Ti1-To1)^1"})
+		EXPECT_EQ(ThermalTerm::parse(n).name(), n);
+	EXPECT_EQ(ThermalTerm::parse("dT(Ti1-To1)").name(), "dT(Ti1-To1)^1");
+	EXPECT_EQ(ThermalTerm::parse("T(a)").signal.kind, SignalKind::Temp);
+	EXPECT_EQ(ThermalTerm::parse("d/dt dT(a-b)^2").signal.kind, SignalKind::DiffRate);
+}
+
+TEST(ThermalFeatureSet, BadTermsThrow)
+{
+	for (const std::string n : {"T(Ti1)^6", "dT/dt(Ti1)^4", "d/dt dT(a-b)^4", "T(Ti 1)", "T(a.b)", "dT(a-a)", "dT(ab)",
+								"T(a)^0", "T(a)^x", "T(a", "X(a)", "T(a)2", ""})
+		EXPECT_THROW(ThermalTerm::parse(n), std::invalid_argument) << n;
+	EXPECT_THROW(ThermalFeatureSet::fromNames({"T(a)^1", "T(a)"}), std::invalid_argument);
+}
+
+TEST(ThermalFeatureSet, SignalsThermistorsAndFallbackSubsets)
+{
+	const auto fs = ThermalFeatureSet::fromNames({"T(Ti1)^1", "T(Ti1)^2", "dT/dt(Ti1)^1", "dT(Ti1-To1)^1", "T(To1)^1"});
+	EXPECT_EQ(fs.termCount(), 6u);  // constant added first
+	EXPECT_EQ(fs.terms()[0].name(), "1");
+	EXPECT_EQ(fs.signals().size(), 4u);
+	EXPECT_EQ(fs.thermistors(), (std::vector<std::string>{"Ti1", "To1"}));
+	const auto w = fs.without("To1");
+	EXPECT_EQ(w.termNames(), (std::vector<std::string>{"1", "T(Ti1)^1", "T(Ti1)^2", "dT/dt(Ti1)^1"}));
+	EXPECT_FALSE(w.references("To1"));
+}
+
+// z = (v - centre) / scale, term = z^k; clamping to [min, max] counted.
+TEST(ThermalFeatureSet, NormalisedFeaturesAndClamping)
+{
+	auto fs = ThermalFeatureSet::fromNames({"T(a)^1", "T(a)^3", "dT/dt(a)^2", "dT(a-b)^1"});
+	// signals: T(a), dT/dt(a), dT(a-b)
+	fs.normalisation()[0] = {10.0, 50.0, -40.0, 60.0};
+	fs.normalisation()[1] = {0.0, 0.02, -0.02, 0.02};
+	fs.normalisation()[2] = {0.0, 2.0, -2.0, 2.0};
+	const double temp[2] = {35.0, 34.0}, rate[2] = {0.01, 0.0};
+	std::vector<double> v(3), f(fs.termCount());
+	fs.signalValues(temp, rate, v.data());
+	EXPECT_DOUBLE_EQ(v[2], 1.0);
+	EXPECT_EQ(fs.features(v.data(), f.data(), true), 0);
+	EXPECT_DOUBLE_EQ(f[0], 1.0);
+	EXPECT_DOUBLE_EQ(f[1], 0.5);
+	EXPECT_DOUBLE_EQ(f[2], 0.125);
+	EXPECT_DOUBLE_EQ(f[3], 0.25);
+	EXPECT_DOUBLE_EQ(f[4], 0.5);
+	const double hot[2] = {80.0, 70.0};
+	fs.signalValues(hot, rate, v.data());
+	EXPECT_EQ(fs.features(v.data(), f.data(), true), 2);  // T(a) and dT(a-b) clamped
+	EXPECT_DOUBLE_EQ(f[1], 1.0);
+	EXPECT_DOUBLE_EQ(f[4], 1.0);
+	EXPECT_EQ(fs.features(v.data(), f.data(), false), 0);  // no clamp: extrapolates
+	EXPECT_DOUBLE_EQ(f[1], 1.4);
+}
