@@ -20,7 +20,7 @@ struct HeadingOptions
 {
 	double latitude_deg = 0.0;
 	bool transport_rate = false;  //!< the simulator's drive is flat-Earth: off by default
-	nav::RateSampling sampling = nav::RateSampling::Instantaneous;
+	nav::RateSampling sampling = nav::RateSampling::IntervalAverage;  //!< fog-sim: mean over (t - dt, t]
 };
 
 struct VariantResult

@@ -80,9 +80,9 @@ int main(int argc, char** argv)
 								   "the simulator's drive is flat-Earth)",
 								   cmd);
 		TCLAP::ValueArg<std::string> sampling("", "rate-sampling",
-											  "gyro samples are 'instantaneous' (trapezoid) or 'average' over the "
+											  "gyro samples are the mean rate over the preceding interval ('average', digital FOGs and fog-sim) or 'instantaneous' (trapezoid rule) "
 											  "preceding interval",
-											  false, "instantaneous", "KIND", cmd);
+											  false, "average", "KIND", cmd);
 		cmd.parse(argc, argv);
 
 		drift::HeadingOptions hopt;
