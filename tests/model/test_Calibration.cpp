@@ -1,0 +1,201 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <gtest/gtest.h>
+#include <mrpt_fog/model/Calibration.h>
+#include <mrpt_fog/model/Compensator.h>
+
+#include <cmath>
+#include <random>
+
+#include "SyntheticCoil.h"
+
+using namespace mrpt_fog;
+
+namespace
+{
+double truthT(double T) { const double d = T - 10; return 0.5 + 4e-3 * d + 3e-5 * d * d - 2e-7 * d * d * d + 1e-9 * d * d * d * d; }
+double truthR(double r) { return 30 * r + 2000 * r * r - 5e4 * r * r * r; }
+
+/** Run A's Ti1 temperatures with a bias that is a KNOWN function of Ti1 and its causal rate. */
+FogSeries knownRun(double noise_dph, unsigned seed)
+{
+	FogSeries s = fogtest::makeCoilRun("A", seed, 0.0);
+	const auto rate = CausalRateEstimator(60.0).estimate(s.time_s, s.temp_C[0]);
+	std::mt19937 rng(seed);
+	std::normal_distribution<double> nd(0, noise_dph);
+	for (std::size_t k = 0; k < s.size(); k++)
+		s.rate_dph[2][k] = std::isnan(rate[k]) ? 0.0 : truthT(s.temp_C[0][k]) + truthR(rate[k]) + nd(rng);
+	return s;
+}
+
+/** Model prediction at T(Ti1) = T, dT/dt(Ti1) = r, and its standard error from the covariance. */
+std::pair<double, double> predictM2(const BiasModel& m, double T, double r)
+{
+	const double v[2] = {T, r};  // signals of M2: T(Ti1), dT/dt(Ti1)
+	std::vector<double> f(m.features.termCount());
+	m.features.features(v, f.data(), false);
+	Eigen::Map<Eigen::VectorXd> fv(f.data(), static_cast<Eigen::Index>(f.size()));
+	double pred = 0;
+	for (std::size_t i = 0; i < f.size(); i++) pred += m.coef_dph[i] * f[i];
+	return {pred, std::sqrt(fv.dot(m.covariance * fv))};
+}
+}  // namespace
+
+// Noise-free data from a known poly5(T) + poly3(rate): the fitted polynomial equals the truth
+// at every probe point (evaluating at 6 temperatures x 4 rates identifies all 9 coefficients)
+// to 1e-7 deg/h: only round-off of a cond ~1e4 system separates them.
+TEST(Calibration, RecoversKnownCoefficientsNoiseFree)
+{
+	const FogSeries s = knownRun(0.0, 1);
+	FitOptions o;
+	o.selection = "none";
+	const Calibration cal = fitCalibration({s}, "M2:Ti1", o);
+	ASSERT_EQ(cal.model.features.termCount(), 9u);
+	const auto& nT = cal.model.features.normalisation()[0];
+	const auto& nR = cal.model.features.normalisation()[1];
+	for (double a : {-1.0, -0.6, -0.2, 0.2, 0.6, 1.0})
+		for (double b : {-1.0, -0.3, 0.4, 1.0})
+		{
+			const double T = nT.centre + a * nT.scale, r = nR.centre + b * nR.scale;
+			EXPECT_NEAR(predictM2(cal.model, T, r).first, truthT(T) + truthR(r), 1e-7) << T << " " << r;
+		}
+}
+
+// With white noise (0.003 deg/h) the truth must lie within 5 standard errors of the prediction,
+// the standard errors coming from the fit's covariance (itself checked against the closed form
+// sigma^2 (X'X)^-1 in test_BiasFit).
+TEST(Calibration, RecoversKnownCoefficientsWithinFiveSigma)
+{
+	const FogSeries s = knownRun(0.003, 2);
+	FitOptions o;
+	o.selection = "none";
+	const Calibration cal = fitCalibration({s}, "M2:Ti1", o);
+	const auto& nT = cal.model.features.normalisation()[0];
+	const auto& nR = cal.model.features.normalisation()[1];
+	for (double a : {-0.9, -0.5, 0.0, 0.5, 0.9})
+		for (double b : {-0.8, 0.0, 0.8})
+		{
+			const double T = nT.centre + a * nT.scale, r = nR.centre + b * nR.scale;
+			const auto [pred, se] = predictM2(cal.model, T, r);
+			EXPECT_GT(se, 0.0);
+			EXPECT_LT(std::abs(pred - truthT(T) - truthR(r)), 5 * se) << T << " " << r << " se " << se;
+		}
+	EXPECT_NEAR(cal.model.rms_in_sample_dph, 0.003, 0.0003);  // residual = the injected noise
+}
+
+// The failure mode, reproduced and guarded: fitted on profile A, evaluated on the
+// independent profile B. With the default (auto) fit, adding thermistors never makes the
+// held-out result worse than fewer thermistors beyond 3 % (run-to-run noise of the B figures is
+// ~1 %: the selection sees only A, so exact monotonicity on unseen data cannot be guaranteed);
+// plain least squares on the same terms does get much worse with more thermistors.
+TEST(Calibration, MoreThermistorsNeverWorseHeldOut)
+{
+	const FogSeries A = fogtest::makeCoilRun("A", 11), B = fogtest::makeCoilRun("B", 12);
+	const std::vector<std::string> sets = {"multipoint:Ti1", "multipoint:Ti1,To1", "multipoint:Ti1,To1,Ti2", "multipoint"};
+	std::vector<double> auto_rms, plain_rms, cv_rms;
+	for (const auto& p : sets)
+	{
+		const Calibration ca = fitCalibration({A}, p);
+		auto_rms.push_back(evaluateCalibration(ca, B, "B").rms_dph);
+		cv_rms.push_back(ca.model.rms_held_out_dph);
+		FitOptions none;
+		none.selection = "none";
+		const Calibration cn = fitCalibration({A}, p, none);
+		plain_rms.push_back(evaluateCalibration(cn, B, "B").rms_dph);
+	}
+	for (std::size_t i = 0; i < sets.size(); i++)
+		std::printf("  %-26s held-out B RMS: auto %.5f  plain %.5f deg/h; CV RMS (auto) %.5f\n", sets[i].c_str(),
+					auto_rms[i], plain_rms[i], cv_rms[i]);
+	for (std::size_t i = 1; i < sets.size(); i++)
+		for (std::size_t j = 0; j < i; j++)
+		{
+			EXPECT_LE(auto_rms[i], 1.03 * auto_rms[j]) << sets[i] << " vs " << sets[j];
+			EXPECT_LE(cv_rms[i], cv_rms[j] * (1 + 1e-9)) << sets[i] << " vs " << sets[j];
+		}
+	EXPECT_LT(auto_rms[3], 0.7 * plain_rms[3]);  // the guard matters with 4 thermistors
+	EXPECT_GT(plain_rms[3], 1.3 * plain_rms[1]);  // the failure it guards against
+}
+
+TEST(Calibration, PointsKPicksBestSubsetByHeldOutError)
+{
+	const FogSeries A = fogtest::makeCoilRun("A", 21);
+	const Calibration best = fitCalibration({A}, "points:2");
+	double min_cv = 1e9;
+	const char* pairs[] = {"Ti1,To1", "Ti1,Ti2", "Ti1,To2", "To1,Ti2", "To1,To2", "Ti2,To2"};
+	for (const char* p : pairs)
+		min_cv = std::min(min_cv, fitCalibration({A}, std::string("multipoint:") + p).model.rms_held_out_dph);
+	EXPECT_NEAR(best.model.rms_held_out_dph, min_cv, 1e-12);
+	EXPECT_LE(best.model.features.thermistors().size(), 2u);
+}
+
+TEST(Calibration, FallbacksAndFiguresAreLabelled)
+{
+	const FogSeries A = fogtest::makeCoilRun("A", 31);
+	const Calibration cal = fitCalibration({A}, "multipoint");
+	EXPECT_EQ(cal.fallbacks.size(), cal.model.features.thermistors().size());
+	for (const auto& f : cal.fallbacks)
+	{
+		EXPECT_FALSE(f.features.references(f.dropped)) << f.dropped;
+		EXPECT_GE(f.rms_held_out_dph, 0.0);
+	}
+	EXPECT_EQ(cal.in_sample.label, "in-sample");
+	EXPECT_EQ(cal.held_out.label, "held-out (blocked 5-fold)");
+	EXPECT_TRUE(cal.in_sample.valid);
+	EXPECT_LT(cal.in_sample.stability_dph, 0.1 * cal.in_sample.raw_stability_dph);
+	EXPECT_GE(cal.held_out.rms_dph, cal.in_sample.rms_dph * 0.99);
+	// two runs: leave-one-run-out
+	const Calibration two = fitCalibration({A, fogtest::makeCoilRun("B", 32)}, "M2:Ti1");
+	EXPECT_EQ(two.held_out.label, "held-out (leave-one-run-out, 2 runs)");
+}
+
+TEST(Calibration, RefusesDataThatCannotSupportTheModel)
+{
+	FogSeries A = fogtest::makeCoilRun("A", 41);
+	// too few samples: 60 samples for 33 terms (rates need 2 samples first)
+	FogSeries shortRun = A;
+	shortRun.resize(60);
+	EXPECT_THROW(fitCalibration({shortRun}, "multipoint"), std::invalid_argument);
+	// temperature span too narrow for a 5th-order polynomial: the end of the cold soak
+	FogSeries soak;
+	soak.thermistors = A.thermistors;
+	soak.has_axis = A.has_axis;
+	soak.temp_C.assign(4, {});
+	for (std::size_t k = 9500; k < 11000; k++) soak.appendSampleFrom(A, k);
+	try
+	{
+		fitCalibration({soak}, "M1:Ti1");
+		ADD_FAILURE() << "narrow span accepted";
+	}
+	catch (const std::invalid_argument& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("spans only"), std::string::npos) << e.what();
+	}
+	// rank deficient with plain least squares: two identical thermistors
+	FogSeries dup = A;
+	dup.temp_C[1] = dup.temp_C[0];
+	FitOptions none;
+	none.selection = "none";
+	try
+	{
+		fitCalibration({dup}, "multipoint:Ti1,To1", none);
+		ADD_FAILURE() << "rank-deficient system accepted";
+	}
+	catch (const std::invalid_argument& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("rank deficient"), std::string::npos) << e.what();
+	}
+	// the auto fit copes with the duplicate (it never adds a group that does not help)
+	EXPECT_NO_THROW(fitCalibration({dup}, "multipoint:Ti1,To1"));
+	// other bad input
+	EXPECT_THROW(fitCalibration({}, "multipoint"), std::invalid_argument);
+	FogSeries other = A;
+	other.thermistors[0].name = "Tx";
+	EXPECT_THROW(fitCalibration({A, other}, "M1:To1"), std::invalid_argument);
+	EXPECT_THROW(fitCalibration({A}, "M9"), std::invalid_argument);
+	FitOptions bad;
+	bad.selection = "lasso";
+	EXPECT_NO_THROW(fitCalibration({A}, "M1"));  // default point (first inner thermistor)
+	EXPECT_THROW(fitCalibration({A}, "M1", bad), std::invalid_argument);
+	FogSeries allNaN = A;
+	for (auto& v : allNaN.temp_C[0]) v = std::nan("");
+	EXPECT_THROW(fitCalibration({allNaN}, "M1:Ti1"), std::invalid_argument);
+}

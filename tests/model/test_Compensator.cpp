@@ -1,0 +1,168 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <gtest/gtest.h>
+#include <mrpt_fog/model/Calibration.h>
+#include <mrpt_fog/model/Compensator.h>
+
+#include <cmath>
+
+#include "SyntheticCoil.h"
+
+using namespace mrpt_fog;
+
+namespace
+{
+const Calibration& calA()
+{
+	static const Calibration cal = fitCalibration({fogtest::makeCoilRun("A", 51)}, "multipoint");
+	return cal;
+}
+
+/** Independent batch evaluation: per-column causal rates (CausalRateEstimator) and the generic
+ * ThermalFeatureSet feature path, no clamping, no Horner. */
+std::vector<double> batchBias(const BiasModel& m, const FogSeries& s, const RateEstimatorSettings& est)
+{
+	const auto& fs = m.features;
+	std::vector<std::vector<double>> rates;
+	std::vector<int> cols;
+	for (const auto& n : fs.thermistors())
+	{
+		cols.push_back(s.thermistorIndex(n));
+		rates.push_back(makeRateEstimator(est)->estimate(s.time_s, s.temp_C[cols.back()]));
+	}
+	std::vector<double> out(s.size(), std::nan("")), temp(cols.size()), rate(cols.size()), v(fs.signals().size());
+	for (std::size_t k = 0; k < s.size(); k++)
+	{
+		for (std::size_t i = 0; i < cols.size(); i++)
+		{
+			temp[i] = s.temp_C[cols[i]][k];
+			rate[i] = rates[i][k];
+		}
+		fs.signalValues(temp.data(), rate.data(), v.data());
+		out[k] = m.evaluate(v.data(), false);
+	}
+	return out;
+}
+}  // namespace
+
+// Streaming compensator == batch model, sample for sample (1e-9 deg/h: only the order of
+// floating-point operations differs), on the calibration run itself (nothing is clamped there).
+TEST(Compensator, StreamingEqualsBatchModel)
+{
+	const FogSeries A = fogtest::makeCoilRun("A", 51);
+	const CompensatedSeries c = compensate(calA(), A);
+	const auto ref = batchBias(calA().model, A, calA().rate_estimator);
+	std::size_t compared = 0;
+	for (std::size_t k = 0; k < A.size(); k++)
+	{
+		if (std::isnan(ref[k])) continue;
+		ASSERT_NEAR(c.bias_dph[k], ref[k], 1e-9) << k;
+		ASSERT_EQ(c.compensated_dph[k], c.raw_dph[k] - c.bias_dph[k]);
+		compared++;
+	}
+	EXPECT_GT(compared, A.size() - 5);
+	EXPECT_EQ(c.counters.clamped_samples, 0u);
+	EXPECT_EQ(c.counters.fallback_samples, 0u);
+	EXPECT_EQ(c.counters.no_model_samples, 1u);  // the first sample has no rate yet
+	// sample by sample through the class gives the same numbers as compensate()
+	Compensator comp(calA(), A.thermistors);
+	std::vector<double> temps(4);
+	for (std::size_t k = 0; k < 2000; k++)
+	{
+		for (int i = 0; i < 4; i++) temps[i] = A.temp_C[i][k];
+		ASSERT_EQ(comp.step(A.time_s[k], A.rate_dph[2][k], temps.data()).bias_dph, c.bias_dph[k]);
+	}
+}
+
+// A thermistor dropout switches to its fallback model for exactly the dropout samples, the
+// output stays finite, and the main model returns with the sensor: one sample after its return
+// here, because the 600 s dropout emptied its 60 s rate window and a rate needs 2 samples.
+TEST(Compensator, DropoutUsesFallbackAndSwitchesBack)
+{
+	FogSeries B = fogtest::makeCoilRun("A", 52);
+	const std::string used = calA().model.features.thermistors().front();
+	const int col = B.thermistorIndex(used);
+	for (std::size_t k = 6000; k < 6600; k++) B.temp_C[col][k] = std::nan("");
+	const CompensatedSeries c = compensate(calA(), B);
+	const auto fb = batchBias(*calA().fallbackFor(used), B, calA().rate_estimator);
+	for (std::size_t k = 5000; k < 8000; k++)
+	{
+		const bool in = k >= 6000 && k <= 6600;
+		ASSERT_EQ((c.flags[k] & compflags::Fallback) != 0, in) << k;
+		ASSERT_TRUE(std::isfinite(c.compensated_dph[k]));
+		if (in) ASSERT_NEAR(c.bias_dph[k], fb[k], 1e-9) << k;
+	}
+	EXPECT_EQ(c.counters.fallback_samples, 601u);
+	EXPECT_EQ(c.counters.model_switches, 3u);  // none -> main at start, main -> fallback -> main
+	// two thermistors missing at once: no model, mean bias, flagged
+	const std::string other = calA().model.features.thermistors().back();
+	for (std::size_t k = 6100; k < 6200; k++) B.temp_C[B.thermistorIndex(other)][k] = std::nan("");
+	const CompensatedSeries c2 = compensate(calA(), B);
+	if (calA().fallbackFor(used)->features.references(other) || calA().model.features.references(other))
+	{
+		EXPECT_EQ(c2.flags[6150] & compflags::NoModel, compflags::NoModel);
+		EXPECT_EQ(c2.bias_dph[6150], calA().mean_bias_dph);
+	}
+}
+
+// Outside the calibrated range the compensator clamps (flags, counts) instead of extrapolating:
+// the bias at T far beyond the range equals the bias at the range edge.
+TEST(Compensator, OutOfRangeTemperaturesAreClampedAndCounted)
+{
+	FogSeries hot = fogtest::makeCoilRun("A", 53);
+	hot.resize(3000);
+	for (auto& col : hot.temp_C)
+		for (std::size_t k = 1000; k < 1500; k++) col[k] += 200.0;  // +200 C for 500 samples
+	const CompensatedSeries c = compensate(calA(), hot);
+	EXPECT_GE(c.counters.clamped_samples, 500u);
+	for (std::size_t k = 1100; k < 1400; k++) ASSERT_TRUE(c.flags[k] & compflags::Clamped) << k;
+	// Independent check at k = 1300 (step out of the rate window): the model evaluated with
+	// the temperatures clamped to the calibrated maximum and the column-wise causal rates.
+	const auto& m = calA().model;
+	const std::size_t k = 1300;
+	std::vector<double> temp, rate, v(m.features.signals().size());
+	for (const auto& n : m.features.thermistors())
+	{
+		const int col = hot.thermistorIndex(n);
+		temp.push_back(hot.temp_C[col][k]);
+		rate.push_back(CausalRateEstimator(calA().rate_estimator.window_s).estimate(hot.time_s, hot.temp_C[col])[k]);
+	}
+	m.features.signalValues(temp.data(), rate.data(), v.data());
+	int clamped = 0;
+	const double edge = m.evaluate(v.data(), true, &clamped);
+	EXPECT_GE(clamped, 4);  // every temperature signal
+	EXPECT_NEAR(c.bias_dph[k], edge, 1e-9);
+	const double extrapolated = m.evaluate(v.data(), false);
+	EXPECT_GT(std::abs(extrapolated - edge), 10 * std::abs(edge - calA().mean_bias_dph))
+		<< "the unclamped polynomial would extrapolate far off";
+}
+
+TEST(Compensator, LayoutMismatchAndNonCausalCalibrationRefused)
+{
+	FogSeries s = fogtest::makeCoilRun("A", 54);
+	s.resize(100);
+	FogSeries renamed = s;
+	renamed.thermistors[0].name = "T_inner_1";
+	try
+	{
+		compensate(calA(), renamed);
+		ADD_FAILURE() << "layout mismatch accepted";
+	}
+	catch (const std::invalid_argument& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("another sensor layout"), std::string::npos) << e.what();
+	}
+	FogSeries moved = s;
+	moved.thermistors[0].angle_deg = 90;
+	moved.thermistors[1].angle_deg = 90;
+	moved.thermistors[2].angle_deg = 90;
+	moved.thermistors[3].angle_deg = 90;
+	EXPECT_THROW(compensate(calA(), moved), std::invalid_argument);
+	FogSeries xaxis = s;
+	xaxis.has_axis = {{true, false, false}};
+	xaxis.rate_dph[0] = xaxis.rate_dph[2];
+	xaxis.rate_dph[2].clear();
+	EXPECT_THROW(compensate(calA(), xaxis), std::invalid_argument);
+	Calibration sg = calA();
+	sg.rate_estimator = {"savgol", 60, 2};
+	EXPECT_THROW(Compensator(sg, s.thermistors), std::invalid_argument);
+}
