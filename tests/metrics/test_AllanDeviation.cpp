@@ -114,4 +114,6 @@ TEST(AllanDeviation, ResampleUniformIrregularAndGaps)
 	for (std::size_t i = 0; i < r.value.size(); i++) EXPECT_NEAR(r.value[i], 3.0 + 0.5 * (r.t0_s + i), 1e-9);
 	EXPECT_THROW(resampleUniform({0, 1}, {1, 2, 3}), std::invalid_argument);
 	EXPECT_THROW(resampleUniform({0, 1, 2}, {NAN, 1, NAN}), std::invalid_argument);
+	// A period far below the sample spacing would blow the record up 2e6 times: refused.
+	EXPECT_THROW(resampleUniform({0, 1, 2}, {1, 2, 3}, 1e-6, 10.0), std::invalid_argument);
 }

@@ -171,3 +171,20 @@ TEST(BiasMetrics, BadInputThrows)
 	EXPECT_NO_THROW(biasStats(t, r, 2.5));
 	EXPECT_THROW(biasStats({0, 1, 2, 3}, {NAN, NAN, NAN, NAN}, 1.0), std::invalid_argument);
 }
+
+// A tau far below the sample interval: most windows are empty; the cost stays O(samples) and
+// every sample is its own window (stability = std of the samples).
+TEST(BiasMetrics, TinyTauDoesNotHang)
+{
+	std::vector<double> t, r;
+	for (int k = 0; k < 1000; k++)
+	{
+		t.push_back(k * 10.0);
+		r.push_back(k % 2 ? 1.0 : -1.0);
+	}
+	const BiasStats s = biasStats(t, r, 1e-6);  // 1e10 windows
+	EXPECT_EQ(s.window_count, 1000u);
+	EXPECT_EQ(s.empty_window_count + s.window_count, static_cast<std::size_t>(std::floor(10000.0 / 1e-6 + 1e-9)));
+	EXPECT_NEAR(s.stability_dph, std::sqrt(1000.0 / 999.0), 1e-9);
+	EXPECT_NEAR(s.range_dph, 2.0, 1e-12);
+}

@@ -126,7 +126,14 @@ UniformRecord resampleUniform(const std::vector<double>& time_s, const std::vect
 	}
 	r.t0_s = t[best_a];
 	r.period_s = period_s;
-	const auto count = static_cast<std::size_t>(std::floor(best_len / period_s + 1e-9)) + 1;
+	const double count_d = std::floor(best_len / period_s + 1e-9) + 1;
+	const double finite_in_segment = static_cast<double>(best_b - best_a + 1);
+	if (count_d > 4 * finite_in_segment + 16)
+		throw std::invalid_argument("resampleUniform: a period of " + std::to_string(period_s) + " s would turn " +
+									std::to_string(best_b - best_a + 1) + " samples into " +
+									std::to_string(static_cast<long long>(count_d)) +
+									": the timestamps are too irregular for a uniform resample");
+	const auto count = static_cast<std::size_t>(count_d);
 	r.value.resize(count);
 	std::size_t j = best_a;
 	for (std::size_t i = 0; i < count; i++)

@@ -71,10 +71,23 @@ BiasStats biasStats(const std::vector<double>& time_s, const std::vector<double>
 		}
 	s.raw_peak_to_peak_dph = raw_max >= raw_min ? raw_max - raw_min : NAN;
 
-	std::size_t k = 0;
-	for (std::size_t w = 0; w < n_windows; w++)
+	// Walk the samples once; runs of empty windows (gaps, or a tau shorter than the sample
+	// interval) are skipped in one step, so the cost is O(samples) whatever tau is.
+	std::size_t k = 0, w = 0;
+	while (w < n_windows && k < time_s.size())
 	{
 		const double w_end = t0 + static_cast<double>(w + 1) * tau_s;
+		if (time_s[k] >= w_end)
+		{
+			auto next = static_cast<std::size_t>(std::floor((time_s[k] - t0) / tau_s));
+			if (next <= w) next = w + 1;
+			while (next > w + 1 && t0 + static_cast<double>(next) * tau_s > time_s[k]) next--;
+			while (t0 + static_cast<double>(next + 1) * tau_s <= time_s[k]) next++;
+			next = std::min(next, n_windows);
+			s.empty_window_count += next - w;
+			w = next;
+			continue;
+		}
 		double sum = 0;
 		std::size_t n = 0;
 		for (; k < time_s.size() && time_s[k] < w_end; k++)
@@ -83,15 +96,16 @@ BiasStats biasStats(const std::vector<double>& time_s, const std::vector<double>
 				sum += rate_dph[k];
 				n++;
 			}
-		if (n == 0)
+		if (n == 0) s.empty_window_count++;
+		else
 		{
-			s.empty_window_count++;
-			continue;
+			s.window_center_s.push_back(t0 + (static_cast<double>(w) + 0.5) * tau_s);
+			s.window_mean_dph.push_back(sum / static_cast<double>(n));
+			s.samples_used += n;
 		}
-		s.window_center_s.push_back(t0 + (static_cast<double>(w) + 0.5) * tau_s);
-		s.window_mean_dph.push_back(sum / static_cast<double>(n));
-		s.samples_used += n;
+		w++;
 	}
+	s.empty_window_count += n_windows - w;
 	s.window_count = s.window_mean_dph.size();
 	if (s.window_count < 2)
 		throw std::invalid_argument("tau " + num(tau_s) + " s leaves " + std::to_string(s.window_count) +

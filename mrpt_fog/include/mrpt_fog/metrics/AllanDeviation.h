@@ -59,7 +59,8 @@ std::vector<AllanPoint> allanDeviation(const std::vector<double>& y, double tau0
  * neighbouring finite samples; NaN samples are skipped. Each gap longer than max_gap_s
  * (<= 0: 5 periods) splits the record, and only the longest gap-free segment is returned
  * (an Allan deviation across a gap would be wrong). Throws std::invalid_argument on size
- * mismatch, non-increasing time or fewer than 2 finite samples. */
+ * mismatch, non-increasing time, fewer than 2 finite samples, or when the resample would hold
+ * more than 4x (+16) the samples of the segment (timestamps far too irregular for the period). */
 struct UniformRecord
 {
 	double t0_s = 0;  //!< time of the first sample [s]
