@@ -1,5 +1,5 @@
-# fog-evaluate end to end (run with cmake -P). Variables: EVALUATE, CALIBRATE (MODE cal), DATA,
-# WORK, MODE:
+# fog-evaluate end to end (run with cmake -P). Variables: EVALUATE, CALIBRATE (MODE cal),
+# CONVERT (optional, MODE step: also the rawlog form), DATA, WORK, MODE:
 #   step : closed-form figures of tests/data/metrics/step_2000s.csv (see tests/data/metrics/README.md)
 #   cal  : fog-calibrate + fog-evaluate --cal on chamber_small.csv (known bias law + white noise)
 #   bad  : bad inputs give one error line on stderr, a non-zero exit and no output file
@@ -98,6 +98,15 @@ if(MODE STREQUAL "step")
   expect_near("${j}" "raw mean_dph" 10.11444444 1e-7)
   expect_near("${j}" "raw window_count" 6 0)
   expect_near("${j}" "raw dropped_tail_s" 200 1e-9)
+  # The same log as an MRPT rawlog (fog-convert): the same figures.
+  if(CONVERT)
+    run_ok(${CONVERT} -i ${DATA}/step_2000s.csv -o ${WORK}/step.rawlog)
+    run_ok(${EVALUATE} -i ${WORK}/step.rawlog --json ${WORK}/step_rawlog.json)
+    file(READ ${WORK}/step_rawlog.json j)
+    expect_near("${j}" "raw stability_dph" 0.51298918 1e-7)
+    expect_near("${j}" "raw range_dph" 1 1e-9)
+    expect_near("${j}" "raw window_count" 20 0)
+  endif()
 elseif(MODE STREQUAL "cal")
   run_ok(${CALIBRATE} -i ${DATA}/chamber_small.csv --model multipoint -o ${WORK}/cal.yaml)
   run_ok(${EVALUATE} -i ${DATA}/chamber_small.csv --cal ${WORK}/cal.yaml --json ${WORK}/cal.json
