@@ -3,26 +3,41 @@
 
 #include <mrpt_fog/model/CalibrationYaml.h>
 
+#include <filesystem>
 #include <stdexcept>
 
 namespace mrpt_fog::evaluate
 {
-CompensatedSeries compensateWithCalibration(const std::string& cal_path, const FogSeries& series)
+namespace
+{
+bool sameFile(const std::string& a, const std::string& b)
+{
+	std::error_code ec;
+	const bool eq = std::filesystem::equivalent(a, b, ec);
+	return !ec && eq;
+}
+}  // namespace
+
+CompensationResult compensateWithCalibration(const std::string& cal_path, const std::string& log_path,
+											 const FogSeries& series)
 {
 	const Calibration cal = loadCalibrationYaml(cal_path);
-	CompensatedSeries out;
+	CompensationResult r;
 	try
 	{
-		out = compensate(cal, series);
+		r.series = compensate(cal, series);
 	}
 	catch (const std::exception& e)
 	{
 		throw std::invalid_argument(cal_path + ": cannot compensate this log: " + e.what());
 	}
-	if (out.compensated_dph.size() != series.size())
-		throw std::runtime_error(cal_path + ": the compensator returned " + std::to_string(out.compensated_dph.size()) +
-								 " samples for " + std::to_string(series.size()));
-	return out;
+	if (r.series.compensated_dph.size() != series.size())
+		throw std::runtime_error(cal_path + ": the compensator returned " +
+								 std::to_string(r.series.compensated_dph.size()) + " samples for " +
+								 std::to_string(series.size()));
+	for (const auto& run : cal.runs)
+		if (run == log_path || sameFile(run, log_path)) r.in_sample = true;
+	return r;
 }
 
 }  // namespace mrpt_fog::evaluate

@@ -8,9 +8,17 @@
 
 namespace mrpt_fog::evaluate
 {
+struct CompensationResult
+{
+	CompensatedSeries series;
+	/** The evaluated log is one of the calibration's runs: the figures are in-sample. */
+	bool in_sample = false;
+};
+
 /** Loads the calibration YAML at cal_path and runs the causal compensator (model/Compensator.h)
- * over the series. Throws std::runtime_error naming the file when it cannot be loaded, and
- * std::invalid_argument on a layout mismatch (from the compensator). */
-CompensatedSeries compensateWithCalibration(const std::string& cal_path, const FogSeries& series);
+ * over the series read from log_path. Throws (naming the file) when the calibration cannot be
+ * loaded, and std::invalid_argument on a layout mismatch (from the compensator). */
+CompensationResult compensateWithCalibration(const std::string& cal_path, const std::string& log_path,
+											 const FogSeries& series);
 
 }  // namespace mrpt_fog::evaluate

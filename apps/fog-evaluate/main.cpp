@@ -82,13 +82,14 @@ int main(int argc, char** argv)
 			throw std::invalid_argument(path + ": " + e.what());
 		}
 
-		std::unique_ptr<CompensatedSeries> comp_series;
+		std::unique_ptr<CompensationResult> comp_series;
 		std::vector<double> comp_bias;
 		std::unique_ptr<RateEvaluation> comp;
 		if (!cal.getValue().empty())
 		{
-			comp_series = std::make_unique<CompensatedSeries>(compensateWithCalibration(cal.getValue(), series));
-			comp_bias = biasOf(series, comp_series->compensated_dph);
+			comp_series =
+				std::make_unique<CompensationResult>(compensateWithCalibration(cal.getValue(), path, series));
+			comp_bias = biasOf(series, comp_series->series.compensated_dph);
 			comp = std::make_unique<RateEvaluation>(evaluateRate(series.time_s, comp_bias, tau_s));
 		}
 
@@ -96,7 +97,8 @@ int main(int argc, char** argv)
 		std::printf("fog-evaluate: %s: %zu samples, %.1f s, axis %c, tau %g s (%zu windows, tail %.1f s dropped)\n",
 					path.c_str(), series.size(), duration_s, axisLetter(series.primaryAxis()), tau_s,
 					raw.stats.window_count, raw.stats.dropped_tail_s);
-		std::printf("  %-30s %14s%s\n", "", "raw", comp ? "    compensated" : "");
+		std::printf("  %-30s %14s%s\n", "", "raw",
+					!comp ? "" : comp_series->in_sample ? "  compensated*" : "    compensated");
 		printRow("bias stability [deg/h]", raw.stats.stability_dph, comp.get(), comp ? comp->stats.stability_dph : 0);
 		printRow("full-temp. range [deg/h]", raw.stats.range_dph, comp.get(), comp ? comp->stats.range_dph : 0);
 		printRow("raw peak-to-peak [deg/h]", raw.stats.raw_peak_to_peak_dph, comp.get(),
@@ -111,10 +113,14 @@ int main(int argc, char** argv)
 				 comp ? comp->terms.quantization_arcsec : 0);
 		if (comp_series)
 		{
-			const auto& k = comp_series->counters;
+			const auto& k = comp_series->series.counters;
 			std::printf("  compensator: %zu fallback, %zu no-model, %zu clamped, %zu rate-warm-up samples\n",
 						k.fallback_samples, k.no_model_samples, k.clamped_samples, k.warmup_samples);
+			if (comp_series->in_sample)
+				std::printf("  * in-sample: this log is one of the calibration's runs\n");
 		}
+		std::printf("  (Earth rate is not removed: it is in the mean only; stability, range and Allan terms "
+					"measure spread)\n");
 
 		std::vector<std::string> figures;
 		if (!plots.getValue().empty())
@@ -145,7 +151,8 @@ int main(int argc, char** argv)
 			{
 				j["calibration"] = cal.getValue();
 				j["compensated"] = toJson(*comp);
-				const auto& k = comp_series->counters;
+				const auto& k = comp_series->series.counters;
+				j["compensated"]["in_sample"] = comp_series->in_sample;
 				j["compensated"]["fallback_samples"] = k.fallback_samples;
 				j["compensated"]["no_model_samples"] = k.no_model_samples;
 				j["compensated"]["clamped_samples"] = k.clamped_samples;
