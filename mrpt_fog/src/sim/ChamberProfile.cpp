@@ -194,20 +194,21 @@ double sweepPhase_rad(const ProfileSegment& s, double tau_s)
 
 ChamberProfile ChamberProfile::fromYaml(const mrpt::containers::yaml& doc, const std::string& source)
 {
-	checkKeys(doc, {"name", "initial_temp_C", "power_initially", "initial_state", "segments"}, source);
+	const std::string top = source + ":";
+	checkKeys(doc, {"name", "initial_temp_C", "power_initially", "initial_state", "segments"}, top);
 	ChamberProfile p;
-	p.name_ = readString(doc, "name", source, "custom");
-	p.initial_C_ = readNumber(doc, "initial_temp_C", source, 25.0);
-	p.power_initially_ = readBool(doc, "power_initially", source, true);
-	const std::string init = readString(doc, "initial_state", source, "steady");
+	p.name_ = readString(doc, "name", top, "custom");
+	p.initial_C_ = readNumber(doc, "initial_temp_C", top, 25.0);
+	p.power_initially_ = readBool(doc, "power_initially", top, true);
+	const std::string init = readString(doc, "initial_state", top, "steady");
 	if (init == "steady")
 		p.initial_state_ = InitialThermalState::Steady;
 	else if (init == "cold")
 		p.initial_state_ = InitialThermalState::Cold;
 	else
-		fieldError(source + ".initial_state", "expected steady or cold, got '" + init + "'");
+		fieldError(top + " initial_state", "expected steady or cold, got '" + init + "'");
 	if (!doc.has("segments") || !doc["segments"].isSequence() || doc["segments"].asSequence().empty())
-		fieldError(source + ".segments", "missing or empty list of segments");
+		fieldError(top + " segments", "missing or empty list of segments");
 
 	double t = 0, temp = p.initial_C_;
 	const auto& seq = doc["segments"].asSequence();
@@ -232,26 +233,13 @@ ChamberProfile ChamberProfile::fromYaml(const mrpt::containers::yaml& doc, const
 		p.segments_.push_back(s);
 	}
 	p.duration_s_ = t;
-	if (!(p.duration_s_ > 0)) fieldError(source + ".segments", "total duration is zero (add a hold or ramp)");
+	if (!(p.duration_s_ > 0)) fieldError(top + " segments", "total duration is zero (add a hold or ramp)");
 	return p;
 }
 
 ChamberProfile ChamberProfile::fromFile(const std::string& path)
 {
-	std::ifstream f(path);
-	if (!f) throw std::invalid_argument(path + ": cannot open profile file");
-	mrpt::containers::yaml doc;
-	try
-	{
-		doc = mrpt::containers::yaml::FromStream(f);
-	}
-	catch (const std::exception& e)
-	{
-		std::string msg = e.what();
-		msg = msg.substr(0, msg.find('\n'));
-		throw std::invalid_argument(path + ": not valid YAML: " + msg);
-	}
-	return fromYaml(doc, path);
+	return fromYaml(parseYamlFile(path), path);
 }
 
 std::vector<std::string> ChamberProfile::presetNames()

@@ -125,15 +125,16 @@ FogDevice FogDevice::fromYaml(const mrpt::containers::yaml& doc, const std::stri
 {
 	FogDevice d = defaultDevice();
 	if (doc.isNullNode()) return d;
+	const std::string top = source + ":";
 	checkKeys(doc,
 			  {"name", "latitude_deg", "coil", "thermal", "errors", "noise", "thermistors", "thermistor_noise_C",
 			   "thermistor_quantum_C"},
-			  source);
-	d.name = readString(doc, "name", source, "custom");
-	d.latitude_deg = readNumber(doc, "latitude_deg", source, d.latitude_deg);
-	if (std::abs(d.latitude_deg) > 90) fieldError(source + ".latitude_deg", "must be within [-90, 90]");
-	d.thermistor_noise_C = readNonNegative(doc, "thermistor_noise_C", source, d.thermistor_noise_C);
-	d.thermistor_quantum_C = readNonNegative(doc, "thermistor_quantum_C", source, d.thermistor_quantum_C);
+			  top);
+	d.name = readString(doc, "name", top, "custom");
+	d.latitude_deg = readNumber(doc, "latitude_deg", top, d.latitude_deg);
+	if (std::abs(d.latitude_deg) > 90) fieldError(top + " latitude_deg", "must be within [-90, 90]");
+	d.thermistor_noise_C = readNonNegative(doc, "thermistor_noise_C", top, d.thermistor_noise_C);
+	d.thermistor_quantum_C = readNonNegative(doc, "thermistor_quantum_C", top, d.thermistor_quantum_C);
 	if (doc.has("coil"))
 	{
 		const auto node = doc["coil"];
@@ -236,19 +237,7 @@ FogDevice FogDevice::fromYaml(const mrpt::containers::yaml& doc, const std::stri
 
 FogDevice FogDevice::fromFile(const std::string& path)
 {
-	std::ifstream f(path);
-	if (!f) throw std::invalid_argument(path + ": cannot open device file");
-	mrpt::containers::yaml doc;
-	try
-	{
-		doc = mrpt::containers::yaml::FromStream(f);
-	}
-	catch (const std::exception& e)
-	{
-		std::string msg = e.what();
-		throw std::invalid_argument(path + ": not valid YAML: " + msg.substr(0, msg.find('\n')));
-	}
-	return fromYaml(doc, path);
+	return fromYaml(parseYamlFile(path), path);
 }
 
 void FogDevice::validate() const

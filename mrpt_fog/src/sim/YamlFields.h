@@ -14,6 +14,12 @@
 
 namespace mrpt_fog::sim::detail
 {
+/** "<where>.<key>", or "<file>: <key>" when where is a file name ending in ':'. */
+inline std::string sub(const std::string& where, const std::string& key)
+{
+	return (!where.empty() && where.back() == ':') ? where + " " + key : where + "." + key;
+}
+
 [[noreturn]] inline void fieldError(const std::string& where, const std::string& why)
 {
 	throw std::invalid_argument(where + ": " + why);
@@ -30,14 +36,14 @@ inline void checkKeys(const mrpt::containers::yaml& node, const std::set<std::st
 		{
 			std::string list;
 			for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-			fieldError(where + "." + key, "unknown key (allowed: " + list + ")");
+			fieldError(sub(where, key), "unknown key (allowed: " + list + ")");
 		}
 	}
 }
 
 inline double readNumber(const mrpt::containers::yaml& node, const std::string& key, const std::string& where)
 {
-	if (!node.has(key)) fieldError(where + "." + key, "missing");
+	if (!node.has(key)) fieldError(sub(where, key), "missing");
 	double v = 0;
 	try
 	{
@@ -45,9 +51,9 @@ inline double readNumber(const mrpt::containers::yaml& node, const std::string& 
 	}
 	catch (const std::exception&)
 	{
-		fieldError(where + "." + key, "expected a number");
+		fieldError(sub(where, key), "expected a number");
 	}
-	if (!std::isfinite(v)) fieldError(where + "." + key, "must be finite");
+	if (!std::isfinite(v)) fieldError(sub(where, key), "must be finite");
 	return v;
 }
 
@@ -60,14 +66,14 @@ inline double readNumber(const mrpt::containers::yaml& node, const std::string& 
 inline double readPositive(const mrpt::containers::yaml& node, const std::string& key, const std::string& where)
 {
 	const double v = readNumber(node, key, where);
-	if (!(v > 0)) fieldError(where + "." + key, "must be > 0");
+	if (!(v > 0)) fieldError(sub(where, key), "must be > 0");
 	return v;
 }
 
 inline double readNonNegative(const mrpt::containers::yaml& node, const std::string& key, const std::string& where, double fallback)
 {
 	const double v = readNumber(node, key, where, fallback);
-	if (v < 0) fieldError(where + "." + key, "must be >= 0");
+	if (v < 0) fieldError(sub(where, key), "must be >= 0");
 	return v;
 }
 
@@ -80,7 +86,7 @@ inline std::string readString(const mrpt::containers::yaml& node, const std::str
 	}
 	catch (const std::exception&)
 	{
-		fieldError(where + "." + key, "expected a string");
+		fieldError(sub(where, key), "expected a string");
 	}
 }
 
@@ -94,11 +100,69 @@ inline bool readBool(const mrpt::containers::yaml& node, const std::string& key,
 	}
 	catch (const std::exception&)
 	{
-		fieldError(where + "." + key, "expected true/false");
+		fieldError(sub(where, key), "expected true/false");
 	}
 	if (s == "true" || s == "on" || s == "yes" || s == "1" || s == "True") return true;
 	if (s == "false" || s == "off" || s == "no" || s == "0" || s == "False") return false;
-	fieldError(where + "." + key, "expected true/false, got '" + s + "'");
+	fieldError(sub(where, key), "expected true/false, got '" + s + "'");
 }
 
+}  // namespace mrpt_fog::sim::detail
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+namespace mrpt_fog::sim::detail
+{
+/** Parses a YAML file. MRPT's parser reports syntax errors on stderr and may return a partial
+ * document instead of throwing: its stderr is captured during the parse and any message turns
+ * into std::invalid_argument "<path>: not valid YAML: <first line>". */
+inline mrpt::containers::yaml parseYamlFile(const std::string& path)
+{
+	std::ifstream f(path);
+	if (!f) throw std::invalid_argument(path + ": cannot open file");
+	std::fflush(stderr);
+	std::cerr.flush();
+	std::FILE* capture = std::tmpfile();
+	const int saved = capture ? dup(STDERR_FILENO) : -1;
+	if (saved >= 0) dup2(fileno(capture), STDERR_FILENO);
+	mrpt::containers::yaml doc;
+	std::string error;
+	try
+	{
+		doc = mrpt::containers::yaml::FromStream(f);
+	}
+	catch (const std::exception& e)
+	{
+		error = e.what();
+	}
+	std::fflush(stderr);
+	std::cerr.flush();
+	if (saved >= 0)
+	{
+		dup2(saved, STDERR_FILENO);
+		close(saved);
+	}
+	std::string captured;
+	if (capture)
+	{
+		std::rewind(capture);
+		char buf[512];
+		while (std::fgets(buf, sizeof buf, capture)) captured += buf;
+		std::fclose(capture);
+	}
+	if (error.empty()) error = captured;
+	if (!error.empty())
+	{
+		// Keep the first line with text; drop the parser's buffer address prefix.
+		std::string line = error.substr(0, error.find('\n'));
+		const auto pos = line.find(">:");
+		if (pos != std::string::npos) line = "line " + line.substr(pos + 2);
+		throw std::invalid_argument(path + ": not valid YAML: " + line);
+	}
+	return doc;
+}
 }  // namespace mrpt_fog::sim::detail

@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# Regenerates every file in datasets/ bit for bit with fog-sim, and rewrites datasets/MANIFEST.md
+# (what each file is, the exact command, seed, sha256).
+#
+#   scripts/make_datasets.sh [BUILD_DIR]        (default BUILD_DIR: ./build)
+#
+# Builds fog-sim in BUILD_DIR first (configuring it if needed). OUT_DIR=dir writes elsewhere
+# (used by the reproducibility test); the manifest is then written there too. FOG_SIM=path uses
+# that fog-sim instead of building one.
+set -euo pipefail
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+BUILD=${1:-$ROOT/build}
+OUT=${OUT_DIR:-$ROOT/datasets}
+SEED=20240501
+RATE=10
+
+if [ -n "${FOG_SIM:-}" ]; then
+	SIM="$FOG_SIM"  # a ready fog-sim (the reproducibility test passes its own)
+else
+	if [ ! -f "$BUILD/CMakeCache.txt" ]; then
+		cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
+	fi
+	cmake --build "$BUILD" -j2 --target fog-sim >/dev/null
+	SIM="$BUILD/apps/fog-sim"
+fi
+mkdir -p "$OUT"
+
+# name | profile | description
+RUNS=(
+	"chamber_A|seed|Chamber run A: the seed paper's profile (25 C -> -40 C at 1 C/min, soak 2 h, -> 60 C at 1 C/min, soak 2 h; 6.75 h), gyro on and settled at t = 0."
+	"chamber_B|B|Chamber run B (held-out validation): 20 C, 0.5 C/min down to -30 C, 1 h soak, step to -10 C, 2 C/min up to 50 C, log-swept sine (8 C, periods 60 -> 4 min, 90 min), 1.5 C/min to 25 C; 7.7 h."
+	"warmup|warmup|Room-temperature warm-up: unpowered soak at 23 C, power on at t = 0, 3 h."
+	"drive|drive|Vehicle drive, 70.5 min: winter cold start (cabin -15 C -> 20 C at 2 C/min -> 24 C), gyro powered at t = 0; streams FOG (thermal error), FOG_IDEAL (same noise, no thermal error), ODOMETRY (CObservationOdometry), GROUND_TRUTH (CObservationRobotPose)."
+)
+
+for run in "${RUNS[@]}"; do
+	IFS='|' read -r name profile _ <<<"$run"
+	"$SIM" --profile "$profile" --seed "$SEED" --rate-hz "$RATE" -o "$OUT/$name.rawlog" >/dev/null
+	if [ "$name" != drive ]; then
+		"$SIM" --profile "$profile" --seed "$SEED" --rate-hz "$RATE" -o "$OUT/$name.csv.gz" >/dev/null
+	fi
+done
+
+{
+	echo "# datasets/ manifest"
+	echo
+	echo "Simulated with \`fog-sim\` (mrpt_fog simulator, default device; see docs/sim.md). Every file is"
+	echo "regenerated bit for bit by \`scripts/make_datasets.sh\` (seed $SEED, $RATE Hz, all error effects on)."
+	echo "Rawlogs hold CObservationFOG (label FOG: rate_z in deg/h, thermistors Ti1/To1 at 0 deg and"
+	echo "Ti2/To2 at 180 deg, power); the simulator configuration is in the metadata (sim.*, latitude_deg)."
+	echo "The .csv.gz twins hold the same FOG stream in the lab CSV format. The drive has no CSV twin:"
+	echo "its odometry and ground truth only fit a rawlog."
+	echo
+	echo "| file | what | command |"
+	echo "|---|---|---|"
+	for run in "${RUNS[@]}"; do
+		IFS='|' read -r name profile what <<<"$run"
+		echo "| $name.rawlog | $what | \`fog-sim --profile $profile --seed $SEED --rate-hz $RATE -o $name.rawlog\` |"
+		if [ "$name" != drive ]; then
+			echo "| $name.csv.gz | CSV twin of $name.rawlog | \`fog-sim --profile $profile --seed $SEED --rate-hz $RATE -o $name.csv.gz\` |"
+		fi
+	done
+	echo
+	echo "## sha256"
+	echo
+	echo '```sha256'
+	(cd "$OUT" && for run in "${RUNS[@]}"; do
+		IFS='|' read -r name _ _ <<<"$run"
+		sha256sum "$name.rawlog"
+		if [ "$name" != drive ]; then sha256sum "$name.csv.gz"; fi
+	done)
+	echo '```'
+	echo
+	echo "Check: \`awk '/^\`\`\`sha256/{f=1;next}/^\`\`\`/{f=0}f' MANIFEST.md | sha256sum -c\` inside datasets/."
+} >"$OUT/MANIFEST.md.tmp"
+mv "$OUT/MANIFEST.md.tmp" "$OUT/MANIFEST.md"
+du -ch "$OUT"/*.rawlog "$OUT"/*.csv.gz | tail -1
