@@ -46,7 +46,7 @@ TrialOutcome runTrial(const TrialSpec& spec, const SelectionOptions& opt)
 	const auto run1 = makeSyntheticChamberRun(g1);
 	const auto run2 = makeSyntheticChamberRun(g2);
 
-	const auto bspec = parseBasePreset(spec.base_preset);
+	const auto bspec = resolveBaseModel(spec.base_preset, run1.series);
 	const auto sig1 = computeRunSignals(run1.series);
 	const auto sig2 = computeRunSignals(run2.series);
 	const auto base1 = buildBaseDesign(bspec, run1.series, sig1);

@@ -22,7 +22,7 @@ CandidateContext makeCandidateContext(const RunSignals& sig, const BaseDesign& b
 		if (base.is_static_temp[static_cast<std::size_t>(j)])
 			for (Eigen::Index k = 0; k < n; ++k) ctx.base_static_dph[static_cast<std::size_t>(k)] += base.X(k, j) * base_coef(j);
 	ctx.base_static_order = std::max(1, base.max_static_order);
-	ctx.static_temp_C = sig.temp_mean_C;
+	ctx.static_temp_C = base.static_temp_C.empty() ? sig.temp_mean_C : base.static_temp_C;
 	return ctx;
 }
 

@@ -1,0 +1,94 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+/** fog-discrepancy: where a model of the gyro and measured chamber data disagree, which
+ * physical effect is missing, and how much the gap shrinks once it is added.
+ *
+ *   fog-discrepancy --measured A.rawlog [--measured B.rawlog] --model multipoint --json out.json --plots dir
+ */
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt_fog/discrepancy/DiscrepancyAnalysis.h>
+#include <mrpt_fog/io/FogLogIO.h>
+
+#include <filesystem>
+#include <iostream>
+
+#include "AppMain.h"
+
+using namespace mrpt_fog;
+
+int main(int argc, char** argv)
+{
+	return app::runApp("fog-discrepancy", [&]() {
+		TCLAP::CmdLine cmd(
+			"Locate where a gyro model and measured chamber runs disagree, name the missing physical effect "
+			"(with alias groups where the run cannot separate candidates), add it, refit and show the gap "
+			"before/after. The first --measured run is analysed; a second one confirms.",
+			' ', "0.1");
+		TCLAP::MultiArg<std::string> measured("", "measured", "measured run (.rawlog, .csv, .csv.gz); give 1 or 2",
+											  true, "FILE", cmd);
+		TCLAP::ValueArg<std::string> model("", "model",
+										   "bias model to test: preset (multipoint, M1..M4[:...], points:K, "
+										   "static:P[:NAME]) or calibration YAML; refitted on the measured run",
+										   false, "", "PRESET|CAL.yaml");
+		TCLAP::ValueArg<std::string> sim("", "sim", "simulator configuration to test (not yet supported)", false, "",
+										 "SIM.yaml");
+		cmd.xorAdd(model, sim);
+		TCLAP::ValueArg<std::string> json("", "json", "write the figures as JSON", false, "", "FILE", cmd);
+		TCLAP::ValueArg<std::string> plots("", "plots", "write residual PNGs into this directory", false, "", "DIR", cmd);
+		TCLAP::ValueArg<double> alpha("", "alpha", "family-wise significance level (Holm)", false, 0.01, "P", cmd);
+		TCLAP::ValueArg<std::string> label("", "fog-label", "FOG sensor label in a rawlog with several", false, "",
+										   "LABEL", cmd);
+		cmd.parse(argc, argv);
+
+		if (sim.isSet())
+			throw std::runtime_error(
+				"--sim " + sim.getValue() +
+				": testing a simulator configuration is not yet supported (it needs calibrating the simulator's free "
+				"parameters to the measured run); use --model PRESET|CAL.yaml");
+		if (measured.getValue().size() > 2)
+			throw std::runtime_error("--measured given " + std::to_string(measured.getValue().size()) +
+									 " times: at most two runs (the first is analysed, the second confirms)");
+		if (!(alpha.getValue() > 0 && alpha.getValue() < 0.5))
+			throw std::runtime_error("--alpha " + std::to_string(alpha.getValue()) + ": must be in (0, 0.5)");
+		if (plots.isSet() && !std::filesystem::is_directory(plots.getValue()))
+			throw std::runtime_error("--plots " + plots.getValue() + ": not a directory");
+
+		std::vector<FogSeries> runs;
+		std::vector<std::string> labels;
+		for (const auto& f : measured.getValue())
+		{
+			runs.push_back(readFogLog(f, label.getValue()));
+			labels.push_back(std::filesystem::path(f).filename().string());
+		}
+		discrepancy::DiscrepancyOptions opt;
+		opt.selection.alpha = alpha.getValue();
+		discrepancy::DiscrepancyReport rep;
+		try
+		{
+			rep = discrepancy::analyseDiscrepancy(runs, labels, model.getValue(), opt);
+		}
+		catch (const std::invalid_argument& e)
+		{
+			throw std::runtime_error(measured.getValue().front() + ": " + e.what());
+		}
+		std::cout << discrepancy::discrepancyText(rep);
+		if (plots.isSet())
+		{
+			const std::filesystem::path dir(plots.getValue());
+			discrepancy::saveGapPlot(rep.gap, (dir / "discrepancy_residual.png").string(), "fog-discrepancy");
+			std::cout << "Wrote " << (dir / "discrepancy_residual.png").string() << "\n";
+			if (rep.has_confirm)
+			{
+				discrepancy::saveGapPlot(rep.gap_confirm, (dir / "discrepancy_residual_confirm.png").string(),
+										 "fog-discrepancy (confirmation)");
+				std::cout << "Wrote " << (dir / "discrepancy_residual_confirm.png").string() << "\n";
+			}
+		}
+		if (json.isSet())
+		{
+			writeTextFileAtomically(json.getValue(), discrepancy::discrepancyJson(rep).dump());
+			std::cout << "Wrote " << json.getValue() << "\n";
+		}
+		return 0;
+	});
+}

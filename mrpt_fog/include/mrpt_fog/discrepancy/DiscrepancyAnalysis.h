@@ -1,0 +1,89 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file DiscrepancyAnalysis.h
+ * The model-gap workflow end to end (what fog-discrepancy runs): refit the base model on the
+ * measured run, locate where the residual is largest (RunSegmenter), name the missing effect(s)
+ * (EffectSelector), add them and refit, and show the gap before/after: residual RMS, 100 s
+ * stability and range of the residual, per segment, and on the confirmation run (second run,
+ * coefficients from the first, only the constant offset re-estimated).
+ */
+
+#include <mrpt_fog/common/JsonWriter.h>
+#include <mrpt_fog/discrepancy/EffectSelector.h>
+#include <mrpt_fog/discrepancy/RunSegmenter.h>
+
+#include <string>
+#include <vector>
+
+namespace mrpt_fog::discrepancy
+{
+struct DiscrepancyOptions
+{
+	SelectionOptions selection;
+	SegmentationOptions segmentation;
+	RunSignalsOptions signals;
+	double tau_s = 100.0;  //!< averaging time of the stability / range figures [s]
+	double flag_rms_ratio = 1.5;  //!< a segment is flagged when its RMS >= this x the run's
+};
+
+/** Residual figures of one run [deg/h]. Stability/range are NaN when the run holds fewer than
+ * two tau-s windows. */
+struct GapFigures
+{
+	double rms_dph = 0, stability_dph = 0, range_dph = 0;
+	std::size_t samples = 0;
+};
+
+struct SegmentGap
+{
+	Segment segment;  //!< with the BEFORE ranking fields
+	double rms_after_dph = 0;
+	bool flagged = false;
+};
+
+struct RunGap
+{
+	std::string label;
+	GapFigures before, after;
+	std::vector<SegmentGap> segments;  //!< ranked by residual energy before
+	SegmentRanking ranking_before;
+	std::vector<double> time_s;
+	std::vector<double> residual_before_dph, residual_after_dph;  //!< NaN where not used
+};
+
+struct DiscrepancyReport
+{
+	std::string model_source;
+	std::vector<std::string> base_terms;
+	std::vector<std::string> run_labels;
+	SelectionResult selection;
+	RunGap gap;
+	bool has_confirm = false;
+	RunGap gap_confirm;
+	double tau_s = 100.0;
+	/** "no missing effect found" or "missing: a, b (strongest first)". */
+	std::string verdict() const;
+};
+
+/** Runs the workflow. runs[0] is analysed, runs[1] (optional) confirms; more than two runs,
+ * an empty list, runs of different layouts, or too few usable samples throw
+ * std::invalid_argument. `model` is a preset or a calibration YAML (BaseModelDesign.h). */
+DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const std::vector<std::string>& run_labels,
+									 const std::string& model, const DiscrepancyOptions& opt = {});
+
+/** Residual figures of one run over rows. */
+GapFigures gapFigures(const std::vector<double>& time_s, const Eigen::VectorXd& residual_dph,
+					  const std::vector<unsigned char>& rows, double tau_s);
+
+/** JSON document (stable keys: named_effects, segments, gap.before.rms_dph, gap.after.rms_dph,
+ * gap_confirm..., see docs/discrepancy.md). */
+JsonValue discrepancyJson(const DiscrepancyReport& report);
+
+/** Readable report (several lines). */
+std::string discrepancyText(const DiscrepancyReport& report);
+
+/** PNG: residual vs time before and after (two panels), flagged segments shaded. Atomic. */
+void saveGapPlot(const RunGap& gap, const std::string& path_png, const std::string& title);
+
+}  // namespace mrpt_fog::discrepancy

@@ -1,0 +1,371 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/discrepancy/DiscrepancyAnalysis.h>
+#include <mrpt_fog/metrics/BiasMetrics.h>
+#include <mrpt_fog/metrics/PlotCanvas.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace mrpt_fog::discrepancy
+{
+namespace
+{
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::vector<double> masked(const Eigen::VectorXd& r, const std::vector<unsigned char>& rows)
+{
+	std::vector<double> v(rows.size(), kNaN);
+	for (std::size_t k = 0; k < rows.size(); ++k)
+		if (rows[k]) v[k] = r(static_cast<Eigen::Index>(k));
+	return v;
+}
+
+RunGap makeRunGap(const std::string& label, const RunSignals& sig, const std::vector<Segment>& segs,
+				  const Eigen::VectorXd& before, const Eigen::VectorXd& after, const std::vector<unsigned char>& rows,
+				  const DiscrepancyOptions& opt)
+{
+	RunGap g;
+	g.label = label;
+	g.time_s = sig.time_s;
+	g.before = gapFigures(sig.time_s, before, rows, opt.tau_s);
+	g.after = gapFigures(sig.time_s, after, rows, opt.tau_s);
+	g.residual_before_dph = masked(before, rows);
+	g.residual_after_dph = masked(after, rows);
+	g.ranking_before = rankSegments(segs, before, rows);
+	const auto afterRank = rankSegments(segs, after, rows);
+	for (const auto& s : g.ranking_before.ranked)
+	{
+		SegmentGap sg;
+		sg.segment = s;
+		for (const auto& a : afterRank.ranked)
+			if (a.begin == s.begin) sg.rms_after_dph = a.rms_dph;
+		sg.flagged = s.usable > 0 && s.rms_dph >= opt.flag_rms_ratio * g.ranking_before.run_rms_dph;
+		g.segments.push_back(sg);
+	}
+	return g;
+}
+
+JsonValue figuresJson(const GapFigures& f, double tau_s)
+{
+	JsonValue j = JsonValue::object();
+	j["rms_dph"] = f.rms_dph;
+	j["stability_dph"] = f.stability_dph;
+	j["range_dph"] = f.range_dph;
+	j["tau_s"] = tau_s;
+	j["samples"] = static_cast<unsigned long>(f.samples);
+	return j;
+}
+
+JsonValue runGapJson(const RunGap& g, double tau_s)
+{
+	JsonValue j = JsonValue::object();
+	j["run"] = g.label;
+	j["before"] = figuresJson(g.before, tau_s);
+	j["after"] = figuresJson(g.after, tau_s);
+	JsonValue segs = JsonValue::array();
+	for (const auto& s : g.segments)
+	{
+		JsonValue e = JsonValue::object();
+		e["type"] = toString(s.segment.type);
+		e["direction"] = s.segment.direction;
+		e["band"] = s.segment.band;
+		e["t_start_s"] = s.segment.t_start_s;
+		e["t_end_s"] = s.segment.t_end_s;
+		e["rms_before_dph"] = s.segment.rms_dph;
+		e["rms_after_dph"] = s.rms_after_dph;
+		segs.push_back(e);
+	}
+	j["segments"] = segs;
+	return j;
+}
+
+std::string fmt(const char* f, double v)
+{
+	char buf[64];
+	std::snprintf(buf, sizeof buf, f, v);
+	return buf;
+}
+}  // namespace
+
+GapFigures gapFigures(const std::vector<double>& time_s, const Eigen::VectorXd& r, const std::vector<unsigned char>& rows,
+					  double tau_s)
+{
+	GapFigures f;
+	double s = 0;
+	for (std::size_t k = 0; k < rows.size(); ++k)
+		if (rows[k])
+		{
+			s += r(static_cast<Eigen::Index>(k)) * r(static_cast<Eigen::Index>(k));
+			++f.samples;
+		}
+	f.rms_dph = f.samples ? std::sqrt(s / f.samples) : kNaN;
+	try
+	{
+		const auto st = biasStats(time_s, masked(r, rows), tau_s);
+		f.stability_dph = st.window_count >= 2 ? st.stability_dph : kNaN;
+		f.range_dph = st.window_count >= 2 ? st.range_dph : kNaN;
+	}
+	catch (const std::invalid_argument&)
+	{
+		f.stability_dph = f.range_dph = kNaN;
+	}
+	return f;
+}
+
+std::string DiscrepancyReport::verdict() const
+{
+	if (selection.named.empty()) return "no missing effect found";
+	std::string v = "missing: ";
+	for (std::size_t i = 0; i < selection.named.size(); ++i)
+	{
+		v += (i ? ", " : "") + selection.named[i].id;
+		if (selection.named[i].alias_group.size() > 1)
+		{
+			v += " (or alias";
+			for (std::size_t j = 1; j < selection.named[i].alias_group.size(); ++j) v += " " + selection.named[i].alias_group[j];
+			v += ")";
+		}
+	}
+	if (selection.named.size() > 1) v += " (strongest first)";
+	return v;
+}
+
+DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const std::vector<std::string>& labels,
+									 const std::string& model, const DiscrepancyOptions& opt)
+{
+	if (runs.empty()) throw std::invalid_argument("no measured run given");
+	if (runs.size() > 2)
+		throw std::invalid_argument("at most two measured runs: the first is analysed, the second confirms");
+	if (runs.size() == 2 && !runs[0].sameLayout(runs[1]))
+		throw std::invalid_argument("the confirmation run has a different thermistor/axis layout from the first run");
+	DiscrepancyReport rep;
+	rep.model_source = model;
+	rep.tau_s = opt.tau_s;
+	for (std::size_t i = 0; i < runs.size(); ++i)
+		rep.run_labels.push_back(i < labels.size() ? labels[i] : "run " + std::to_string(i + 1));
+
+	const auto spec = resolveBaseModel(model, runs[0]);
+	const auto sig1 = computeRunSignals(runs[0], opt.signals);
+	const auto base1 = buildBaseDesign(spec, runs[0], sig1);
+	rep.base_terms = base1.names;
+	rep.selection = selectMissingEffects(sig1, base1, opt.selection);
+	const auto segs1 = segmentRun(sig1, opt.segmentation);
+	rep.gap = makeRunGap(rep.run_labels[0], sig1, segs1, rep.selection.residual_before, rep.selection.residual_after,
+						 rep.selection.fit_rows, opt);
+	if (runs.size() == 2)
+	{
+		rep.has_confirm = true;
+		const auto sig2 = computeRunSignals(runs[1], opt.signals);
+		const auto base2 = buildBaseDesign(spec, runs[1], sig2);
+		confirmOnRun(rep.selection, sig2, base2, opt.selection);
+		const auto rb = residualWithCoefficients(base2.X, sig2, rep.selection.coef_before);
+		const auto ra = residualWithCoefficients(rep.selection.model.design(base2, sig2), sig2, rep.selection.coef_after);
+		rep.gap_confirm = makeRunGap(rep.run_labels[1], sig2, segmentRun(sig2, opt.segmentation), rb, ra, sig2.usable, opt);
+	}
+	return rep;
+}
+
+JsonValue discrepancyJson(const DiscrepancyReport& rep)
+{
+	const auto& sel = rep.selection;
+	JsonValue j = JsonValue::object();
+	j["model"] = rep.model_source;
+	JsonValue terms = JsonValue::array();
+	for (const auto& t : rep.base_terms) terms.push_back(t);
+	j["base_terms"] = terms;
+	JsonValue runs = JsonValue::array();
+	for (const auto& r : rep.run_labels) runs.push_back(r);
+	j["runs"] = runs;
+	j["verdict"] = rep.verdict();
+	JsonValue named = JsonValue::array();
+	for (const auto& ne : sel.named)
+	{
+		JsonValue e = JsonValue::object();
+		e["id"] = ne.id;
+		JsonValue ag = JsonValue::array();
+		for (const auto& a : ne.alias_group) ag.push_back(a);
+		e["alias_group"] = ag;
+		e["confidence"] = ne.confidence;
+		e["group_confidence"] = ne.group_confidence;
+		e["coefficient"] = ne.coefficient;
+		e["coefficient_unit"] = ne.coefficient_unit;
+		JsonValue ci = JsonValue::array();
+		ci.push_back(ne.ci_low);
+		ci.push_back(ne.ci_high);
+		e["ci"] = ci;
+		if (!ne.theta_name.empty()) e[ne.theta_name] = ne.theta;
+		e["chi2"] = ne.chi2;
+		e["p_adjusted"] = ne.p_adjusted;
+		e["delta_bic"] = ne.delta_bic;
+		JsonValue sep = JsonValue::array();
+		for (const auto& s : ne.separating_profiles) sep.push_back(s);
+		e["separating_profiles"] = sep;
+		if (ne.confirm_tested)
+		{
+			e["confirmed"] = ne.confirmed;
+			e["confirm_p"] = ne.confirm_p;
+		}
+		named.push_back(e);
+	}
+	j["named_effects"] = named;
+	j["where"] = rep.gap.ranking_before.sentence;
+	JsonValue segs = JsonValue::array();
+	int rank = 1;
+	for (const auto& s : rep.gap.segments)
+	{
+		JsonValue e = JsonValue::object();
+		e["rank"] = rank++;
+		e["type"] = toString(s.segment.type);
+		e["direction"] = s.segment.direction;
+		e["band"] = s.segment.band;
+		e["description"] = s.segment.describe();
+		e["t_start_s"] = s.segment.t_start_s;
+		e["t_end_s"] = s.segment.t_end_s;
+		e["mean_temp_C"] = s.segment.mean_temp_C;
+		e["rms_before_dph"] = s.segment.rms_dph;
+		e["rms_after_dph"] = s.rms_after_dph;
+		e["energy_share"] = s.segment.energy_share;
+		e["time_share"] = s.segment.time_share;
+		e["flagged"] = s.flagged;
+		segs.push_back(e);
+	}
+	j["segments"] = segs;
+	JsonValue groups = JsonValue::array();
+	for (const auto& g : rep.gap.ranking_before.groups)
+	{
+		JsonValue e = JsonValue::object();
+		e["description"] = g.description;
+		e["rms_dph"] = g.rms_dph;
+		e["energy_share"] = g.energy_share;
+		e["time_share"] = g.time_share;
+		e["segments"] = static_cast<unsigned long>(g.segments);
+		groups.push_back(e);
+	}
+	j["segment_groups"] = groups;
+	JsonValue cands = JsonValue::array();
+	if (!sel.rounds.empty())
+		for (const auto& t : sel.rounds.front())
+		{
+			JsonValue e = JsonValue::object();
+			e["id"] = t.id;
+			e["status"] = t.status;
+			e["note"] = t.note;
+			if (t.status == "tested")
+			{
+				e["chi2"] = t.chi2;
+				e["dof"] = t.dof;
+				e["p_adjusted"] = t.p_adjusted;
+				e["delta_bic"] = t.delta_bic;
+				e["significant"] = t.significant;
+			}
+			cands.push_back(e);
+		}
+	j["candidates_first_round"] = cands;
+	JsonValue noise = JsonValue::object();
+	JsonValue phi = JsonValue::array();
+	for (double p : sel.ar.phi) phi.push_back(p);
+	noise["ar_phi"] = phi;
+	noise["ma_theta"] = sel.ar.theta;
+	noise["long_run_variance_factor"] = sel.lrv_factor;
+	noise["outliers_excluded"] = static_cast<unsigned long>(sel.outliers);
+	j["noise_model"] = noise;
+	j["gap"] = runGapJson(rep.gap, rep.tau_s);
+	if (rep.has_confirm) j["gap_confirm"] = runGapJson(rep.gap_confirm, rep.tau_s);
+	return j;
+}
+
+std::string discrepancyText(const DiscrepancyReport& rep)
+{
+	std::ostringstream os;
+	const auto& sel = rep.selection;
+	os << "Model under test: " << rep.model_source << " (" << rep.base_terms.size() << " terms, refitted on "
+	   << rep.run_labels[0] << ")\n";
+	os << "Where: " << rep.gap.ranking_before.sentence << "\n";
+	os << "Top segments by residual energy (before):\n";
+	for (std::size_t i = 0; i < rep.gap.segments.size() && i < 5; ++i)
+	{
+		const auto& s = rep.gap.segments[i];
+		os << "  " << i + 1 << ". " << s.segment.describe() << " [" << fmt("%.0f", s.segment.t_start_s) << ".."
+		   << fmt("%.0f", s.segment.t_end_s) << " s] RMS " << fmt("%.3g", s.segment.rms_dph) << " -> "
+		   << fmt("%.3g", s.rms_after_dph) << " deg/h, " << fmt("%.0f", 100 * s.segment.energy_share)
+		   << " % of the energy" << (s.flagged ? "  (flagged)" : "") << "\n";
+	}
+	os << "Verdict: " << rep.verdict() << "\n";
+	for (const auto& ne : sel.named)
+	{
+		os << "  " << ne.id << ": " << candidateById(ne.id).description << "\n";
+		os << "    coefficient " << fmt("%.4g", ne.coefficient) << " " << ne.coefficient_unit << " (95 % CI "
+		   << fmt("%.4g", ne.ci_low) << " .. " << fmt("%.4g", ne.ci_high) << ")";
+		if (!ne.theta_name.empty()) os << ", " << ne.theta_name << " = " << fmt("%g", ne.theta);
+		os << "; confidence " << fmt("%.2f", ne.confidence) << ", chi2 " << fmt("%.1f", ne.chi2) << ", Holm p "
+		   << fmt("%.2g", ne.p_adjusted) << "\n";
+		for (std::size_t a = 1; a < ne.alias_group.size(); ++a)
+			os << "    alias: " << ne.alias_group[a] << " cannot be told apart on this run; to separate them use "
+			   << ne.separating_profiles[a - 1] << "\n";
+		if (ne.alias_group.size() > 1)
+			os << "    confidence of the alias group: " << fmt("%.2f", ne.group_confidence) << "\n";
+		if (ne.confirm_tested)
+			os << "    confirmation run: " << (ne.confirmed ? "confirmed" : "NOT confirmed") << " (p "
+			   << fmt("%.2g", ne.confirm_p) << ")\n";
+	}
+	if (!sel.rounds.empty())
+	{
+		std::string skipped;
+		for (const auto& t : sel.rounds.front())
+			if (t.status != "tested") skipped += "  " + t.id + ": " + t.status + " (" + t.note + ")\n";
+		if (!skipped.empty()) os << "Not tested:\n" << skipped;
+	}
+	auto gapLine = [&](const RunGap& g)
+	{
+		os << "Gap on " << g.label << ": RMS " << fmt("%.4g", g.before.rms_dph) << " -> " << fmt("%.4g", g.after.rms_dph)
+		   << " deg/h; " << fmt("%g", rep.tau_s) << " s stability " << fmt("%.4g", g.before.stability_dph) << " -> "
+		   << fmt("%.4g", g.after.stability_dph) << " deg/h; range " << fmt("%.4g", g.before.range_dph) << " -> "
+		   << fmt("%.4g", g.after.range_dph) << " deg/h\n";
+	};
+	gapLine(rep.gap);
+	if (rep.has_confirm) gapLine(rep.gap_confirm);
+	os << "Noise model: ARMA(" << sel.ar.order() << ",1) theta " << fmt("%.2f", sel.ar.theta) << ", long-run factor "
+	   << fmt("%.2f", sel.lrv_factor) << ", " << sel.outliers << " outlier(s) excluded\n";
+	return os.str();
+}
+
+void saveGapPlot(const RunGap& g, const std::string& path, const std::string& title)
+{
+	PlotCanvas fig(1200, 800);
+	auto& top = fig.addPanel(1.0);
+	auto& bottom = fig.addPanel(1.0);
+	top.title = title + ": residual before (" + g.label + ")";
+	bottom.title = "after adding the named effect(s)";
+	for (auto* p : {&top, &bottom})
+	{
+		p->x_axis.label = "time [s]";
+		p->y_axis.label = "residual [deg/h]";
+		for (const auto& s : g.segments)
+			if (s.flagged) p->addShade(s.segment.t_start_s, s.segment.t_end_s, cv::Scalar(160, 200, 255));
+	}
+	// same y limits on both panels so the reduction is visible
+	double lo = 0, hi = 0;
+	for (double v : g.residual_before_dph)
+		if (std::isfinite(v))
+		{
+			lo = std::min(lo, v);
+			hi = std::max(hi, v);
+		}
+	for (auto* p : {&top, &bottom})
+	{
+		p->y_axis.min = lo;
+		p->y_axis.max = hi > lo ? hi : lo + 1e-3;
+	}
+	PlotSeries b{"before", g.time_s, g.residual_before_dph};
+	b.colour = plot_colour::kRed;
+	top.addSeries(b);
+	PlotSeries a{"after", g.time_s, g.residual_after_dph};
+	a.colour = plot_colour::kBlue;
+	bottom.addSeries(a);
+	fig.save(path);
+}
+
+}  // namespace mrpt_fog::discrepancy
