@@ -74,6 +74,55 @@ void addAverages(LinePlot& p, const BiasStats& st, double mean, double time_scal
 	p.addSeries(s);
 }
 
+/** A series (x scaled) with NaN inserted at the gaps of the log (> 5 sample periods), so that no
+ * line is drawn across missing data. */
+PlotSeries gapBroken(const std::string& label, const std::vector<double>& time_s, const std::vector<double>& y,
+					 double scale, const cv::Scalar& colour)
+{
+	PlotSeries ps;
+	ps.label = label;
+	ps.colour = colour;
+	const double dt = medianSampleInterval_s(time_s);
+	for (std::size_t k = 0; k < time_s.size(); k++)
+	{
+		if (k > 0 && time_s[k] - time_s[k - 1] > 5 * dt)
+		{
+			ps.x.push_back(NAN);
+			ps.y.push_back(NAN);
+		}
+		ps.x.push_back(time_s[k] * scale);
+		ps.y.push_back(y[k]);
+	}
+	return ps;
+}
+
+/** Shades the intervals with the gyro powered off and the gaps in the log (> 5 sample periods). */
+void shadeOffAndGaps(LinePlot& p, const FogSeries& s, double scale, bool with_labels)
+{
+	const double dt = medianSampleInterval_s(s.time_s);
+	bool off_labelled = !with_labels, gap_labelled = !with_labels;
+	for (std::size_t k = 1; k < s.size(); k++)
+		if (s.time_s[k] - s.time_s[k - 1] > 5 * dt)
+		{
+			p.addShade(s.time_s[k - 1] * scale, s.time_s[k] * scale, plot_colour::kRed, gap_labelled ? "" : "no data");
+			gap_labelled = true;
+		}
+	if (s.power.empty()) return;
+	for (std::size_t k = 0; k < s.size();)
+	{
+		if (s.power[k] != 0.0)
+		{
+			k++;
+			continue;
+		}
+		std::size_t e = k;
+		while (e + 1 < s.size() && s.power[e + 1] == 0.0) e++;
+		p.addShade(s.time_s[k] * scale, s.time_s[e] * scale, plot_colour::kGrey, off_labelled ? "" : "gyro off");
+		off_labelled = true;
+		k = e + 1;
+	}
+}
+
 void biasVsTime(const std::string& path, const PlotInputs& in)
 {
 	const FogSeries& s = *in.series;
@@ -81,8 +130,6 @@ void biasVsTime(const std::string& path, const PlotInputs& in)
 	const bool hours = duration_s > 3 * 3600.0;
 	const double scale = hours ? 1.0 / 3600.0 : 1.0;
 	const std::string tlabel = hours ? "time [h]" : "time [s]";
-	std::vector<double> t(s.time_s);
-	for (double& x : t) x *= scale;
 
 	const bool temps = s.thermistorCount() > 0;
 	PlotCanvas fig(1100, temps ? 800 : 520);
@@ -90,12 +137,14 @@ void biasVsTime(const std::string& path, const PlotInputs& in)
 	top.title = "bias vs time (each about its own mean; " + fmt("%g", in.tau_s) + " s averages bold)";
 	top.x_axis.label = tlabel;
 	top.y_axis.label = "bias - mean [deg/h]";
+	shadeOffAndGaps(top, s, scale, true);
 	const double m_raw = in.raw->stats.mean_dph;
-	top.addSeries({"raw samples", t, minus(*in.raw_bias_dph, m_raw), light(plot_colour::kBlue)});
+	top.addSeries(gapBroken("raw samples", s.time_s, minus(*in.raw_bias_dph, m_raw), scale, light(plot_colour::kBlue)));
 	if (in.comp)
 	{
 		const double m_comp = in.comp->stats.mean_dph;
-		top.addSeries({"compensated samples", t, minus(*in.comp_bias_dph, m_comp), light(plot_colour::kOrange)});
+		top.addSeries(gapBroken("compensated samples", s.time_s, minus(*in.comp_bias_dph, m_comp), scale,
+								light(plot_colour::kOrange)));
 		addAverages(top, in.raw->stats, m_raw, scale, "raw avg (mean " + fmt("%.4g", m_raw) + " deg/h)",
 					plot_colour::kBlue);
 		addAverages(top, in.comp->stats, m_comp, scale, "compensated avg (mean " + fmt("%.4g", m_comp) + " deg/h)",
@@ -112,8 +161,9 @@ void biasVsTime(const std::string& path, const PlotInputs& in)
 		const cv::Vec2d xl = top.xLimits();
 		bottom.x_axis.min = xl[0];
 		bottom.x_axis.max = xl[1];
+		shadeOffAndGaps(bottom, s, scale, false);
 		for (std::size_t i = 0; i < s.thermistorCount(); i++)
-			bottom.addSeries({s.thermistors[i].name, t, s.temp_C[i], plot_colour::cycle(i + 2)});
+			bottom.addSeries(gapBroken(s.thermistors[i].name, s.time_s, s.temp_C[i], scale, plot_colour::cycle(i + 2)));
 	}
 	fig.save(path);
 }

@@ -4,7 +4,8 @@
 /** \file EvaluationPlots.h
  * fog-evaluate's figures (metrics/PlotCanvas.h), written atomically into a directory:
  *  - bias_vs_time.png: bias about its mean, samples and tau-s averages, raw and compensated;
- *    thermistor temperatures below on the same time axis;
+ *    thermistor temperatures below on the same time axis; gyro-off intervals (power column 0)
+ *    and gaps in the log (> 5 sample periods) shaded;
  *  - bias_vs_temperature.png: tau-s averaged bias (about its mean) against the tau-s averaged
  *    mean coil temperature, in time order (loops show heating/cooling hysteresis);
  *  - allan_deviation.png: overlapping Allan deviation, log-log, with the fitted IEEE 952 lines.

@@ -382,7 +382,9 @@ void LinePlot::draw(cv::Mat& img, const cv::Rect& panel) const
 	{
 		const int y = box.y + 4 + static_cast<int>(i) * row_h + row_h / 2;
 		const auto& [colour, kind] = entries[i].second;
-		if (kind == 2) cv::rectangle(img, cv::Rect(box.x + 6, y - 5, 22, 10), colour, cv::FILLED);
+		if (kind == 2)  // the shade's blended colour, as in the plot
+			cv::rectangle(img, cv::Rect(box.x + 6, y - 5, 22, 10), colour * 0.25 + cv::Scalar(255, 255, 255) * 0.75,
+						  cv::FILLED);
 		else if (kind == 1)
 		{
 			cv::line(img, {box.x + 6, y}, {box.x + 13, y}, colour, 2);
