@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <map>
+#include <algorithm>
 #include <set>
 
 namespace mrpt_fog
@@ -58,18 +59,78 @@ mrpt::Clock::time_point fromTicks(int64_t ticks) { return mrpt::Clock::time_poin
 /** MRPT timestamps are 100 ns ticks. */
 constexpr double kTicksPerSecond = 1e7;
 
+
+/** Builds one sensor's FogSeries sample by sample (times kept as ticks until the epoch is known). */
+class FogAccumulator
+{
+   public:
+	FogSeries series;
+	std::vector<int64_t> ticks;
+
+	std::size_t size() const { return ticks.size(); }
+
+	/** Appends an observation; throws std::invalid_argument if its layout differs from the first. */
+	void add(const CObservationFOG::Ptr& o)
+	{
+		if (!first_)
+		{
+			first_ = o;
+			series = seriesFromObservations({o});
+			ticks.push_back(ticksOf(o->timestamp));
+			return;
+		}
+		const CObservationFOG& f = *first_;
+		if (o->thermistors != f.thermistors || o->hasAxis != f.hasAxis || o->hasTableRate != f.hasTableRate ||
+			o->hasField != f.hasField || o->hasPower != f.hasPower)
+			throw std::invalid_argument("FOG observation of sensor '" + o->sensorLabel +
+										"' has another layout (thermistors, axes or optional fields) than its first one");
+		ticks.push_back(ticksOf(o->timestamp));
+		series.time_s.push_back(0.0);  // set from the ticks at the end
+		for (int a = 0; a < 3; a++)
+			if (series.has_axis[a]) series.rate_dph[a].push_back(o->rate_dph[a]);
+		for (std::size_t i = 0; i < series.temp_C.size(); i++) series.temp_C[i].push_back(o->temperature_C(i));
+		if (f.hasTableRate) series.table_rate_dph.push_back(o->tableRate_dph);
+		if (f.hasField) series.field_uT.push_back(o->field_uT);
+		if (f.hasPower) series.power.push_back(o->powerOn ? 1.0 : 0.0);
+	}
+
+   private:
+	CObservationFOG::Ptr first_;
+};
 }  // namespace
 
 FogRawlogContents readFogRawlog(const std::string& path, const std::string& fog_label)
 {
 	registerAllClasses_mrpt_fog();
-	const std::string bytes = io::readWholeFile(path);
-	if (bytes.empty()) throw FogIoError(path + ": empty rawlog (0 objects)");
 
-	// 1) Every object, observations unpacked from sensory frames, in file order.
-	std::vector<mrpt::obs::CObservation::Ptr> all;
+	// FOG samples go straight into columns (a CObservationFOG object weighs ~1 kB, its columns
+	// ~50 B): all labels when none is chosen (several is then an error anyway), else the chosen
+	// one. Everything else is kept as objects, in file order.
+	std::map<std::string, FogAccumulator> fogs;
+	std::map<std::string, std::pair<io::FogRawlogMetadata, mrpt::obs::CObservation::Ptr>> metas;
+	FogRawlogContents out;
 	std::size_t objects = 0;
+	auto take = [&](const mrpt::obs::CObservation::Ptr& o, std::size_t index) {
+		if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o); f && (fog_label.empty() || f->sensorLabel == fog_label))
+		{
+			try
+			{
+				fogs[f->sensorLabel].add(f);
+			}
+			catch (const std::exception& e)
+			{
+				throw FogIoError(path + ": object #" + std::to_string(index) + ": " + e.what());
+			}
+			return;
+		}
+		if (auto c = std::dynamic_pointer_cast<mrpt::obs::CObservationComment>(o))
+			if (auto m = io::parseFogRawlogMetadata(c->text); m && !metas.count(m->sensor_label))
+				metas[m->sensor_label] = {*m, o};
+		out.others.push_back(o);
+	};
 	{
+		const std::string bytes = io::readWholeFile(path);
+		if (bytes.empty()) throw FogIoError(path + ": empty rawlog (0 objects)");
 		mrpt::io::CMemoryStream mem;
 		mem.assignMemoryNotOwn(bytes.data(), bytes.size());
 		auto arch = mrpt::serialization::archiveFrom(mem);
@@ -88,10 +149,10 @@ FogRawlogContents readFogRawlog(const std::string& path, const std::string& fog_
 								 " of the decompressed data, " + std::to_string(bytes.size()) + " bytes in all): " +
 								 whyReadFailed(e.what(), mem.getPosition() >= bytes.size()));
 			}
-			if (auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj)) all.push_back(o);
+			if (auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj)) take(o, objects);
 			else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj))
 			{
-				for (const auto& so : *sf) all.push_back(so);
+				for (const auto& so : *sf) take(so, objects);
 			}
 			else if (std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(obj))
 				throw FogIoError(path + ": object #" + std::to_string(objects) + " (byte offset " + std::to_string(offset) +
@@ -104,63 +165,41 @@ FogRawlogContents readFogRawlog(const std::string& path, const std::string& fog_
 			objects++;
 		}
 	}
+	out.objects_read = objects;
 
-	// 2) Which FOG sensor.
+	// Which FOG sensor.
 	std::map<std::string, std::size_t> fog_counts;
-	for (const auto& o : all)
+	for (const auto& [label, acc] : fogs) fog_counts[label] = acc.size();
+	for (const auto& o : out.others)
 		if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o)) fog_counts[f->sensorLabel]++;
-	std::string label = fog_label;
-	if (label.empty())
+	if (fog_label.empty())
 	{
 		if (fog_counts.empty())
 			throw FogIoError(path + ": no CObservationFOG in the file (" + std::to_string(objects) + " objects read)");
 		if (fog_counts.size() > 1)
-			throw FogIoError(path + ": several FOG sensors " + labelList(fog_counts) + "; choose one by its label (fog-convert --label L)");
-		label = fog_counts.begin()->first;
+			throw FogIoError(path + ": several FOG sensors " + labelList(fog_counts) +
+							 "; choose one by its label (fog-convert --label L)");
 	}
-	else if (!fog_counts.count(label))
-		throw FogIoError(path + ": no FOG sensor labelled '" + label + "'" +
+	else if (!fogs.count(fog_label))
+		throw FogIoError(path + ": no FOG sensor labelled '" + fog_label + "'" +
 						 (fog_counts.empty() ? std::string(" (the file has no CObservationFOG)")
 											 : " (present: " + labelList(fog_counts) + ")"));
+	const std::string label = fogs.begin()->first;
+	FogAccumulator& acc = fogs.begin()->second;
 
-	// 3) Split: the selected FOG stream, its metadata, everything else untouched.
-	FogRawlogContents out;
-	out.objects_read = objects;
-	std::vector<CObservationFOG::Ptr> fog;
-	std::optional<io::FogRawlogMetadata> meta;
-	for (const auto& o : all)
+	// Its metadata block leaves `others`; exact times from the 100 ns ticks (a double of UNIX
+	// seconds resolves only ~0.2 us today).
+	out.fog = std::move(acc.series);
+	out.fog.epoch_s = std::floor(mrpt::Clock::toDouble(fromTicks(acc.ticks.front())));
+	if (auto m = metas.find(label); m != metas.end())
 	{
-		auto f = std::dynamic_pointer_cast<CObservationFOG>(o);
-		if (f && f->sensorLabel == label)
-		{
-			fog.push_back(f);
-			continue;
-		}
-		if (auto c = std::dynamic_pointer_cast<mrpt::obs::CObservationComment>(o); c && !meta)
-			if (auto m = io::parseFogRawlogMetadata(c->text); m && m->sensor_label == label)
-			{
-				meta = m;
-				continue;
-			}
-		out.others.push_back(o);
-	}
-	try
-	{
-		out.fog = seriesFromObservations(fog);
-	}
-	catch (const std::exception& e)
-	{
-		throw FogIoError(path + ": sensor '" + label + "': " + e.what());
-	}
-	// Exact times from the 100 ns ticks (a double of UNIX seconds only resolves ~0.2 us).
-	if (meta)
-	{
-		out.fog.epoch_s = meta->epoch_s;
-		out.fog.metadata = meta->metadata;
+		out.fog.epoch_s = m->second.first.epoch_s;
+		out.fog.metadata = m->second.first.metadata;
+		out.others.erase(std::find(out.others.begin(), out.others.end(), m->second.second));
 	}
 	const int64_t epoch_ticks = ticksOf(mrpt::Clock::fromDouble(out.fog.epoch_s));
-	for (std::size_t k = 0; k < fog.size(); k++)
-		out.fog.time_s[k] = static_cast<double>(ticksOf(fog[k]->timestamp) - epoch_ticks) / kTicksPerSecond;
+	for (std::size_t k = 0; k < acc.ticks.size(); k++)
+		out.fog.time_s[k] = static_cast<double>(acc.ticks[k] - epoch_ticks) / kTicksPerSecond;
 	try
 	{
 		out.fog.validate();
@@ -230,10 +269,9 @@ std::vector<mrpt::obs::CObservation::Ptr> mergeByTimestamp(const std::vector<mrp
 
 void writeFogRawlog(const std::string& path, const FogSeries& fog, const std::vector<mrpt::obs::CObservation::Ptr>& others)
 {
-	std::vector<mrpt::obs::CObservation::Ptr> fog_objs;
 	try
 	{
-		fog_objs = fogObservationsForRawlog(fog);
+		fog.validate();
 	}
 	catch (const std::exception& e)
 	{
@@ -241,11 +279,45 @@ void writeFogRawlog(const std::string& path, const FogSeries& fog, const std::ve
 	}
 	for (std::size_t i = 0; i < others.size(); i++)
 		if (!others[i]) throw FogIoError(path + ": cannot write: other observation #" + std::to_string(i) + " is null");
-	// The metadata comment heads the file; then FOG samples and the others merged by time.
-	std::vector<mrpt::obs::CObservation::Ptr> samples(fog_objs.begin() + 1, fog_objs.end());
-	std::vector<mrpt::obs::CObservation::Ptr> objs{fog_objs.front()};
-	for (auto& o : mergeByTimestamp(samples, others)) objs.push_back(o);
-	writeRawlogObservations(path, objs);
+	// The metadata comment heads the file; then FOG samples (made one at a time: memory stays
+	// flat for long runs) and the others merged by time, FOG first on equal timestamps.
+	const int64_t epoch_ticks = ticksOf(mrpt::Clock::fromDouble(fog.epoch_s));
+	auto fogTime = [&](std::size_t k) { return fromTicks(epoch_ticks + std::llround(fog.time_s[k] * kTicksPerSecond)); };
+	auto comment = mrpt::obs::CObservationComment::Create();
+	comment->sensorLabel = fog.sensor_label + "_METADATA";
+	comment->text = io::formatFogRawlogMetadata(fog);
+	comment->timestamp = fog.empty() ? fromTicks(epoch_ticks) : fogTime(0);
+	try
+	{
+		writeFileAtomically(path, [&](const std::string& tmp) {
+			mrpt::io::CFileGZOutputStream out;
+			std::string why;
+			if (!out.open(tmp, 1, why)) throw FogIoError(path + ": cannot create: " + why);
+			auto arch = mrpt::serialization::archiveFrom(out);
+			arch << *comment;
+			std::size_t k = 0, j = 0;
+			while (k < fog.size() || j < others.size())
+			{
+				if (j == others.size() || (k < fog.size() && !(others[j]->timestamp < fogTime(k))))
+				{
+					auto o = observationFromSeries(fog, k);
+					o->timestamp = fogTime(k++);
+					arch << *o;
+				}
+				else
+					arch << *others[j++];
+			}
+			out.close();
+		});
+	}
+	catch (const FogIoError&)
+	{
+		throw;
+	}
+	catch (const std::exception& e)
+	{
+		throw FogIoError(path + ": cannot write: " + firstLine(e.what()));
+	}
 }
 
 }  // namespace mrpt_fog
