@@ -27,3 +27,45 @@ TEST(ChamberRun, DefaultDeviceSeedProfileUncompensatedNearSeedFigures)
 	EXPECT_NEAR(st.stability_dph, 0.114857, 0.3 * 0.114857);
 	EXPECT_NEAR(st.range_dph, 0.5082, 0.3 * 0.5082);
 }
+
+TEST(ChamberRun, SameSeedSameRunOtherSeedOtherNoise)
+{
+	auto profile = ChamberProfile::preset("warmup");
+	SimSettings s;
+	s.rate_hz = 1.0;
+	const FogSeries a = simulateChamber(profile, FogDevice::defaultDevice(), s);
+	const FogSeries b = simulateChamber(profile, FogDevice::defaultDevice(), s);
+	EXPECT_EQ(a.rate_dph[2], b.rate_dph[2]);
+	EXPECT_EQ(a.temp_C, b.temp_C);
+	EXPECT_EQ(a.metadata, b.metadata);
+	s.seed = 7;
+	const FogSeries c = simulateChamber(profile, FogDevice::defaultDevice(), s);
+	EXPECT_NE(a.rate_dph[2], c.rate_dph[2]);
+	EXPECT_EQ(c.metadataValue("sim.seed"), "7");
+}
+
+TEST(ChamberRun, LayoutAndMetadata)
+{
+	SimSettings s;
+	s.rate_hz = 0.5;
+	const FogSeries r = simulateChamber(ChamberProfile::preset("rich"), FogDevice::defaultDevice(), s);
+	EXPECT_NO_THROW(r.validate());
+	EXPECT_EQ(r.thermistorCount(), 4u);
+	EXPECT_EQ(r.table_rate_dph.size(), r.size());  // rich uses the rate table and field
+	EXPECT_EQ(r.field_uT.size(), r.size());
+	EXPECT_EQ(r.power.size(), r.size());
+	EXPECT_EQ(r.metadataValue("sim.profile"), "rich");
+	EXPECT_EQ(r.metadataValue("latitude_deg"), "40");
+	EXPECT_EQ(r.metadataValue("sim.device.coil.pattern"), "quadrupolar");
+	// powered-off samples report 0 and power 0
+	bool saw_off = false;
+	for (std::size_t k = 0; k < r.size(); k++)
+		if (r.power[k] == 0)
+		{
+			saw_off = true;
+			EXPECT_EQ(r.rate_dph[2][k], 0.0);
+		}
+	EXPECT_TRUE(saw_off);
+	s.rate_hz = 0;
+	EXPECT_THROW(simulateChamber(ChamberProfile::preset("seed"), FogDevice::defaultDevice(), s), std::invalid_argument);
+}
