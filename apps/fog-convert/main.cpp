@@ -8,7 +8,10 @@
 #include <mrpt_fog/io/NumberText.h>
 #include <mrpt_fog/obs/CObservationFOG.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <map>
 
@@ -73,6 +76,17 @@ class ConvertHelpOutput : public TCLAP::StdOutput
 	bool failed = false;
 };
 
+/** Fails before any work if the directory of an output file cannot be written, so that a bad
+ * --json path does not leave a converted file behind with a non-zero exit. */
+void requireWritableDirectory(const std::string& path, const char* what)
+{
+	std::filesystem::path dir = std::filesystem::path(path).parent_path();
+	if (dir.empty()) dir = ".";
+	if (!std::filesystem::is_directory(dir) || ::access(dir.c_str(), W_OK) != 0)
+		throw std::runtime_error(std::string(what) + " '" + path + "': directory '" + dir.string() +
+								 "' does not exist or is not writable");
+}
+
 bool isRawlog(const std::string& path) { return fileExtension(path) == ".rawlog"; }
 
 void requireKnownExtension(const std::string& path, const char* what)
@@ -115,6 +129,8 @@ int main(int argc, char** argv)
 		const std::string in = arg_in.getValue(), out = arg_out.getValue();
 		requireKnownExtension(in, "input");
 		requireKnownExtension(out, "output");
+		requireWritableDirectory(out, "output");
+		if (!arg_json.getValue().empty()) requireWritableDirectory(arg_json.getValue(), "--json");
 		if (arg_stock.getValue() && !isRawlog(out))
 			throw std::runtime_error("--to-stock writes a rawlog: the output '" + out + "' must end in .rawlog");
 

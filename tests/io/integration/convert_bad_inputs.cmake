@@ -65,6 +65,11 @@ execute_process(COMMAND ${FOG_CONVERT} -i ${DATA}/sample.csv -o ${WORK}/x.csv --
 if(rc EQUAL 0 OR EXISTS ${WORK}/x.csv)
   list(APPEND failures "--to-stock to a CSV accepted")
 endif()
+execute_process(COMMAND ${FOG_CONVERT} -i ${DATA}/sample.csv -o ${WORK}/j.csv --json ${WORK}/no/such/dir/s.json
+  RESULT_VARIABLE rc ERROR_VARIABLE se)
+if(rc EQUAL 0 OR EXISTS ${WORK}/j.csv)
+  list(APPEND failures "unwritable --json path: rc=${rc}, output left: ${se}")
+endif()
 file(GLOB leftovers ${WORK}/*.tmp-*)
 if(leftovers)
   list(APPEND failures "temporary files left: ${leftovers}")
