@@ -28,41 +28,50 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 		if (it == names.end()) throw std::invalid_argument("calibration model uses thermistor '" + n + "' not in the main model");
 		return static_cast<int>(it - names.begin());
 	};
-	const std::size_t ns = fs.signals().size();
-	c.poly.assign(ns, std::array<double, 6>{});
-	c.degree.assign(ns, 0);
-	for (std::size_t s = 0; s < ns; s++)
+	// degree of each signal
+	std::vector<int> degree(fs.signals().size(), 0);
+	for (std::size_t i = 0; i < fs.termCount(); i++)
+		if (fs.termSignal(i) >= 0)
+			degree[fs.termSignal(i)] = std::max(degree[fs.termSignal(i)], fs.terms()[i].power);
+	std::vector<int> group_of(fs.signals().size()), index_in(fs.signals().size());
+	for (int kind = 0; kind < 4; kind++)
 	{
-		const auto& sig = fs.signals()[s];
-		const auto& nm = fs.normalisation()[s];
-		c.kind.push_back(static_cast<int>(sig.kind));
-		c.a.push_back(chan(sig.a));
-		c.b.push_back(sig.isDifference() ? chan(sig.b) : 0);
-		c.centre.push_back(nm.centre);
-		c.inv_scale.push_back(1.0 / nm.scale);
-		c.lo.push_back(nm.min);
-		c.hi.push_back(nm.max);
+		SignalGroup g;
+		g.kind = kind;
+		for (std::size_t s = 0; s < fs.signals().size(); s++)
+		{
+			const auto& sig = fs.signals()[s];
+			if (static_cast<int>(sig.kind) != kind) continue;
+			const auto& nm = fs.normalisation()[s];
+			group_of[s] = static_cast<int>(c.groups.size());
+			index_in[s] = static_cast<int>(g.a.size());
+			g.a.push_back(chan(sig.a));
+			g.b.push_back(sig.isDifference() ? chan(sig.b) : 0);
+			g.centre.push_back(nm.centre);
+			g.inv_scale.push_back(1.0 / nm.scale);
+			g.lo.push_back(nm.min);
+			g.hi.push_back(nm.max);
+			g.degree = std::max(g.degree, degree[s]);
+			c.uses |= 1u << g.a.back();
+			if (sig.isDifference()) c.uses |= 1u << g.b.back();
+		}
+		if (g.a.empty()) continue;
+		g.p.assign(static_cast<std::size_t>(g.degree + 1) * g.a.size(), 0.0);
+		c.groups.push_back(std::move(g));
 	}
 	for (std::size_t i = 0; i < fs.termCount(); i++)
 	{
 		const int s = fs.termSignal(i);
 		if (s < 0)
-			c.c0 += m.coef_dph.at(i);
-		else
 		{
-			const int k = fs.terms()[i].power;
-			c.poly[s][k] += m.coef_dph.at(i);
-			c.degree[s] = std::max(c.degree[s], k);
+			c.c0 += m.coef_dph.at(i);
+			continue;
 		}
+		SignalGroup& g = c.groups[group_of[s]];
+		g.p[static_cast<std::size_t>(fs.terms()[i].power) * g.a.size() + static_cast<std::size_t>(index_in[s])] +=
+			m.coef_dph.at(i);
 	}
 	return c;
-}
-
-std::vector<bool> Compensator::usesMask(const BiasModel& m, const std::vector<std::string>& names)
-{
-	std::vector<bool> u(names.size(), false);
-	for (std::size_t c = 0; c < names.size(); c++) u[c] = m.features.references(names[c]);
-	return u;
 }
 
 Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInfo>& layout)
@@ -80,6 +89,7 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 	for (const auto& fb : cal.fallbacks)
 		for (const auto& n : fb.features.thermistors())
 			if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
+	if (names.size() > 32) throw std::invalid_argument("compensator: at most 32 thermistors are supported");
 	tracker_ = CausalRateTracker(names.size(), cal.rate_estimator.window_s);
 	for (const auto& n : names)
 	{
@@ -100,15 +110,12 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 		channel_col_.push_back(col);
 	}
 	models_.push_back(compile(cal.model, names));
-	uses_.push_back(usesMask(cal.model, names));
 	for (const auto& n : names)
 	{
 		const BiasModel* fb = cal.fallbackFor(n);
 		has_fallback_.push_back(fb != nullptr);
 		models_.push_back(fb ? compile(*fb, names) : Compiled{});
-		uses_.push_back(fb ? usesMask(*fb, names) : std::vector<bool>(names.size(), true));
 	}
-	missing_.assign(names.size(), false);
 	temp_.assign(names.size(), 0.0);
 	rate_.assign(names.size(), 0.0);
 	x_.assign(names.size(), 0.0);
@@ -122,35 +129,58 @@ void Compensator::reset()
 	first_ = true;
 }
 
+namespace
+{
+/** Clamp, normalise and Horner-evaluate the n signals of one group; D = the group's degree
+ * (compile-time, so the Horner loop unrolls). Returns the group's contribution [deg/h]. */
+template <int D, bool Diff>
+inline double groupSum(const int* a, const int* b, const double* src, const double* lo, const double* hi,
+					   const double* centre, const double* inv_scale, const double* p, std::size_t n, int& clamped)
+{
+	double sum = 0;
+	int cl = 0;
+	for (std::size_t i = 0; i < n; i++)
+	{
+		double v = Diff ? src[a[i]] - src[b[i]] : src[a[i]];
+		cl += (v < lo[i]) + (v > hi[i]);
+		v = v < lo[i] ? lo[i] : v;
+		v = v > hi[i] ? hi[i] : v;
+		const double z = (v - centre[i]) * inv_scale[i];
+		double h = p[D * n + i];
+		for (int k = D - 1; k >= 1; k--) h = h * z + p[k * n + i];
+		sum += h * z;
+	}
+	clamped += cl;
+	return sum;
+}
+
+template <bool Diff>
+double groupSumAnyDegree(int degree, const int* a, const int* b, const double* src, const double* lo, const double* hi,
+						 const double* centre, const double* inv_scale, const double* p, std::size_t n, int& clamped)
+{
+	switch (degree)
+	{
+		case 1: return groupSum<1, Diff>(a, b, src, lo, hi, centre, inv_scale, p, n, clamped);
+		case 2: return groupSum<2, Diff>(a, b, src, lo, hi, centre, inv_scale, p, n, clamped);
+		case 3: return groupSum<3, Diff>(a, b, src, lo, hi, centre, inv_scale, p, n, clamped);
+		case 4: return groupSum<4, Diff>(a, b, src, lo, hi, centre, inv_scale, p, n, clamped);
+		default: return groupSum<5, Diff>(a, b, src, lo, hi, centre, inv_scale, p, n, clamped);
+	}
+}
+}  // namespace
+
 double Compensator::evaluate(const Compiled& m, int& clamped) const
 {
 	double sum = m.c0;
-	const std::size_t ns = m.kind.size();
-	for (std::size_t s = 0; s < ns; s++)
+	for (const SignalGroup& g : m.groups)
 	{
-		double v;
-		switch (m.kind[s])
-		{
-			case 0: v = temp_[m.a[s]]; break;
-			case 1: v = rate_[m.a[s]]; break;
-			case 2: v = temp_[m.a[s]] - temp_[m.b[s]]; break;
-			default: v = rate_[m.a[s]] - rate_[m.b[s]]; break;
-		}
-		if (v < m.lo[s])
-		{
-			v = m.lo[s];
-			clamped++;
-		}
-		else if (v > m.hi[s])
-		{
-			v = m.hi[s];
-			clamped++;
-		}
-		const double z = (v - m.centre[s]) * m.inv_scale[s];
-		const auto& p = m.poly[s];
-		double h = p[m.degree[s]];
-		for (int k = m.degree[s] - 1; k >= 1; k--) h = h * z + p[k];
-		sum += h * z;
+		const double* src = (g.kind == 0 || g.kind == 2) ? temp_.data() : rate_.data();
+		if (g.kind >= 2)
+			sum += groupSumAnyDegree<true>(g.degree, g.a.data(), g.b.data(), src, g.lo.data(), g.hi.data(),
+										   g.centre.data(), g.inv_scale.data(), g.p.data(), g.a.size(), clamped);
+		else
+			sum += groupSumAnyDegree<false>(g.degree, g.a.data(), g.b.data(), src, g.lo.data(), g.hi.data(),
+											g.centre.data(), g.inv_scale.data(), g.p.data(), g.a.size(), clamped);
 	}
 	return sum;
 }
@@ -160,38 +190,36 @@ Compensator::Output Compensator::step(double time_s, double raw_dph, const doubl
 	const std::size_t nc = channel_col_.size();
 	for (std::size_t c = 0; c < nc; c++) x_[c] = temp_C[channel_col_[c]];
 	tracker_.push(time_s, x_.data());
-	bool warm = false;
+	const std::uint32_t short_span = tracker_.ratesAndCoverage(rate_.data(), 0.5 * window_s_);
+	std::uint32_t missing = 0;
 	for (std::size_t c = 0; c < nc; c++)
 	{
 		temp_[c] = x_[c];
-		rate_[c] = tracker_.rate(c);
-		missing_[c] = std::isnan(temp_[c]) || std::isnan(rate_[c]);
-		if (missing_[c]) temp_[c] = rate_[c] = 0.0;  // never read by the model in use
+		if (std::isnan(temp_[c]) || std::isnan(rate_[c]))
+		{
+			missing |= 1u << c;
+			temp_[c] = rate_[c] = 0.0;  // never read by the model in use
+		}
 	}
-	// Main model unless it needs a missing channel; then the fallback without that channel if
-	// exactly one is missing and the fallback needs no other missing channel; else none.
-	const auto usable = [&](int m) {
-		for (std::size_t c = 0; c < nc; c++)
-			if (missing_[c] && uses_[m][c]) return false;
-		return true;
-	};
+	// Main model unless it reads a missing channel; then the fallback without that channel if
+	// it reads no other missing channel; else none.
 	int model = -1;
-	if (usable(0))
+	if ((missing & models_[0].uses) == 0)
 		model = 0;
 	else
-		for (std::size_t c = 0; c < nc; c++)
-			if (missing_[c] && uses_[0][c])
-			{
-				if (has_fallback_[c] && usable(1 + static_cast<int>(c))) model = 1 + static_cast<int>(c);
-				break;
-			}
-	if (model >= 0)
-		for (std::size_t c = 0; c < nc; c++)
-			if (uses_[model][c] && tracker_.coveredSpan_s(c) < 0.5 * window_s_) warm = true;
+	{
+		const std::uint32_t need = missing & models_[0].uses;
+		const int c = __builtin_ctz(need);
+		if (has_fallback_[c] && (missing & models_[1 + c].uses) == 0) model = 1 + c;
+	}
 	Output out;
 	int clamped = 0;
+	bool warm = false;
 	if (model >= 0)
+	{
 		out.bias_dph = evaluate(models_[model], clamped);
+		warm = (short_span & models_[model].uses) != 0;
+	}
 	else
 		out.bias_dph = mean_bias_dph_;
 	out.compensated_dph = raw_dph - out.bias_dph;

@@ -73,25 +73,30 @@ class Compensator
 	void reset();
 
    private:
+	/** The signals of one kind (T, dT/dt, dT, d/dt dT) of a model, struct-of-arrays, every
+	 * polynomial padded with zeros to the group's highest degree: clamping, normalisation and
+	 * Horner then run as fixed-length, branch-free loops over the signals. */
+	struct SignalGroup
+	{
+		int kind = 0, degree = 0;
+		std::vector<int> a, b;  // tracked-channel indices
+		std::vector<double> centre, inv_scale, lo, hi;
+		std::vector<double> p;  // coefficient of z^k of signal i at p[k * n + i], k = 1..degree
+	};
 	struct Compiled
 	{
 		double c0 = 0;
-		std::vector<int> kind, a, b;  // per signal; a/b index into the tracked channels
-		std::vector<double> centre, inv_scale, lo, hi;
-		std::vector<std::array<double, 6>> poly;  // coefficient of z^1..z^5 at [1..5]
-		std::vector<int> degree;
+		std::vector<SignalGroup> groups;
+		std::uint32_t uses = 0;  // bit mask of the channels the model reads
 	};
 	static Compiled compile(const BiasModel& m, const std::vector<std::string>& channel_names);
 	double evaluate(const Compiled& m, int& clamped) const;
-	static std::vector<bool> usesMask(const BiasModel& m, const std::vector<std::string>& names);
 
 	double window_s_;
 	double mean_bias_dph_;
 	std::vector<int> channel_col_;  // layout column of each tracked channel
 	std::vector<Compiled> models_;  // [0] main, [1 + c] fallback without channel c (may be empty)
 	std::vector<bool> has_fallback_;
-	std::vector<std::vector<bool>> uses_;  // per model: which channels it reads
-	std::vector<bool> missing_;
 	CausalRateTracker tracker_;
 	std::vector<double> temp_, rate_, x_;
 	CompensationCounters counters_;

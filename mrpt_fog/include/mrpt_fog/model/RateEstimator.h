@@ -23,6 +23,7 @@
  */
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -74,11 +75,16 @@ class CausalRateTracker
 	/** Current slope of channel c [unit/s]; NaN with fewer than 2 valid samples in the window. */
 	double rate(std::size_t c) const;
 	/** Valid samples of channel c now inside the window. */
-	std::size_t validCount(std::size_t c) const { return n_[c]; }
+	std::size_t validCount(std::size_t c) const { return static_cast<std::size_t>(ch_[c].n); }
 	/** Time spread of the valid samples of channel c in the window, as sqrt(12) x their
 	 * standard deviation in time [s] (= the span for uniform sampling; 0 when < 2 samples).
 	 * The compensator flags "rate warm-up" while this is below half the window. */
 	double coveredSpan_s(std::size_t c) const;
+	/** coveredSpan_s(c) >= span_s, without a square root (per-sample hot path). */
+	bool spanAtLeast(std::size_t c, double span_s) const;
+	/** All channels at once (the compensator's hot path, channels <= 32): rate_out[c] = rate(c);
+	 * returns a bit mask of the channels whose coveredSpan_s is below min_span_s. */
+	std::uint32_t ratesAndCoverage(double* rate_out, double min_span_s) const;
 	std::size_t channels() const { return channels_; }
 	double window_s() const { return window_s_; }
 	void reset();
@@ -95,9 +101,14 @@ class CausalRateTracker
 	double t_ref_ = 0.0;
 	double last_t_ = 0.0;
 	bool any_ = false;
-	std::vector<double> x_ref_;
-	std::vector<double> s1_, s2_, sx_, stx_;  // sums over valid samples (relative to refs)
-	std::vector<std::size_t> n_;
+	/** Per-channel running sums over the valid samples in the window, relative to t_ref_ and
+	 * x_ref (contiguous per channel: the hot loops touch one cache line per channel). */
+	struct Channel
+	{
+		double s1 = 0, s2 = 0, sx = 0, stx = 0, n = 0, x_ref = 0;
+	};
+	std::vector<Channel> ch_;
+	std::vector<char> ref_set_;  // scratch of rebuildSums
 };
 
 class CausalRateEstimator : public RateEstimator
