@@ -28,7 +28,7 @@ mkdir -p "$OUT"
 # name | profile | description
 RUNS=(
 	"chamber_A|seed|Chamber run A: the seed paper's profile (25 C -> -40 C at 1 C/min, soak 2 h, -> 60 C at 1 C/min, soak 2 h; 6.75 h), gyro on and settled at t = 0."
-	"chamber_B|B|Chamber run B (held-out validation): 20 C, 0.5 C/min down to -30 C, 1 h soak, step to -10 C, 2 C/min up to 50 C, log-swept sine (8 C, periods 60 -> 4 min, 90 min), 1.5 C/min to 25 C; 7.7 h."
+	"chamber_B|B|Chamber run B (held-out validation): 20 C, 0.5 C/min down to -30 C, 1 h soak, step to -10 C, 2 C/min up to 50 C, log-swept sine (8 C, periods 60 -> 4 min, 90 min), 1.5 C/min to 25 C; 7.4 h."
 	"warmup|warmup|Room-temperature warm-up: unpowered soak at 23 C, power on at t = 0, 3 h."
 	"drive|drive|Vehicle drive, 70.5 min: winter cold start (cabin -15 C -> 20 C at 2 C/min -> 24 C), gyro powered at t = 0; streams FOG (thermal error), FOG_IDEAL (same noise, no thermal error), ODOMETRY (CObservationOdometry), GROUND_TRUTH (CObservationRobotPose)."
 )
