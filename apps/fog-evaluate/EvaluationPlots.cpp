@@ -96,6 +96,39 @@ PlotSeries gapBroken(const std::string& label, const std::vector<double>& time_s
 	return ps;
 }
 
+/** The thin trace under the bold tau averages: averages over tau/10 (centres joined, broken at
+ * empty windows), or the samples themselves when tau/10 is under 2 sample periods. */
+PlotSeries shortTrace(const std::string& what, const std::vector<double>& time_s, const std::vector<double>& y,
+					  double tau_s, double mean, double scale, const cv::Scalar& colour)
+{
+	const double short_tau = tau_s / 10;
+	if (short_tau < 2 * medianSampleInterval_s(time_s))
+		return gapBroken(what + " samples", time_s, minus(y, mean), scale, colour);
+	PlotSeries ps;
+	ps.label = what + " " + fmt("%g", short_tau) + " s avg";
+	ps.colour = colour;
+	BiasStats st;
+	try
+	{
+		st = biasStats(time_s, y, short_tau);
+	}
+	catch (const std::invalid_argument&)
+	{
+		return ps;  // nothing to draw
+	}
+	for (std::size_t i = 0; i < st.window_count; i++)
+	{
+		if (i > 0 && st.window_center_s[i] - st.window_center_s[i - 1] > 1.5 * short_tau)
+		{
+			ps.x.push_back(NAN);
+			ps.y.push_back(NAN);
+		}
+		ps.x.push_back(st.window_center_s[i] * scale);
+		ps.y.push_back(st.window_mean_dph[i] - mean);
+	}
+	return ps;
+}
+
 /** Shades the intervals with the gyro powered off and the gaps in the log (> 5 sample periods). */
 void shadeOffAndGaps(LinePlot& p, const FogSeries& s, double scale, bool with_labels)
 {
@@ -134,17 +167,20 @@ void biasVsTime(const std::string& path, const PlotInputs& in)
 	const bool temps = s.thermistorCount() > 0;
 	PlotCanvas fig(1100, temps ? 800 : 520);
 	LinePlot& top = fig.addPanel(temps ? 1.7 : 1.0);
-	top.title = "bias vs time (each about its own mean; " + fmt("%g", in.tau_s) + " s averages bold)";
+	top.title = "bias vs time (each about its own mean; " + fmt("%g", in.tau_s) + " s averages bold, " +
+				fmt("%g", in.tau_s / 10) + " s thin)";
 	top.x_axis.label = tlabel;
+	top.x_axis.min = s.time_s.front() * scale;  // the run, not rounded out to a tick
+	top.x_axis.max = s.time_s.back() * scale;
 	top.y_axis.label = "bias - mean [deg/h]";
 	shadeOffAndGaps(top, s, scale, true);
 	const double m_raw = in.raw->stats.mean_dph;
-	top.addSeries(gapBroken("raw samples", s.time_s, minus(*in.raw_bias_dph, m_raw), scale, light(plot_colour::kBlue)));
+	top.addSeries(shortTrace("raw", s.time_s, *in.raw_bias_dph, in.tau_s, m_raw, scale, light(plot_colour::kBlue)));
 	if (in.comp)
 	{
 		const double m_comp = in.comp->stats.mean_dph;
-		top.addSeries(gapBroken("compensated samples", s.time_s, minus(*in.comp_bias_dph, m_comp), scale,
-								light(plot_colour::kOrange)));
+		top.addSeries(
+			shortTrace("compensated", s.time_s, *in.comp_bias_dph, in.tau_s, m_comp, scale, light(plot_colour::kOrange)));
 		addAverages(top, in.raw->stats, m_raw, scale, "raw avg (mean " + fmt("%.4g", m_raw) + " deg/h)",
 					plot_colour::kBlue);
 		addAverages(top, in.comp->stats, m_comp, scale, "compensated avg (mean " + fmt("%.4g", m_comp) + " deg/h)",

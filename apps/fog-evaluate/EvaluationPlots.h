@@ -3,7 +3,8 @@
 
 /** \file EvaluationPlots.h
  * fog-evaluate's figures (metrics/PlotCanvas.h), written atomically into a directory:
- *  - bias_vs_time.png: bias about its mean, samples and tau-s averages, raw and compensated;
+ *  - bias_vs_time.png: bias about its mean, tau-s averages (bold) and tau/10-s averages (thin;
+ *    the samples when tau/10 is under 2 sample periods), raw and compensated;
  *    thermistor temperatures below on the same time axis; gyro-off intervals (power column 0)
  *    and gaps in the log (> 5 sample periods) shaded;
  *  - bias_vs_temperature.png: tau-s averaged bias (about its mean) against the tau-s averaged

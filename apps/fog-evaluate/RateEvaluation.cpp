@@ -26,7 +26,8 @@ RateEvaluation evaluateRate(const std::vector<double>& time_s, const std::vector
 	e.allan_segments = u.segments;
 	if (u.value.size() >= 4)
 	{
-		e.allan = allanDeviation(u.value, u.period_s, AllanKind::Overlapping);
+		// At least 4 clusters per point: with fewer the estimate is too noisy to be worth showing.
+		e.allan = allanDeviation(u.value, u.period_s, octaveClusterSizes(u.value.size(), 4), AllanKind::Overlapping);
 		e.terms = allanNoiseTerms(e.allan);
 	}
 	return e;

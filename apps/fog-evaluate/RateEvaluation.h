@@ -19,7 +19,7 @@ namespace mrpt_fog::evaluate
 struct RateEvaluation
 {
 	BiasStats stats;
-	std::vector<AllanPoint> allan;  //!< overlapping ADEV [deg/h], octave taus
+	std::vector<AllanPoint> allan;  //!< overlapping ADEV [deg/h], octave taus with >= 4 clusters
 	AllanNoiseTerms terms;
 	double allan_period_s = 0;  //!< sample period of the uniform resample used for the ADEV [s]
 	std::size_t allan_samples = 0;  //!< samples in that resample (longest gap-free segment)
