@@ -10,7 +10,8 @@ namespace mrpt_fog::evaluate
 {
 struct CompensationResult
 {
-	CompensatedSeries series;
+	CompensatedSeries series;  //!< raw_dph is the calibrated axis
+	GyroAxis axis = GyroAxis::Z;  //!< the calibrated axis
 	/** The evaluated log is one of the calibration's runs: the figures are in-sample. */
 	bool in_sample = false;
 };

@@ -2,7 +2,8 @@
  *
  *   fog-evaluate -i IN [--cal CAL.yaml] [--tau 100] [--json F] [--plots DIR] [--label FOG]
  *
- * The bias is the primary-axis gyro output minus the applied table rate (when the log has one);
+ * The bias is the gyro output (primary axis; with --cal the calibrated axis) minus the applied
+ * table rate (when the log has one);
  * samples with the gyro powered off are left out. Earth rate is NOT removed: on a static run
  * its vertical component is a constant, which moves mean_dph only; stability, range,
  * peak-to-peak and the Allan deviation measure spread and are unaffected by it. */
@@ -68,34 +69,46 @@ int main(int argc, char** argv)
 
 		const std::string path = in.getValue();
 		const FogSeries series = readFogLog(path, label.getValue());
-		series.validate();
+		try
+		{
+			series.validate();
+		}
+		catch (const std::invalid_argument& e)
+		{
+			throw std::invalid_argument(path + ": " + e.what());
+		}
 		if (series.size() < 2) throw std::invalid_argument(path + ": fewer than 2 samples");
 
-		const std::vector<double> raw_bias = biasOf(series, series.primaryRate_dph());
+		// With --cal the compensator works on the calibrated axis (CompensatedSeries::raw_dph), and
+		// the raw figures are of that same axis; without it, of the log's primary axis.
+		std::unique_ptr<CompensationResult> comp_series;
+		if (!cal.getValue().empty())
+			comp_series =
+				std::make_unique<CompensationResult>(compensateWithCalibration(cal.getValue(), path, series));
+		const std::vector<double>& raw_rate = comp_series ? comp_series->series.raw_dph : series.primaryRate_dph();
+		const char axis = axisLetter(comp_series ? comp_series->axis : series.primaryAxis());
+
+		const std::vector<double> raw_bias = biasOf(series, raw_rate);
 		RateEvaluation raw;
+		std::vector<double> comp_bias;
+		std::unique_ptr<RateEvaluation> comp;
 		try
 		{
 			raw = evaluateRate(series.time_s, raw_bias, tau_s);
+			if (comp_series)
+			{
+				comp_bias = biasOf(series, comp_series->series.compensated_dph);
+				comp = std::make_unique<RateEvaluation>(evaluateRate(series.time_s, comp_bias, tau_s));
+			}
 		}
 		catch (const std::invalid_argument& e)
 		{
 			throw std::invalid_argument(path + ": " + e.what());
 		}
 
-		std::unique_ptr<CompensationResult> comp_series;
-		std::vector<double> comp_bias;
-		std::unique_ptr<RateEvaluation> comp;
-		if (!cal.getValue().empty())
-		{
-			comp_series =
-				std::make_unique<CompensationResult>(compensateWithCalibration(cal.getValue(), path, series));
-			comp_bias = biasOf(series, comp_series->series.compensated_dph);
-			comp = std::make_unique<RateEvaluation>(evaluateRate(series.time_s, comp_bias, tau_s));
-		}
-
 		const double duration_s = series.time_s.back() - series.time_s.front();
 		std::printf("fog-evaluate: %s: %zu samples, %.1f s, axis %c, tau %g s (%zu windows, tail %.1f s dropped)\n",
-					path.c_str(), series.size(), duration_s, axisLetter(series.primaryAxis()), tau_s,
+					path.c_str(), series.size(), duration_s, axis, tau_s,
 					raw.stats.window_count, raw.stats.dropped_tail_s);
 		std::printf("  %-30s %14s%s\n", "", "raw",
 					!comp ? "" : comp_series->in_sample ? "  compensated*" : "    compensated");
@@ -142,7 +155,7 @@ int main(int argc, char** argv)
 			j["input"] = path;
 			j["samples"] = series.size();
 			j["duration_s"] = duration_s;
-			j["axis"] = std::string(1, axisLetter(series.primaryAxis()));
+			j["axis"] = std::string(1, axis);
 			j["tau_s"] = tau_s;
 			j["stability_definition"] = "std (N-1) of non-overlapping tau_s averages of gyro rate minus table rate";
 			j["earth_rate"] = "not removed: a constant, it moves mean_dph only";
