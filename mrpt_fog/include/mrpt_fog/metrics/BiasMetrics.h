@@ -46,8 +46,8 @@ struct BiasStats
 	std::vector<double> window_mean_dph;  //!< average of each counted window [deg/h]
 };
 
-/** Averages of a rate record over non-overlapping tau_s windows (see the file comment); fills
- * every BiasStats field except stability/range when fewer than 2 windows exist.
+/** Bias figures of a rate record from its non-overlapping tau_s window averages (see the file
+ * comment). O(samples) whatever tau_s is (runs of empty windows are skipped in one step).
  * Throws std::invalid_argument when: sizes differ, tau_s <= 0 or not finite, a timestamp is not
  * finite or not strictly increasing (names the sample index), or fewer than 2 windows with data
  * fit in the run ("tau longer than the run"): stability needs at least 2 averages. */
