@@ -22,4 +22,7 @@ constexpr int kExitUsage = 2;
 
 int runApp(const std::string& program, const std::function<int()>& body);
 
+/** An exception text on one line (MRPT's call-stack and location lines removed). */
+std::string oneLineMessage(const std::string& what);
+
 }  // namespace mrpt_fog::app

@@ -1,0 +1,28 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file JsonFigures.h
+ * Reads figures back from the programs' --json outputs (JSON is YAML, so MRPT's YAML parser
+ * reads it). A missing key or a JSON null (a figure that could not be computed) gives NaN. */
+
+#include <mrpt/containers/yaml.h>
+
+#include <optional>
+#include <string>
+
+namespace mrpt_fog::demo
+{
+class JsonFigures
+{
+   public:
+	/** Loads a JSON file; throws std::runtime_error naming the file when it cannot be parsed. */
+	explicit JsonFigures(const std::string& path);
+	/** Number at a dotted path ("raw.stability_dph"); NaN when absent or null. */
+	double number(const std::string& dotted_path) const;
+	bool has(const std::string& dotted_path) const;
+
+   private:
+	std::optional<mrpt::containers::yaml> find(const std::string& dotted_path) const;
+	mrpt::containers::yaml doc_;
+};
+}  // namespace mrpt_fog::demo

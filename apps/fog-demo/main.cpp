@@ -1,0 +1,262 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+/* fog-demo: the main job end to end. Calibrates the multi-point model on chamber run A,
+ * validates it on run B, compensates the vehicle drive and compares heading drift of the raw,
+ * compensated and ideal gyros; writes a report folder. Runs the project's own programs so that
+ * every figure in the report comes with the command that reproduces it. */
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt_fog/common/AtomicFile.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "AppMain.h"
+#include "JsonFigures.h"
+#include "StepRunner.h"
+
+using namespace mrpt_fog;
+using namespace mrpt_fog::demo;
+namespace fs = std::filesystem;
+
+namespace
+{
+const char* const kHelp = R"(
+WHAT IT DOES
+  The main job of mrpt_fog, end to end, on the bundled datasets (datasets/, simulated by
+  fog-sim; missing files are simulated into <out>/datasets first):
+   1. fog-calibrate: fit the multi-point thermal-bias model (seed eq. 2, all four thermistors,
+      orders 5/3, conditioned basis, terms selected by held-out error) on chamber run A, and
+      validate it on chamber run B (a different temperature profile, never seen by the fit);
+   2. fog-evaluate: 100 s bias stability, range and Allan deviation, raw vs compensated, on
+      A (in-sample) and B (held out), with plots;
+   3. fog-drift: compensate the vehicle drive sample by sample (causal, as in real time),
+      integrate heading with the Earth rate removed and dead-reckon with the wheel odometry,
+      for the raw, compensated and ideal (no thermal error) gyros, against the ground truth;
+   4. fog-paper (when built): the seed paper's Tables 1-3 beside ours.
+  The report folder holds summary.md (key figures, tables, the command behind each), the
+  calibration YAML, every program's JSON, PNG plots and logs.
+
+EXAMPLES
+  fog-demo --out report
+  fog-demo --datasets /path/to/datasets --out report
+)";
+
+class HelpOutput : public TCLAP::StdOutput
+{
+   public:
+	void usage(TCLAP::CmdLineInterface& c) override
+	{
+		TCLAP::StdOutput::usage(c);
+		std::cout << kHelp;
+	}
+};
+
+std::string fmt(double v, const char* f = "%.4g")
+{
+	if (!std::isfinite(v)) return "n/a";
+	char b[64];
+	std::snprintf(b, sizeof(b), f, v);
+	return b;
+}
+
+std::string ratio(double num, double den)
+{
+	if (!std::isfinite(num) || !std::isfinite(den) || den == 0) return "n/a";
+	return fmt(num / den, "%.3g");
+}
+
+const char* const kMarker = ".fog-demo-report";
+
+/** The output folder: created if absent; an existing non-empty folder is only reused when a
+ * previous fog-demo made it (nothing else the user had is overwritten). */
+void prepareOutDir(const fs::path& out)
+{
+	if (fs::exists(out))
+	{
+		if (!fs::is_directory(out)) throw std::runtime_error("--out '" + out.string() + "' exists and is not a directory");
+		if (!fs::is_empty(out) && !fs::exists(out / kMarker))
+			throw std::runtime_error("--out '" + out.string() +
+									 "' is a non-empty folder not made by fog-demo; refusing to write into it");
+	}
+	fs::create_directories(out);
+	writeTextFileAtomically((out / kMarker).string(), "written by fog-demo\n");
+}
+
+struct Datasets
+{
+	std::string chamber_A, chamber_B, drive;
+};
+
+fs::path defaultDatasetsDir()
+{
+	if (fs::exists("datasets/chamber_A.rawlog")) return "datasets";
+	return fs::path(MRPT_FOG_SOURCE_DIR) / "datasets";
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	return app::runApp("fog-demo", [&]() -> int {
+		TCLAP::CmdLine cmd("fog-demo: mrpt_fog end to end (calibrate, validate, compensate, navigate)", ' ', "0.1");
+		HelpOutput help_output;
+		cmd.setOutput(&help_output);
+		TCLAP::ValueArg<std::string> arg_out("o", "out", "report folder [default: fog-demo-report]", false,
+											 "fog-demo-report", "DIR", cmd);
+		TCLAP::ValueArg<std::string> arg_data("d", "datasets",
+											  "folder with chamber_A.rawlog, chamber_B.rawlog, drive.rawlog "
+											  "[default: ./datasets, else the source tree's datasets/]",
+											  false, "", "DIR", cmd);
+		TCLAP::ValueArg<std::string> arg_model("m", "model", "bias-model preset [default: multipoint]", false,
+											   "multipoint", "PRESET", cmd);
+		cmd.parse(argc, argv);
+
+		const fs::path out = fs::absolute(arg_out.getValue());
+		prepareOutDir(out);
+		const fs::path data = fs::absolute(arg_data.getValue().empty() ? defaultDatasetsDir() : fs::path(arg_data.getValue()));
+		const fs::path json = out / "json", plots = out / "plots";
+		fs::create_directories(json);
+		fs::create_directories(plots);
+
+		// Which datasets must be simulated first.
+		struct Need
+		{
+			const char* file;
+			const char* profile;
+		};
+		const Need needs[] = {{"chamber_A.rawlog", "seed"}, {"chamber_B.rawlog", "B"}, {"drive.rawlog", "drive"}};
+		std::vector<Need> missing;
+		for (const auto& n : needs)
+			if (!fs::exists(data / n.file)) missing.push_back(n);
+
+		const std::string bin = executableDir();
+		StepRunner tmp_probe(bin, (out / "logs").string(), 0);
+		bool have_paper = true;
+		try
+		{
+			tmp_probe.program("fog-paper");
+		}
+		catch (const std::exception&)
+		{
+			have_paper = false;
+		}
+		const int total = static_cast<int>(missing.size()) + 4 + (have_paper ? 1 : 0);
+		StepRunner run(bin, (out / "logs").string(), total);
+
+		std::cout << "fog-demo: datasets from " << data.string() << ", report in " << out.string() << "\n";
+		Datasets ds;
+		auto path_of = [&](const char* file) -> std::string {
+			for (const auto& m : missing)
+				if (std::string(m.file) == file) return (out / "datasets" / file).string();
+			return (data / file).string();
+		};
+		for (const auto& m : missing)
+		{
+			fs::create_directories(out / "datasets");
+			run.run({std::string("sim_") + m.profile,
+					 std::string("simulating ") + m.file + " (profile " + m.profile + "; not found in " + data.string() + ")",
+					 {run.program("fog-sim"), "--profile", m.profile, "--seed", "20240501", "--rate-hz", "10", "-o",
+					  path_of(m.file)}});
+		}
+		ds.chamber_A = path_of("chamber_A.rawlog");
+		ds.chamber_B = path_of("chamber_B.rawlog");
+		ds.drive = path_of("drive.rawlog");
+		const std::string cal = (out / "calibration.yaml").string();
+
+		run.run({"calibrate", "calibrating '" + arg_model.getValue() + "' on chamber run A, validating on run B",
+				 {run.program("fog-calibrate"), "-i", ds.chamber_A, "--model", arg_model.getValue(), "--validate", ds.chamber_B,
+				  "-o", cal, "--json", (json / "calibrate.json").string()}});
+		run.run({"evaluate_A", "evaluating on chamber run A (in-sample)",
+				 {run.program("fog-evaluate"), "-i", ds.chamber_A, "--cal", cal, "--json", (json / "evaluate_A.json").string(),
+				  "--plots", (plots / "chamber_A").string()}});
+		run.run({"evaluate_B", "evaluating on chamber run B (held out)",
+				 {run.program("fog-evaluate"), "-i", ds.chamber_B, "--cal", cal, "--json", (json / "evaluate_B.json").string(),
+				  "--plots", (plots / "chamber_B").string()}});
+		run.run({"drift", "compensating the vehicle drive and comparing heading drift",
+				 {run.program("fog-drift"), "-i", ds.drive, "--cal", cal, "--json", (json / "drift.json").string(), "--plots",
+				  (plots / "drift").string(), "--odometry-out", (out / "odometry_compensated.rawlog").string()}});
+		if (have_paper)
+			run.run({"paper", "reproducing the seed paper's Tables 1-3 (fog-paper)",
+					 {run.program("fog-paper"), "--json", (json / "paper.json").string(), "--plots", (plots / "paper").string()}});
+
+		const JsonFigures evA((json / "evaluate_A.json").string());
+		const JsonFigures evB((json / "evaluate_B.json").string());
+		const JsonFigures drift((json / "drift.json").string());
+
+		const double rawB = evB.number("raw.stability_dph"), compB = evB.number("compensated.stability_dph");
+		const double hRaw = drift.number("heading_error_final_deg.raw");
+		const double hComp = drift.number("heading_error_final_deg.compensated");
+		const double hIdeal = drift.number("heading_error_final_deg.ideal");
+
+		std::ostringstream md;
+		md << "# mrpt_fog demo report\n\n"
+		   << "Multi-point thermal-bias model (`" << arg_model.getValue() << "`) fitted on chamber run A, validated on "
+		   << "chamber run B, applied causally to a vehicle drive. Datasets: `" << data.string() << "`.\n\n";
+		md << "## Headline\n\n"
+		   << "- Held-out 100 s bias stability (run B): raw " << fmt(rawB) << " deg/h -> compensated " << fmt(compB)
+		   << " deg/h (x" << ratio(compB, rawB) << ").\n"
+		   << "- Final heading error after the drive: raw " << fmt(hRaw) << " deg, compensated " << fmt(hComp)
+		   << " deg, ideal gyro " << fmt(hIdeal) << " deg (compensated/raw = " << ratio(hComp, hRaw)
+		   << ", compensated/ideal = " << ratio(hComp, hIdeal) << ").\n"
+		   << "- Final position error: raw " << fmt(drift.number("position_error_final_m.raw")) << " m, compensated "
+		   << fmt(drift.number("position_error_final_m.compensated")) << " m, ideal "
+		   << fmt(drift.number("position_error_final_m.ideal")) << " m over " << fmt(drift.number("distance_m") / 1000.0)
+		   << " km.\n\n";
+		md << "## Bias (chamber runs, tau = 100 s)\n\n"
+		   << "| run | raw stability [deg/h] | compensated stability [deg/h] | raw range [deg/h] | compensated range [deg/h] |\n"
+		   << "|---|---|---|---|---|\n";
+		for (const auto& [label, ev] : {std::pair<const char*, const JsonFigures*>{"A (in-sample: the fitted run)", &evA},
+										{"B (held out: another profile)", &evB}})
+			md << "| " << label << " | " << fmt(ev->number("raw.stability_dph")) << " | "
+			   << fmt(ev->number("compensated.stability_dph")) << " | " << fmt(ev->number("raw.range_dph")) << " | "
+			   << fmt(ev->number("compensated.range_dph")) << " |\n";
+		md << "\n## Navigation (vehicle drive, " << fmt(drift.number("duration_s") / 60.0, "%.1f") << " min, "
+		   << fmt(drift.number("distance_m") / 1000.0, "%.2f") << " km)\n\n"
+		   << "| gyro | heading error final [deg] | heading error max [deg] | position error final [m] |\n"
+		   << "|---|---|---|---|\n";
+		for (const char* g : {"raw", "compensated", "ideal"})
+			md << "| " << g << " | " << fmt(drift.number(std::string("heading_error_final_deg.") + g)) << " | "
+			   << fmt(drift.number(std::string("heading_error_max_deg.") + g)) << " | "
+			   << fmt(drift.number(std::string("position_error_final_m.") + g)) << " |\n";
+		md << "\nTargets of issue 5 (compensated heading drift <= 1/10 of raw and within 2x of the ideal gyro): "
+		   << "compensated/raw = " << ratio(hComp, hRaw) << ", compensated/ideal = " << ratio(hComp, hIdeal)
+		   << ". See README.md (Navigation) for why the simulated drive misses them where it does.\n";
+		if (have_paper)
+		{
+			const JsonFigures paper((json / "paper.json").string());
+			md << "\n## The seed paper's tables beside ours (fog-paper)\n\n"
+			   << "| model | paper stability | ours in-sample (A) | ours held out (B) | paper range | ours range in-sample | ours range held out |\n"
+			   << "|---|---|---|---|---|---|---|\n";
+			for (const char* m : {"uncompensated", "M1", "M2", "M3", "M4", "points_1", "points_2", "points_3", "points_4"})
+			{
+				const std::string k(m);
+				md << "| " << k << " | " << fmt(paper.number("paper." + k + ".stability_dph")) << " | "
+				   << fmt(paper.number("ours.in_sample." + k + ".stability_dph")) << " | "
+				   << fmt(paper.number("ours.held_out." + k + ".stability_dph")) << " | "
+				   << fmt(paper.number("paper." + k + ".range_dph")) << " | "
+				   << fmt(paper.number("ours.in_sample." + k + ".range_dph")) << " | "
+				   << fmt(paper.number("ours.held_out." + k + ".range_dph")) << " |\n";
+			}
+		}
+		md << "\n## Files\n\n- `calibration.yaml`: the calibration (model, fallbacks, ranges, statistics)\n"
+		   << "- `json/`: every program's `--json` output\n- `plots/`: PNG plots (chamber_A, chamber_B, drift"
+		   << (have_paper ? ", paper" : "") << ")\n- `odometry_compensated.rawlog`: the compensated dead-reckoned "
+		   << "trajectory as CObservationOdometry, readable by MRPT's pf-localization\n- `logs/`: each step's output\n";
+		md << "\n## Commands (each figure above comes from one of these)\n\n```\n";
+		for (const auto& c : run.commands()) md << c << "\n";
+		md << "```\n";
+		writeTextFileAtomically((out / "summary.md").string(), md.str());
+
+		std::cout << "\nReport: " << (out / "summary.md").string() << "\n"
+				  << "  held-out bias stability (run B, 100 s): raw " << fmt(rawB) << " -> compensated " << fmt(compB)
+				  << " deg/h\n"
+				  << "  final heading error after the drive:    raw " << fmt(hRaw) << " deg, compensated " << fmt(hComp)
+				  << " deg, ideal " << fmt(hIdeal) << " deg\n"
+				  << "  final position error:                   raw " << fmt(drift.number("position_error_final_m.raw"))
+				  << " m, compensated " << fmt(drift.number("position_error_final_m.compensated")) << " m, ideal "
+				  << fmt(drift.number("position_error_final_m.ideal")) << " m\n";
+		return 0;
+	});
+}

@@ -1,0 +1,61 @@
+# cmake -DDEMO=<fog-demo> -DDATASETS=<dir> -DWORK=<dir> -P demo_checks.cmake
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+
+# 1. A non-empty folder not made by fog-demo is refused, and its content is left alone.
+file(WRITE ${WORK}/users_folder/precious.txt "keep me\n")
+execute_process(COMMAND ${DEMO} --datasets ${DATASETS} --out ${WORK}/users_folder
+  RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
+if(rc EQUAL 0)
+  message(FATAL_ERROR "fog-demo wrote into a non-empty user folder")
+endif()
+if(NOT err MATCHES "refusing")
+  message(FATAL_ERROR "unexpected error text: ${err}")
+endif()
+file(READ ${WORK}/users_folder/precious.txt kept)
+file(GLOB left ${WORK}/users_folder/*)
+list(LENGTH left nleft)
+if(NOT kept STREQUAL "keep me\n" OR NOT nleft EQUAL 1)
+  message(FATAL_ERROR "user folder modified")
+endif()
+
+# 2. The end-to-end run.
+execute_process(COMMAND ${DEMO} --datasets ${DATASETS} --out ${WORK}/report
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "fog-demo failed (${rc}): ${err}\n${out}")
+endif()
+foreach(f summary.md calibration.yaml json/calibrate.json json/evaluate_A.json json/evaluate_B.json json/drift.json
+    plots/drift/heading_error.png plots/drift/trajectories.png plots/chamber_B/bias_vs_time.png odometry_compensated.rawlog)
+  if(NOT EXISTS ${WORK}/report/${f})
+    message(FATAL_ERROR "report file missing: ${f}")
+  endif()
+endforeach()
+file(READ ${WORK}/report/summary.md md)
+foreach(needle "Held-out 100 s bias stability" "| compensated |" "fog-calibrate -i" "fog-drift -i")
+  string(FIND "${md}" "${needle}" pos)
+  if(pos LESS 0)
+    message(FATAL_ERROR "summary.md lacks '${needle}'")
+  endif()
+endforeach()
+# The printed headline numbers are the ones in the programs' JSON (not hard-coded): the final
+# heading error of the raw gyro printed by fog-demo equals drift.json's to the printed digits.
+file(READ ${WORK}/report/json/drift.json dj)
+string(JSON raw_final GET "${dj}" heading_error_final_deg raw)
+string(REGEX MATCH "final heading error after the drive: +raw ([0-9.eE+-]+) deg" m "${out}")
+if(NOT m)
+  message(FATAL_ERROR "headline line missing in fog-demo output:\n${out}")
+endif()
+set(printed ${CMAKE_MATCH_1})
+# compare with 4 significant digits (the %.4g of the printout)
+string(SUBSTRING "${raw_final}" 0 5 raw_prefix)
+string(SUBSTRING "${printed}" 0 5 printed_prefix)
+if(NOT raw_prefix STREQUAL printed_prefix)
+  message(FATAL_ERROR "printed raw heading error ${printed} differs from drift.json ${raw_final}")
+endif()
+
+# 3. Re-running into its own previous report is allowed.
+execute_process(COMMAND ${DEMO} --datasets ${DATASETS} --out ${WORK}/report RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "fog-demo could not refresh its own report: ${err}")
+endif()
