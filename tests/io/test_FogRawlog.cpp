@@ -276,7 +276,7 @@ TEST(FogRawlog, CutInTheMiddleOfAnObject)
 	const std::string msg = ioErrorOf([&] { readFogRawlog(dir.path("cut.rawlog")); });
 	EXPECT_NE(msg.find("read 10 objects, then stopped at object #10"), std::string::npos) << msg;
 	EXPECT_NE(msg.find(std::to_string(full - 20) + " bytes in all"), std::string::npos) << msg;
-	EXPECT_NE(msg.find("ends in the middle of this object (truncated)"), std::string::npos) << msg;
+	EXPECT_NE(msg.find("ends in the middle of this object (truncated file"), std::string::npos) << msg;
 }
 
 TEST(FogRawlog, TruncatedGzipIsDetectedEvenAtAnObjectBoundary)
@@ -348,3 +348,4 @@ TEST(FogLogIO, DispatchesByExtension)
 	EXPECT_NE(ioErrorOf([&] { writeFogLog(dir.path("x.txt"), s); }).find("unknown file type '.txt'"), std::string::npos);
 	EXPECT_NE(ioErrorOf([&] { readFogLog(dataFile("sample.csv"), "OTHER"); }).find("not 'OTHER'"), std::string::npos);
 }
+

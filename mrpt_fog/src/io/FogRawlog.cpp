@@ -43,7 +43,8 @@ std::string whyReadFailed(const std::string& what, bool at_end_of_data)
 		return "unknown class '" + what.substr(b, e - b) +
 			   "' (not registered in MRPT's RTTI: a plugin library missing, or a corrupt class name)";
 	}
-	if (at_end_of_data) return "the file ends in the middle of this object (truncated)";
+	if (at_end_of_data)
+		return "the file ends in the middle of this object (truncated file, or a corrupt length field in the object)";
 	return "corrupt object: " + firstLine(what);
 }
 
