@@ -7,6 +7,7 @@
 #include <mrpt_fog_nav/Rotation.h>
 
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 #include <stdexcept>
 
@@ -34,7 +35,15 @@ VariantResult deadReckonVariant(const std::vector<double>& t_s, const std::vecto
 
 	VariantResult out;
 	const double earth_up = nav::earthRateEnu(so.latitude_rad).z();
-	const double dt_truth = 1.0;  // velocity for the transport rate: truth differenced over 1 s
+	// Speed for the transport rate: wheel odometry (as a real vehicle has it), per interval.
+	const std::vector<nav::OdometryIncrement> odo_inc = nav::odometryFromPoses2D(odo.t_s, odo.x_m, odo.y_m, odo.phi_rad);
+	auto speedAt = [&](double t) {
+		auto it = std::lower_bound(odo_inc.begin(), odo_inc.end(), t,
+								   [](const nav::OdometryIncrement& a, double tq) { return a.t_s < tq; });
+		if (it == odo_inc.end()) return 0.0;
+		const double t_prev = (it == odo_inc.begin()) ? odo.t_s.front() : std::prev(it)->t_s;
+		return it->distance_m / (it->t_s - t_prev);
+	};
 	for (std::size_t k = 0; k < t_s.size(); ++k)
 	{
 		if (t_s[k] < t0 || (t_s[k] == t0 && options.sampling == nav::RateSampling::IntervalAverage)) continue;
@@ -45,10 +54,8 @@ VariantResult deadReckonVariant(const std::vector<double>& t_s, const std::vecto
 		Eigen::Vector3d vel = Eigen::Vector3d::Zero();
 		if (options.transport_rate)
 		{
-			const double ta = std::max(drive.truth.front().t_s, t_s[k] - dt_truth / 2);
-			const double tb = std::min(drive.truth.back().t_s, t_s[k] + dt_truth / 2);
-			const auto a = nav::interpolate(drive.truth, ta), b = nav::interpolate(drive.truth, tb);
-			vel = Eigen::Vector3d(b.x_m - a.x_m, b.y_m - a.y_m, b.z_m - a.z_m) / (tb - ta);
+			const double v = speedAt(t_s[k]), yaw = att.yaw();
+			vel = Eigen::Vector3d(v * std::cos(yaw), v * std::sin(yaw), 0.0);
 		}
 		att.updateRateZ(t_s[k], w, vel);
 		if (t_s[k] > track.backTime()) track.push_back(t_s[k], att.attitude());

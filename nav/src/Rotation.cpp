@@ -1,6 +1,5 @@
 /* mrpt_fog_nav: strapdown attitude, dead reckoning and drift evaluation. */
 #include <mrpt/math/wrap2pi.h>
-#include <mrpt/poses/CPose3D.h>
 #include <mrpt_fog_nav/Rotation.h>
 
 #include <cmath>
