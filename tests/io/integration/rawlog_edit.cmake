@@ -63,6 +63,9 @@ if(MODE STREQUAL "plugin-info")
     run(${RAWLOG_EDIT} --info -i ${WORK}/a.rawlog)
     expect_info("${out}" 1)
   endforeach()
+  # Two FOG sensors and their metadata comments (tests/data/io/two_labels.rawlog).
+  run(${RAWLOG_EDIT} -p ${PLUGIN} --info -i ${DATA}/two_labels.rawlog)
+  expect_info("${out}" 12 FOG 5 FOG_IDEAL 5)
 elseif(MODE STREQUAL "export-txt")
   run(${FOG_CONVERT} -i ${csv} -o ${WORK}/b.rawlog)
   # Relative input name: rawlog-edit 2.5 joins the input's directory and the output name

@@ -39,18 +39,32 @@ struct FogRawlogContents
 
 /** Reads a rawlog. fog_label selects the FOG sensor ("" = the only one present; throws if
  * several labels are present and none is selected, or if the label is absent). Observations
- * inside CSensoryFrame objects are unpacked. */
+ * inside CSensoryFrame objects are unpacked; a CActionCollection (actions format) throws.
+ * The sensor's metadata comment written by writeFogRawlog (see io/FogRawlogMetadata.h) gives
+ * epoch_s and metadata; without it epoch_s is the first timestamp's whole second. time_s is
+ * exact to MRPT's 100 ns tick. The whole file is checked: an unknown class, an object cut
+ * short, a truncated/corrupt gzip stream or a FOG stream with non-increasing times throws
+ * FogIoError saying how many objects were read, where it stopped (object index, byte offset)
+ * and why. (The gyro's sensorPose is not part of FogSeries and is not returned.) */
 FogRawlogContents readFogRawlog(const std::string& path, const std::string& fog_label = "");
 
-/** Writes a rawlog (gz-compressed, observations-only format): the FOG series as
- * CObservationFOG objects merged by timestamp with `others`. Atomic. */
+/** Writes a rawlog (gz-compressed, observations-only format): a metadata CObservationComment,
+ * then the FOG series as CObservationFOG objects merged by timestamp with `others` (which are
+ * written untouched; on equal timestamps the FOG sample comes first). Timestamps are
+ * epoch_s + time_s rounded to 100 ns. Atomic; an invalid series throws FogIoError. */
 void writeFogRawlog(const std::string& path, const FogSeries& fog,
 					const std::vector<mrpt::obs::CObservation::Ptr>& others = {});
 
-/** Reads a lab CSV file (.csv, or gz-compressed .csv.gz). */
+/** Reads a lab CSV file (.csv, or gz-compressed .csv.gz; CRLF accepted). Format in
+ * docs/io.md. `# sensor:` and `# epoch_s:` fill sensor_label and epoch_s; `# thermistor` lines
+ * the thermistor metadata; every other `# key: value` line (latitude_deg, unknown keys) is kept
+ * in FogSeries::metadata. Empty temperature/table_rate/field cells are NaN (dropouts). Any
+ * defect throws FogIoError naming file, line and column (see docs/io.md for the list). */
 FogSeries readFogCsv(const std::string& path);
 
-/** Writes a lab CSV file (gz-compressed when the name ends in .gz). Atomic. */
+/** Writes a lab CSV file (gz-compressed when the name ends in .gz). Numbers are printed in the
+ * shortest form that reads back to the same double; NaN is an empty cell. Atomic; an invalid
+ * series throws FogIoError. */
 void writeFogCsv(const std::string& path, const FogSeries& series);
 
 /** Reads by extension: .rawlog -> readFogRawlog(path, fog_label).fog; .csv/.csv.gz -> CSV. */
