@@ -105,37 +105,36 @@ double spanResidual(const Mat& X, const Mat& C, const std::vector<std::size_t>& 
 	return worst;
 }
 
-/** Feasible GLS fit of one model: OLS, ARMA noise model of its residual, whitened LS on the
- * common rows. Its innovation RSS is the model's (conditional) Gaussian likelihood: models fitted
- * on the same rows compare by likelihood ratio even with different noise models. */
+/** Feasible GLS fit of one model: ARMA(1,1) noise model by REML for this very design, then
+ * whitened LS on the common rows. */
 struct Gls
 {
 	ArNoiseModel ar;
 	LsFit fit;  //!< whitened LS (coef, whitened residual, cov when asked)
 	double rss = 0.0;
 	double lrv = 1.0;
+	double sigma2 = 1.0;  //!< whitened residual variance (dof-corrected)
 };
 
-Gls glsFit(const Mat& X, const Vec& y, const RunSignals& sig, const std::vector<unsigned char>& ok,
-		   const std::vector<std::size_t>& common, const SelectionOptions& opt, bool wantCov = false)
+Gls glsFit(const Mat& X, const Vec& y, const std::vector<std::size_t>& common, const std::vector<int>& block,
+		   const SelectionOptions& opt, bool wantCov = false, const ArNoiseModel* start = nullptr)
 {
 	Gls g;
-	Vec r;
-	olsOnRows(X, y, rowsOf(ok), r);
-	std::vector<double> rv(r.data(), r.data() + r.size());
-	g.ar = fitArNoise(rv, sig.block, ok, opt.max_ar_order);
-	g.fit = leastSquares(whiten(X, g.ar, common), whiten(y, g.ar, common).col(0), wantCov);
+	g.ar = fitNoiseReml(X, y, common, block, start);
+	g.fit = leastSquares(whiten(X, g.ar, common, &block), whiten(y, g.ar, common, &block).col(0), wantCov);
 	g.rss = g.fit.rss;
+	g.sigma2 = g.rss / std::max(1.0, double(common.size()) - g.fit.rank);
 	g.lrv = longRunVarianceFactor(g.fit.residual, opt.lrv_max_lag);
 	return g;
 }
 
-/** Likelihood-ratio chi-square of model 1 against its sub-model 0 (same rows), deflated by
- * the long-run variance factor of model 1's whitened residual. */
-double lrChi2(const Gls& m0, const Gls& m1, std::size_t n)
+/** Wald chi-square of the columns model 1 has beyond `Xsub`, with model 1's noise model:
+ * (RSS_sub - RSS_1) / (sigma2_1 x long-run factor), both whitened alike. */
+double waldChi2(const Mat& Xsub, const Gls& m1, const Vec& y, const std::vector<std::size_t>& common,
+				const std::vector<int>& block)
 {
-	if (!(m1.rss > 0)) return 0.0;
-	return std::max(0.0, double(n) * std::log(m0.rss / m1.rss) / m1.lrv);
+	const double rss0 = leastSquares(whiten(Xsub, m1.ar, common, &block), whiten(y, m1.ar, common, &block).col(0)).rss;
+	return std::max(0.0, (rss0 - m1.rss) / (m1.sigma2 * m1.lrv));
 }
 
 double sidak(double p, int tests)
@@ -297,9 +296,9 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 			res.rounds.push_back(report);
 			break;
 		}
-		const auto common = whitenableRows(sig.block, ok, opt.max_ar_order);
+		const auto common = whitenableRows(sig.block, ok, 0);
 		const double nRows = double(common.size());
-		const Gls g0 = glsFit(X, y, sig, ok, common, opt);
+		const Gls g0 = glsFit(X, y, common, sig.block, opt);
 		if (round == 0)
 		{
 			res.ar = g0.ar;
@@ -308,23 +307,27 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 		const double nEff = std::max(2.0, nRows / std::max(1.0, g0.lrv));
 		for (auto& cs : cands)
 		{
-			Gls bestFit;
-			bestFit.rss = std::numeric_limits<double>::infinity();
+			// nonlinear parameter: profile search on the OLS residual sum of squares (the GLS test
+			// below is Sidak-corrected for the grid size)
+			double bestRss = std::numeric_limits<double>::infinity();
 			for (double th : cs.thetas)
 			{
 				const Mat C = cs.eff->build(ctx, th);
-				Gls g1 = glsFit(hcat(X, C), y, sig, ok, common, opt);
-				if (g1.rss < bestFit.rss)
+				Vec rc;
+				const double rss = olsOnRows(hcat(X, C), y, rows, rc).rss;
+				if (rss < bestRss)
 				{
-					bestFit = std::move(g1);
+					bestRss = rss;
 					cs.theta = th;
 					cs.C = C;
 				}
 			}
+			const Gls g1 = glsFit(hcat(X, cs.C), y, common, sig.block, opt);
+			const double bestChi2 = waldChi2(X, g1, y, common, sig.block);
 			auto& t = cs.test;
 			t.theta = cs.theta;
 			t.dof = static_cast<int>(cs.C.cols());
-			t.chi2 = lrChi2(g0, bestFit, common.size());
+			t.chi2 = std::max(0.0, bestChi2);
 			const int grid = static_cast<int>(cs.thetas.size());
 			t.p = sidak(chi2Survival(t.chi2, t.dof), grid);
 			t.delta_bic = t.chi2 - t.dof * std::log(nEff) - std::log(double(grid));
@@ -363,15 +366,14 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 		ne.p_adjusted = B.test.p_adjusted;
 		ne.delta_bic = B.test.delta_bic;
 		const Mat XB = hcat(X, B.C);
-		const Gls gB = glsFit(XB, y, sig, ok, common, opt, true);
+		const Gls gB = glsFit(XB, y, common, sig.block, opt, true);
 		std::vector<double> aliasHalfBic;
 		for (std::size_t i = 0; i < m; ++i)
 		{
 			if (static_cast<int>(i) == bestIdx || !cands[i].test.significant) continue;
-			const Gls gC = glsFit(hcat(X, cands[i].C), y, sig, ok, common, opt);
-			const Gls gBC = glsFit(hcat(XB, cands[i].C), y, sig, ok, common, opt);
-			const double chiBgivenC = lrChi2(gC, gBC, common.size());
-			const double chiCgivenB = lrChi2(gB, gBC, common.size());
+			const Gls gBC = glsFit(hcat(XB, cands[i].C), y, common, sig.block, opt, false, &gB.ar);
+			const double chiBgivenC = waldChi2(hcat(X, cands[i].C), gBC, y, common, sig.block);
+			const double chiCgivenB = waldChi2(XB, gBC, y, common, sig.block);
 			const double pBgivenC = sidak(chi2Survival(chiBgivenC, double(B.C.cols())), int(B.thetas.size()));
 			const double pCgivenB = sidak(chi2Survival(chiCgivenB, double(cands[i].C.cols())), int(cands[i].thetas.size()));
 			auto it = std::find_if(report.begin(), report.end(), [&](const CandidateTest& t) { return t.id == cands[i].test.id; });
@@ -401,8 +403,7 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 		// coefficient and its 95 % interval from the GLS fit
 		{
 			const auto& f = gB.fit;
-			const double dof = std::max(1.0, nRows - f.rank);
-			const double sigma2 = f.rss / dof * gB.lrv;
+			const double sigma2 = gB.sigma2 * gB.lrv;
 			const Eigen::Index q0 = X.cols(), q = B.C.cols();
 			const Vec beta = f.coef.segment(q0, q);
 			const Mat cov = sigma2 * f.cov_unscaled.block(q0, q0, q, q);
@@ -459,10 +460,9 @@ void confirmOnRun(SelectionResult& result, const RunSignals& sig2, const BaseDes
 		}
 		const Mat C = eff.build(ctx, ne.theta);
 		const Mat K = hcat(X, C);
-		const auto common = whitenableRows(sig2.block, ok, opt.max_ar_order);
-		const Gls g0 = glsFit(X, y, sig2, ok, common, opt);
-		const Gls g1 = glsFit(K, y, sig2, ok, common, opt);
-		ne.confirm_p = chi2Survival(lrChi2(g0, g1, common.size()), double(C.cols()));
+		const auto common = whitenableRows(sig2.block, ok, 0);
+		const Gls g1 = glsFit(K, y, common, sig2.block, opt);
+		ne.confirm_p = chi2Survival(waldChi2(X, g1, y, common, sig2.block), double(C.cols()));
 		if (C.cols() == 1)
 		{
 			ne.confirm_coefficient = eff.coefficient_scale * g1.fit.coef(X.cols());

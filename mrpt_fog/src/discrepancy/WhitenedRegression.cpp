@@ -55,22 +55,60 @@ std::vector<std::size_t> whitenableRows(const std::vector<int>& block, const std
 	return rows;
 }
 
-Eigen::MatrixXd whiten(const Eigen::MatrixXd& M, const ArNoiseModel& ar, const std::vector<std::size_t>& rows)
+double armaVarianceRatio(const ArNoiseModel& ar)
+{
+	if (ar.order() != 1) return 1.0;
+	const double phi = ar.phi[0], th = ar.theta;
+	return (1.0 + th * th - 2.0 * phi * th) / std::max(1e-12, 1.0 - phi * phi);
+}
+
+Eigen::MatrixXd whiten(const Eigen::MatrixXd& M, const ArNoiseModel& ar, const std::vector<std::size_t>& rows,
+					   const std::vector<int>* block)
 {
 	Eigen::MatrixXd W(static_cast<Eigen::Index>(rows.size()), M.cols());
+	const bool exact = block != nullptr && ar.order() == 1;
+	const double c = exact ? 1.0 / std::sqrt(armaVarianceRatio(ar)) : 1.0;
 	for (std::size_t i = 0; i < rows.size(); ++i)
 	{
 		const auto k = static_cast<Eigen::Index>(rows[i]);
+		const bool restart = i == 0 || rows[i - 1] + 1 != rows[i] ||
+							 (block && (*block)[rows[i] - 1] != (*block)[rows[i]]);
+		if (exact && restart)
+		{
+			W.row(static_cast<Eigen::Index>(i)) = c * M.row(k);
+			continue;
+		}
 		Eigen::RowVectorXd r = M.row(k);
 		for (int j = 0; j < ar.order(); ++j) r -= ar.phi[static_cast<std::size_t>(j)] * M.row(k - j - 1);
-		if (ar.theta != 0.0 && i > 0 && rows[i - 1] + 1 == rows[i]) r += ar.theta * W.row(static_cast<Eigen::Index>(i - 1));
+		if (ar.theta != 0.0 && !restart) r += ar.theta * W.row(static_cast<Eigen::Index>(i - 1));
 		W.row(static_cast<Eigen::Index>(i)) = r;
 	}
 	return W;
 }
 
+namespace
+{
+ArNoiseModel fitArma(const std::vector<double>& residual, const std::vector<int>& block,
+					 const std::vector<unsigned char>& ok, int max_order, int only_order, int ma_mode);
+}
+
 ArNoiseModel fitArNoise(const std::vector<double>& residual, const std::vector<int>& block,
 						const std::vector<unsigned char>& ok, int max_order)
+{
+	return fitArma(residual, block, ok, max_order, -1, -1);
+}
+
+ArNoiseModel fitArNoiseFixedOrder(const std::vector<double>& residual, const std::vector<int>& block,
+								  const std::vector<unsigned char>& ok, int max_order, int order, bool with_ma)
+{
+	return fitArma(residual, block, ok, max_order, order, with_ma ? 1 : 0);
+}
+
+namespace
+{
+/** only_order < 0: any order 0..max_order; ma_mode -1: with or without MA, 0: without, 1: with. */
+ArNoiseModel fitArma(const std::vector<double>& residual, const std::vector<int>& block,
+					 const std::vector<unsigned char>& ok, int max_order, int only_order, int ma_mode)
 {
 	ArNoiseModel best;
 	double bestBic = std::numeric_limits<double>::infinity();
@@ -96,6 +134,7 @@ ArNoiseModel fitArNoise(const std::vector<double>& residual, const std::vector<i
 	std::vector<double> u(residual.size(), 0.0);
 	for (double theta : thetas)
 	{
+		if ((ma_mode == 0 && theta > 0) || (ma_mode == 1 && theta == 0)) continue;
 		for (std::size_t i = 0; i < allRows.size(); ++i)
 		{
 			const std::size_t k = allRows[i];
@@ -112,6 +151,7 @@ ArNoiseModel fitArNoise(const std::vector<double>& residual, const std::vector<i
 		}
 		for (int p = 0; p <= max_order; ++p)
 		{
+			if (only_order >= 0 && p != only_order) continue;
 			Eigen::VectorXd phi = Eigen::VectorXd::Zero(p);
 			double rss = y.squaredNorm();
 			if (p > 0)
@@ -132,6 +172,113 @@ ArNoiseModel fitArNoise(const std::vector<double>& residual, const std::vector<i
 		}
 	}
 	return best;
+}
+}  // namespace
+
+namespace
+{
+double remlObjective(const Eigen::MatrixXd& X, const Eigen::VectorXd& y, const std::vector<std::size_t>& rows,
+					 const std::vector<int>& block, double phi, double theta)
+{
+	ArNoiseModel m;
+	m.phi = {phi};
+	m.theta = theta;
+	const Eigen::MatrixXd Xw = whiten(X, m, rows, &block);
+	const Eigen::VectorXd yw = whiten(y, m, rows, &block).col(0);
+	std::size_t starts = 0;
+	for (std::size_t i = 0; i < rows.size(); ++i)
+		if (i == 0 || rows[i - 1] + 1 != rows[i] || block[rows[i] - 1] != block[rows[i]]) ++starts;
+	Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(Xw);
+	qr.setThreshold(1e-10);
+	const auto rank = qr.rank();
+	const Eigen::VectorXd b = qr.solve(yw);
+	const double rss = (yw - Xw * b).squaredNorm();
+	double logdet = 0.0;
+	for (Eigen::Index i = 0; i < rank; ++i) logdet += 2.0 * std::log(std::fabs(qr.matrixR()(i, i)));
+	const double dof = double(rows.size()) - double(rank);
+	// + log det of the noise correlation (the scaled first rows of each stretch)
+	return dof * std::log(std::max(rss, 1e-300) / dof) + logdet + double(starts) * std::log(armaVarianceRatio(m));
+}
+
+/** Golden-section minimum of f on [a, b]. */
+template <class F>
+double golden(F f, double a, double b, int iters)
+{
+	const double g = 0.6180339887498949;
+	double c = b - g * (b - a), d = a + g * (b - a);
+	double fc = f(c), fd = f(d);
+	for (int i = 0; i < iters; ++i)
+	{
+		if (fc < fd)
+		{
+			b = d;
+			d = c;
+			fd = fc;
+			c = b - g * (b - a);
+			fc = f(c);
+		}
+		else
+		{
+			a = c;
+			c = d;
+			fc = fd;
+			d = a + g * (b - a);
+			fd = f(d);
+		}
+	}
+	return fc < fd ? c : d;
+}
+}  // namespace
+
+ArNoiseModel fitNoiseReml(const Eigen::MatrixXd& X, const Eigen::VectorXd& y, const std::vector<std::size_t>& rows,
+						  const std::vector<int>& block, const ArNoiseModel* start)
+{
+	double phi = 0, theta = 0;
+	double lo = 0.0, hi = 0.999, tlo = 0.0, thi = 0.98;
+	if (start && start->order() == 1)
+	{
+		phi = start->phi[0];
+		theta = start->theta;
+		lo = std::max(0.0, phi - 0.04);
+		hi = std::min(0.999, phi + 0.03);
+		tlo = std::max(0.0, theta - 0.1);
+		thi = std::min(0.98, theta + 0.1);
+	}
+	else
+	{
+		static const double phis[] = {0.0, 0.3, 0.5, 0.7, 0.8, 0.87, 0.92, 0.95, 0.97, 0.98, 0.99, 0.995};
+		static const double thetas[] = {0.0, 0.3, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95};
+		double best = std::numeric_limits<double>::infinity();
+		for (double p : phis)
+			for (double t : thetas)
+			{
+				if (t >= p && t > 0) continue;  // MA root at or above the AR root: no information
+				const double v = remlObjective(X, y, rows, block, p, t);
+				if (v < best)
+				{
+					best = v;
+					phi = p;
+					theta = t;
+				}
+			}
+		lo = std::max(0.0, phi - 0.1);
+		hi = std::min(0.999, phi + 0.05);
+		tlo = std::max(0.0, theta - 0.15);
+		thi = std::min(0.98, theta + 0.15);
+	}
+	for (int pass = 0; pass < 2; ++pass)
+	{
+		phi = golden([&](double p) { return remlObjective(X, y, rows, block, p, theta); }, lo, hi, 14);
+		theta = golden([&](double t) { return remlObjective(X, y, rows, block, phi, t); }, tlo, thi, 12);
+	}
+	ArNoiseModel m;
+	m.phi = {phi};
+	m.theta = theta;
+	const Eigen::MatrixXd Xw = whiten(X, m, rows, &block);
+	const Eigen::VectorXd yw = whiten(y, m, rows, &block).col(0);
+	const auto f = leastSquares(Xw, yw);
+	m.innovation_sd = std::sqrt(f.rss / std::max<double>(1.0, double(rows.size()) - f.rank));
+	return m;
 }
 
 double longRunVarianceFactor(const Eigen::VectorXd& e, int max_lag)
