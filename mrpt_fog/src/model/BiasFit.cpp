@@ -9,8 +9,13 @@
 
 namespace mrpt_fog
 {
-NormalEquations::NormalEquations(std::size_t n, double y_ref) : n_(n), y_ref_(y_ref)
+NormalEquations::NormalEquations(std::size_t n, double y_ref, const std::vector<double>& x_ref) : n_(n), y_ref_(y_ref)
 {
+	if (!x_ref.empty() && x_ref.size() != n) throw std::invalid_argument("NormalEquations: x_ref size differs from the term count");
+	x_ref_ = x_ref.empty() ? std::vector<double>(n, 0.0) : x_ref;
+	if (n > 0) x_ref_[0] = 0.0;
+	for (double v : x_ref_)
+		if (!std::isfinite(v)) throw std::invalid_argument("NormalEquations: x_ref is not finite");
 	xtx_.setZero(n, n);
 	xty_.setZero(n);
 	block_.resize(n, kBlock);
@@ -23,7 +28,7 @@ void NormalEquations::add(const double* f, double y)
 	{
 		if (!std::isfinite(f[j]))
 			throw std::invalid_argument("NormalEquations::add: feature " + std::to_string(j) + " is not finite");
-		block_(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(in_block_)) = f[j];
+		block_(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(in_block_)) = f[j] - x_ref_[j];
 	}
 	if (!std::isfinite(y)) throw std::invalid_argument("NormalEquations::add: response is not finite");
 	block_y_[static_cast<Eigen::Index>(in_block_)] = y - y_ref_;
@@ -49,7 +54,7 @@ void NormalEquations::merge(const NormalEquations& o_in)
 	NormalEquations o = o_in;
 	o.flush();
 	flush();
-	if (o.n_ != n_ || o.y_ref_ != y_ref_)
+	if (o.n_ != n_ || o.y_ref_ != y_ref_ || o.x_ref_ != x_ref_)
 		throw std::invalid_argument("NormalEquations::merge: different size or reference");
 	xtx_ += o.xtx_;  // the lower triangle is authoritative; the upper is rebuilt on access
 	xty_ += o.xty_;
@@ -85,7 +90,8 @@ namespace
 struct CentredSystem
 {
 	double n = 0;  // rows
-	Eigen::VectorXd mean;  // feature means (non-constant columns)
+	Eigen::VectorXd mean;  // means of the shifted features (non-constant columns)
+	Eigen::VectorXd shift;  // x_ref of those columns (unshifted mean = mean + shift)
 	Eigen::VectorXd d;  // equilibration 1/sqrt(var * n)
 	double ybar = 0;  // mean of y - y_ref
 	Eigen::VectorXd c;  // equilibrated centred X'y
@@ -108,6 +114,8 @@ CentredSystem centre(NormalEquations& ne, const std::vector<int>& cols)
 	s.n = static_cast<double>(ne.count());
 	const auto m = static_cast<Eigen::Index>(cols.size() - 1);
 	s.mean.resize(m);
+	s.shift.resize(m);
+	for (Eigen::Index i = 0; i < m; i++) s.shift[i] = ne.xRef()[static_cast<std::size_t>(cols[i + 1])];
 	Eigen::MatrixXd C(m, m);
 	Eigen::VectorXd c(m);
 	s.ybar = b[0] / s.n;
@@ -161,7 +169,7 @@ Eigen::VectorXd solveCentred(const CentredSystem& s, double lambda, double rank_
 		beta.tail(m) = s.d.asDiagonal() * bt;
 		if (shrink_out) *shrink_out = shrink;
 	}
-	beta[0] = s.ybar - (m > 0 ? s.mean.dot(beta.tail(m)) : 0.0) + y_ref;
+	beta[0] = s.ybar - (m > 0 ? (s.mean + s.shift).dot(beta.tail(m)) : 0.0) + y_ref;
 	return beta;
 }
 
@@ -176,13 +184,25 @@ std::size_t rankOf(const CentredSystem& s, double rank_tol)
 }
 }  // namespace
 
+namespace
+{
+/** Coefficients of the unshifted model expressed for the accumulator's shifted rows. */
+Eigen::VectorXd shiftedCoef(const NormalEquations& ne, const std::vector<int>& cols, const Eigen::VectorXd& coef)
+{
+	Eigen::VectorXd beta = coef;
+	beta[0] -= ne.yRef();
+	for (std::size_t i = 1; i < cols.size(); i++)
+		beta[0] += coef[static_cast<Eigen::Index>(i)] * ne.xRef()[static_cast<std::size_t>(cols[i])];
+	return beta;
+}
+}  // namespace
+
 double residualSumOfSquares(NormalEquations& ne, const std::vector<int>& cols, const Eigen::VectorXd& coef)
 {
 	const Eigen::MatrixXd& G = ne.xtx();
 	const Eigen::VectorXd& b = ne.xty();
 	const auto m = static_cast<Eigen::Index>(cols.size());
-	Eigen::VectorXd beta = coef;
-	beta[0] -= ne.yRef();  // model of y - y_ref
+	const Eigen::VectorXd beta = shiftedCoef(ne, cols, coef);
 	double bXty = 0, bGb = 0;
 	for (Eigen::Index i = 0; i < m; i++)
 	{
@@ -229,8 +249,7 @@ LinearFit solveBiasFit(NormalEquations& ne, const std::vector<int>& cols, double
 	{
 		const Eigen::MatrixXd& G = ne.xtx();
 		double sum = ne.xty()[0];
-		Eigen::VectorXd beta = fit.coef_dph;
-		beta[0] -= ne.yRef();
+		const Eigen::VectorXd beta = shiftedCoef(ne, cols, fit.coef_dph);
 		for (Eigen::Index i = 0; i <= m; i++) sum -= G(0, cols[i]) * beta[i];
 		fit.residual_mean_dph = sum / s.n;
 	}
@@ -248,10 +267,11 @@ LinearFit solveBiasFit(NormalEquations& ne, const std::vector<int>& cols, double
 		const Eigen::MatrixXd DV = s.d.asDiagonal() * s.evecs;
 		const Eigen::MatrixXd cov_rest = sigma2 * DV * w.asDiagonal() * DV.transpose();
 		fit.covariance.bottomRightCorner(m, m) = cov_rest;
-		const Eigen::VectorXd cm = cov_rest * s.mean;
+		const Eigen::VectorXd mean_abs = s.mean + s.shift;
+		const Eigen::VectorXd cm = cov_rest * mean_abs;
 		fit.covariance.block(1, 0, m, 1) = -cm;
 		fit.covariance.block(0, 1, 1, m) = -cm.transpose();
-		fit.covariance(0, 0) = sigma2 / s.n + s.mean.dot(cm);
+		fit.covariance(0, 0) = sigma2 / s.n + mean_abs.dot(cm);
 	}
 	else
 		fit.covariance(0, 0) = sigma2 / s.n;
@@ -268,7 +288,7 @@ std::vector<double> crossValidatedRms(std::vector<NormalEquations>& folds, const
 	{
 		if (folds[f].count() == 0) folds[f].flush();
 		if (folds[f].count() == 0) continue;
-		NormalEquations train(folds[f].terms(), folds[f].yRef());
+		NormalEquations train(folds[f].terms(), folds[f].yRef(), folds[f].xRef());
 		for (std::size_t g = 0; g < folds.size(); g++)
 			if (g != f) train.merge(folds[g]);
 		if (train.count() == 0) continue;

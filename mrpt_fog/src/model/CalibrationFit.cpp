@@ -269,6 +269,7 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	std::vector<double> lo(ns, std::numeric_limits<double>::infinity()), hi(ns, -std::numeric_limits<double>::infinity());
 	std::vector<double> temp(nt), rate(nt), values(ns), f(fs.termCount());
 	double ysum = 0;
+	std::vector<double> fsum(fs.termCount(), 0.0);
 	for (const auto& r : prep)
 		for (std::size_t k = 0; k < r.s->size(); k++)
 		{
@@ -314,10 +315,22 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 		}
 	}
 
+	// Feature means (the accumulation reference: the sums then hold centred features).
+	for (const auto& r : prep)
+		for (std::size_t k = 0; k < r.s->size(); k++)
+		{
+			if (!r.ok[k]) continue;
+			rowSignals(r, fs, k, temp, rate, values);
+			fs.features(values.data(), f.data(), false);
+			for (std::size_t j = 0; j < f.size(); j++) fsum[j] += f[j];
+		}
+	std::vector<double> x_ref(fs.termCount());
+	for (std::size_t j = 0; j < x_ref.size(); j++) x_ref[j] = fsum[j] / static_cast<double>(usable);
+
 	// Pass 2: normal equations per fold.
 	const bool by_run = runs.size() >= 2;
 	const std::size_t nfolds = by_run ? runs.size() : opt.folds;
-	std::vector<NormalEquations> folds(nfolds, NormalEquations(fs.termCount(), y_ref));
+	std::vector<NormalEquations> folds(nfolds, NormalEquations(fs.termCount(), y_ref, x_ref));
 	const auto foldOf = [&](std::size_t run, std::size_t k) {
 		if (by_run) return run;
 		const auto& t = runs[0].time_s;
@@ -336,7 +349,7 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 			folds[foldOf(ri, k)].add(f.data(), r.y[k]);
 		}
 	}
-	NormalEquations total(fs.termCount(), y_ref);
+	NormalEquations total(fs.termCount(), y_ref, x_ref);
 	for (auto& fo : folds) total.merge(fo);
 
 	// Candidate pools: all preset signals, or every K-subset of thermistors for points:K.
@@ -439,7 +452,7 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 		std::vector<bool> has(nfolds, false);
 		for (std::size_t fo = 0; fo < nfolds; fo++)
 		{
-			NormalEquations train(fs.termCount(), y_ref);
+			NormalEquations train(fs.termCount(), y_ref, x_ref);
 			for (std::size_t g = 0; g < nfolds; g++)
 				if (g != fo) train.merge(folds[g]);
 			if (train.count() < cols.size()) continue;

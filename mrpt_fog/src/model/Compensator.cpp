@@ -10,6 +10,13 @@ namespace mrpt_fog
 {
 namespace
 {
+std::string degText(double a)
+{
+	std::ostringstream o;
+	o << a;
+	return o.str();
+}
+
 std::string describeLayout(const std::vector<ThermistorInfo>& layout)
 {
 	std::ostringstream o;
@@ -102,8 +109,7 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 		const bool ok = col >= 0 && (!want || (layout[col].side == want->side && layout[col].angle_deg == want->angle_deg));
 		if (!ok)
 			throw std::invalid_argument("calibration was made for another sensor layout: it needs thermistor " + n +
-										(want ? std::string(" (") + toString(want->side) + " " +
-													std::to_string(want->angle_deg) + "deg)"
+										(want ? std::string(" (") + toString(want->side) + " " + degText(want->angle_deg) + "deg)"
 											  : std::string()) +
 										"; calibration layout: " + describeLayout(cal.layout) +
 										"; data layout: " + describeLayout(layout));

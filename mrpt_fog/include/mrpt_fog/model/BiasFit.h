@@ -8,7 +8,9 @@
  * feature is a power of a signal scaled to [-1, 1], so columns have comparable size). Rows are
  * buffered in blocks of 256 and added with a symmetric rank-k update, which also keeps the
  * summation pairwise-like (small partial sums added to the total); y is accumulated relative to
- * a reference y_ref (the expected mean bias) to avoid cancellation in y'y.
+ * a reference y_ref (the expected mean bias) and every feature relative to a reference x_ref
+ * (its expected mean, from a first pass) so that the sums hold centred quantities: without
+ * this, removing the mean later cancels most digits of X'X for nearly collinear terms.
  *
  * solveBiasFit() then (1) removes the constant by centring (so the ridge penalty never shrinks
  * the mean bias), (2) equilibrates the centred matrix to unit diagonal, (3) eigen-decomposes it:
@@ -35,7 +37,8 @@ class NormalEquations
 {
    public:
 	NormalEquations() = default;
-	NormalEquations(std::size_t n_terms, double y_ref_dph);
+	/** x_ref (optional, size n_terms): feature references; entry 0 (the constant) is ignored. */
+	NormalEquations(std::size_t n_terms, double y_ref_dph, const std::vector<double>& x_ref = {});
 	/** Adds one row (features f[0..n), response y [deg/h]). Rows with a non-finite value must
 	 * be filtered by the caller (throws std::invalid_argument on NaN, naming the column). */
 	void add(const double* f, double y_dph);
@@ -47,7 +50,10 @@ class NormalEquations
 	std::size_t terms() const { return n_; }
 	std::size_t count() const { return count_; }
 	double yRef() const { return y_ref_; }
-	/** Sums (after flush): X'X (full symmetric), X'(y - y_ref), (y - y_ref)'(y - y_ref). */
+	const std::vector<double>& xRef() const { return x_ref_; }
+	/** Sums (after flush) of the shifted rows (x - x_ref, y - y_ref): X'X (full symmetric),
+	 * X'y, y'y. Coefficients passed to / returned by the functions below are always for the
+	 * unshifted features. */
 	const Eigen::MatrixXd& xtx();
 	const Eigen::VectorXd& xty();
 	double yty();
@@ -56,6 +62,7 @@ class NormalEquations
 	static constexpr std::size_t kBlock = 256;
 	std::size_t n_ = 0;
 	double y_ref_ = 0.0;
+	std::vector<double> x_ref_;
 	std::size_t count_ = 0;
 	Eigen::MatrixXd xtx_;  // lower triangle accumulated; symmetrised on access
 	Eigen::VectorXd xty_;

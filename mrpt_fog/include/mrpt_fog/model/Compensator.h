@@ -11,9 +11,11 @@
  *
  * Per sample:
  *  - a thermistor is "missing" when its reading is NaN or its rate has no estimate yet (< 2
- *    valid samples in the window). One missing -> its fallback model (flag Fallback); two or
- *    more -> the mean calibration bias only (flag NoModel). When the thermistor returns the main
- *    model is used again from that sample on.
+ *    valid samples in the window). The main model is used unless it reads a missing
+ *    thermistor; then the fallback fitted without that thermistor, if that fallback reads no
+ *    other missing one (flag Fallback); else the mean calibration bias only (flag NoModel).
+ *    When the thermistor returns (reading and rate available again: after a dropout longer
+ *    than the window that is its second valid sample) the main model is used again.
  *  - signals outside the calibrated range are clamped to it (flag Clamped, counted): a
  *    polynomial is never extrapolated.
  *  - RateWarmup: some rate window covers less than half its length (start, after a gap).
