@@ -128,7 +128,8 @@ Choice scoreGroups(std::vector<NormalEquations>& folds, const ThermalFeatureSet&
 }
 
 /** Greedy forward selection of signal groups among `allowed`, by CV error. */
-Choice selectForward(std::vector<NormalEquations>& folds, const ThermalFeatureSet& fs, const std::vector<bool>& allowed)
+Choice selectForward(std::vector<NormalEquations>& folds, const ThermalFeatureSet& fs, const std::vector<bool>& allowed,
+					 double min_gain)
 {
 	const std::size_t ng = fs.signals().size();
 	Choice best = scoreGroups(folds, fs, std::vector<bool>(ng, false), {0.0});
@@ -143,8 +144,8 @@ Choice selectForward(std::vector<NormalEquations>& folds, const ThermalFeatureSe
 			Choice c = scoreGroups(folds, fs, groups, kRidgeGrid);
 			if (c.cv_rms < step.cv_rms) step = c;
 		}
-		// A group must lower the held-out error by a meaningful amount (0.5 %) to be added.
-		if (!(step.cv_rms < best.cv_rms * 0.995)) break;
+		// A group must lower the held-out error by a meaningful amount to be added.
+		if (!(step.cv_rms < best.cv_rms * (1.0 - min_gain))) break;
 		best = step;
 	}
 	return best;
@@ -380,7 +381,8 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 		return allowed;
 	};
 	const auto choose = [&](const std::vector<bool>& allowed) {
-		return opt.selection == "auto" ? selectForward(folds, fs, allowed) : selectAll(folds, fs, allowed, opt.ridge);
+		return opt.selection == "auto" ? selectForward(folds, fs, allowed, opt.min_relative_gain)
+									   : selectAll(folds, fs, allowed, opt.ridge);
 	};
 	Choice best;
 	std::vector<std::string> best_pool;

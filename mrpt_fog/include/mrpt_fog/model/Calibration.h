@@ -52,6 +52,8 @@ struct FitOptions
 	 * fold b mod folds: every fold then samples the whole temperature range (1 = plain blocked
 	 * k-fold, which makes the end folds pure polynomial extrapolation). */
 	std::size_t blocks_per_fold = 4;
+	/** "auto": a signal group is added only if it lowers the held-out RMS by this fraction. */
+	double min_relative_gain = 0.005;
 	double min_samples_per_term = 10.0;
 	double min_temp_span_per_order_C = 0.5;  //!< T(a) of order k needs a span >= k x this [degC]
 	double tau_s = 100.0;  //!< averaging time of the stability figures [s]

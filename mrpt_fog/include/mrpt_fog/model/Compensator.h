@@ -7,7 +7,8 @@
  *
  * Rates come from the causal estimator recorded in the calibration (a calibration fitted with
  * the non-causal "savgol" estimator is refused: it cannot run in real time). Each model is
- * compiled into one Horner polynomial per signal.
+ * compiled into one Horner polynomial per signal, grouped by signal kind. At most 32
+ * thermistors.
  *
  * Per sample:
  *  - a thermistor is "missing" when its reading is NaN or its rate has no estimate yet (< 2
