@@ -35,7 +35,7 @@ int main(int argc, char** argv)
 		cmd.xorAdd(model, sim);
 		TCLAP::ValueArg<std::string> json("", "json", "write the figures as JSON", false, "", "FILE", cmd);
 		TCLAP::ValueArg<std::string> plots("", "plots", "write residual PNGs into this directory", false, "", "DIR", cmd);
-		TCLAP::ValueArg<double> alpha("", "alpha", "family-wise significance level (Holm)", false, 0.01, "P", cmd);
+		TCLAP::ValueArg<double> alpha("", "alpha", "family-wise significance level (Holm)", false, 0.005, "P", cmd);
 		TCLAP::ValueArg<std::string> label("", "fog-label", "FOG sensor label in a rawlog with several", false, "",
 										   "LABEL", cmd);
 		cmd.parse(argc, argv);

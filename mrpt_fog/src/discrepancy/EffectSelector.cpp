@@ -137,6 +137,27 @@ double waldChi2(const Mat& Xsub, const Gls& m1, const Vec& y, const std::vector<
 	return std::max(0.0, (rss0 - m1.rss) / (m1.sigma2 * m1.lrv));
 }
 
+/** Largest canonical correlation between blocks A and B after whitening and projecting out X. */
+double canonicalCorrelation(const Mat& X, const Mat& A, const Mat& B, const ArNoiseModel& ar,
+							const std::vector<std::size_t>& common, const std::vector<int>& block)
+{
+	const Mat Xw = whiten(X, ar, common, &block);
+	auto residualised = [&](const Mat& M)
+	{
+		const Mat Mw = whiten(M, ar, common, &block);
+		Mat R(Mw.rows(), Mw.cols());
+		for (Eigen::Index j = 0; j < Mw.cols(); ++j) R.col(j) = leastSquares(Xw, Mw.col(j)).residual;
+		return R;
+	};
+	const Mat Ra = residualised(A), Rb = residualised(B);
+	if (Ra.norm() <= 0 || Rb.norm() <= 0) return 0.0;
+	Eigen::HouseholderQR<Mat> qa(Ra), qb(Rb);
+	const Mat Qa = qa.householderQ() * Mat::Identity(Ra.rows(), Ra.cols());
+	const Mat Qb = qb.householderQ() * Mat::Identity(Rb.rows(), Rb.cols());
+	Eigen::JacobiSVD<Mat> svd(Qa.transpose() * Qb);
+	return std::min(1.0, svd.singularValues()(0));
+}
+
 double sidak(double p, int tests)
 {
 	if (tests <= 1) return p;
@@ -368,17 +389,25 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 		const Mat XB = hcat(X, B.C);
 		const Gls gB = glsFit(XB, y, common, sig.block, opt, true);
 		std::vector<double> aliasHalfBic;
+		bool anyCollinear = false;
 		for (std::size_t i = 0; i < m; ++i)
 		{
-			if (static_cast<int>(i) == bestIdx || !cands[i].test.significant) continue;
+			if (static_cast<int>(i) == bestIdx) continue;
+			// collinearity on this run: canonical correlation of the two candidates' columns after
+			// whitening and removing what the model already explains
+			const double cc = canonicalCorrelation(X, B.C, cands[i].C, gB.ar, common, sig.block);
+			auto it = std::find_if(report.begin(), report.end(), [&](const CandidateTest& t) { return t.id == cands[i].test.id; });
+			if (it != report.end()) it->collinearity_with_best = cc;
+			const bool collinear = cc >= opt.alias_collinearity;
+			if (!cands[i].test.significant && !collinear) continue;
 			const Gls gBC = glsFit(hcat(XB, cands[i].C), y, common, sig.block, opt, false, &gB.ar);
 			const double chiBgivenC = waldChi2(hcat(X, cands[i].C), gBC, y, common, sig.block);
 			const double chiCgivenB = waldChi2(XB, gBC, y, common, sig.block);
 			const double pBgivenC = sidak(chi2Survival(chiBgivenC, double(B.C.cols())), int(B.thetas.size()));
 			const double pCgivenB = sidak(chi2Survival(chiCgivenB, double(cands[i].C.cols())), int(cands[i].thetas.size()));
-			auto it = std::find_if(report.begin(), report.end(), [&](const CandidateTest& t) { return t.id == cands[i].test.id; });
-			if (pBgivenC > opt.alias_alpha)
+			if (collinear || (cands[i].test.significant && pBgivenC > opt.alias_alpha))
 			{
+				anyCollinear = anyCollinear || collinear;
 				ne.alias_group.push_back(cands[i].test.id);
 				ne.separating_profiles.push_back(separationAdvice(ne.id, cands[i].test.id));
 				aliasHalfBic.push_back(0.5 * cands[i].test.delta_bic);
@@ -399,6 +428,9 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 			double g = 0;
 			for (double b : all) g += std::exp(b - lse);
 			ne.group_confidence = std::min(1.0, g);
+			// collinear members cannot be told apart on this run: their BIC differences reflect
+			// model mismatch, not evidence, so the group's confidence is shared equally
+			if (anyCollinear) ne.confidence = ne.group_confidence / double(ne.alias_group.size());
 		}
 		// coefficient and its 95 % interval from the GLS fit
 		{

@@ -2,6 +2,7 @@
 #include <mrpt_fog/discrepancy/SyntheticChamberRun.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -29,7 +30,9 @@ std::vector<Seg> profileSegments(const std::string& name)
 	const double min = 60.0;
 	if (name == "ramp")
 		return {{20 * min, 25}, {65 * min, -40}, {120 * min, -40}};
-	if (name != "rich") throw std::invalid_argument("unknown synthetic profile '" + name + "' (rich, ramp)");
+	if (name == "long_ramp")
+		return {{10 * min, 25}, {520 * min, -40}};
+	if (name != "rich") throw std::invalid_argument("unknown synthetic profile '" + name + "' (rich, ramp, long_ramp)");
 	return {
 		{30 * min, 25},
 		{65 * min, -40},

@@ -7,7 +7,8 @@
  * also use where it fits). Physics kept deliberately simple and stated here:
  *  - chamber air temperature from a profile: "rich" (ramps at 0.5/1/2 C/min, steps, a log sine
  *    sweep 40 -> 4 min periods, rate-table segments at -10/0/60 C, field segments, a power
- *    cycle; ~12.4 h) or "ramp" (one constant 1 C/min ramp 25 -> -40 C and a soak);
+ *    cycle; ~12.4 h), "ramp" (one constant 1 C/min ramp 25 -> -40 C and a soak) or
+ *    "long_ramp" (one slow 0.125 C/min ramp 25 -> -40 C: nothing but a constant rate);
  *  - coil: outer node first-order towards the air (tau 900 s), inner node first-order towards
  *    the outer node (tau 240 s), integrated exactly at 1 s sub-steps;
  *  - thermistors Ti1, Ti2 (inner) and To1, To2 (outer) with fixed offsets, white noise and
@@ -35,7 +36,7 @@ namespace mrpt_fog::discrepancy
 {
 struct SyntheticRunOptions
 {
-	std::string profile = "rich";  //!< "rich" or "ramp"
+	std::string profile = "rich";  //!< "rich", "ramp" or "long_ramp"
 	double dt_s = 10.0;  //!< output sample period [s]
 	std::uint64_t seed = 1;
 	std::map<std::string, double> hidden;  //!< effect id -> effect-to-noise ratio
@@ -53,7 +54,7 @@ struct SyntheticRunOptions
 struct SyntheticRun
 {
 	FogSeries series;
-	/** Scaled truth of each hidden effect along the run [deg/h] (before the gap is cut). */
+	/** Scaled truth of each hidden effect at the series' samples [deg/h]. */
 	std::map<std::string, std::vector<double>> effect_dph;
 	double noise_rms_dph = 0.0;  //!< RMS of the noise process (stationary)
 	double thermistor_tau_s = 0.0;  //!< lag used when thermistor_lag is hidden
