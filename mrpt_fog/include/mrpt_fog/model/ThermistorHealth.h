@@ -41,9 +41,9 @@ struct ThermistorHealthSettings
 	double spike_jump_C = 0.5;  //!< allowed jump on top of the rate allowance [degC]
 	double max_rate_C_per_s = 0.2;  //!< fastest credible coil temperature change [degC/s]
 	double spike_max_duration_s = 20.0;  //!< a longer excursion is accepted as a new level [s]
-	double stuck_window_s = 60.0;  //!< constant this long (with a moving peer) = stuck [s]
+	double stuck_window_s = 30.0;  //!< constant this long (with a moving peer) = stuck [s]
 	double stuck_tolerance_C = 0.0;  //!< "constant": within this of the run's first value [degC]
-	double stuck_peer_change_C = 1.0;  //!< a peer must move this much in the window [degC]
+	double stuck_peer_change_C = 0.2;  //!< a peer must move this much in the window [degC]
 
 	/** Throws std::invalid_argument naming the first bad field. */
 	void validate() const;
