@@ -2,6 +2,7 @@
 #include <mrpt_fog/model/Compensator.h>
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -40,8 +41,34 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 	for (std::size_t i = 0; i < fs.termCount(); i++)
 		if (fs.termSignal(i) >= 0)
 			degree[fs.termSignal(i)] = std::max(degree[fs.termSignal(i)], fs.terms()[i].power);
+	const std::size_t nc = names.size();
+	const double inf = std::numeric_limits<double>::infinity();
+	ChannelKernel& K = c.kernel;
+	K.t_centre.assign(nc, 0.0);
+	K.t_inv.assign(nc, 0.0);
+	K.t_lo.assign(nc, -inf);
+	K.t_hi.assign(nc, inf);
+	K.t_p.assign(5 * nc, 0.0);
+	K.r_centre.assign(nc, 0.0);
+	K.r_inv.assign(nc, 0.0);
+	K.r_lo.assign(nc, -inf);
+	K.r_hi.assign(nc, inf);
+	K.r_p.assign(3 * nc, 0.0);
+	for (std::size_t s = 0; s < fs.signals().size(); s++)
+	{
+		const auto& sig = fs.signals()[s];
+		if (sig.isDifference()) continue;
+		const auto& nm = fs.normalisation()[s];
+		const int ch = chan(sig.a);
+		const bool t = sig.kind == SignalKind::Temp;
+		(t ? K.t_centre : K.r_centre)[ch] = nm.centre;
+		(t ? K.t_inv : K.r_inv)[ch] = 1.0 / nm.scale;
+		(t ? K.t_lo : K.r_lo)[ch] = nm.min;
+		(t ? K.t_hi : K.r_hi)[ch] = nm.max;
+		c.uses |= 1u << ch;
+	}
 	std::vector<int> group_of(fs.signals().size()), index_in(fs.signals().size());
-	for (int kind = 0; kind < 4; kind++)
+	for (int kind = 2; kind < 4; kind++)
 	{
 		SignalGroup g;
 		g.kind = kind;
@@ -72,6 +99,14 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 		if (s < 0)
 		{
 			c.c0 += m.coef_dph.at(i);
+			continue;
+		}
+		const auto& sig = fs.signals()[s];
+		if (!sig.isDifference())
+		{
+			const int ch = chan(sig.a);
+			const int k = fs.terms()[i].power;
+			(sig.kind == SignalKind::Temp ? K.t_p : K.r_p)[static_cast<std::size_t>(k - 1) * nc + ch] += m.coef_dph.at(i);
 			continue;
 		}
 		SignalGroup& g = c.groups[group_of[s]];
@@ -194,9 +229,59 @@ double groupSumAnyDegree(int degree, const int* a, const int* b, const double* s
 }
 }  // namespace
 
+namespace
+{
+/** The per-channel T / dT/dt polynomials; NC > 0: compile-time channel count (fully unrolled). */
+template <std::size_t NC>
+inline double kernelSumN(const double* tc, const double* ti, const double* tl, const double* th, const double* tp,
+						 const double* rc, const double* ri, const double* rl, const double* rh, const double* rp,
+						 const double* T, const double* R, std::size_t nc_rt, int& clamped)
+{
+	const std::size_t nc = NC ? NC : nc_rt;
+	int cl = 0;
+	double acc = 0;
+	for (std::size_t c = 0; c < nc; c++)
+	{
+		double v = T[c];
+		cl += (v < tl[c]) + (v > th[c]);
+		v = v < tl[c] ? tl[c] : v;
+		v = v > th[c] ? th[c] : v;
+		const double z = (v - tc[c]) * ti[c];
+		double w = R[c];
+		cl += (w < rl[c]) + (w > rh[c]);
+		w = w < rl[c] ? rl[c] : w;
+		w = w > rh[c] ? rh[c] : w;
+		const double q = (w - rc[c]) * ri[c];
+		const double hT = ((((tp[4 * nc + c] * z + tp[3 * nc + c]) * z + tp[2 * nc + c]) * z + tp[nc + c]) * z + tp[c]) * z;
+		const double hR = ((rp[2 * nc + c] * q + rp[nc + c]) * q + rp[c]) * q;
+		acc += hT + hR;
+	}
+	clamped += cl;
+	return acc;
+}
+}  // namespace
+
+double Compensator::kernelSum(const ChannelKernel& K, const double* T, const double* R, int& clamped)
+{
+	const std::size_t nc = K.t_centre.size();
+#define FOG_KERNEL(N)                                                                                              \
+	kernelSumN<N>(K.t_centre.data(), K.t_inv.data(), K.t_lo.data(), K.t_hi.data(), K.t_p.data(), K.r_centre.data(), \
+				  K.r_inv.data(), K.r_lo.data(), K.r_hi.data(), K.r_p.data(), T, R, nc, clamped)
+	switch (nc)
+	{
+		case 1: return FOG_KERNEL(1);
+		case 2: return FOG_KERNEL(2);
+		case 3: return FOG_KERNEL(3);
+		case 4: return FOG_KERNEL(4);
+		default: return FOG_KERNEL(0);
+	}
+#undef FOG_KERNEL
+}
+
 double Compensator::evaluate(const Compiled& m, int& clamped) const
 {
 	double sum = m.c0;
+	sum += kernelSum(m.kernel, temp_.data(), rate_.data(), clamped);
 	for (const SignalGroup& g : m.groups)
 	{
 		const double* src = (g.kind == 0 || g.kind == 2) ? temp_.data() : rate_.data();

@@ -64,6 +64,7 @@ CausalRateTracker::CausalRateTracker(std::size_t channels, double window_s)
 		throw std::invalid_argument("CausalRateTracker: window_s must be positive");
 	t_.resize(64);
 	x_.resize(64 * channels_);
+	slot_all_valid_.resize(64);
 	reset();
 }
 
@@ -72,7 +73,9 @@ void CausalRateTracker::reset()
 	head_ = count_ = since_rebuild_ = 0;
 	any_ = false;
 	t_ref_ = 0.0;
-	ch_.assign(channels_, Channel{});
+	nan_slots_ = 0;
+	nan_since_rebuild_ = false;
+	for (auto* v : {&s1_, &s2_, &sx_, &stx_, &n_, &x_ref_}) v->assign(channels_, 0.0);
 }
 
 void CausalRateTracker::dropOldest()
@@ -80,17 +83,17 @@ void CausalRateTracker::dropOldest()
 	const std::size_t cap = t_.size();
 	const double dt = t_[head_] - t_ref_;
 	const double* xs = &x_[head_ * channels_];
-	Channel* ch = ch_.data();
 	for (std::size_t c = 0; c < channels_; c++)
 	{
 		if (std::isnan(xs[c])) continue;
-		const double dx = xs[c] - ch[c].x_ref;
-		ch[c].s1 -= dt;
-		ch[c].s2 -= dt * dt;
-		ch[c].sx -= dx;
-		ch[c].stx -= dt * dx;
-		ch[c].n -= 1.0;
+		const double dx = xs[c] - x_ref_[c];
+		s1_[c] -= dt;
+		s2_[c] -= dt * dt;
+		sx_[c] -= dx;
+		stx_[c] -= dt * dx;
+		n_[c] -= 1.0;
 	}
+	if (!slot_all_valid_[head_]) nan_slots_--;
 	head_ = (head_ + 1) & (cap - 1);  // capacity is a power of two
 	count_--;
 }
@@ -102,7 +105,7 @@ void CausalRateTracker::rebuildSums()
 	const std::size_t cap = t_.size();
 	t_ref_ = last_t_;
 	ref_set_.assign(channels_, 0);
-	for (auto& c : ch_) c.s1 = c.s2 = c.sx = c.stx = c.n = 0.0;
+	for (auto* v : {&s1_, &s2_, &sx_, &stx_, &n_}) std::fill(v->begin(), v->end(), 0.0);
 	for (std::size_t i = 0; i < count_; i++)
 	{
 		const std::size_t slot = (head_ + count_ - 1 - i) & (cap - 1);  // newest first: refs = newest value
@@ -111,21 +114,21 @@ void CausalRateTracker::rebuildSums()
 		{
 			const double x = x_[slot * channels_ + c];
 			if (std::isnan(x)) continue;
-			Channel& h = ch_[c];
 			if (!ref_set_[c])
 			{
-				h.x_ref = x;
+				x_ref_[c] = x;
 				ref_set_[c] = 1;
 			}
-			const double dx = x - h.x_ref;
-			h.s1 += dt;
-			h.s2 += dt * dt;
-			h.sx += dx;
-			h.stx += dt * dx;
-			h.n += 1.0;
+			const double dx = x - x_ref_[c];
+			s1_[c] += dt;
+			s2_[c] += dt * dt;
+			sx_[c] += dx;
+			stx_[c] += dt * dx;
+			n_[c] += 1.0;
 		}
 	}
 	since_rebuild_ = 0;
+	nan_since_rebuild_ = nan_slots_ > 0;
 }
 
 void CausalRateTracker::push(double time_s, const double* x)
@@ -140,9 +143,19 @@ void CausalRateTracker::push(double time_s, const double* x)
 		any_ = true;
 	}
 	last_t_ = time_s;
+	bool new_all_valid = true;
+	for (std::size_t c = 0; c < channels_; c++) new_all_valid &= !std::isnan(x[c]);
+	if (!new_all_valid) nan_since_rebuild_ = true;
+	double* S1 = s1_.data();
+	double* S2 = s2_.data();
+	double* SX = sx_.data();
+	double* STX = stx_.data();
+	double* N = n_.data();
+	const double* XR = x_ref_.data();
 	// Common case (uniform sampling): exactly one sample leaves as one enters -> one fused
-	// update per channel where both are valid; per channel the arithmetic depends only on that
-	// channel's data, so any set of channels gives the numbers of a one-channel tracker.
+	// update per channel where both are valid. Per channel the arithmetic depends only on that
+	// channel's data (and the timestamps), so any set of channels gives the numbers of a
+	// one-channel tracker.
 	if (count_ >= 2 && t_[head_] <= time_s - window_s_ && t_[(head_ + 1) & (t_.size() - 1)] > time_s - window_s_ &&
 		since_rebuild_ + 1 < 16 * t_.size())
 	{
@@ -150,47 +163,59 @@ void CausalRateTracker::push(double time_s, const double* x)
 		const double* xo = &x_[head_ * channels_];
 		const double dto = t_[head_] - t_ref_, dtn = time_s - t_ref_;
 		const double d1 = dtn - dto, d2 = dtn * dtn - dto * dto;
-		Channel* ch = ch_.data();
-		for (std::size_t c = 0; c < channels_; c++)
+		if (new_all_valid && slot_all_valid_[head_])
 		{
-			Channel& h = ch[c];
-			const bool old_ok = !std::isnan(xo[c]), new_ok = !std::isnan(x[c]);
-			if (old_ok && new_ok)
+			for (std::size_t c = 0; c < channels_; c++)
 			{
-				const double dxo = xo[c] - h.x_ref, dxn = x[c] - h.x_ref;
-				h.s1 += d1;
-				h.s2 += d2;
-				h.sx += dxn - dxo;
-				h.stx += dtn * dxn - dto * dxo;
-				continue;
-			}
-			if (old_ok)
-			{
-				const double dx = xo[c] - h.x_ref;
-				h.s1 -= dto;
-				h.s2 -= dto * dto;
-				h.sx -= dx;
-				h.stx -= dto * dx;
-				h.n -= 1.0;
-			}
-			if (new_ok)
-			{
-				if (h.n == 0.0)
-				{
-					h.x_ref = x[c];
-					h.s1 = h.s2 = h.sx = h.stx = 0.0;
-				}
-				const double dx = x[c] - h.x_ref;
-				h.s1 += dtn;
-				h.s2 += dtn * dtn;
-				h.sx += dx;
-				h.stx += dtn * dx;
-				h.n += 1.0;
+				const double dxo = xo[c] - XR[c], dxn = x[c] - XR[c];
+				S1[c] += d1;
+				S2[c] += d2;
+				SX[c] += dxn - dxo;
+				STX[c] += dtn * dxn - dto * dxo;
 			}
 		}
+		else
+			for (std::size_t c = 0; c < channels_; c++)
+			{
+				const bool old_ok = !std::isnan(xo[c]), new_ok = !std::isnan(x[c]);
+				if (old_ok && new_ok)
+				{
+					const double dxo = xo[c] - XR[c], dxn = x[c] - XR[c];
+					S1[c] += d1;
+					S2[c] += d2;
+					SX[c] += dxn - dxo;
+					STX[c] += dtn * dxn - dto * dxo;
+					continue;
+				}
+				if (old_ok)
+				{
+					const double dx = xo[c] - XR[c];
+					S1[c] -= dto;
+					S2[c] -= dto * dto;
+					SX[c] -= dx;
+					STX[c] -= dto * dx;
+					N[c] -= 1.0;
+				}
+				if (new_ok)
+				{
+					if (N[c] == 0.0)
+					{
+						x_ref_[c] = x[c];
+						S1[c] = S2[c] = SX[c] = STX[c] = 0.0;
+					}
+					const double dx = x[c] - XR[c];
+					S1[c] += dtn;
+					S2[c] += dtn * dtn;
+					SX[c] += dx;
+					STX[c] += dtn * dx;
+					N[c] += 1.0;
+				}
+			}
 		// the new sample takes the slot of the one that left: head advances by one
 		const std::size_t slot = (head_ + count_) & (cap - 1);
+		nan_slots_ += static_cast<std::size_t>(!new_all_valid) - static_cast<std::size_t>(!slot_all_valid_[head_]);
 		t_[slot] = time_s;
+		slot_all_valid_[slot] = new_all_valid;
 		double* xs = &x_[slot * channels_];
 		for (std::size_t c = 0; c < channels_; c++) xs[c] = x[c];
 		head_ = (head_ + 1) & (cap - 1);
@@ -202,44 +227,48 @@ void CausalRateTracker::push(double time_s, const double* x)
 	if (count_ == 0)
 	{
 		t_ref_ = time_s;  // empty window (start or after a gap): fresh time reference
-		for (auto& c : ch_) c.s1 = c.s2 = c.sx = c.stx = c.n = 0.0;
+		for (std::size_t c = 0; c < channels_; c++) S1[c] = S2[c] = SX[c] = STX[c] = 0.0;
 	}
 	// Grow the ring when full (irregular sampling: the count per window is not known a priori).
 	if (count_ == t_.size())
 	{
 		const std::size_t cap = t_.size();
 		std::vector<double> t2(cap * 2), x2(cap * 2 * channels_);
+		std::vector<unsigned char> v2(cap * 2);
 		for (std::size_t i = 0; i < count_; i++)
 		{
 			const std::size_t slot = (head_ + i) & (cap - 1);
 			t2[i] = t_[slot];
+			v2[i] = slot_all_valid_[slot];
 			for (std::size_t c = 0; c < channels_; c++) x2[i * channels_ + c] = x_[slot * channels_ + c];
 		}
 		t_.swap(t2);
 		x_.swap(x2);
+		slot_all_valid_.swap(v2);
 		head_ = 0;
 	}
 	const std::size_t cap = t_.size();
 	const std::size_t slot = (head_ + count_) & (cap - 1);
 	t_[slot] = time_s;
+	slot_all_valid_[slot] = new_all_valid;
+	nan_slots_ += !new_all_valid;
 	double* xs = &x_[slot * channels_];
 	const double dt = time_s - t_ref_;
-	Channel* ch = ch_.data();
 	for (std::size_t c = 0; c < channels_; c++)
 	{
 		xs[c] = x[c];
 		if (std::isnan(x[c])) continue;
-		if (ch[c].n == 0.0)  // window empty for this channel: fresh reference, no round-off residue
+		if (N[c] == 0.0)  // window empty for this channel: fresh reference, no round-off residue
 		{
-			ch[c].x_ref = x[c];
-			ch[c].s1 = ch[c].s2 = ch[c].sx = ch[c].stx = 0.0;
+			x_ref_[c] = x[c];
+			S1[c] = S2[c] = SX[c] = STX[c] = 0.0;
 		}
-		const double dx = x[c] - ch[c].x_ref;
-		ch[c].s1 += dt;
-		ch[c].s2 += dt * dt;
-		ch[c].sx += dx;
-		ch[c].stx += dt * dx;
-		ch[c].n += 1.0;
+		const double dx = x[c] - x_ref_[c];
+		S1[c] += dt;
+		S2[c] += dt * dt;
+		SX[c] += dx;
+		STX[c] += dt * dx;
+		N[c] += 1.0;
 	}
 	count_++;
 	// Exact rebuild every 16 buffer turns: the running sums then accumulate at most ~16 x cap
@@ -249,43 +278,63 @@ void CausalRateTracker::push(double time_s, const double* x)
 
 double CausalRateTracker::rate(std::size_t c) const
 {
-	const Channel& h = ch_[c];
-	if (h.n < 2) return kNaN;
-	const double den = h.n * h.s2 - h.s1 * h.s1;
+	const double n = n_[c];
+	if (n < 2) return kNaN;
+	const double den = n * s2_[c] - s1_[c] * s1_[c];
 	if (!(den > 0)) return kNaN;
-	return (h.n * h.stx - h.s1 * h.sx) / den;
+	return (n * stx_[c] - s1_[c] * sx_[c]) * (1.0 / den);
 }
 
 std::uint32_t CausalRateTracker::ratesAndCoverage(double* rate_out, double min_span_s) const
 {
-	std::uint32_t short_mask = 0;
 	const double span2 = min_span_s * min_span_s;
-	const Channel* ch = ch_.data();
+	const double* S1 = s1_.data();
+	const double* S2 = s2_.data();
+	const double* SX = sx_.data();
+	const double* STX = stx_.data();
+	const double* N = n_.data();
+	if (channels_ > 0 && nan_slots_ == 0 && !nan_since_rebuild_)
+	{
+		// Shared time sums: one reciprocal for all channels (bitwise the per-channel value).
+		const double n = N[0];
+		const double den = n * S2[0] - S1[0] * S1[0];  // = n^2 var(t)
+		const bool ok = n >= 2 && den > 0;
+		if (!ok)
+		{
+			for (std::size_t c = 0; c < channels_; c++) rate_out[c] = kNaN;
+			return channels_ >= 32 ? ~0u : ((1u << channels_) - 1u);
+		}
+		const double inv = 1.0 / den, s1 = S1[0];
+		for (std::size_t c = 0; c < channels_; c++) rate_out[c] = (n * STX[c] - s1 * SX[c]) * inv;
+		const bool short_span = !(12.0 * den >= span2 * n * n);
+		return short_span ? (channels_ >= 32 ? ~0u : ((1u << channels_) - 1u)) : 0u;
+	}
+	std::uint32_t short_mask = 0;
 	for (std::size_t c = 0; c < channels_; c++)
 	{
-		const Channel& h = ch[c];
-		const double den = h.n * h.s2 - h.s1 * h.s1;  // = n^2 var(t)
-		const bool ok = h.n >= 2 && den > 0;
-		rate_out[c] = ok ? (h.n * h.stx - h.s1 * h.sx) / den : kNaN;
+		const double n = N[c];
+		const double den = n * S2[c] - S1[c] * S1[c];
+		const bool ok = n >= 2 && den > 0;
+		rate_out[c] = ok ? (n * STX[c] - S1[c] * SX[c]) * (1.0 / den) : kNaN;
 		// coveredSpan^2 = 12 var(t) = 12 den / n^2
-		if (!(ok && 12.0 * den >= span2 * h.n * h.n)) short_mask |= (1u << c);
+		if (!(ok && 12.0 * den >= span2 * n * n)) short_mask |= (1u << c);
 	}
 	return short_mask;
 }
 
 bool CausalRateTracker::spanAtLeast(std::size_t c, double span_s) const
 {
-	const Channel& h = ch_[c];
-	if (h.n < 2) return false;
-	const double var = h.s2 / h.n - (h.s1 / h.n) * (h.s1 / h.n);
+	const double n = n_[c];
+	if (n < 2) return false;
+	const double var = s2_[c] / n - (s1_[c] / n) * (s1_[c] / n);
 	return 12.0 * var >= span_s * span_s;
 }
 
 double CausalRateTracker::coveredSpan_s(std::size_t c) const
 {
-	const Channel& h = ch_[c];
-	if (h.n < 2) return 0.0;
-	const double var = h.s2 / h.n - (h.s1 / h.n) * (h.s1 / h.n);
+	const double n = n_[c];
+	if (n < 2) return 0.0;
+	const double var = s2_[c] / n - (s1_[c] / n) * (s1_[c] / n);
 	return var > 0 ? std::sqrt(12.0 * var) : 0.0;
 }
 

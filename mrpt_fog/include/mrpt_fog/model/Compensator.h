@@ -86,14 +86,25 @@ class Compensator
 		std::vector<double> centre, inv_scale, lo, hi;
 		std::vector<double> p;  // coefficient of z^k of signal i at p[k * n + i], k = 1..degree
 	};
+	/** Per-channel kernel for the T(c) and dT/dt(c) terms (the multipoint shape): for every
+	 * tracked channel c a degree-5 polynomial in T(c) and a degree-3 one in dT/dt(c), zero
+	 * padded (absent signals: zero coefficients and an infinite range, so nothing is counted as
+	 * clamped). Fixed degrees: the loop over channels is branch-free and vectorises. */
+	struct ChannelKernel
+	{
+		std::vector<double> t_centre, t_inv, t_lo, t_hi, t_p;  // t_p[(k - 1) * nc + c], k = 1..5
+		std::vector<double> r_centre, r_inv, r_lo, r_hi, r_p;  // r_p[(k - 1) * nc + c], k = 1..3
+	};
 	struct Compiled
 	{
 		double c0 = 0;
-		std::vector<SignalGroup> groups;
+		ChannelKernel kernel;
+		std::vector<SignalGroup> groups;  // differences and their rates
 		std::uint32_t uses = 0;  // bit mask of the channels the model reads
 	};
 	static Compiled compile(const BiasModel& m, const std::vector<std::string>& channel_names);
 	double evaluate(const Compiled& m, int& clamped) const;
+	static double kernelSum(const ChannelKernel& k, const double* temp_C, const double* rate_C_s, int& clamped);
 
 	double window_s_;
 	double mean_bias_dph_;

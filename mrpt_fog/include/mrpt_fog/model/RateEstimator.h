@@ -75,7 +75,7 @@ class CausalRateTracker
 	/** Current slope of channel c [unit/s]; NaN with fewer than 2 valid samples in the window. */
 	double rate(std::size_t c) const;
 	/** Valid samples of channel c now inside the window. */
-	std::size_t validCount(std::size_t c) const { return static_cast<std::size_t>(ch_[c].n); }
+	std::size_t validCount(std::size_t c) const { return static_cast<std::size_t>(n_[c]); }
 	/** Time spread of the valid samples of channel c in the window, as sqrt(12) x their
 	 * standard deviation in time [s] (= the span for uniform sampling; 0 when < 2 samples).
 	 * The compensator flags "rate warm-up" while this is below half the window. */
@@ -102,12 +102,14 @@ class CausalRateTracker
 	double last_t_ = 0.0;
 	bool any_ = false;
 	/** Per-channel running sums over the valid samples in the window, relative to t_ref_ and
-	 * x_ref (contiguous per channel: the hot loops touch one cache line per channel). */
-	struct Channel
-	{
-		double s1 = 0, s2 = 0, sx = 0, stx = 0, n = 0, x_ref = 0;
-	};
-	std::vector<Channel> ch_;
+	 * x_ref_ (one array per sum: the hot loops run over channels and vectorise). */
+	std::vector<double> s1_, s2_, sx_, stx_, n_, x_ref_;
+	std::vector<unsigned char> slot_all_valid_;  // per ring slot: no NaN channel
+	/** Ring slots holding a NaN, and whether a NaN entered since the last exact rebuild: when
+	 * both are zero every channel's time sums (s1, s2, n) are bitwise equal (same operations),
+	 * so 1/den is computed once for all channels. */
+	std::size_t nan_slots_ = 0;
+	bool nan_since_rebuild_ = false;
 	std::vector<char> ref_set_;  // scratch of rebuildSums
 };
 
