@@ -26,6 +26,16 @@ const char* toString(SegmentType t)
 
 namespace
 {
+int bandIndex(double T)
+{
+	if (!std::isfinite(T)) return -1;
+	if (T < -20) return 0;
+	if (T < 0) return 1;
+	if (T < 20) return 2;
+	if (T < 40) return 3;
+	return 4;
+}
+
 std::string bandOf(double T)
 {
 	if (T < -20) return "below -20 C";
@@ -52,26 +62,20 @@ std::string kindPhrase(SegmentType t, const std::string& dir, bool plural)
 	return "segment" + s;
 }
 
-/** Thermal label of a moving stretch [b, e). */
-SegmentType classifyMoving(const RunSignals& s, std::size_t b, std::size_t e, double peakRatio)
+/** Thermal label of a moving stretch [b, e): a ramp holds its rate (|rate| >= 0.8 x peak without a break
+ * for at least plateau_s and 30 % of the stretch), a step's rate decays right after its peak. */
+SegmentType classifyMoving(const RunSignals& s, std::size_t b, std::size_t e, double plateau_s)
 {
-	std::vector<double> a;
 	double peak = 0;
-	std::size_t at = b;
+	for (std::size_t k = b; k < e; ++k) peak = std::max(peak, std::fabs(s.dtemp_dt_Cpm[k]));
+	double run = 0, longest = 0;  // longest contiguous time near the peak rate
 	for (std::size_t k = b; k < e; ++k)
 	{
-		const double r = std::fabs(s.dtemp_dt_Cpm[k]);
-		a.push_back(r);
-		if (r > peak)
-		{
-			peak = r;
-			at = k;
-		}
+		run = std::fabs(s.dtemp_dt_Cpm[k]) >= 0.8 * peak ? run + s.dt_s : 0.0;
+		longest = std::max(longest, run);
 	}
-	std::nth_element(a.begin(), a.begin() + static_cast<long>(a.size() / 2), a.end());
-	const double med = a[a.size() / 2];
-	const bool early = (at - b) * 3 <= (e - b);
-	if (peak > peakRatio * med && early) return SegmentType::Step;
+	const double duration = double(e - b) * s.dt_s;
+	if (longest < std::max(plateau_s, 0.3 * duration)) return SegmentType::Step;
 	return s.dtemp_dt_Cpm[(b + e) / 2] > 0 ? SegmentType::RampUp : SegmentType::RampDown;
 }
 }  // namespace
@@ -96,7 +100,7 @@ std::vector<Segment> segmentRun(const RunSignals& s, const SegmentationOptions& 
 	{
 		std::size_t e = k;
 		while (e < n && dir[e] == dir[k]) ++e;
-		if (dir[k] != 0) std::fill(lab.begin() + long(k), lab.begin() + long(e), classifyMoving(s, k, e, opt.step_peak_ratio));
+		if (dir[k] != 0) std::fill(lab.begin() + long(k), lab.begin() + long(e), classifyMoving(s, k, e, opt.ramp_plateau_s));
 		k = e;
 	}
 	// 2. overlays by priority
@@ -115,11 +119,13 @@ std::vector<Segment> segmentRun(const RunSignals& s, const SegmentationOptions& 
 		}
 	}
 	// 3. run-length segments, short ones merged into the previous one
+	std::vector<int> band(n);
+	for (std::size_t k = 0; k < n; ++k) band[k] = bandIndex(s.temp_mean_C[k]);
 	std::vector<Segment> segs;
 	for (std::size_t k = 0; k < n;)
 	{
 		std::size_t e = k;
-		while (e < n && lab[e] == lab[k]) ++e;
+		while (e < n && lab[e] == lab[k] && band[e] == band[k]) ++e;
 		const double dur = s.time_s[e - 1] - s.time_s[k] + s.dt_s;
 		if (!segs.empty() && dur < opt.min_segment_s)
 			segs.back().end = e;
@@ -137,7 +143,8 @@ std::vector<Segment> segmentRun(const RunSignals& s, const SegmentationOptions& 
 	std::vector<Segment> merged;
 	for (const auto& g : segs)
 	{
-		if (!merged.empty() && merged.back().type == g.type)
+		if (!merged.empty() && merged.back().type == g.type &&
+			bandIndex(s.temp_mean_C[merged.back().begin]) == bandIndex(s.temp_mean_C[g.begin]))
 			merged.back().end = g.end;
 		else
 			merged.push_back(g);

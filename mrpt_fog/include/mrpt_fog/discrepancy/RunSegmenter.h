@@ -10,9 +10,12 @@
  * `power_on_transient_s` after a power-on; only when the run has a power column), rate-table
  * (|table rate| > threshold), field (|field| > threshold), then from the mean thermistor
  * temperature rate: soak (|dT/dt| < `moving_rate_Cpm`), or a moving stretch of one sign that is
- * a step when its rate peaks early (peak > `step_peak_ratio` x median |rate|, within the first
- * third) and a ramp otherwise. Stretches shorter than `min_segment_s` are merged into the
- * previous segment. Bands: below -20, -20..0, 0..20, 20..40, above 40 C.
+ * a ramp when it holds its rate (|rate| >= 0.8 x its peak without a break for at least `ramp_plateau_s`
+ * and 30 % of the stretch, the coil's settling tail included) and a
+ * step otherwise (the rate decays right after the peak; half-cycles of a sine sweep come out
+ * as steps or ramps by the same rule). Segments are also cut where the mean temperature
+ * crosses a band edge (bands: below -20, -20..0, 0..20, 20..40, above 40 C). Stretches shorter
+ * than `min_segment_s` are merged into the previous segment.
  */
 
 #include <mrpt_fog/discrepancy/RunSignals.h>
@@ -40,7 +43,7 @@ const char* toString(SegmentType t);
 struct SegmentationOptions
 {
 	double moving_rate_Cpm = 0.05;
-	double step_peak_ratio = 2.0;
+	double ramp_plateau_s = 600.0;  //!< a ramp holds >= 0.8 x its peak rate this long
 	double power_on_transient_s = 1800.0;
 	double table_threshold_dph = 1.0;
 	double field_threshold_uT = 1.0;
