@@ -1,36 +1,29 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CObservationComment.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
-#include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/io/FogRawlogMetadata.h>
 #include <mrpt_fog/io/GzFile.h>
-#include <mrpt_fog/io/NumberText.h>
 #include <mrpt_fog/obs/FogSeriesConversion.h>
 #include <mrpt_fog/obs/registerAllClasses.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
-#include <algorithm>
-#include <set>
+
+#include "RawlogCommon.h"
 
 namespace mrpt_fog
 {
 namespace
 {
-/** First line of an (MRPT, multi-line) exception message. */
-std::string firstLine(const std::string& what)
-{
-	std::string s = what;
-	const auto nl = s.find('\n');
-	if (nl != std::string::npos) s = s.substr(0, nl);
-	while (!s.empty() && (s.back() == ' ' || s.back() == '\r')) s.pop_back();
-	return s;
-}
+using io::detail::firstLine;
+using io::detail::fromTicks;
+using io::detail::kTicksPerSecond;
+using io::detail::ticksOf;
 
 /** The reason a deserialization failed, in words. */
 std::string whyReadFailed(const std::string& what, bool at_end_of_data)
@@ -54,12 +47,6 @@ std::string labelList(const std::map<std::string, std::size_t>& counts)
 	for (const auto& [label, n] : counts) s += (s.empty() ? "'" : ", '") + label + "' (" + std::to_string(n) + ")";
 	return s;
 }
-
-int64_t ticksOf(mrpt::Clock::time_point t) { return t.time_since_epoch().count(); }
-mrpt::Clock::time_point fromTicks(int64_t ticks) { return mrpt::Clock::time_point(mrpt::Clock::duration(ticks)); }
-/** MRPT timestamps are 100 ns ticks. */
-constexpr double kTicksPerSecond = 1e7;
-
 
 /** Builds one sensor's FogSeries sample by sample (times kept as ticks until the epoch is known). */
 class FogAccumulator
@@ -210,115 +197,6 @@ FogRawlogContents readFogRawlog(const std::string& path, const std::string& fog_
 		throw FogIoError(path + ": sensor '" + label + "': " + e.what());
 	}
 	return out;
-}
-
-std::vector<mrpt::obs::CObservation::Ptr> fogObservationsForRawlog(const FogSeries& fog)
-{
-	std::vector<mrpt::obs::CObservation::Ptr> out;
-	out.reserve(fog.size() + 1);
-	const int64_t epoch_ticks = ticksOf(mrpt::Clock::fromDouble(fog.epoch_s));
-	auto comment = mrpt::obs::CObservationComment::Create();
-	comment->sensorLabel = fog.sensor_label + "_METADATA";
-	comment->text = io::formatFogRawlogMetadata(fog);
-	out.push_back(comment);
-	for (auto& o : observationsFromSeries(fog))
-	{
-		out.push_back(o);
-	}
-	for (std::size_t k = 0; k < fog.size(); k++)
-		out[k + 1]->timestamp = fromTicks(epoch_ticks + std::llround(fog.time_s[k] * kTicksPerSecond));
-	comment->timestamp = fog.empty() ? fromTicks(epoch_ticks) : out[1]->timestamp;
-	return out;
-}
-
-void writeRawlogObservations(const std::string& path, const std::vector<mrpt::obs::CObservation::Ptr>& objs)
-{
-	try
-	{
-		writeFileAtomically(path, [&](const std::string& tmp) {
-			mrpt::io::CFileGZOutputStream out;
-			std::string why;
-			if (!out.open(tmp, 1, why)) throw FogIoError(path + ": cannot create: " + why);
-			auto arch = mrpt::serialization::archiveFrom(out);
-			for (const auto& o : objs) arch << *o;
-			out.close();
-		});
-	}
-	catch (const FogIoError&)
-	{
-		throw;
-	}
-	catch (const std::exception& e)
-	{
-		throw FogIoError(path + ": cannot write: " + firstLine(e.what()));
-	}
-}
-
-std::vector<mrpt::obs::CObservation::Ptr> mergeByTimestamp(const std::vector<mrpt::obs::CObservation::Ptr>& a,
-														   const std::vector<mrpt::obs::CObservation::Ptr>& b)
-{
-	std::vector<mrpt::obs::CObservation::Ptr> out;
-	out.reserve(a.size() + b.size());
-	std::size_t i = 0, j = 0;
-	while (i < a.size() || j < b.size())
-	{
-		if (j == b.size() || (i < a.size() && !(b[j]->timestamp < a[i]->timestamp))) out.push_back(a[i++]);
-		else out.push_back(b[j++]);
-	}
-	return out;
-}
-
-void writeFogRawlog(const std::string& path, const FogSeries& fog, const std::vector<mrpt::obs::CObservation::Ptr>& others)
-{
-	try
-	{
-		fog.validate();
-	}
-	catch (const std::exception& e)
-	{
-		throw FogIoError(path + ": cannot write: " + firstLine(e.what()));
-	}
-	for (std::size_t i = 0; i < others.size(); i++)
-		if (!others[i]) throw FogIoError(path + ": cannot write: other observation #" + std::to_string(i) + " is null");
-	// The metadata comment heads the file; then FOG samples (made one at a time: memory stays
-	// flat for long runs) and the others merged by time, FOG first on equal timestamps.
-	const int64_t epoch_ticks = ticksOf(mrpt::Clock::fromDouble(fog.epoch_s));
-	auto fogTime = [&](std::size_t k) { return fromTicks(epoch_ticks + std::llround(fog.time_s[k] * kTicksPerSecond)); };
-	auto comment = mrpt::obs::CObservationComment::Create();
-	comment->sensorLabel = fog.sensor_label + "_METADATA";
-	comment->text = io::formatFogRawlogMetadata(fog);
-	comment->timestamp = fog.empty() ? fromTicks(epoch_ticks) : fogTime(0);
-	try
-	{
-		writeFileAtomically(path, [&](const std::string& tmp) {
-			mrpt::io::CFileGZOutputStream out;
-			std::string why;
-			if (!out.open(tmp, 1, why)) throw FogIoError(path + ": cannot create: " + why);
-			auto arch = mrpt::serialization::archiveFrom(out);
-			arch << *comment;
-			std::size_t k = 0, j = 0;
-			while (k < fog.size() || j < others.size())
-			{
-				if (j == others.size() || (k < fog.size() && !(others[j]->timestamp < fogTime(k))))
-				{
-					auto o = observationFromSeries(fog, k);
-					o->timestamp = fogTime(k++);
-					arch << *o;
-				}
-				else
-					arch << *others[j++];
-			}
-			out.close();
-		});
-	}
-	catch (const FogIoError&)
-	{
-		throw;
-	}
-	catch (const std::exception& e)
-	{
-		throw FogIoError(path + ": cannot write: " + firstLine(e.what()));
-	}
 }
 
 }  // namespace mrpt_fog
