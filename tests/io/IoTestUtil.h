@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 #include <mrpt_fog/io/FogLogIO.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>

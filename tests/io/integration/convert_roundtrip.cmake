@@ -63,3 +63,12 @@ if(NOT ideal_rows STREQUAL "0.4,0.25,,,,,15.041,51,1")
   message(FATAL_ERROR "FOG_IDEAL row: '${ideal_rows}'")
 endif()
 message(STATUS "two-label rawlog: selection and pass-through ok")
+
+# --help teaches: usage, the CSV format and examples; exit status 0.
+execute_process(COMMAND ${FOG_CONVERT} --help RESULT_VARIABLE rc OUTPUT_VARIABLE help)
+foreach(part "--label" "--to-stock" "CSV FORMAT" "# thermistor Ti1: side=inner angle_deg=0" "empty cell = thermistor dropout" "EXAMPLES" "rawlog-edit -p")
+  string(FIND "${help}" "${part}" at)
+  if(at EQUAL -1 OR NOT rc EQUAL 0)
+    message(FATAL_ERROR "fog-convert --help (rc=${rc}) lacks '${part}':\n${help}")
+  endif()
+endforeach()
