@@ -48,3 +48,22 @@ set_tests_properties(model.calibrate_help PROPERTIES LABELS "integration;model"
 add_test(NAME model.compensate_help COMMAND fog-compensate --help)
 set_tests_properties(model.compensate_help PROPERTIES LABELS "integration;model"
   PASS_REGULAR_EXPRESSION "fallback model")
+
+# MRPT's own rawlog-edit reads the compensated stock-MRPT rawlog (2520 samples of coil_B:
+# one CObservationIMU and one CObservationRawDAQ each).
+find_program(FOG_RAWLOG_EDIT rawlog-edit)
+if(FOG_RAWLOG_EDIT)
+  add_test(NAME model.compensated_rawlog_read_by_mrpt
+    COMMAND ${FOG_RAWLOG_EDIT} --info -i ${_mo}/comp.rawlog)
+  set_tests_properties(model.compensated_rawlog_read_by_mrpt PROPERTIES LABELS "integration;model"
+    DEPENDS model.compensate_rawlog FIXTURES_REQUIRED model_cal
+    PASS_REGULAR_EXPRESSION "Overall number of objects +: 5040.*FOG_THERMISTORS")
+endif()
+
+# Calibration from a rawlog (made by fog-convert) gives the same model as from the CSV.
+if(TARGET fog-convert)
+  add_test(NAME model.calibrate_from_rawlog
+    COMMAND sh -c "\"$0\" -i '${_md}/coil_A.csv' -o '${_mo}/coil_A.rawlog' >/dev/null && \"$1\" -i '${_mo}/coil_A.rawlog' --model M2:Ti1 -o '${_mo}/cal_rawlog.yaml' | grep 'model:' > '${_mo}/m_rawlog.txt' && \"$1\" -i '${_md}/coil_A.csv' --model M2:Ti1 -o '${_mo}/cal_csv.yaml' | grep 'model:' > '${_mo}/m_csv.txt' && cmp '${_mo}/m_rawlog.txt' '${_mo}/m_csv.txt' && grep -q 'terms' '${_mo}/m_csv.txt'"
+            $<TARGET_FILE:fog-convert> $<TARGET_FILE:fog-calibrate>)
+  set_tests_properties(model.calibrate_from_rawlog PROPERTIES LABELS "integration;model")
+endif()
