@@ -1,0 +1,118 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+/** Shared loops of the proof trials (default suite: 10 seeds; long suite: 100). Each loop
+ * prints one table line "TRIALS <what> named <k>/<n> ..." so that the success table can be
+ * regenerated with:  ./build-disc/tests/test_discrepancy --gtest_filter='*ProofTrials*' | grep TRIALS
+ */
+#include <mrpt_fog/discrepancy/DiscrepancyTrials.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace trial_suite
+{
+using namespace mrpt_fog::discrepancy;
+
+struct Tally
+{
+	int trials = 0, named = 0, clean = 0, gap_ok = 0, false_naming = 0;
+	std::vector<std::string> misses;
+};
+
+inline Tally runSeeds(TrialSpec spec, int seeds, std::uint64_t first_seed)
+{
+	Tally t;
+	for (int s = 0; s < seeds; ++s)
+	{
+		spec.seed = first_seed + static_cast<std::uint64_t>(s);
+		const auto o = runTrial(spec);
+		++t.trials;
+		t.named += o.named_ok;
+		t.clean += o.clean;
+		t.gap_ok += o.gap_ok;
+		t.false_naming += o.false_naming;
+		if (!o.named_ok || !o.gap_ok) t.misses.push_back(o.summary);
+	}
+	return t;
+}
+
+inline void print(const std::string& what, const Tally& t)
+{
+	std::printf("TRIALS %-45s named %3d/%-3d clean %3d/%-3d gap_ok %3d/%-3d false %d\n", what.c_str(), t.named, t.trials,
+				t.clean, t.trials, t.gap_ok, t.trials, t.false_naming);
+	for (const auto& m : t.misses) std::printf("  miss: %s\n", m.c_str());
+	std::fflush(stdout);
+}
+
+inline const std::vector<std::string>& biasEffects()
+{
+	static const std::vector<std::string> ids{"shupe_rate", "radial_gradient", "gradient_rate", "thermistor_lag",
+											  "hysteresis", "warmup", "scale_factor_temp", "magnetic",
+											  "temp_poly_order"};
+	return ids;
+}
+
+/** No hidden effect, with confounders mixed in (thermistor noise + quantisation every 3rd
+ * trial, 5 outliers every 5th, a data gap every 7th). */
+inline Tally nullTrials(int seeds, std::uint64_t first_seed)
+{
+	Tally t;
+	for (int s = 0; s < seeds; ++s)
+	{
+		TrialSpec spec;
+		spec.seed = first_seed + static_cast<std::uint64_t>(s);
+		if (s % 3 == 0)
+		{
+			spec.thermistor_noise_C = 0.01;
+			spec.thermistor_quantum_C = 0.01;
+		}
+		if (s % 5 == 0) spec.outliers = 5;
+		if (s % 7 == 0) spec.gap = true;
+		const auto o = runTrial(spec);
+		++t.trials;
+		t.false_naming += o.false_naming;
+		t.named += o.named_ok;
+		t.clean += o.clean;
+		t.gap_ok += o.gap_ok;
+		if (o.false_naming) t.misses.push_back(o.summary);
+	}
+	return t;
+}
+
+/** Confounder scenarios (ratio 3 unless stated), each over `seeds` seeds. */
+inline std::vector<std::pair<std::string, TrialSpec>> confounderScenarios()
+{
+	std::vector<std::pair<std::string, TrialSpec>> v;
+	TrialSpec a;
+	a.hidden = {"shupe_rate"};
+	a.ratios = {3};
+	a.static_coef_error = 0.02;
+	v.push_back({"shupe_rate@3 + 2% coefficient error (run 2)", a});
+	TrialSpec b;
+	b.hidden = {"radial_gradient"};
+	b.ratios = {3};
+	b.thermistor_noise_C = 0.01;
+	b.thermistor_quantum_C = 0.01;
+	v.push_back({"radial_gradient@3 + thermistor noise/quant", b});
+	TrialSpec c;
+	c.hidden = {"hysteresis"};
+	c.ratios = {3};
+	c.gap = true;
+	v.push_back({"hysteresis@3 + data gap", c});
+	TrialSpec d;
+	d.hidden = {"magnetic"};
+	d.ratios = {3};
+	d.outliers = 5;
+	v.push_back({"magnetic@3 + 5 outliers", d});
+	TrialSpec e;
+	e.hidden = {"shupe_rate", "magnetic"};
+	e.ratios = {3, 1.5};
+	v.push_back({"two hidden: shupe_rate@3 + magnetic@1.5", e});
+	TrialSpec f;
+	f.hidden = {"radial_gradient", "warmup"};
+	f.ratios = {3, 1.5};
+	v.push_back({"two hidden: radial_gradient@3 + warmup@1.5", f});
+	return v;
+}
+}  // namespace trial_suite

@@ -1,0 +1,94 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <gtest/gtest.h>
+#include <mrpt_fog/discrepancy/DiscrepancyAnalysis.h>
+#include <mrpt_fog/discrepancy/SyntheticChamberRun.h>
+
+#include <cstdio>
+#include <filesystem>
+
+using namespace mrpt_fog;
+using namespace mrpt_fog::discrepancy;
+
+namespace
+{
+std::vector<FogSeries> twoRuns(const std::map<std::string, double>& hidden)
+{
+	SyntheticRunOptions o;
+	o.dt_s = 20;
+	o.hidden = hidden;
+	o.seed = 41;
+	const auto a = makeSyntheticChamberRun(o);
+	o.seed = 42;
+	const auto b = makeSyntheticChamberRun(o);
+	return {a.series, b.series};
+}
+}  // namespace
+
+TEST(DiscrepancyAnalysis, ReportsNamedEffectGapAndSegments)
+{
+	const auto runs = twoRuns({{"hysteresis", 3.0}});
+	const auto rep = analyseDiscrepancy(runs, {"A", "B"}, "static:3");
+	ASSERT_FALSE(rep.selection.named.empty());
+	EXPECT_EQ(rep.selection.named.front().id, "hysteresis");
+	EXPECT_TRUE(rep.has_confirm);
+	EXPECT_LT(rep.gap.after.rms_dph, rep.gap.before.rms_dph);
+	EXPECT_LT(rep.gap_confirm.after.rms_dph, rep.gap_confirm.before.rms_dph);
+	EXPECT_LT(rep.gap.after.stability_dph, rep.gap.before.stability_dph);
+	EXPECT_FALSE(rep.gap.segments.empty());
+	EXPECT_NE(rep.verdict().find("hysteresis"), std::string::npos);
+
+	const std::string json = discrepancyJson(rep).dump();
+	for (const char* key : {"\"named_effects\"", "\"alias_group\"", "\"confidence\"", "\"coefficient\"", "\"ci\"",
+							"\"segments\"", "\"gap\"", "\"before\"", "\"after\"", "\"rms_dph\"", "\"gap_confirm\"",
+							"\"stability_dph\"", "\"range_dph\"", "\"where\""})
+		EXPECT_NE(json.find(key), std::string::npos) << key;
+	const std::string text = discrepancyText(rep);
+	EXPECT_NE(text.find("Verdict: missing: hysteresis"), std::string::npos) << text;
+	EXPECT_NE(text.find("confirmation run: confirmed"), std::string::npos) << text;
+
+	const auto png = (std::filesystem::temp_directory_path() / "fog_discrepancy_test.png").string();
+	std::remove(png.c_str());
+	saveGapPlot(rep.gap, png, "test");
+	EXPECT_TRUE(std::filesystem::exists(png));
+	EXPECT_GT(std::filesystem::file_size(png), 1000u);
+	std::remove(png.c_str());
+}
+
+TEST(DiscrepancyAnalysis, NoMissingEffectFound)
+{
+	const auto runs = twoRuns({});
+	const auto rep = analyseDiscrepancy({runs[0]}, {"A"}, "static:3");
+	EXPECT_EQ(rep.verdict(), "no missing effect found");
+	EXPECT_FALSE(rep.has_confirm);
+	const std::string json = discrepancyJson(rep).dump();
+	EXPECT_NE(json.find("\"named_effects\": []"), std::string::npos) << json.substr(0, 400);
+	EXPECT_EQ(json.find("\"gap_confirm\""), std::string::npos);
+}
+
+TEST(DiscrepancyAnalysis, BadInputThrows)
+{
+	const auto runs = twoRuns({});
+	EXPECT_THROW(analyseDiscrepancy({}, {}, "static:3"), std::invalid_argument);
+	EXPECT_THROW(analyseDiscrepancy({runs[0], runs[1], runs[0]}, {}, "static:3"), std::invalid_argument);
+	auto other = runs[1];
+	other.thermistors[0].name = "X1";
+	EXPECT_THROW(analyseDiscrepancy({runs[0], other}, {}, "static:3"), std::invalid_argument);
+	EXPECT_THROW(analyseDiscrepancy({runs[0]}, {}, "nope"), std::invalid_argument);
+}
+
+TEST(DiscrepancyAnalysis, GapFiguresClosedForm)
+{
+	// residual +-0.1 alternating every 100 s over 1000 s: RMS 0.1, 100 s averages +-0.1
+	std::vector<double> t;
+	Eigen::VectorXd r(1000);
+	std::vector<unsigned char> rows(1000, 1);
+	for (int k = 0; k < 1000; ++k)
+	{
+		t.push_back(k);
+		r(k) = ((k / 100) % 2 ? -0.1 : 0.1);
+	}
+	const auto g = gapFigures(t, r, rows, 100.0);
+	EXPECT_NEAR(g.rms_dph, 0.1, 1e-12);
+	EXPECT_NEAR(g.range_dph, 0.2, 1e-12);
+	EXPECT_NEAR(g.stability_dph, 0.1 * std::sqrt(10.0 / 9.0), 1e-9);  // N-1 std of 10 values +-0.1
+}

@@ -1,0 +1,118 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <gtest/gtest.h>
+#include <mrpt_fog/discrepancy/EffectSelector.h>
+#include <mrpt_fog/discrepancy/SyntheticChamberRun.h>
+
+#include <algorithm>
+
+using namespace mrpt_fog;
+using namespace mrpt_fog::discrepancy;
+
+namespace
+{
+SelectionResult select(const SyntheticRun& r, const std::string& preset, RunSignals* sigOut = nullptr)
+{
+	const auto sig = computeRunSignals(r.series);
+	const auto base = buildBaseDesign(resolveBaseModel(preset, r.series), r.series, sig);
+	auto res = selectMissingEffects(sig, base);
+	if (sigOut) *sigOut = sig;
+	return res;
+}
+const CandidateTest* find(const SelectionResult& s, const std::string& id)
+{
+	for (const auto& t : s.rounds.front())
+		if (t.id == id) return &t;
+	return nullptr;
+}
+}  // namespace
+
+TEST(EffectSelector, CandidatesSpannedByTheModelAreSkipped)
+{
+	SyntheticRunOptions o;
+	o.dt_s = 30;
+	const auto r = makeSyntheticChamberRun(o);
+	// M3 on the inner/outer means contains dT/dt and (Tin - Tout) terms
+	const auto s = select(r, "M3:Ti1,To1");
+	const auto* grad = find(s, "radial_gradient");
+	ASSERT_NE(grad, nullptr);
+	// Ti1 - To1 is not exactly the inner-outer mean difference (sensor offsets), so only a
+	// model with the very same columns spans it: multipoint spans shupe_rate (its dT/dt terms)
+	const auto mp = select(r, "multipoint");
+	ASSERT_NE(find(mp, "shupe_rate"), nullptr);
+	EXPECT_EQ(find(mp, "shupe_rate")->status, "spanned");
+	EXPECT_EQ(find(mp, "radial_gradient")->status, "spanned");
+	EXPECT_EQ(find(mp, "gradient_rate")->status, "spanned");
+}
+
+TEST(EffectSelector, NamesRadialGradientAndResidualFallsToNoiseLevel)
+{
+	SyntheticRunOptions o;
+	o.dt_s = 20;
+	o.seed = 11;
+	o.hidden["radial_gradient"] = 3.0;
+	const auto r = makeSyntheticChamberRun(o);
+	const auto s = select(r, "static:3");
+	ASSERT_FALSE(s.named.empty());
+	EXPECT_EQ(s.named.front().id, "radial_gradient");
+	const auto& ne = s.named.front();
+	EXPECT_LT(ne.ci_low, ne.ci_high);
+	EXPECT_GT(ne.confidence, 0.9);
+	// residual RMS falls to about the noise level after adding it
+	double sa = 0, sb = 0;
+	std::size_t m = 0;
+	for (std::size_t k = 0; k < s.fit_rows.size(); ++k)
+		if (s.fit_rows[k])
+		{
+			sa += s.residual_after(k) * s.residual_after(k);
+			sb += s.residual_before(k) * s.residual_before(k);
+			++m;
+		}
+	const double after = std::sqrt(sa / m), before = std::sqrt(sb / m);
+	EXPECT_GT(before, 2.5 * r.noise_rms_dph);  // ratio 3 hidden
+	EXPECT_LT(after, before);
+	EXPECT_LT(after, 1.3 * r.noise_rms_dph);
+}
+
+TEST(EffectSelector, NothingMissingNamesNothing)
+{
+	SyntheticRunOptions o;
+	o.dt_s = 20;
+	o.seed = 5;
+	const auto r = makeSyntheticChamberRun(o);
+	const auto s = select(r, "static:3");
+	EXPECT_TRUE(s.named.empty());
+	EXPECT_EQ(s.model.effects.size(), 0u);
+	EXPECT_NEAR(s.residual_after.norm(), s.residual_before.norm(), 1e-12);
+}
+
+TEST(EffectSelector, ConfirmationRunConfirmsARealEffect)
+{
+	SyntheticRunOptions o;
+	o.dt_s = 20;
+	o.hidden["magnetic"] = 2.0;
+	o.seed = 21;
+	const auto r1 = makeSyntheticChamberRun(o);
+	o.seed = 22;
+	const auto r2 = makeSyntheticChamberRun(o);
+	const auto sig1 = computeRunSignals(r1.series), sig2 = computeRunSignals(r2.series);
+	const auto spec = resolveBaseModel("static:3", r1.series);
+	auto s = selectMissingEffects(sig1, buildBaseDesign(spec, r1.series, sig1));
+	ASSERT_FALSE(s.named.empty());
+	EXPECT_EQ(s.named.front().id, "magnetic");
+	confirmOnRun(s, sig2, buildBaseDesign(spec, r2.series, sig2));
+	EXPECT_TRUE(s.named.front().confirm_tested);
+	EXPECT_TRUE(s.named.front().confirmed);
+	EXPECT_LT(s.named.front().confirm_p, 1e-3);
+}
+
+TEST(EffectSelector, RejectsTooFewSamples)
+{
+	SyntheticRunOptions o;
+	o.dt_s = 20;
+	auto r = makeSyntheticChamberRun(o);
+	r.series.power.assign(r.series.size(), 0.0);  // never powered: nothing usable
+	for (std::size_t k = 0; k < 40; ++k) r.series.power[k] = 1.0;
+	const auto sig = computeRunSignals(r.series);
+	const auto base = buildBaseDesign(resolveBaseModel("multipoint", r.series), r.series, sig);
+	EXPECT_THROW(selectMissingEffects(sig, base), std::invalid_argument);
+}

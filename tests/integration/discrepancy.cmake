@@ -1,0 +1,35 @@
+# fog-discrepancy end to end on simulator runs (fog-sim "rich" profile at 0.1 Hz, all effects on):
+# the multipoint model is tested against run A and confirmed on run B; the JSON keys of the
+# contract are checked; bad input gives a one-line error and a non-zero exit.
+if(TARGET fog-discrepancy AND TARGET fog-sim)
+  set(_disc_dir ${CMAKE_CURRENT_BINARY_DIR}/discrepancy)
+  set(_disc_check ${FOG_SOURCE_DIR}/tests/discrepancy/check_discrepancy.cmake)
+  add_test(NAME discrepancy.setup COMMAND ${CMAKE_COMMAND} -E make_directory ${_disc_dir})
+  add_test(NAME discrepancy.sim_run_a
+    COMMAND fog-sim -p rich --rate-hz 0.1 --seed 1 -o ${_disc_dir}/rich_a.csv)
+  add_test(NAME discrepancy.sim_run_b
+    COMMAND fog-sim -p rich --rate-hz 0.1 --seed 2 -o ${_disc_dir}/rich_b.csv)
+  set_tests_properties(discrepancy.setup PROPERTIES FIXTURES_SETUP disc_dir LABELS "integration;discrepancy")
+  set_tests_properties(discrepancy.sim_run_a discrepancy.sim_run_b PROPERTIES
+    FIXTURES_REQUIRED disc_dir FIXTURES_SETUP disc_runs LABELS "integration;discrepancy")
+
+  add_test(NAME discrepancy.multipoint_named_and_confirmed
+    COMMAND ${CMAKE_COMMAND} -DMODE=run -DEXE=$<TARGET_FILE:fog-discrepancy>
+      "-DARGS=--measured;${_disc_dir}/rich_a.csv;--measured;${_disc_dir}/rich_b.csv;--model;multipoint;--json;${_disc_dir}/mp.json;--plots;${_disc_dir}"
+      -DJSON=${_disc_dir}/mp.json -DPNG=${_disc_dir}/discrepancy_residual.png -P ${_disc_check})
+  add_test(NAME discrepancy.bad_model_one_line_error
+    COMMAND ${CMAKE_COMMAND} -DMODE=error -DEXE=$<TARGET_FILE:fog-discrepancy>
+      "-DARGS=--measured;${_disc_dir}/rich_a.csv;--model;quadratic;--json;${_disc_dir}/bad.json"
+      -DEXPECT=quadratic -DNOFILE=${_disc_dir}/bad.json -P ${_disc_check})
+  add_test(NAME discrepancy.sim_not_yet_supported
+    COMMAND ${CMAKE_COMMAND} -DMODE=error -DEXE=$<TARGET_FILE:fog-discrepancy>
+      "-DARGS=--measured;${_disc_dir}/rich_a.csv;--sim;whatever.yaml"
+      "-DEXPECT=not yet supported" -P ${_disc_check})
+  add_test(NAME discrepancy.missing_file_one_line_error
+    COMMAND ${CMAKE_COMMAND} -DMODE=error -DEXE=$<TARGET_FILE:fog-discrepancy>
+      "-DARGS=--measured;${_disc_dir}/does_not_exist.csv;--model;M1"
+      -DEXPECT=does_not_exist -P ${_disc_check})
+  set_tests_properties(discrepancy.multipoint_named_and_confirmed discrepancy.bad_model_one_line_error
+    discrepancy.sim_not_yet_supported discrepancy.missing_file_one_line_error PROPERTIES
+    FIXTURES_REQUIRED disc_runs LABELS "integration;discrepancy")
+endif()
