@@ -74,3 +74,82 @@ inline std::size_t sampleAt(const mrpt_fog::FogSeries& s, double t)
 }
 
 }  // namespace faulttest
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace faulttest
+{
+/** A fresh scratch directory per test (removed at the end). */
+class ScratchDir
+{
+   public:
+	ScratchDir()
+	{
+		const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+		dir_ = std::filesystem::temp_directory_path() / ("mrpt_fog_faults_" + std::string(info->test_suite_name()) +
+														  "_" + info->name() + "_" + std::to_string(::getpid()));
+		std::filesystem::remove_all(dir_);
+		std::filesystem::create_directories(dir_);
+	}
+	~ScratchDir()
+	{
+		std::error_code ec;
+		std::filesystem::permissions(dir_, std::filesystem::perms::owner_all, std::filesystem::perm_options::add, ec);
+		std::filesystem::remove_all(dir_, ec);
+	}
+	std::string path(const std::string& name) const { return (dir_ / name).string(); }
+	const std::filesystem::path& dir() const { return dir_; }
+
+   private:
+	std::filesystem::path dir_;
+};
+
+inline std::string readBytes(const std::string& path)
+{
+	std::ifstream f(path, std::ios::binary);
+	std::ostringstream o;
+	o << f.rdbuf();
+	return o.str();
+}
+
+inline void writeBytes(const std::string& path, const std::string& bytes)
+{
+	std::ofstream f(path, std::ios::binary | std::ios::trunc);
+	f << bytes;
+}
+
+/** The first `n` samples of a series (same layout and metadata). */
+inline mrpt_fog::FogSeries head(const mrpt_fog::FogSeries& s, std::size_t n)
+{
+	mrpt_fog::FogSeries out = s;
+	out.resize(n);
+	return out;
+}
+
+/** Runs f; returns the message of the exception of type E it must throw ("" + failure if not). */
+template <class E, class F>
+std::string errorOf(F&& f)
+{
+	try
+	{
+		f();
+	}
+	catch (const E& e)
+	{
+		return e.what();
+	}
+	catch (const std::exception& e)
+	{
+		ADD_FAILURE() << "expected another exception type, got: " << e.what();
+		return e.what();
+	}
+	ADD_FAILURE() << "nothing thrown";
+	return {};
+}
+
+}  // namespace faulttest
