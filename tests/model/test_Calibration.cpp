@@ -195,6 +195,15 @@ TEST(Calibration, RefusesDataThatCannotSupportTheModel)
 	bad.selection = "lasso";
 	EXPECT_NO_THROW(fitCalibration({A}, "M1"));  // default point (first inner thermistor)
 	EXPECT_THROW(fitCalibration({A}, "M1", bad), std::invalid_argument);
+	FitOptions zero_blocks;
+	zero_blocks.blocks_per_fold = 0;
+	EXPECT_THROW(fitCalibration({A}, "M1", zero_blocks), std::invalid_argument);
+	FitOptions one_fold;
+	one_fold.folds = 1;
+	EXPECT_THROW(fitCalibration({A}, "M1", one_fold), std::invalid_argument);
+	FitOptions bad_window;
+	bad_window.rate_estimator.window_s = -1;
+	EXPECT_THROW(fitCalibration({A}, "M1", bad_window), std::invalid_argument);
 	FogSeries allNaN = A;
 	for (auto& v : allNaN.temp_C[0]) v = std::nan("");
 	EXPECT_THROW(fitCalibration({allNaN}, "M1:Ti1"), std::invalid_argument);

@@ -52,6 +52,10 @@ TEST(CalibrationYaml, RoundTripIsExact)
 	EXPECT_EQ(back.model.covariance, cal().model.covariance);
 	EXPECT_EQ(back.in_sample.stability_dph, cal().in_sample.stability_dph);
 	EXPECT_EQ(back.held_out.label, cal().held_out.label);
+	EXPECT_EQ(back.in_sample.valid, cal().in_sample.valid);
+	EXPECT_TRUE(back.in_sample.valid);
+	EXPECT_EQ(back.fallbacks[0].dropped, cal().fallbacks[0].dropped);
+	EXPECT_EQ(back.mean_bias_dph, cal().mean_bias_dph);
 	FogSeries s = fogtest::makeCoilRun("B", 62);
 	s.resize(3000);
 	EXPECT_EQ(compensate(back, s).bias_dph, compensate(cal(), s).bias_dph);

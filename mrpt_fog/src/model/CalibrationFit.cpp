@@ -236,6 +236,10 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 		throw std::invalid_argument("fit: selection must be 'auto' or 'none', got '" + opt.selection + "'");
 	if (!(opt.ridge >= 0)) throw std::invalid_argument("fit: ridge must be >= 0");
 	if (runs.size() == 1 && opt.folds < 2) throw std::invalid_argument("fit: folds must be >= 2");
+	if (opt.blocks_per_fold < 1) throw std::invalid_argument("fit: blocks_per_fold must be >= 1");
+	if (!(opt.min_relative_gain >= 0 && opt.min_relative_gain < 1))
+		throw std::invalid_argument("fit: min_relative_gain must be in [0, 1)");
+	if (!(opt.tau_s > 0)) throw std::invalid_argument("fit: tau_s must be > 0");
 	for (std::size_t i = 0; i < runs.size(); i++)
 	{
 		try
