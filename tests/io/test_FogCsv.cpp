@@ -240,3 +240,14 @@ TEST(FogCsv, FailedWriteLeavesNoFileAndKeepsThePreviousOne)
 	for (const auto& e : std::filesystem::directory_iterator(dir.path("")))
 		EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
 }
+
+TEST(FogCsv, MetadataThatCannotBeOneLineIsRefused)
+{
+	iotest::ScratchDir dir;
+	FogSeries s = readFogCsv(dataFile("sample.csv"));
+	s.metadata.emplace_back("note", "two\nlines");
+	EXPECT_NE(ioErrorOf([&] { writeFogCsv(dir.path("m.csv"), s); }).find("metadata key 'note'"), std::string::npos);
+	s.metadata.back() = {"a:b", "c"};
+	EXPECT_NE(ioErrorOf([&] { writeFogCsv(dir.path("m.csv"), s); }).find("metadata key 'a:b'"), std::string::npos);
+	EXPECT_FALSE(std::filesystem::exists(dir.path("m.csv")));
+}

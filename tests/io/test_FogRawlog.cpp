@@ -334,6 +334,11 @@ TEST(FogRawlog, FailedWriteLeavesNoFile)
 	EXPECT_NE(msg.find("bad.rawlog"), std::string::npos) << msg;
 	EXPECT_FALSE(std::filesystem::exists(dir.path("bad.rawlog")));
 	ioErrorOf([&] { writeFogRawlog("/nonexistent/dir/x.rawlog", makeSeries("FOG", 5)); });
+	FogSeries multi_line = makeSeries("FOG", 5);
+	multi_line.metadata.emplace_back("note", "a\nb");  // would not survive the metadata comment
+	EXPECT_NE(ioErrorOf([&] { writeFogRawlog(dir.path("m.rawlog"), multi_line); }).find("metadata key 'note'"),
+			  std::string::npos);
+	EXPECT_FALSE(std::filesystem::exists(dir.path("m.rawlog")));
 }
 
 TEST(FogLogIO, DispatchesByExtension)

@@ -1,6 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/io/FogLogIO.h>
+#include <mrpt_fog/io/FogRawlogMetadata.h>
 #include <mrpt_fog/io/GzFile.h>
 #include <mrpt_fog/io/NumberText.h>
 
@@ -384,6 +385,14 @@ void writeFogCsv(const std::string& path, const FogSeries& series)
 	}
 	for (const auto& p : series.power)
 		if (p != 0.0 && p != 1.0) throw FogIoError(path + ": cannot write: power column holds a value other than 0/1");
+	try
+	{
+		io::requireOneLineMetadata(series);
+	}
+	catch (const std::exception& e)
+	{
+		throw FogIoError(path + ": cannot write: " + e.what());
+	}
 	const std::string ext = fileExtension(path);
 	io::writeWholeFileAtomically(path, csvText(series), ext.size() >= 3 && ext.compare(ext.size() - 3, 3, ".gz") == 0);
 }

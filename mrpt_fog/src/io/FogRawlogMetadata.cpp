@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace mrpt_fog::io
 {
@@ -18,6 +19,16 @@ std::string trim(const std::string& s)
 	return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
 }
 }  // namespace
+
+void requireOneLineMetadata(const FogSeries& s)
+{
+	auto oneLine = [](const std::string& t) { return t.find_first_of("\r\n") == std::string::npos; };
+	if (s.sensor_label.empty() || !oneLine(s.sensor_label))
+		throw std::invalid_argument("sensor label '" + s.sensor_label + "' is empty or has a line break");
+	for (const auto& [k, v] : s.metadata)
+		if (!oneLine(k) || !oneLine(v) || k.find(':') != std::string::npos)
+			throw std::invalid_argument("metadata key '" + k + "' has a line break or ':', or its value a line break");
+}
 
 std::string formatFogRawlogMetadata(const FogSeries& s)
 {

@@ -79,6 +79,7 @@ void writeFogRawlog(const std::string& path, const FogSeries& fog, const std::ve
 	try
 	{
 		fog.validate();
+		io::requireOneLineMetadata(fog);
 	}
 	catch (const std::exception& e)
 	{

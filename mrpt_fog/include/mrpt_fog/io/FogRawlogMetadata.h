@@ -30,6 +30,11 @@ struct FogRawlogMetadata
 	std::vector<std::pair<std::string, std::string>> metadata;  //!< as FogSeries::metadata
 };
 
+/** Throws std::invalid_argument unless every piece of run metadata fits one `# key: value`
+ * line: non-empty sensor label without line breaks, keys without ':' or line breaks, values
+ * without line breaks. Both writers (CSV, rawlog) check this first. */
+void requireOneLineMetadata(const FogSeries& series);
+
 /** The comment text for a series (first line "# mrpt_fog metadata v1"). */
 std::string formatFogRawlogMetadata(const FogSeries& series);
 
