@@ -12,6 +12,9 @@ namespace mrpt_fog::drift
 std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string& cal_path)
 {
 	const Calibration cal = loadCalibrationYaml(cal_path);
+	if (cal.axis != GyroAxis::Z)
+		throw std::runtime_error(cal_path + ": calibration is for axis " + std::string(1, axisLetter(cal.axis)) +
+								 "; fog-drift compensates the vertical (z) gyro");
 	CompensatedSeries out;
 	try
 	{

@@ -12,8 +12,8 @@
 
 namespace mrpt_fog::drift
 {
-/** Compensated primary-axis rate [deg/h], one value per sample of fog. Throws on an
- * unreadable calibration or a layout mismatch (message names the file). */
+/** Compensated z-axis rate [deg/h], one value per sample of fog. Throws on an unreadable
+ * calibration, a calibration for another axis or a layout mismatch (message names the file). */
 std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string& cal_path);
 
 }  // namespace mrpt_fog::drift

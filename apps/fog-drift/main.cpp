@@ -104,8 +104,15 @@ int main(int argc, char** argv)
 			results.push_back(drift::deadReckonVariant(t, rate, drive, hopt));
 			variants.emplace_back(name, results.back().trajectory);
 		};
+		// The heading gyro is the vertical (z) axis; x/y axes of a triad are not used (planar drive).
+		auto verticalRate = [&](const FogSeries& s) -> const std::vector<double>& {
+			if (!s.has_axis[2])
+				throw std::runtime_error(in.getValue() + ": FOG '" + s.sensor_label +
+										 "' has no z (vertical) axis; fog-drift integrates the vertical gyro");
+			return s.rate_dph[2];
+		};
 		const std::vector<double> t_fog = drift::absoluteTimes(drive.fog);
-		run("raw", t_fog, drive.fog.primaryRate_dph());
+		run("raw", t_fog, verticalRate(drive.fog));
 		double cal_earth_dph = 0.0;  // vertical Earth rate inside the calibration's bias
 		if (!cal.getValue().empty())
 		{
@@ -116,7 +123,7 @@ int main(int argc, char** argv)
 			for (double& r : comp) r += cal_earth_dph;
 			run("compensated", t_fog, comp);
 		}
-		if (drive.fog_ideal) run("ideal", drift::absoluteTimes(*drive.fog_ideal), drive.fog_ideal->primaryRate_dph());
+		if (drive.fog_ideal) run("ideal", drift::absoluteTimes(*drive.fog_ideal), verticalRate(*drive.fog_ideal));
 
 		const nav::DriftReport rep = nav::computeDriftReport(drive.truth, variants);
 
