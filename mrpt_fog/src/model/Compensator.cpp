@@ -252,8 +252,10 @@ inline double kernelSumN(const double* tc, const double* ti, const double* tl, c
 		w = w < rl[c] ? rl[c] : w;
 		w = w > rh[c] ? rh[c] : w;
 		const double q = (w - rc[c]) * ri[c];
-		const double hT = ((((tp[4 * nc + c] * z + tp[3 * nc + c]) * z + tp[2 * nc + c]) * z + tp[nc + c]) * z + tp[c]) * z;
-		const double hR = ((rp[2 * nc + c] * q + rp[nc + c]) * q + rp[c]) * q;
+		// Estrin's scheme (shorter dependency chains than Horner: the loop is latency-bound).
+		const double z2 = z * z, q2 = q * q;
+		const double hT = z * ((tp[c] + tp[nc + c] * z) + z2 * ((tp[2 * nc + c] + tp[3 * nc + c] * z) + z2 * tp[4 * nc + c]));
+		const double hR = q * ((rp[c] + rp[nc + c] * q) + q2 * rp[2 * nc + c]);
 		acc += hT + hR;
 	}
 	clamped += cl;

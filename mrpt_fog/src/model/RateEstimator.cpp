@@ -57,6 +57,24 @@ std::unique_ptr<RateEstimator> makeRateEstimator(const RateEstimatorSettings& s)
 }
 
 // ---------------------------------------------------------------- CausalRateTracker
+namespace
+{
+/** One sample in, one out, every channel valid (the hot path; restrict: no aliasing). */
+void fusedUpdate(std::size_t nc, const double* __restrict x, const double* __restrict xo, const double* __restrict xr,
+				 double d1, double d2, double dto, double dtn, double* __restrict s1, double* __restrict s2,
+				 double* __restrict sx, double* __restrict stx)
+{
+	for (std::size_t c = 0; c < nc; c++)
+	{
+		const double dxo = xo[c] - xr[c], dxn = x[c] - xr[c];
+		s1[c] += d1;
+		s2[c] += d2;
+		sx[c] += dxn - dxo;
+		stx[c] += dtn * dxn - dto * dxo;
+	}
+}
+}  // namespace
+
 CausalRateTracker::CausalRateTracker(std::size_t channels, double window_s)
 	: channels_(channels), window_s_(window_s)
 {
@@ -164,16 +182,7 @@ void CausalRateTracker::push(double time_s, const double* x)
 		const double dto = t_[head_] - t_ref_, dtn = time_s - t_ref_;
 		const double d1 = dtn - dto, d2 = dtn * dtn - dto * dto;
 		if (new_all_valid && slot_all_valid_[head_])
-		{
-			for (std::size_t c = 0; c < channels_; c++)
-			{
-				const double dxo = xo[c] - XR[c], dxn = x[c] - XR[c];
-				S1[c] += d1;
-				S2[c] += d2;
-				SX[c] += dxn - dxo;
-				STX[c] += dtn * dxn - dto * dxo;
-			}
-		}
+			fusedUpdate(channels_, x, xo, XR, d1, d2, dto, dtn, S1, S2, SX, STX);
 		else
 			for (std::size_t c = 0; c < channels_; c++)
 			{
