@@ -372,6 +372,34 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 			pools.push_back(sub);
 		} while (std::prev_permutation(pick.begin(), pick.end()) && pools.size() < 256);
 	}
+	else if (opt.selection == "auto" && preset.kind == "multipoint" && fs.thermistors().size() > 1)
+	{
+		// Every subset of the thermistors is a candidate pool (up to 6 thermistors: 63 pools;
+		// beyond, the full set and the leave-one-out sets): greedy selection from the full pool
+		// can end in a worse held-out optimum than from a smaller pool, and the fit must never
+		// be worse (held out) than the same preset on fewer thermistors.
+		const auto& all = fs.thermistors();
+		const std::size_t n = all.size();
+		if (n <= 6)
+			for (std::size_t mask = (std::size_t{1} << n) - 1; mask >= 1; mask--)
+			{
+				std::vector<std::string> sub;
+				for (std::size_t i = 0; i < n; i++)
+					if (mask & (std::size_t{1} << i)) sub.push_back(all[i]);
+				pools.push_back(sub);
+			}
+		else
+		{
+			pools.push_back(all);
+			for (std::size_t d = 0; d < n; d++)
+			{
+				std::vector<std::string> sub;
+				for (std::size_t i = 0; i < n; i++)
+					if (i != d) sub.push_back(all[i]);
+				pools.push_back(sub);
+			}
+		}
+	}
 	else
 		pools.push_back(fs.thermistors());
 	const auto allowedFor = [&](const std::vector<std::string>& pool, const std::string& dropped) {

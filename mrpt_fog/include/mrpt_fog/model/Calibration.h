@@ -19,8 +19,10 @@
  *     `folds` contiguous time blocks of the single run (blocked k-fold);
  *  5. term selection (default "auto"): greedy forward selection of whole signal groups (e.g. all
  *     powers of T(Ti1)) and a ridge value from a grid, both by held-out (cross-validated) error;
- *     a group is added only if it lowers the held-out RMS. More thermistors only enlarge the
- *     candidate pool, so by construction they cannot make the cross-validated error worse.
+ *     a group is added only if it lowers the held-out RMS. For "multipoint" this runs from
+ *     every subset of the thermistors (up to 6; beyond, the full set and the leave-one-out
+ *     sets) and keeps the best: more thermistors only add candidates, so by construction they
+ *     cannot make the cross-validated error worse.
  *     "none" fits every preset term (plain least squares, optional fixed ridge): the seed's way,
  *     which generalises badly on collinear thermistors;
  *  6. fallback models: for each thermistor of the model, the same selection without it;
