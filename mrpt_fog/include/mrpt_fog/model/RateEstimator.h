@@ -7,10 +7,10 @@
  *
  *  - "causal" (CausalRateEstimator): slope of a least-squares line through the samples of the
  *    trailing window (t - window_s, t]. Uses only past samples, O(1) amortised per sample
- *    (running sums over a ring buffer, recomputed exactly once per buffer turn so round-off
+ *    (running sums over a ring buffer, recomputed exactly every 16 buffer turns so round-off
  *    cannot drift). Delay: for a smooth signal the slope is the derivative at the centre of the
  *    window, i.e. about window_s / 2 late. This is what the real-time compensator uses, and the
- *    fit uses it by default so that the compensator reproduces the fitted model exactly.
+ *    fit uses it by default so that the compensator reproduces the fitted model (to round-off).
  *  - "savgol" (SavitzkyGolayRateEstimator): derivative at t of a local polynomial (order 1..4)
  *    fitted by least squares over the centred window [t - window_s/2, t + window_s/2] (a
  *    Savitzky-Golay filter generalised to irregular timestamps). Non-causal, no delay; for
