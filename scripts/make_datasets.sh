@@ -51,6 +51,11 @@ done
 	echo "The .csv.gz twins hold the same FOG stream in the lab CSV format. The drive has no CSV twin:"
 	echo "its odometry and ground truth only fit a rawlog."
 	echo
+	echo "Bit-for-bit regeneration holds on the same platform (made on x86-64 Linux, GCC, glibc libm,"
+	echo "Eigen 3.4, MRPT 2.5). Another C library or compiler can change the last bits of floating-point"
+	echo "results (std::log/sin/cos in the noise generator, Eigen's eigen-decomposition), and then the"
+	echo "checksums differ even though the physics is the same."
+	echo
 	echo "| file | what | command |"
 	echo "|---|---|---|"
 	for run in "${RUNS[@]}"; do
