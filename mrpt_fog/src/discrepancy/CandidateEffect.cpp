@@ -88,7 +88,8 @@ std::vector<CandidateEffect> makeLibrary()
 		c.id = "thermistor_lag";
 		c.description =
 			"thermistor lag: the thermistors read the coil temperature late by tau, so the static model "
-			"f(T) misses tau * d/dt f(T)";
+			"f(T) misses tau * d/dt f(T) (tau < 0: the temperature driving the static bias leads the "
+			"thermistors, e.g. electronics)";
 		c.excited_by = "ramps and steps in temperature bands where the static bias slope differs";
 		c.coefficient_unit = "s (tau)";
 		c.coefficient_scale = 60.0;  // column is per minute
