@@ -70,13 +70,6 @@ void writeDriftPlots(const std::string& dir, const nav::Trajectory& truth, const
 		p.title = "Dead-reckoned trajectories (vertical FOG heading + wheel odometry) over the truth";
 		p.x_axis.label = "East [m]";
 		p.y_axis.label = "North [m]";
-		PlotSeries gt{"truth", {}, {}, plot_colour::kBlack, 2};
-		for (const auto& q : truth)
-		{
-			gt.x.push_back(q.x_m);
-			gt.y.push_back(q.y_m);
-		}
-		p.addSeries(gt);
 		for (const auto& [name, traj] : variants)
 		{
 			PlotSeries s{name, {}, {}, colourOf(name), 1};
@@ -87,6 +80,14 @@ void writeDriftPlots(const std::string& dir, const nav::Trajectory& truth, const
 			}
 			p.addSeries(s);
 		}
+		PlotSeries gt{"truth", {}, {}, plot_colour::kBlack, 1};
+		gt.dashed = true;  // drawn last, dashed: visible over the variants it should match
+		for (const auto& q : truth)
+		{
+			gt.x.push_back(q.x_m);
+			gt.y.push_back(q.y_m);
+		}
+		p.addSeries(gt);
 		fig.save(dir + "/trajectories.png");
 	}
 	{
