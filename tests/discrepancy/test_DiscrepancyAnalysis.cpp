@@ -3,6 +3,7 @@
 #include <mrpt_fog/discrepancy/DiscrepancyAnalysis.h>
 #include <mrpt_fog/discrepancy/SyntheticChamberRun.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -35,12 +36,20 @@ TEST(DiscrepancyAnalysis, ReportsNamedEffectGapAndSegments)
 	EXPECT_LT(rep.gap_confirm.after.rms_dph, rep.gap_confirm.before.rms_dph);
 	EXPECT_LT(rep.gap.after.stability_dph, rep.gap.before.stability_dph);
 	EXPECT_FALSE(rep.gap.segments.empty());
+	// per-segment figures: the top segment's RMS agrees with the ranking, and long segments
+	// have a 100 s stability
+	const auto& top = rep.gap.segments.front();
+	EXPECT_NEAR(top.before.rms_dph, top.segment.rms_dph, 1e-12);
+	bool anyStability = false;
+	for (const auto& sg : rep.gap.segments) anyStability = anyStability || std::isfinite(sg.before.stability_dph);
+	EXPECT_TRUE(anyStability);
 	EXPECT_NE(rep.verdict().find("hysteresis"), std::string::npos);
 
 	const std::string json = discrepancyJson(rep).dump();
 	for (const char* key : {"\"named_effects\"", "\"alias_group\"", "\"confidence\"", "\"coefficient\"", "\"ci\"",
 							"\"segments\"", "\"gap\"", "\"before\"", "\"after\"", "\"rms_dph\"", "\"gap_confirm\"",
-							"\"stability_dph\"", "\"range_dph\"", "\"where\""})
+							"\"stability_dph\"", "\"range_dph\"", "\"where\"",
+							"\"stability_before_dph\""})
 		EXPECT_NE(json.find(key), std::string::npos) << key;
 	const std::string text = discrepancyText(rep);
 	EXPECT_NE(text.find("Verdict: missing: hysteresis"), std::string::npos) << text;

@@ -43,6 +43,10 @@ RunGap makeRunGap(const std::string& label, const RunSignals& sig, const std::ve
 		for (const auto& a : afterRank.ranked)
 			if (a.begin == s.begin) sg.rms_after_dph = a.rms_dph;
 		sg.flagged = s.usable > 0 && s.rms_dph >= opt.flag_rms_ratio * g.ranking_before.run_rms_dph;
+		std::vector<unsigned char> segRows(rows.size(), 0);
+		for (std::size_t k = s.begin; k < s.end && k < rows.size(); ++k) segRows[k] = rows[k];
+		sg.before = gapFigures(sig.time_s, before, segRows, opt.tau_s);
+		sg.after = gapFigures(sig.time_s, after, segRows, opt.tau_s);
 		g.segments.push_back(sg);
 	}
 	return g;
@@ -76,6 +80,10 @@ JsonValue runGapJson(const RunGap& g, double tau_s)
 		e["t_end_s"] = s.segment.t_end_s;
 		e["rms_before_dph"] = s.segment.rms_dph;
 		e["rms_after_dph"] = s.rms_after_dph;
+		e["stability_before_dph"] = s.before.stability_dph;
+		e["stability_after_dph"] = s.after.stability_dph;
+		e["range_before_dph"] = s.before.range_dph;
+		e["range_after_dph"] = s.after.range_dph;
 		segs.push_back(e);
 	}
 	j["segments"] = segs;
@@ -227,6 +235,10 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 		e["mean_temp_C"] = s.segment.mean_temp_C;
 		e["rms_before_dph"] = s.segment.rms_dph;
 		e["rms_after_dph"] = s.rms_after_dph;
+		e["stability_before_dph"] = s.before.stability_dph;
+		e["stability_after_dph"] = s.after.stability_dph;
+		e["range_before_dph"] = s.before.range_dph;
+		e["range_after_dph"] = s.after.range_dph;
 		e["energy_share"] = s.segment.energy_share;
 		e["time_share"] = s.segment.time_share;
 		e["flagged"] = s.flagged;
@@ -354,10 +366,11 @@ void saveGapPlot(const RunGap& g, const std::string& path, const std::string& ti
 			lo = std::min(lo, v);
 			hi = std::max(hi, v);
 		}
+	const double pad = 0.05 * std::max(hi - lo, 1e-3);
 	for (auto* p : {&top, &bottom})
 	{
-		p->y_axis.min = lo;
-		p->y_axis.max = hi > lo ? hi : lo + 1e-3;
+		p->y_axis.min = lo - pad;
+		p->y_axis.max = hi + pad;
 	}
 	PlotSeries b{"before", g.time_s, g.residual_before_dph};
 	b.colour = plot_colour::kRed;

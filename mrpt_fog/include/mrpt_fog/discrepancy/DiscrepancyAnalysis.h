@@ -39,6 +39,8 @@ struct SegmentGap
 {
 	Segment segment;  //!< with the BEFORE ranking fields
 	double rms_after_dph = 0;
+	/** Residual figures over the segment's samples (stability/range NaN below two windows). */
+	GapFigures before, after;
 	bool flagged = false;
 };
 
