@@ -4,16 +4,17 @@
 /** \file EffectSelector.h
  * Names the physical effect(s) a bias model is missing, by greedy forward selection over the
  * candidate library (CandidateEffect.h), strongest first:
- *  1. fit the model, flag outliers (robust 6-sigma on the AR-whitened residual);
+ *  1. fit the model, flag outliers (robust 6-sigma on the ARMA-whitened residual);
  *  2. skip candidates the model already spans (projection residual of their columns onto the
  *     model's columns below `span_tolerance` of their own spread);
- *  3. every model compared (current model, model + one candidate, ...) is fitted by feasible
- *     GLS: OLS, an ARMA(p,1) noise model of its own residual, whitened LS on rows common to all
- *     models; its whitened RSS is its conditional Gaussian likelihood, so a candidate is judged
- *     by the likelihood ratio n ln(RSS0/RSS1), deflated by the Bartlett long-run variance
- *     factor of what the whitening left. (A single noise model for all candidates was tried:
- *     estimated from the current model's residual it swallows localized effects such as warm-up
- *     (power 1/30 at ratio 1); from model + all candidates, null chi-squares were ~1.5x too big.)
+ *  3. every model compared (current model, model + one candidate, model + two...) is fitted
+ *     by feasible GLS with its OWN noise model: ARMA(1,1) (Gauss-Markov bias + white noise)
+ *     estimated by REML for that design (WhitenedRegression.h), exact start of each block; a
+ *     candidate is judged by the Wald chi-square of its columns under the noise model of the
+ *     model that contains it, deflated by the Bartlett long-run variance factor of what the
+ *     whitening left. (A single noise model for all candidates was tried: from the current
+ *     model's residual it swallows localized effects such as warm-up, power 1/30 at ratio 1;
+ *     from model + all candidates, null chi-squares were ~1.5x too big.)
  *  4. per candidate: that chi-square, nonlinear parameters by profile search (Sidak-corrected
  *     over the grid), BIC gain vs the model, Holm correction over the candidates;
  *     significant = adjusted p < alpha and BIC gain > 0;
@@ -24,7 +25,8 @@
  *     beyond c (conditional test p > alias_alpha); the profile that would separate them is
  *     reported. Candidates the best explains are dropped; the best's columns are added and the
  *     search repeats until nothing is significant.
- * Confidence = BIC weight of the named id against its alias group and "no effect".
+ * Confidence = BIC weight of the named id against its alias group and "no effect" (shared
+ * equally inside a group with collinear members, whose BIC differences are not evidence).
  */
 
 #include <mrpt_fog/discrepancy/BaseModelDesign.h>
