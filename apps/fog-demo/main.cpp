@@ -178,8 +178,12 @@ int main(int argc, char** argv)
 				 {run.program("fog-drift"), "-i", ds.drive, "--cal", cal, "--json", (json / "drift.json").string(), "--plots",
 				  (plots / "drift").string(), "--odometry-out", (out / "odometry_compensated.rawlog").string()}});
 		if (have_paper)
-			run.run({"paper", "reproducing the seed paper's Tables 1-3 (fog-paper)",
-					 {run.program("fog-paper"), "--json", (json / "paper.json").string(), "--plots", (plots / "paper").string()}});
+		{
+			fs::create_directories(plots / "paper");
+			run.run({"paper", "reproducing the seed paper's Tables 1-3 on runs A and B (fog-paper)",
+					 {run.program("fog-paper"), "--run-a", ds.chamber_A, "--run-b", ds.chamber_B, "--json",
+					  (json / "paper.json").string(), "--plots", (plots / "paper").string()}});
+		}
 
 		const JsonFigures evA((json / "evaluate_A.json").string());
 		const JsonFigures evB((json / "evaluate_B.json").string());

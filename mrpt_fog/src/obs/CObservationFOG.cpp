@@ -202,7 +202,7 @@ std::string CObservationFOG::exportTxtDataRow() const
 	s.precision(10);
 	auto put = [&](bool present, double v) {
 		s << ' ';
-		if (present) s << v;
+		if (present && std::isfinite(v)) s << v;
 		else s << "NaN";
 	};
 	for (int a = 0; a < 3; a++) put(hasAxis[a], rate_dph[a]);
