@@ -100,7 +100,7 @@ void CausalRateTracker::dropOldest()
 {
 	const std::size_t cap = t_.size();
 	const double dt = t_[head_] - t_ref_;
-	const double* xs = &x_[head_ * channels_];
+	const double* xs = x_.data() + (head_ * channels_);
 	for (std::size_t c = 0; c < channels_; c++)
 	{
 		if (std::isnan(xs[c])) continue;
@@ -178,7 +178,7 @@ void CausalRateTracker::push(double time_s, const double* x)
 		since_rebuild_ + 1 < 16 * t_.size())
 	{
 		const std::size_t cap = t_.size();
-		const double* xo = &x_[head_ * channels_];
+		const double* xo = x_.data() + (head_ * channels_);
 		const double dto = t_[head_] - t_ref_, dtn = time_s - t_ref_;
 		const double d1 = dtn - dto, d2 = dtn * dtn - dto * dto;
 		if (new_all_valid && slot_all_valid_[head_])
@@ -225,7 +225,7 @@ void CausalRateTracker::push(double time_s, const double* x)
 		nan_slots_ += static_cast<std::size_t>(!new_all_valid) - static_cast<std::size_t>(!slot_all_valid_[head_]);
 		t_[slot] = time_s;
 		slot_all_valid_[slot] = new_all_valid;
-		double* xs = &x_[slot * channels_];
+		double* xs = x_.data() + (slot * channels_);
 		for (std::size_t c = 0; c < channels_; c++) xs[c] = x[c];
 		head_ = (head_ + 1) & (cap - 1);
 		since_rebuild_++;
@@ -261,7 +261,7 @@ void CausalRateTracker::push(double time_s, const double* x)
 	t_[slot] = time_s;
 	slot_all_valid_[slot] = new_all_valid;
 	nan_slots_ += !new_all_valid;
-	double* xs = &x_[slot * channels_];
+	double* xs = x_.data() + (slot * channels_);
 	const double dt = time_s - t_ref_;
 	for (std::size_t c = 0; c < channels_; c++)
 	{
