@@ -166,3 +166,19 @@ TEST(Compensator, LayoutMismatchAndNonCausalCalibrationRefused)
 	sg.rate_estimator = {"savgol", 60, 2};
 	EXPECT_THROW(Compensator(sg, s.thermistors), std::invalid_argument);
 }
+
+// A model that kept only the constant (nothing lowered the held-out error enough) still
+// compensates: the bias is the constant, no thermistor is tracked.
+TEST(Compensator, ConstantOnlyModel)
+{
+	FogSeries s = fogtest::makeCoilRun("A", 55);
+	FitOptions o;
+	o.min_relative_gain = 0.99;  // no group can lower the held-out RMS by 99 %
+	const Calibration cal = fitCalibration({s}, "multipoint", o);
+	ASSERT_EQ(cal.model.features.termCount(), 1u);
+	EXPECT_TRUE(cal.fallbacks.empty());
+	s.resize(500);
+	const CompensatedSeries c = compensate(cal, s);
+	for (std::size_t k = 0; k < c.bias_dph.size(); k++) ASSERT_EQ(c.bias_dph[k], cal.model.coef_dph[0]);
+	EXPECT_EQ(c.counters.no_model_samples, 0u);
+}
