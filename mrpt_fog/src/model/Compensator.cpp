@@ -1,6 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/model/Compensator.h>
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <limits>
 #include <cmath>
@@ -44,27 +45,30 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 	const std::size_t nc = names.size();
 	const double inf = std::numeric_limits<double>::infinity();
 	ChannelKernel& K = c.kernel;
-	K.t_centre.assign(nc, 0.0);
-	K.t_inv.assign(nc, 0.0);
-	K.t_lo.assign(nc, -inf);
-	K.t_hi.assign(nc, inf);
-	K.t_p.assign(5 * nc, 0.0);
-	K.r_centre.assign(nc, 0.0);
-	K.r_inv.assign(nc, 0.0);
-	K.r_lo.assign(nc, -inf);
-	K.r_hi.assign(nc, inf);
-	K.r_p.assign(3 * nc, 0.0);
+	K.resize((nc + 3) / 4);
+	for (KernelBlock& b : K)
+		for (int j = 0; j < 4; j++)
+		{
+			b.t_centre[j] = b.r_centre[j] = 0.0;
+			b.t_inv[j] = b.r_inv[j] = 0.0;
+			b.t_lo[j] = b.r_lo[j] = -inf;
+			b.t_hi[j] = b.r_hi[j] = inf;
+			for (auto& p : b.t_p) p[j] = 0.0;
+			for (auto& p : b.r_p) p[j] = 0.0;
+		}
 	for (std::size_t s = 0; s < fs.signals().size(); s++)
 	{
 		const auto& sig = fs.signals()[s];
 		if (sig.isDifference()) continue;
 		const auto& nm = fs.normalisation()[s];
 		const int ch = chan(sig.a);
+		KernelBlock& b = K[ch / 4];
+		const int j = ch % 4;
 		const bool t = sig.kind == SignalKind::Temp;
-		(t ? K.t_centre : K.r_centre)[ch] = nm.centre;
-		(t ? K.t_inv : K.r_inv)[ch] = 1.0 / nm.scale;
-		(t ? K.t_lo : K.r_lo)[ch] = nm.min;
-		(t ? K.t_hi : K.r_hi)[ch] = nm.max;
+		(t ? b.t_centre : b.r_centre)[j] = nm.centre;
+		(t ? b.t_inv : b.r_inv)[j] = 1.0 / nm.scale;
+		(t ? b.t_lo : b.r_lo)[j] = nm.min;
+		(t ? b.t_hi : b.r_hi)[j] = nm.max;
 		c.uses |= 1u << ch;
 	}
 	std::vector<int> group_of(fs.signals().size()), index_in(fs.signals().size());
@@ -106,7 +110,8 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 		{
 			const int ch = chan(sig.a);
 			const int k = fs.terms()[i].power;
-			(sig.kind == SignalKind::Temp ? K.t_p : K.r_p)[static_cast<std::size_t>(k - 1) * nc + ch] += m.coef_dph.at(i);
+			KernelBlock& b = K[ch / 4];
+			(sig.kind == SignalKind::Temp ? b.t_p : b.r_p)[k - 1][ch % 4] += m.coef_dph.at(i);
 			continue;
 		}
 		SignalGroup& g = c.groups[group_of[s]];
@@ -157,9 +162,9 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 		has_fallback_.push_back(fb != nullptr);
 		models_.push_back(fb ? compile(*fb, names) : Compiled{});
 	}
-	temp_.assign(names.size(), 0.0);
-	rate_.assign(names.size(), 0.0);
-	x_.assign(names.size(), 0.0);
+	const std::size_t padded = 4 * ((names.size() + 3) / 4);
+	temp_.assign(padded, 0.0);  // padding lanes stay 0: finite, never clamped, zero coefficients
+	rate_.assign(padded, 0.0);
 }
 
 void Compensator::reset()
@@ -229,55 +234,42 @@ double groupSumAnyDegree(int degree, const int* a, const int* b, const double* s
 }
 }  // namespace
 
-namespace
-{
-/** The per-channel T / dT/dt polynomials; NC > 0: compile-time channel count (fully unrolled). */
-template <std::size_t NC>
-inline double kernelSumN(const double* tc, const double* ti, const double* tl, const double* th, const double* tp,
-						 const double* rc, const double* ri, const double* rl, const double* rh, const double* rp,
-						 const double* T, const double* R, std::size_t nc_rt, int& clamped)
-{
-	const std::size_t nc = NC ? NC : nc_rt;
-	int cl = 0;
-	double acc = 0;
-	for (std::size_t c = 0; c < nc; c++)
-	{
-		double v = T[c];
-		cl += (v < tl[c]) + (v > th[c]);
-		v = v < tl[c] ? tl[c] : v;
-		v = v > th[c] ? th[c] : v;
-		const double z = (v - tc[c]) * ti[c];
-		double w = R[c];
-		cl += (w < rl[c]) + (w > rh[c]);
-		w = w < rl[c] ? rl[c] : w;
-		w = w > rh[c] ? rh[c] : w;
-		const double q = (w - rc[c]) * ri[c];
-		// Estrin's scheme (shorter dependency chains than Horner: the loop is latency-bound).
-		const double z2 = z * z, q2 = q * q;
-		const double hT = z * ((tp[c] + tp[nc + c] * z) + z2 * ((tp[2 * nc + c] + tp[3 * nc + c] * z) + z2 * tp[4 * nc + c]));
-		const double hR = q * ((rp[c] + rp[nc + c] * q) + q2 * rp[2 * nc + c]);
-		acc += hT + hR;
-	}
-	clamped += cl;
-	return acc;
-}
-}  // namespace
-
 double Compensator::kernelSum(const ChannelKernel& K, const double* T, const double* R, int& clamped)
 {
-	const std::size_t nc = K.t_centre.size();
-#define FOG_KERNEL(N)                                                                                              \
-	kernelSumN<N>(K.t_centre.data(), K.t_inv.data(), K.t_lo.data(), K.t_hi.data(), K.t_p.data(), K.r_centre.data(), \
-				  K.r_inv.data(), K.r_lo.data(), K.r_hi.data(), K.r_p.data(), T, R, nc, clamped)
-	switch (nc)
+	using A4 = Eigen::Array4d;
+	using M4 = Eigen::Map<const A4, Eigen::Aligned16>;  // KernelBlock members
+	using U4 = Eigen::Map<const A4>;
+	A4 acc = A4::Zero();
+	A4 moved = A4::Zero();  // sum of |clamped - raw|: > 0 iff some signal was clamped
+	for (std::size_t blk = 0; blk < K.size(); blk++)
 	{
-		case 1: return FOG_KERNEL(1);
-		case 2: return FOG_KERNEL(2);
-		case 3: return FOG_KERNEL(3);
-		case 4: return FOG_KERNEL(4);
-		default: return FOG_KERNEL(0);
+		const KernelBlock& b = K[blk];
+		const A4 v = U4(T + 4 * blk), w = U4(R + 4 * blk);
+		const A4 vc = v.max(M4(b.t_lo)).min(M4(b.t_hi)), wc = w.max(M4(b.r_lo)).min(M4(b.r_hi));
+		moved += (vc - v).abs() + (wc - w).abs();
+		const A4 z = (vc - M4(b.t_centre)) * M4(b.t_inv), q = (wc - M4(b.r_centre)) * M4(b.r_inv);
+		const A4 z2 = z * z, q2 = q * q;
+		// Estrin's scheme (shorter dependency chains than Horner: the evaluation is latency-bound).
+		const A4 hT = z * ((M4(b.t_p[0]) + M4(b.t_p[1]) * z) + z2 * ((M4(b.t_p[2]) + M4(b.t_p[3]) * z) + z2 * M4(b.t_p[4])));
+		const A4 hR = q * ((M4(b.r_p[0]) + M4(b.r_p[1]) * q) + q2 * M4(b.r_p[2]));
+		acc += hT + hR;
 	}
-#undef FOG_KERNEL
+	// Clamping is rare: one predictable test here, the exact count only when it happened.
+	if (moved.maxCoeff() > 0) clamped += countClamped(K, T, R);
+	return acc.sum();
+}
+
+int Compensator::countClamped(const ChannelKernel& K, const double* T, const double* R)
+{
+	int cl = 0;
+	for (std::size_t blk = 0; blk < K.size(); blk++)
+		for (int j = 0; j < 4; j++)
+		{
+			const KernelBlock& b = K[blk];
+			const double v = T[4 * blk + j], w = R[4 * blk + j];
+			cl += (v < b.t_lo[j]) + (v > b.t_hi[j]) + (w < b.r_lo[j]) + (w > b.r_hi[j]);
+		}
+	return cl;
 }
 
 double Compensator::evaluate(const Compiled& m, int& clamped) const
@@ -300,19 +292,20 @@ double Compensator::evaluate(const Compiled& m, int& clamped) const
 Compensator::Output Compensator::step(double time_s, double raw_dph, const double* temp_C)
 {
 	const std::size_t nc = channel_col_.size();
-	for (std::size_t c = 0; c < nc; c++) x_[c] = temp_C[channel_col_[c]];
-	tracker_.push(time_s, x_.data());
+	for (std::size_t c = 0; c < nc; c++) temp_[c] = temp_C[channel_col_[c]];
+	tracker_.push(time_s, temp_.data());
 	const std::uint32_t short_span = tracker_.ratesAndCoverage(rate_.data(), 0.5 * window_s_);
+	// One predictable test for the common case: the sum is NaN if any reading or rate is.
+	double all = 0.0;
+	for (std::size_t c = 0; c < nc; c++) all += temp_[c] + rate_[c];
 	std::uint32_t missing = 0;
-	for (std::size_t c = 0; c < nc; c++)
-	{
-		temp_[c] = x_[c];
-		if (std::isnan(temp_[c]) || std::isnan(rate_[c]))
-		{
-			missing |= 1u << c;
-			temp_[c] = rate_[c] = 0.0;  // never read by the model in use
-		}
-	}
+	if (std::isnan(all))  // dropout (rare): zero the missing channels, never read by the model in use
+		for (std::size_t c = 0; c < nc; c++)
+			if (std::isnan(temp_[c]) || std::isnan(rate_[c]))
+			{
+				missing |= 1u << c;
+				temp_[c] = rate_[c] = 0.0;
+			}
 	// Main model unless it reads a missing channel; then the fallback without that channel if
 	// it reads no other missing channel; else none.
 	int model = -1;

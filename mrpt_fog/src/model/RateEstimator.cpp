@@ -59,19 +59,33 @@ std::unique_ptr<RateEstimator> makeRateEstimator(const RateEstimatorSettings& s)
 // ---------------------------------------------------------------- CausalRateTracker
 namespace
 {
-/** One sample in, one out, every channel valid (the hot path; restrict: no aliasing). */
-void fusedUpdate(std::size_t nc, const double* __restrict x, const double* __restrict xo, const double* __restrict xr,
-				 double d1, double d2, double dto, double dtn, double* __restrict s1, double* __restrict s2,
-				 double* __restrict sx, double* __restrict stx)
+/** One sample in, one out, every channel valid (the hot path; restrict: no aliasing). NC > 0:
+ * compile-time channel count, evaluated as fixed-size vector operations. */
+template <std::size_t NC>
+[[gnu::always_inline]] inline void fusedUpdate(std::size_t nc, const double* __restrict x, const double* __restrict xo,
+						const double* __restrict xr, double d1, double d2, double dto, double dtn, double* __restrict s1,
+						double* __restrict s2, double* __restrict sx, double* __restrict stx)
 {
-	for (std::size_t c = 0; c < nc; c++)
+	if constexpr (NC > 0)
 	{
-		const double dxo = xo[c] - xr[c], dxn = x[c] - xr[c];
-		s1[c] += d1;
-		s2[c] += d2;
-		sx[c] += dxn - dxo;
-		stx[c] += dtn * dxn - dto * dxo;
+		using A = Eigen::Array<double, static_cast<int>(NC), 1>;
+		using CM = Eigen::Map<const A>;
+		using M = Eigen::Map<A>;
+		const A dxo = CM(xo) - CM(xr), dxn = CM(x) - CM(xr);
+		M(s1) += d1;
+		M(s2) += d2;
+		M(sx) += dxn - dxo;
+		M(stx) += dtn * dxn - dto * dxo;
 	}
+	else
+		for (std::size_t c = 0; c < nc; c++)
+		{
+			const double dxo = xo[c] - xr[c], dxn = x[c] - xr[c];
+			s1[c] += d1;
+			s2[c] += d2;
+			sx[c] += dxn - dxo;
+			stx[c] += dtn * dxn - dto * dxo;
+		}
 }
 }  // namespace
 
@@ -149,8 +163,44 @@ void CausalRateTracker::rebuildSums()
 	nan_since_rebuild_ = nan_slots_ > 0;
 }
 
-void CausalRateTracker::push(double time_s, const double* x)
+template <std::size_t NC>
+inline bool CausalRateTracker::pushSteady(double time_s, const double* x)
 {
+	// The steady state of uniform sampling, taken by nearly every sample: the time is valid,
+	// exactly one sample leaves the window as this one enters, both have every channel valid and
+	// no exact rebuild is due. Anything else returns false with nothing changed, and pushN()
+	// (which validates and handles every case) runs instead. The arithmetic is pushN's.
+	const std::size_t nc = NC ? NC : channels_;
+	const std::size_t mask = t_.size() - 1;  // capacity is a power of two
+	const double t_out = time_s - window_s_;
+	if (!(count_ >= 2 && time_s > last_t_ && time_s < std::numeric_limits<double>::infinity() &&
+		  t_[head_] <= t_out && t_[(head_ + 1) & mask] > t_out && since_rebuild_ + 1 < 16 * t_.size() &&
+		  slot_all_valid_[head_]))
+		return false;
+	// Sum of the values: NaN if one is NaN (or +inf meets -inf, which pushN also handles).
+	double all = 0.0;
+	for (std::size_t c = 0; c < nc; c++) all += x[c];
+	if (std::isnan(all)) return false;
+	last_t_ = time_s;
+	const double dto = t_[head_] - t_ref_, dtn = time_s - t_ref_;
+	const double d1 = dtn - dto, d2 = dtn * dtn - dto * dto;
+	const double* xo = x_.data() + (head_ * nc);
+	fusedUpdate<NC>(nc, x, xo, x_ref_.data(), d1, d2, dto, dtn, s1_.data(), s2_.data(), sx_.data(), stx_.data());
+	// the new sample goes after the newest; the leaving one's slot is freed (head advances)
+	const std::size_t slot = (head_ + count_) & mask;
+	double* xs = x_.data() + (slot * nc);
+	for (std::size_t c = 0; c < nc; c++) xs[c] = x[c];
+	t_[slot] = time_s;
+	slot_all_valid_[slot] = 1;  // one valid slot in, one out: nan_slots_ unchanged
+	head_ = (head_ + 1) & mask;
+	since_rebuild_++;
+	return true;
+}
+
+template <std::size_t NC>
+[[gnu::noinline]] void CausalRateTracker::pushN(double time_s, const double* x)
+{
+	const std::size_t nc = NC ? NC : channels_;  // NC > 0: loops over channels fully unrolled
 	if (!std::isfinite(time_s)) throw std::invalid_argument("CausalRateTracker: time is not finite");
 	if (any_ && !(time_s > last_t_))
 		throw std::invalid_argument("CausalRateTracker: time not strictly increasing (" + std::to_string(time_s) +
@@ -162,7 +212,7 @@ void CausalRateTracker::push(double time_s, const double* x)
 	}
 	last_t_ = time_s;
 	bool new_all_valid = true;
-	for (std::size_t c = 0; c < channels_; c++) new_all_valid &= !std::isnan(x[c]);
+	for (std::size_t c = 0; c < nc; c++) new_all_valid &= !std::isnan(x[c]);
 	if (!new_all_valid) nan_since_rebuild_ = true;
 	double* S1 = s1_.data();
 	double* S2 = s2_.data();
@@ -178,13 +228,13 @@ void CausalRateTracker::push(double time_s, const double* x)
 		since_rebuild_ + 1 < 16 * t_.size())
 	{
 		const std::size_t cap = t_.size();
-		const double* xo = x_.data() + (head_ * channels_);
+		const double* xo = x_.data() + (head_ * nc);
 		const double dto = t_[head_] - t_ref_, dtn = time_s - t_ref_;
 		const double d1 = dtn - dto, d2 = dtn * dtn - dto * dto;
 		if (new_all_valid && slot_all_valid_[head_])
-			fusedUpdate(channels_, x, xo, XR, d1, d2, dto, dtn, S1, S2, SX, STX);
+			fusedUpdate<NC>(nc, x, xo, XR, d1, d2, dto, dtn, S1, S2, SX, STX);
 		else
-			for (std::size_t c = 0; c < channels_; c++)
+			for (std::size_t c = 0; c < nc; c++)
 			{
 				const bool old_ok = !std::isnan(xo[c]), new_ok = !std::isnan(x[c]);
 				if (old_ok && new_ok)
@@ -225,8 +275,8 @@ void CausalRateTracker::push(double time_s, const double* x)
 		nan_slots_ += static_cast<std::size_t>(!new_all_valid) - static_cast<std::size_t>(!slot_all_valid_[head_]);
 		t_[slot] = time_s;
 		slot_all_valid_[slot] = new_all_valid;
-		double* xs = x_.data() + (slot * channels_);
-		for (std::size_t c = 0; c < channels_; c++) xs[c] = x[c];
+		double* xs = x_.data() + (slot * nc);
+		for (std::size_t c = 0; c < nc; c++) xs[c] = x[c];
 		head_ = (head_ + 1) & (cap - 1);
 		since_rebuild_++;
 		return;
@@ -236,20 +286,20 @@ void CausalRateTracker::push(double time_s, const double* x)
 	if (count_ == 0)
 	{
 		t_ref_ = time_s;  // empty window (start or after a gap): fresh time reference
-		for (std::size_t c = 0; c < channels_; c++) S1[c] = S2[c] = SX[c] = STX[c] = 0.0;
+		for (std::size_t c = 0; c < nc; c++) S1[c] = S2[c] = SX[c] = STX[c] = 0.0;
 	}
 	// Grow the ring when full (irregular sampling: the count per window is not known a priori).
 	if (count_ == t_.size())
 	{
 		const std::size_t cap = t_.size();
-		std::vector<double> t2(cap * 2), x2(cap * 2 * channels_);
+		std::vector<double> t2(cap * 2), x2(cap * 2 * nc);
 		std::vector<unsigned char> v2(cap * 2);
 		for (std::size_t i = 0; i < count_; i++)
 		{
 			const std::size_t slot = (head_ + i) & (cap - 1);
 			t2[i] = t_[slot];
 			v2[i] = slot_all_valid_[slot];
-			for (std::size_t c = 0; c < channels_; c++) x2[i * channels_ + c] = x_[slot * channels_ + c];
+			for (std::size_t c = 0; c < nc; c++) x2[i * nc + c] = x_[slot * nc + c];
 		}
 		t_.swap(t2);
 		x_.swap(x2);
@@ -261,9 +311,9 @@ void CausalRateTracker::push(double time_s, const double* x)
 	t_[slot] = time_s;
 	slot_all_valid_[slot] = new_all_valid;
 	nan_slots_ += !new_all_valid;
-	double* xs = x_.data() + (slot * channels_);
+	double* xs = x_.data() + (slot * nc);
 	const double dt = time_s - t_ref_;
-	for (std::size_t c = 0; c < channels_; c++)
+	for (std::size_t c = 0; c < nc; c++)
 	{
 		xs[c] = x[c];
 		if (std::isnan(x[c])) continue;
@@ -285,6 +335,29 @@ void CausalRateTracker::push(double time_s, const double* x)
 	if (++since_rebuild_ >= 16 * cap) rebuildSums();
 }
 
+void CausalRateTracker::push(double time_s, const double* x)
+{
+	// Compile-time channel counts for the common small layouts (no loop overhead per channel);
+	// the steady-state fast path first, the general update otherwise.
+	switch (channels_)
+	{
+		case 1:
+			if (!pushSteady<1>(time_s, x)) pushN<1>(time_s, x);
+			return;
+		case 2:
+			if (!pushSteady<2>(time_s, x)) pushN<2>(time_s, x);
+			return;
+		case 3:
+			if (!pushSteady<3>(time_s, x)) pushN<3>(time_s, x);
+			return;
+		case 4:
+			if (!pushSteady<4>(time_s, x)) pushN<4>(time_s, x);
+			return;
+		default:
+			if (!pushSteady<0>(time_s, x)) pushN<0>(time_s, x);
+	}
+}
+
 double CausalRateTracker::rate(std::size_t c) const
 {
 	const double n = n_[c];
@@ -294,15 +367,17 @@ double CausalRateTracker::rate(std::size_t c) const
 	return (n * stx_[c] - s1_[c] * sx_[c]) * (1.0 / den);
 }
 
-std::uint32_t CausalRateTracker::ratesAndCoverage(double* rate_out, double min_span_s) const
+template <std::size_t NC>
+std::uint32_t CausalRateTracker::ratesAndCoverageN(double* rate_out, double min_span_s) const
 {
+	const std::size_t nc = NC ? NC : channels_;
 	const double span2 = min_span_s * min_span_s;
 	const double* S1 = s1_.data();
 	const double* S2 = s2_.data();
 	const double* SX = sx_.data();
 	const double* STX = stx_.data();
 	const double* N = n_.data();
-	if (channels_ > 0 && nan_slots_ == 0 && !nan_since_rebuild_)
+	if (nc > 0 && nan_slots_ == 0 && !nan_since_rebuild_)
 	{
 		// Shared time sums: one reciprocal for all channels (bitwise the per-channel value).
 		const double n = N[0];
@@ -310,16 +385,16 @@ std::uint32_t CausalRateTracker::ratesAndCoverage(double* rate_out, double min_s
 		const bool ok = n >= 2 && den > 0;
 		if (!ok)
 		{
-			for (std::size_t c = 0; c < channels_; c++) rate_out[c] = kNaN;
-			return channels_ >= 32 ? ~0u : ((1u << channels_) - 1u);
+			for (std::size_t c = 0; c < nc; c++) rate_out[c] = kNaN;
+			return nc >= 32 ? ~0u : ((1u << nc) - 1u);
 		}
 		const double inv = 1.0 / den, s1 = S1[0];
-		for (std::size_t c = 0; c < channels_; c++) rate_out[c] = (n * STX[c] - s1 * SX[c]) * inv;
+		for (std::size_t c = 0; c < nc; c++) rate_out[c] = (n * STX[c] - s1 * SX[c]) * inv;
 		const bool short_span = !(12.0 * den >= span2 * n * n);
-		return short_span ? (channels_ >= 32 ? ~0u : ((1u << channels_) - 1u)) : 0u;
+		return short_span ? (nc >= 32 ? ~0u : ((1u << nc) - 1u)) : 0u;
 	}
 	std::uint32_t short_mask = 0;
-	for (std::size_t c = 0; c < channels_; c++)
+	for (std::size_t c = 0; c < nc; c++)
 	{
 		const double n = N[c];
 		const double den = n * S2[c] - S1[c] * S1[c];
@@ -329,6 +404,18 @@ std::uint32_t CausalRateTracker::ratesAndCoverage(double* rate_out, double min_s
 		if (!(ok && 12.0 * den >= span2 * n * n)) short_mask |= (1u << c);
 	}
 	return short_mask;
+}
+
+std::uint32_t CausalRateTracker::ratesAndCoverage(double* rate_out, double min_span_s) const
+{
+	switch (channels_)
+	{
+		case 1: return ratesAndCoverageN<1>(rate_out, min_span_s);
+		case 2: return ratesAndCoverageN<2>(rate_out, min_span_s);
+		case 3: return ratesAndCoverageN<3>(rate_out, min_span_s);
+		case 4: return ratesAndCoverageN<4>(rate_out, min_span_s);
+		default: return ratesAndCoverageN<0>(rate_out, min_span_s);
+	}
 }
 
 bool CausalRateTracker::spanAtLeast(std::size_t c, double span_s) const

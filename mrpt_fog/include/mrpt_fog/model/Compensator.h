@@ -7,7 +7,7 @@
  *
  * Rates come from the causal estimator recorded in the calibration (a calibration fitted with
  * the non-causal "savgol" estimator is refused: it cannot run in real time). Each model is
- * compiled into one Horner polynomial per signal, grouped by signal kind. At most 32
+ * compiled into one polynomial per signal, grouped by signal kind. At most 32
  * thermistors.
  *
  * Per sample:
@@ -86,15 +86,17 @@ class Compensator
 		std::vector<double> centre, inv_scale, lo, hi;
 		std::vector<double> p;  // coefficient of z^k of signal i at p[k * n + i], k = 1..degree
 	};
-	/** Per-channel kernel for the T(c) and dT/dt(c) terms (the multipoint shape): for every
-	 * tracked channel c a degree-5 polynomial in T(c) and a degree-3 one in dT/dt(c), zero
-	 * padded (absent signals: zero coefficients and an infinite range, so nothing is counted as
-	 * clamped). Fixed degrees: the loop over channels is branch-free and vectorises. */
-	struct ChannelKernel
+	/** Per-channel kernel for the T(c) and dT/dt(c) terms (the multipoint shape), in blocks of 4
+	 * tracked channels (the last block padded): for every channel a degree-5 polynomial in T(c)
+	 * and a degree-3 one in dT/dt(c), zero padded (absent signals and padding lanes: zero
+	 * coefficients and an infinite range, so nothing is counted as clamped). Fixed shapes: each
+	 * block is a handful of 4-wide vector operations with no branch. */
+	struct alignas(32) KernelBlock
 	{
-		std::vector<double> t_centre, t_inv, t_lo, t_hi, t_p;  // t_p[(k - 1) * nc + c], k = 1..5
-		std::vector<double> r_centre, r_inv, r_lo, r_hi, r_p;  // r_p[(k - 1) * nc + c], k = 1..3
+		double t_centre[4], t_inv[4], t_lo[4], t_hi[4], t_p[5][4];  // t_p[k - 1]: coefficient of z^k
+		double r_centre[4], r_inv[4], r_lo[4], r_hi[4], r_p[3][4];
 	};
+	using ChannelKernel = std::vector<KernelBlock>;
 	struct Compiled
 	{
 		double c0 = 0;
@@ -105,6 +107,7 @@ class Compensator
 	static Compiled compile(const BiasModel& m, const std::vector<std::string>& channel_names);
 	double evaluate(const Compiled& m, int& clamped) const;
 	static double kernelSum(const ChannelKernel& k, const double* temp_C, const double* rate_C_s, int& clamped);
+	static int countClamped(const ChannelKernel& k, const double* temp_C, const double* rate_C_s);
 
 	double window_s_;
 	double mean_bias_dph_;
@@ -112,7 +115,7 @@ class Compensator
 	std::vector<Compiled> models_;  // [0] main, [1 + c] fallback without channel c (may be empty)
 	std::vector<bool> has_fallback_;
 	CausalRateTracker tracker_;
-	std::vector<double> temp_, rate_, x_;
+	std::vector<double> temp_, rate_;  // per tracked channel, zero padded to the kernel's blocks of 4
 	CompensationCounters counters_;
 	int last_model_ = 0;
 	bool first_ = true;

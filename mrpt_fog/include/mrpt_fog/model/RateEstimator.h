@@ -90,6 +90,15 @@ class CausalRateTracker
 	void reset();
 
    private:
+	/** push() / ratesAndCoverage() for NC channels (NC = 0: channels_ at run time); the public
+	 * functions dispatch on the channel count once per call. */
+	template <std::size_t NC>
+	void pushN(double time_s, const double* x);
+	/** The common case of push() only (see the .cpp); false, with nothing changed, otherwise. */
+	template <std::size_t NC>
+	bool pushSteady(double time_s, const double* x);
+	template <std::size_t NC>
+	std::uint32_t ratesAndCoverageN(double* rate_out, double min_span_s) const;
 	void dropOldest();
 	void rebuildSums();
 	std::size_t channels_;
