@@ -97,3 +97,19 @@ TEST(CalibrationYaml, SaveIsAtomic)
 	EXPECT_EQ(loadCalibrationYaml(path).model.coef_dph, cal().model.coef_dph);
 	std::remove(path.c_str());
 }
+
+// A one-thermistor calibration: its fallback (without that thermistor) is constant-only, with
+// no signals. It must save and load (an empty "signals:" block once read back as null).
+TEST(CalibrationYaml, OneThermistorCalibrationWithConstantFallbackRoundTrips)
+{
+	const Calibration one = fitCalibration({fogtest::makeCoilRun("A", 61)}, "multipoint:Ti1");
+	ASSERT_EQ(one.fallbacks.size(), 1u);
+	ASSERT_TRUE(one.fallbacks[0].features.signals().empty());
+	const std::string path = std::string(FOG_BINARY_DIR) + "/test_cal_one_thermistor.yaml";
+	saveCalibrationYaml(one, path);
+	const Calibration back = loadCalibrationYaml(path);
+	EXPECT_EQ(back.fallbacks.size(), 1u);
+	EXPECT_EQ(back.fallbacks[0].coef_dph, one.fallbacks[0].coef_dph);
+	EXPECT_EQ(back.model.coef_dph, one.model.coef_dph);
+	std::remove(path.c_str());
+}

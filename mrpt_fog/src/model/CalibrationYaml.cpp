@@ -58,7 +58,9 @@ void writeModel(std::ostringstream& o, const BiasModel& m, const std::string& in
 	o << ind << "dropped: " << str(m.dropped) << "\n";
 	o << ind << "coefficient_unit: \"deg/h\"\n";
 	o << ind << "feature: \"term = z^k with z = (signal - centre) / scale; bias_dph = sum coef_dph * term\"\n";
-	o << ind << "signals:\n";
+	// A constant-only model (e.g. the fallback of a one-thermistor calibration) has no signals:
+	// an empty flow list, since an empty block "signals:" reads back as null.
+	o << ind << "signals:" << (fs.signals().empty() ? " []" : "") << "\n";
 	for (std::size_t s = 0; s < fs.signals().size(); s++)
 	{
 		const auto& nm = fs.normalisation()[s];
