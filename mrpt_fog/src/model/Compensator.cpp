@@ -234,7 +234,7 @@ double groupSumAnyDegree(int degree, const int* a, const int* b, const double* s
 }
 }  // namespace
 
-double Compensator::kernelSum(const ChannelKernel& K, const double* T, const double* R, int& clamped)
+[[gnu::always_inline]] inline double Compensator::kernelSum(const ChannelKernel& K, const double* T, const double* R, int& clamped)
 {
 	using A4 = Eigen::Array4d;
 	using M4 = Eigen::Map<const A4, Eigen::Aligned16>;  // KernelBlock members
@@ -291,10 +291,25 @@ double Compensator::evaluate(const Compiled& m, int& clamped) const
 
 Compensator::Output Compensator::step(double time_s, double raw_dph, const double* temp_C)
 {
-	const std::size_t nc = channel_col_.size();
+	// Compile-time channel counts for the common layouts: the tracker's steady-state update
+	// inlines and the loops over channels unroll.
+	switch (channel_col_.size())
+	{
+		case 1: return stepFixed<1>(time_s, raw_dph, temp_C);
+		case 2: return stepFixed<2>(time_s, raw_dph, temp_C);
+		case 3: return stepFixed<3>(time_s, raw_dph, temp_C);
+		case 4: return stepFixed<4>(time_s, raw_dph, temp_C);
+		default: return stepFixed<0>(time_s, raw_dph, temp_C);
+	}
+}
+
+template <std::size_t NC>
+Compensator::Output Compensator::stepFixed(double time_s, double raw_dph, const double* temp_C)
+{
+	const std::size_t nc = NC ? NC : channel_col_.size();
 	for (std::size_t c = 0; c < nc; c++) temp_[c] = temp_C[channel_col_[c]];
-	tracker_.push(time_s, temp_.data());
-	const std::uint32_t short_span = tracker_.ratesAndCoverage(rate_.data(), 0.5 * window_s_);
+	tracker_.pushFixed<NC>(time_s, temp_.data());
+	const std::uint32_t short_span = tracker_.ratesAndCoverageFixed<NC>(rate_.data(), 0.5 * window_s_);
 	// One predictable test for the common case: the sum is NaN if any reading or rate is.
 	double all = 0.0;
 	for (std::size_t c = 0; c < nc; c++) all += temp_[c] + rate_[c];

@@ -57,37 +57,6 @@ std::unique_ptr<RateEstimator> makeRateEstimator(const RateEstimatorSettings& s)
 }
 
 // ---------------------------------------------------------------- CausalRateTracker
-namespace
-{
-/** One sample in, one out, every channel valid (the hot path; restrict: no aliasing). NC > 0:
- * compile-time channel count, evaluated as fixed-size vector operations. */
-template <std::size_t NC>
-[[gnu::always_inline]] inline void fusedUpdate(std::size_t nc, const double* __restrict x, const double* __restrict xo,
-						const double* __restrict xr, double d1, double d2, double dto, double dtn, double* __restrict s1,
-						double* __restrict s2, double* __restrict sx, double* __restrict stx)
-{
-	if constexpr (NC > 0)
-	{
-		using A = Eigen::Array<double, static_cast<int>(NC), 1>;
-		using CM = Eigen::Map<const A>;
-		using M = Eigen::Map<A>;
-		const A dxo = CM(xo) - CM(xr), dxn = CM(x) - CM(xr);
-		M(s1) += d1;
-		M(s2) += d2;
-		M(sx) += dxn - dxo;
-		M(stx) += dtn * dxn - dto * dxo;
-	}
-	else
-		for (std::size_t c = 0; c < nc; c++)
-		{
-			const double dxo = xo[c] - xr[c], dxn = x[c] - xr[c];
-			s1[c] += d1;
-			s2[c] += d2;
-			sx[c] += dxn - dxo;
-			stx[c] += dtn * dxn - dto * dxo;
-		}
-}
-}  // namespace
 
 CausalRateTracker::CausalRateTracker(std::size_t channels, double window_s)
 	: channels_(channels), window_s_(window_s)
@@ -164,41 +133,7 @@ void CausalRateTracker::rebuildSums()
 }
 
 template <std::size_t NC>
-inline bool CausalRateTracker::pushSteady(double time_s, const double* x)
-{
-	// The steady state of uniform sampling, taken by nearly every sample: the time is valid,
-	// exactly one sample leaves the window as this one enters, both have every channel valid and
-	// no exact rebuild is due. Anything else returns false with nothing changed, and pushN()
-	// (which validates and handles every case) runs instead. The arithmetic is pushN's.
-	const std::size_t nc = NC ? NC : channels_;
-	const std::size_t mask = t_.size() - 1;  // capacity is a power of two
-	const double t_out = time_s - window_s_;
-	if (!(count_ >= 2 && time_s > last_t_ && time_s < std::numeric_limits<double>::infinity() &&
-		  t_[head_] <= t_out && t_[(head_ + 1) & mask] > t_out && since_rebuild_ + 1 < 16 * t_.size() &&
-		  slot_all_valid_[head_]))
-		return false;
-	// Sum of the values: NaN if one is NaN (or +inf meets -inf, which pushN also handles).
-	double all = 0.0;
-	for (std::size_t c = 0; c < nc; c++) all += x[c];
-	if (std::isnan(all)) return false;
-	last_t_ = time_s;
-	const double dto = t_[head_] - t_ref_, dtn = time_s - t_ref_;
-	const double d1 = dtn - dto, d2 = dtn * dtn - dto * dto;
-	const double* xo = x_.data() + (head_ * nc);
-	fusedUpdate<NC>(nc, x, xo, x_ref_.data(), d1, d2, dto, dtn, s1_.data(), s2_.data(), sx_.data(), stx_.data());
-	// the new sample goes after the newest; the leaving one's slot is freed (head advances)
-	const std::size_t slot = (head_ + count_) & mask;
-	double* xs = x_.data() + (slot * nc);
-	for (std::size_t c = 0; c < nc; c++) xs[c] = x[c];
-	t_[slot] = time_s;
-	slot_all_valid_[slot] = 1;  // one valid slot in, one out: nan_slots_ unchanged
-	head_ = (head_ + 1) & mask;
-	since_rebuild_++;
-	return true;
-}
-
-template <std::size_t NC>
-[[gnu::noinline]] void CausalRateTracker::pushN(double time_s, const double* x)
+void CausalRateTracker::pushN(double time_s, const double* x)
 {
 	const std::size_t nc = NC ? NC : channels_;  // NC > 0: loops over channels fully unrolled
 	if (!std::isfinite(time_s)) throw std::invalid_argument("CausalRateTracker: time is not finite");
@@ -232,7 +167,7 @@ template <std::size_t NC>
 		const double dto = t_[head_] - t_ref_, dtn = time_s - t_ref_;
 		const double d1 = dtn - dto, d2 = dtn * dtn - dto * dto;
 		if (new_all_valid && slot_all_valid_[head_])
-			fusedUpdate<NC>(nc, x, xo, XR, d1, d2, dto, dtn, S1, S2, SX, STX);
+			detail::fusedRateSumsUpdate<NC>(nc, x, xo, XR, d1, d2, dto, dtn, S1, S2, SX, STX);
 		else
 			for (std::size_t c = 0; c < nc; c++)
 			{
@@ -335,6 +270,13 @@ template <std::size_t NC>
 	if (++since_rebuild_ >= 16 * cap) rebuildSums();
 }
 
+// The general case of pushFixed<NC>() (declared in the header, called from inline code).
+template void CausalRateTracker::pushN<0>(double, const double*);
+template void CausalRateTracker::pushN<1>(double, const double*);
+template void CausalRateTracker::pushN<2>(double, const double*);
+template void CausalRateTracker::pushN<3>(double, const double*);
+template void CausalRateTracker::pushN<4>(double, const double*);
+
 void CausalRateTracker::push(double time_s, const double* x)
 {
 	// Compile-time channel counts for the common small layouts (no loop overhead per channel);
@@ -342,19 +284,19 @@ void CausalRateTracker::push(double time_s, const double* x)
 	switch (channels_)
 	{
 		case 1:
-			if (!pushSteady<1>(time_s, x)) pushN<1>(time_s, x);
+			pushFixed<1>(time_s, x);
 			return;
 		case 2:
-			if (!pushSteady<2>(time_s, x)) pushN<2>(time_s, x);
+			pushFixed<2>(time_s, x);
 			return;
 		case 3:
-			if (!pushSteady<3>(time_s, x)) pushN<3>(time_s, x);
+			pushFixed<3>(time_s, x);
 			return;
 		case 4:
-			if (!pushSteady<4>(time_s, x)) pushN<4>(time_s, x);
+			pushFixed<4>(time_s, x);
 			return;
 		default:
-			if (!pushSteady<0>(time_s, x)) pushN<0>(time_s, x);
+			pushFixed<0>(time_s, x);
 	}
 }
 
@@ -367,54 +309,15 @@ double CausalRateTracker::rate(std::size_t c) const
 	return (n * stx_[c] - s1_[c] * sx_[c]) * (1.0 / den);
 }
 
-template <std::size_t NC>
-std::uint32_t CausalRateTracker::ratesAndCoverageN(double* rate_out, double min_span_s) const
-{
-	const std::size_t nc = NC ? NC : channels_;
-	const double span2 = min_span_s * min_span_s;
-	const double* S1 = s1_.data();
-	const double* S2 = s2_.data();
-	const double* SX = sx_.data();
-	const double* STX = stx_.data();
-	const double* N = n_.data();
-	if (nc > 0 && nan_slots_ == 0 && !nan_since_rebuild_)
-	{
-		// Shared time sums: one reciprocal for all channels (bitwise the per-channel value).
-		const double n = N[0];
-		const double den = n * S2[0] - S1[0] * S1[0];  // = n^2 var(t)
-		const bool ok = n >= 2 && den > 0;
-		if (!ok)
-		{
-			for (std::size_t c = 0; c < nc; c++) rate_out[c] = kNaN;
-			return nc >= 32 ? ~0u : ((1u << nc) - 1u);
-		}
-		const double inv = 1.0 / den, s1 = S1[0];
-		for (std::size_t c = 0; c < nc; c++) rate_out[c] = (n * STX[c] - s1 * SX[c]) * inv;
-		const bool short_span = !(12.0 * den >= span2 * n * n);
-		return short_span ? (nc >= 32 ? ~0u : ((1u << nc) - 1u)) : 0u;
-	}
-	std::uint32_t short_mask = 0;
-	for (std::size_t c = 0; c < nc; c++)
-	{
-		const double n = N[c];
-		const double den = n * S2[c] - S1[c] * S1[c];
-		const bool ok = n >= 2 && den > 0;
-		rate_out[c] = ok ? (n * STX[c] - S1[c] * SX[c]) * (1.0 / den) : kNaN;
-		// coveredSpan^2 = 12 var(t) = 12 den / n^2
-		if (!(ok && 12.0 * den >= span2 * n * n)) short_mask |= (1u << c);
-	}
-	return short_mask;
-}
-
 std::uint32_t CausalRateTracker::ratesAndCoverage(double* rate_out, double min_span_s) const
 {
 	switch (channels_)
 	{
-		case 1: return ratesAndCoverageN<1>(rate_out, min_span_s);
-		case 2: return ratesAndCoverageN<2>(rate_out, min_span_s);
-		case 3: return ratesAndCoverageN<3>(rate_out, min_span_s);
-		case 4: return ratesAndCoverageN<4>(rate_out, min_span_s);
-		default: return ratesAndCoverageN<0>(rate_out, min_span_s);
+		case 1: return ratesAndCoverageFixed<1>(rate_out, min_span_s);
+		case 2: return ratesAndCoverageFixed<2>(rate_out, min_span_s);
+		case 3: return ratesAndCoverageFixed<3>(rate_out, min_span_s);
+		case 4: return ratesAndCoverageFixed<4>(rate_out, min_span_s);
+		default: return ratesAndCoverageFixed<0>(rate_out, min_span_s);
 	}
 }
 

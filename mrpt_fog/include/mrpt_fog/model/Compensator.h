@@ -104,6 +104,9 @@ class Compensator
 		std::vector<SignalGroup> groups;  // differences and their rates
 		std::uint32_t uses = 0;  // bit mask of the channels the model reads
 	};
+	/** step() for NC == tracked channels (NC = 0: any count). */
+	template <std::size_t NC>
+	Output stepFixed(double time_s, double raw_dph, const double* temp_C);
 	static Compiled compile(const BiasModel& m, const std::vector<std::string>& channel_names);
 	double evaluate(const Compiled& m, int& clamped) const;
 	static double kernelSum(const ChannelKernel& k, const double* temp_C, const double* rate_C_s, int& clamped);

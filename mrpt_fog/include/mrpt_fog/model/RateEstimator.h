@@ -22,8 +22,10 @@
  * parameters (RateEstimatorSettings) in calibration files.
  */
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -85,20 +87,27 @@ class CausalRateTracker
 	/** All channels at once (the compensator's hot path, channels <= 32): rate_out[c] = rate(c);
 	 * returns a bit mask of the channels whose coveredSpan_s is below min_span_s. */
 	std::uint32_t ratesAndCoverage(double* rate_out, double min_span_s) const;
+	/** push() and ratesAndCoverage() for a compile-time channel count NC == channels() (NC = 0:
+	 * any count), inline in the caller's loop: same results, no per-call dispatch. */
+	template <std::size_t NC>
+	void pushFixed(double time_s, const double* x)
+	{
+		if (!pushSteady<NC>(time_s, x)) pushN<NC>(time_s, x);
+	}
+	template <std::size_t NC>
+	std::uint32_t ratesAndCoverageFixed(double* rate_out, double min_span_s) const;
 	std::size_t channels() const { return channels_; }
 	double window_s() const { return window_s_; }
 	void reset();
 
    private:
-	/** push() / ratesAndCoverage() for NC channels (NC = 0: channels_ at run time); the public
-	 * functions dispatch on the channel count once per call. */
+	/** push() for NC channels (NC = 0: channels_ at run time): the general case (any timing,
+	 * dropouts, ring growth, exact rebuilds; validates the time), out of line. */
 	template <std::size_t NC>
 	void pushN(double time_s, const double* x);
-	/** The common case of push() only (see the .cpp); false, with nothing changed, otherwise. */
+	/** The common case of push() only (see its definition); false, with nothing changed, otherwise. */
 	template <std::size_t NC>
 	bool pushSteady(double time_s, const double* x);
-	template <std::size_t NC>
-	std::uint32_t ratesAndCoverageN(double* rate_out, double min_span_s) const;
 	void dropOldest();
 	void rebuildSums();
 	std::size_t channels_;
@@ -146,5 +155,101 @@ class SavitzkyGolayRateEstimator : public RateEstimator
 	double window_s_;
 	int order_;
 };
+
+namespace detail
+{
+/** The rate sums' update for one sample in and one out, every channel valid (restrict: no
+ * aliasing; NC > 0: compile-time channel count, the loop unrolls). */
+template <std::size_t NC>
+inline void fusedRateSumsUpdate(std::size_t nc, const double* __restrict x, const double* __restrict xo,
+								const double* __restrict xr, double d1, double d2, double dto, double dtn,
+								double* __restrict s1, double* __restrict s2, double* __restrict sx,
+								double* __restrict stx)
+{
+	const std::size_t n = NC ? NC : nc;
+	for (std::size_t c = 0; c < n; c++)
+	{
+		const double dxo = xo[c] - xr[c], dxn = x[c] - xr[c];
+		s1[c] += d1;
+		s2[c] += d2;
+		sx[c] += dxn - dxo;
+		stx[c] += dtn * dxn - dto * dxo;
+	}
+}
+}  // namespace detail
+
+// ---- inline hot path of CausalRateTracker (the compensator's per-sample loop)
+template <std::size_t NC>
+inline bool CausalRateTracker::pushSteady(double time_s, const double* x)
+{
+	// The steady state of uniform sampling, taken by nearly every sample: the time is valid,
+	// exactly one sample leaves the window as this one enters, both have every channel valid and
+	// no exact rebuild is due. Anything else returns false with nothing changed, and pushN()
+	// (which validates and handles every case) runs instead. The arithmetic is pushN's.
+	const std::size_t nc = NC ? NC : channels_;
+	const std::size_t mask = t_.size() - 1;  // capacity is a power of two
+	const double t_out = time_s - window_s_;
+	if (!(count_ >= 2 && time_s > last_t_ && time_s < std::numeric_limits<double>::infinity() &&
+		  t_[head_] <= t_out && t_[(head_ + 1) & mask] > t_out && since_rebuild_ + 1 < 16 * t_.size() &&
+		  slot_all_valid_[head_]))
+		return false;
+	// Sum of the values: NaN if one is NaN (or +inf meets -inf, which pushN also handles).
+	double all = 0.0;
+	for (std::size_t c = 0; c < nc; c++) all += x[c];
+	if (std::isnan(all)) return false;
+	last_t_ = time_s;
+	const double dto = t_[head_] - t_ref_, dtn = time_s - t_ref_;
+	const double d1 = dtn - dto, d2 = dtn * dtn - dto * dto;
+	const double* xo = x_.data() + (head_ * nc);
+	detail::fusedRateSumsUpdate<NC>(nc, x, xo, x_ref_.data(), d1, d2, dto, dtn, s1_.data(), s2_.data(), sx_.data(), stx_.data());
+	// the new sample goes after the newest; the leaving one's slot is freed (head advances)
+	const std::size_t slot = (head_ + count_) & mask;
+	double* xs = x_.data() + (slot * nc);
+	for (std::size_t c = 0; c < nc; c++) xs[c] = x[c];
+	t_[slot] = time_s;
+	slot_all_valid_[slot] = 1;  // one valid slot in, one out: nan_slots_ unchanged
+	head_ = (head_ + 1) & mask;
+	since_rebuild_++;
+	return true;
+}
+
+template <std::size_t NC>
+inline std::uint32_t CausalRateTracker::ratesAndCoverageFixed(double* rate_out, double min_span_s) const
+{
+	const std::size_t nc = NC ? NC : channels_;
+	const double span2 = min_span_s * min_span_s;
+	const double* S1 = s1_.data();
+	const double* S2 = s2_.data();
+	const double* SX = sx_.data();
+	const double* STX = stx_.data();
+	const double* N = n_.data();
+	if (nc > 0 && nan_slots_ == 0 && !nan_since_rebuild_)
+	{
+		// Shared time sums: one reciprocal for all channels (bitwise the per-channel value).
+		const double n = N[0];
+		const double den = n * S2[0] - S1[0] * S1[0];  // = n^2 var(t)
+		const bool ok = n >= 2 && den > 0;
+		if (!ok)
+		{
+			for (std::size_t c = 0; c < nc; c++) rate_out[c] = std::numeric_limits<double>::quiet_NaN();
+			return nc >= 32 ? ~0u : ((1u << nc) - 1u);
+		}
+		const double inv = 1.0 / den, s1 = S1[0];
+		for (std::size_t c = 0; c < nc; c++) rate_out[c] = (n * STX[c] - s1 * SX[c]) * inv;
+		const bool short_span = !(12.0 * den >= span2 * n * n);
+		return short_span ? (nc >= 32 ? ~0u : ((1u << nc) - 1u)) : 0u;
+	}
+	std::uint32_t short_mask = 0;
+	for (std::size_t c = 0; c < nc; c++)
+	{
+		const double n = N[c];
+		const double den = n * S2[c] - S1[c] * S1[c];
+		const bool ok = n >= 2 && den > 0;
+		rate_out[c] = ok ? (n * STX[c] - S1[c] * SX[c]) * (1.0 / den) : std::numeric_limits<double>::quiet_NaN();
+		// coveredSpan^2 = 12 var(t) = 12 den / n^2
+		if (!(ok && 12.0 * den >= span2 * n * n)) short_mask |= (1u << c);
+	}
+	return short_mask;
+}
 
 }  // namespace mrpt_fog
