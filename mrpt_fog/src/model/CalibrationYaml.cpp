@@ -1,6 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt/containers/yaml.h>
 #include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt_fog/common/ErrorText.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 
 #include <cmath>
@@ -313,9 +314,7 @@ Calibration calibrationFromYaml(const std::string& text, const std::string& sour
 	}
 	catch (const std::exception& e)
 	{
-		std::string msg = e.what();
-		const auto nl = msg.find('\n');
-		throw std::invalid_argument(source + ": not valid YAML: " + msg.substr(0, nl));
+		throw std::invalid_argument(source + ": not valid YAML: " + oneLineErrorMessage(e.what()));
 	}
 	if (!root.isMap()) rd.fail("(top)", "expected a YAML map");
 	if (rd.text(root, "format", "") != kFormat) rd.fail("format", std::string("expected ") + kFormat);
