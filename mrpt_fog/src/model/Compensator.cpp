@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <limits>
 #include <cmath>
+#include <cstring>
 #include <sstream>
 #include <stdexcept>
 
@@ -155,6 +156,8 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 										"; data layout: " + describeLayout(layout));
 		channel_col_.push_back(col);
 	}
+	same_order_ = true;
+	for (std::size_t c = 0; c < channel_col_.size(); c++) same_order_ &= channel_col_[c] == static_cast<int>(c);
 	models_.push_back(compile(cal.model, names));
 	for (const auto& n : names)
 	{
@@ -307,8 +310,13 @@ template <std::size_t NC>
 Compensator::Output Compensator::stepFixed(double time_s, double raw_dph, const double* temp_C)
 {
 	const std::size_t nc = NC ? NC : channel_col_.size();
-	for (std::size_t c = 0; c < nc; c++) temp_[c] = temp_C[channel_col_[c]];
-	tracker_.pushFixed<NC>(time_s, temp_.data());
+	// Same column order (the usual case): a block copy, and the tracker reads the caller's row
+	// directly (element-wise stores read back as vectors would stall store forwarding).
+	if (same_order_)
+		std::memcpy(temp_.data(), temp_C, nc * sizeof(double));  // own buffer: no overlap
+	else
+		for (std::size_t c = 0; c < nc; c++) temp_[c] = temp_C[channel_col_[c]];
+	tracker_.pushFixed<NC>(time_s, same_order_ ? temp_C : temp_.data());
 	const std::uint32_t short_span = tracker_.ratesAndCoverageFixed<NC>(rate_.data(), 0.5 * window_s_);
 	// One predictable test for the common case: the sum is NaN if any reading or rate is.
 	double all = 0.0;

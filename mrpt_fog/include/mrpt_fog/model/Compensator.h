@@ -115,6 +115,7 @@ class Compensator
 	double window_s_;
 	double mean_bias_dph_;
 	std::vector<int> channel_col_;  // layout column of each tracked channel
+	bool same_order_ = false;  // channel_col_[c] == c for every tracked channel
 	std::vector<Compiled> models_;  // [0] main, [1 + c] fallback without channel c (may be empty)
 	std::vector<bool> has_fallback_;
 	CausalRateTracker tracker_;
