@@ -275,10 +275,8 @@ int Compensator::countClamped(const ChannelKernel& K, const double* T, const dou
 	return cl;
 }
 
-double Compensator::evaluate(const Compiled& m, int& clamped) const
+[[gnu::noinline]] double Compensator::addGroups(const Compiled& m, double sum, int& clamped) const
 {
-	double sum = m.c0;
-	sum += kernelSum(m.kernel, temp_.data(), rate_.data(), clamped);
 	for (const SignalGroup& g : m.groups)
 	{
 		const double* src = (g.kind == 0 || g.kind == 2) ? temp_.data() : rate_.data();
@@ -289,6 +287,15 @@ double Compensator::evaluate(const Compiled& m, int& clamped) const
 			sum += groupSumAnyDegree<false>(g.degree, g.a.data(), g.b.data(), src, g.lo.data(), g.hi.data(),
 											g.centre.data(), g.inv_scale.data(), g.p.data(), g.a.size(), clamped);
 	}
+	return sum;
+}
+
+inline double Compensator::evaluate(const Compiled& m, int& clamped) const
+{
+	// The per-channel kernel inline; the difference groups (other presets) out of line.
+	double sum = m.c0;
+	sum += kernelSum(m.kernel, temp_.data(), rate_.data(), clamped);
+	if (!m.groups.empty()) sum = addGroups(m, sum, clamped);
 	return sum;
 }
 

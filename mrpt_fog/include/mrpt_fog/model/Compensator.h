@@ -109,6 +109,7 @@ class Compensator
 	Output stepFixed(double time_s, double raw_dph, const double* temp_C);
 	static Compiled compile(const BiasModel& m, const std::vector<std::string>& channel_names);
 	double evaluate(const Compiled& m, int& clamped) const;
+	double addGroups(const Compiled& m, double sum, int& clamped) const;  // sum + the groups' terms
 	static double kernelSum(const ChannelKernel& k, const double* temp_C, const double* rate_C_s, int& clamped);
 	static int countClamped(const ChannelKernel& k, const double* temp_C, const double* rate_C_s);
 
