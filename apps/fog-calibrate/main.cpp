@@ -12,6 +12,7 @@
 #include <iostream>
 
 #include "AppMain.h"
+#include "CommandLine.h"
 
 using namespace mrpt_fog;
 
@@ -56,23 +57,6 @@ EXAMPLES
   fog-calibrate -i runA.csv -i runB.csv --model points:2 -o cal2.yaml --json fit.json
   fog-calibrate -i runA.csv --model M3:Ti1,To1 --selection none -o m3.yaml
 )";
-
-class HelpOutput : public TCLAP::StdOutput
-{
-   public:
-	void usage(TCLAP::CmdLineInterface& c) override
-	{
-		TCLAP::StdOutput::usage(c);
-		std::cout << kHelp;
-	}
-	/** One-line usage error (TCLAP's default prints a page). */
-	void failure(TCLAP::CmdLineInterface&, TCLAP::ArgException& e) override
-	{
-		std::cerr << "fog-calibrate: error: " << e.error() << " (" << e.argId() << "); see fog-calibrate --help\n";
-		failed = true;
-	}
-	bool failed = false;
-};
 
 std::string fmt(double v, const char* f = "%.6g")
 {
@@ -120,8 +104,6 @@ int main(int argc, char** argv)
 		TCLAP::CmdLine cmd("fog-calibrate: fit the FOG thermal-bias model to chamber runs and write a calibration "
 						   "YAML. Presets, the over-fitting guard and examples below.",
 						   ' ', "0.1");
-		HelpOutput help;
-		cmd.setOutput(&help);
 		TCLAP::MultiArg<std::string> arg_in("i", "input", "Calibration run (.rawlog, .csv, .csv.gz); repeat for several", true, "RUN", cmd);
 		TCLAP::ValueArg<std::string> arg_model("", "model", "Model preset (see below)", false, "multipoint", "PRESET", cmd);
 		TCLAP::ValueArg<std::string> arg_out("o", "output", "Calibration YAML to write", true, "", "CAL.yaml", cmd);
@@ -136,7 +118,7 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<unsigned> arg_folds("", "folds", "Cross-validation folds for a single run", false, 5, "K", cmd);
 		TCLAP::ValueArg<double> arg_tau("", "tau", "Averaging time of the stability figures [s]", false, 100.0, "S", cmd);
 		TCLAP::SwitchArg arg_nofb("", "no-fallbacks", "Do not fit per-thermistor fallback models", cmd);
-		if (!cmd.parse(argc, argv)) return help.failed ? app::kExitUsage : app::kExitOk;  // error or --help
+		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-calibrate", kHelp)) return *rc;
 
 		FitOptions opt;
 		opt.selection = arg_sel.getValue();

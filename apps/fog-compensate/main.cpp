@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "AppMain.h"
+#include "CommandLine.h"
 
 using namespace mrpt_fog;
 
@@ -38,23 +39,6 @@ EXAMPLES
   fog-compensate -i datasets/chamber_B.rawlog --cal cal.yaml -o chamber_B_comp.rawlog
   fog-compensate -i run.csv --cal cal.yaml -o run_comp.csv --json summary.json
 )";
-
-class HelpOutput : public TCLAP::StdOutput
-{
-   public:
-	void usage(TCLAP::CmdLineInterface& c) override
-	{
-		TCLAP::StdOutput::usage(c);
-		std::cout << kHelp;
-	}
-	/** One-line usage error (TCLAP's default prints a page). */
-	void failure(TCLAP::CmdLineInterface&, TCLAP::ArgException& e) override
-	{
-		std::cerr << "fog-compensate: error: " << e.error() << " (" << e.argId() << "); see fog-compensate --help\n";
-		failed = true;
-	}
-	bool failed = false;
-};
 
 std::string csvText(const FogSeries& s, const CompensatedSeries& c, char axis, const std::string& cal_path)
 {
@@ -81,14 +65,12 @@ int main(int argc, char** argv)
 		TCLAP::CmdLine cmd("fog-compensate: remove the thermal bias from a FOG log with a calibration from "
 						   "fog-calibrate (causal, sample by sample). Details and examples below.",
 						   ' ', "0.1");
-		HelpOutput help;
-		cmd.setOutput(&help);
 		TCLAP::ValueArg<std::string> arg_in("i", "input", "FOG log (.rawlog, .csv, .csv.gz)", true, "", "IN", cmd);
 		TCLAP::ValueArg<std::string> arg_cal("", "cal", "Calibration YAML (fog-calibrate)", true, "", "CAL.yaml", cmd);
 		TCLAP::ValueArg<std::string> arg_out("o", "output", "Output (.rawlog or .csv)", true, "", "OUT", cmd);
 		TCLAP::ValueArg<std::string> arg_label("", "label", "FOG sensor label in rawlogs with several", false, "", "L", cmd);
 		TCLAP::ValueArg<std::string> arg_json("", "json", "Write the summary as JSON", false, "", "FILE", cmd);
-		if (!cmd.parse(argc, argv)) return help.failed ? app::kExitUsage : app::kExitOk;  // error or --help
+		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-compensate", kHelp)) return *rc;
 
 		const std::string out = arg_out.getValue(), ext = fileExtension(out);
 		if (ext != ".rawlog" && ext != ".csv")

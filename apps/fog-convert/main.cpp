@@ -16,6 +16,7 @@
 #include <map>
 
 #include "AppMain.h"
+#include "CommandLine.h"
 
 using namespace mrpt_fog;
 
@@ -59,23 +60,6 @@ EXAMPLES
 )";
 
 /** TCLAP's usage followed by the format summary and examples. */
-class ConvertHelpOutput : public TCLAP::StdOutput
-{
-   public:
-	void usage(TCLAP::CmdLineInterface& c) override
-	{
-		TCLAP::StdOutput::usage(c);
-		std::cout << kFormatHelp;
-	}
-	/** One-line usage error (TCLAP's default prints a page). */
-	void failure(TCLAP::CmdLineInterface&, TCLAP::ArgException& e) override
-	{
-		std::cerr << "fog-convert: error: " << e.error() << " (" << e.argId() << "); see fog-convert --help\n";
-		failed = true;
-	}
-	bool failed = false;
-};
-
 /** Fails before any work if the directory of an output file cannot be written, so that a bad
  * --json path does not leave a converted file behind with a non-zero exit. */
 void requireWritableDirectory(const std::string& path, const char* what)
@@ -114,8 +98,6 @@ int main(int argc, char** argv)
 			"fog-convert: FOG logs between lab CSV (.csv, .csv.gz) and MRPT rawlog (.rawlog), by file "
 			"extension. Format summary and examples below.",
 			' ', "0.1");
-		ConvertHelpOutput help_output;
-		cmd.setOutput(&help_output);
 		TCLAP::ValueArg<std::string> arg_in("i", "input", "Input log (.csv, .csv.gz or .rawlog)", true, "", "IN", cmd);
 		TCLAP::ValueArg<std::string> arg_out("o", "output", "Output log (.csv, .csv.gz or .rawlog)", true, "", "OUT", cmd);
 		TCLAP::ValueArg<std::string> arg_label("", "label",
@@ -124,7 +106,7 @@ int main(int argc, char** argv)
 			"thermistors, axes, dropouts) to FILE", false, "", "FILE", cmd);
 		TCLAP::SwitchArg arg_stock("", "to-stock", "Write stock MRPT CObservationIMU + CObservationRawDAQ instead "
 			"of CObservationFOG (output must be .rawlog)", cmd);
-		if (!cmd.parse(argc, argv)) return help_output.failed ? app::kExitUsage : app::kExitOk;  // error or --help
+		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-convert", kFormatHelp)) return *rc;
 
 		const std::string in = arg_in.getValue(), out = arg_out.getValue();
 		requireKnownExtension(in, "input");

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "AppMain.h"
+#include "CommandLine.h"
 #include "JsonFigures.h"
 #include "StepRunner.h"
 
@@ -42,16 +43,6 @@ EXAMPLES
   fog-demo --out report
   fog-demo --datasets /path/to/datasets --out report
 )";
-
-class HelpOutput : public TCLAP::StdOutput
-{
-   public:
-	void usage(TCLAP::CmdLineInterface& c) override
-	{
-		TCLAP::StdOutput::usage(c);
-		std::cout << kHelp;
-	}
-};
 
 std::string fmt(double v, const char* f = "%.4g")
 {
@@ -101,8 +92,6 @@ int main(int argc, char** argv)
 {
 	return app::runApp("fog-demo", [&]() -> int {
 		TCLAP::CmdLine cmd("fog-demo: mrpt_fog end to end (calibrate, validate, compensate, navigate)", ' ', "0.1");
-		HelpOutput help_output;
-		cmd.setOutput(&help_output);
 		TCLAP::ValueArg<std::string> arg_out("o", "out", "report folder [default: fog-demo-report]", false,
 											 "fog-demo-report", "DIR", cmd);
 		TCLAP::ValueArg<std::string> arg_data("d", "datasets",
@@ -111,7 +100,7 @@ int main(int argc, char** argv)
 											  false, "", "DIR", cmd);
 		TCLAP::ValueArg<std::string> arg_model("m", "model", "bias-model preset [default: multipoint]", false,
 											   "multipoint", "PRESET", cmd);
-		cmd.parse(argc, argv);
+		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-demo", kHelp)) return *rc;
 
 		const fs::path out = fs::absolute(arg_out.getValue());
 		prepareOutDir(out);

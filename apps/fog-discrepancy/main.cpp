@@ -13,6 +13,7 @@
 #include <iostream>
 
 #include "AppMain.h"
+#include "CommandLine.h"
 
 using namespace mrpt_fog;
 
@@ -38,7 +39,7 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<double> alpha("", "alpha", "family-wise significance level (Holm)", false, 0.005, "P", cmd);
 		TCLAP::ValueArg<std::string> label("", "fog-label", "FOG sensor label in a rawlog with several", false, "",
 										   "LABEL", cmd);
-		cmd.parse(argc, argv);
+		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-discrepancy")) return *rc;
 
 		if (sim.isSet())
 			throw std::runtime_error(

@@ -7,6 +7,7 @@
  * heading of each gyro (Earth rate at the drive's latitude removed) with the odometry, and
  * compares the three dead-reckoned trajectories with the truth. */
 #include "AppMain.h"
+#include "CommandLine.h"
 #include "Compensation.h"
 #include "DriftOutputs.h"
 #include "DriveData.h"
@@ -83,7 +84,7 @@ int main(int argc, char** argv)
 											  "gyro samples are the mean rate over the preceding interval ('average', digital FOGs and fog-sim) or 'instantaneous' (trapezoid rule) "
 											  "preceding interval",
 											  false, "average", "KIND", cmd);
-		cmd.parse(argc, argv);
+		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-drift")) return *rc;
 
 		drift::HeadingOptions hopt;
 		if (sampling.getValue() == "instantaneous") hopt.sampling = nav::RateSampling::Instantaneous;

@@ -8,6 +8,7 @@
  * its vertical component is a constant, which moves mean_dph only; stability, range,
  * peak-to-peak and the Allan deviation measure spread and are unaffected by it. */
 #include "AppMain.h"
+#include "CommandLine.h"
 #include "CalibrationSource.h"
 #include "EvaluationPlots.h"
 #include "RateEvaluation.h"
@@ -61,7 +62,7 @@ int main(int argc, char** argv)
 										   false, "", "DIR", cmd);
 		TCLAP::ValueArg<std::string> label("", "label", "FOG sensor label in a rawlog with several", false, "", "FOG",
 										   cmd);
-		cmd.parse(argc, argv);
+		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-evaluate")) return *rc;
 
 		const double tau_s = tau.getValue();
 		if (!std::isfinite(tau_s) || tau_s <= 0)

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "AppMain.h"
+#include "CommandLine.h"
 
 using namespace mrpt_fog;
 
@@ -159,7 +160,7 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<std::string> selection(
 			"", "selection", "term selection: none (plain least squares on all terms, the paper's way; default) or auto",
 			false, "none", "none|auto", cmd);
-		cmd.parse(argc, argv);
+		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-paper")) return *rc;
 		if (selection.getValue() != "none" && selection.getValue() != "auto")
 			throw std::invalid_argument("--selection must be none or auto");
 		if (plots.isSet() && !std::filesystem::is_directory(plots.getValue()))

@@ -24,6 +24,7 @@
 #include <iostream>
 
 #include "AppMain.h"
+#include "CommandLine.h"
 
 using namespace mrpt_fog;
 using namespace mrpt_fog::sim;
@@ -75,7 +76,7 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<double> duration("", "duration-s", "keep only the first F seconds of the run", false, -1.0, "F",
 										 cmd);
 		TCLAP::ValueArg<std::string> json("", "json", "write figures as JSON", false, "", "F", cmd);
-		cmd.parse(argc, argv);
+		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-sim")) return *rc;
 
 		const std::string ext = fileExtension(out.getValue());
 		if (ext != ".rawlog" && ext != ".csv" && ext != ".csv.gz")
