@@ -319,7 +319,7 @@ Compensator::Output Compensator::stepFixed(double time_s, double raw_dph, const 
 	const std::size_t nc = NC ? NC : channel_col_.size();
 	// Same column order (the usual case): a block copy, and the tracker reads the caller's row
 	// directly (element-wise stores read back as vectors would stall store forwarding).
-	if (same_order_)
+	if (same_order_ && nc > 0)  // nc == 0 (constant-only model): memcpy with a null buffer is UB
 		std::memcpy(temp_.data(), temp_C, nc * sizeof(double));  // own buffer: no overlap
 	else
 		for (std::size_t c = 0; c < nc; c++) temp_[c] = temp_C[channel_col_[c]];
