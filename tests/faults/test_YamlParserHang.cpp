@@ -1,8 +1,13 @@
 /* mrpt_fog: regression of the calibration YAML fuzzer's finding: a parser hang on invalid UTF-8. */
 #include <gtest/gtest.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
+#include <mrpt_fog/sim/ChamberProfile.h>
+#include <mrpt_fog/sim/FogDevice.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
 
 #include "FaultRun.h"
 
@@ -67,4 +72,44 @@ TEST(YamlParserHang, InvalidUtf8DirectiveIsRefusedNotHung)
 	{
 		EXPECT_EQ(std::string(e.what()).find("UTF-8"), std::string::npos) << e.what();
 	}
+}
+
+// The simulator's YAML files (chamber profile, device) go through the same parser: the same
+// input must be refused there too, naming the file, not hang.
+TEST(YamlParserHang, SimulatorYamlFilesRefuseInvalidUtf8)
+{
+	const std::string path = std::string(FOG_BINARY_DIR) + "/hang_profile.yaml";
+	{
+		std::ofstream f(path, std::ios::binary);
+		f << "%\xd5\n";
+	}
+	const pid_t pid = ::fork();
+	if (pid == 0)
+	{
+		::alarm(20);
+		int code = 0;
+		for (int which = 0; which < 2; which++)
+		{
+			try
+			{
+				if (which == 0) (void)sim::ChamberProfile::fromFile(path);
+				else (void)sim::FogDevice::fromFile(path);
+				code |= 1;
+			}
+			catch (const std::invalid_argument& e)
+			{
+				if (std::string(e.what()).find("hang_profile.yaml: not valid UTF-8") == std::string::npos) code |= 2;
+			}
+			catch (...)
+			{
+				code |= 4;
+			}
+		}
+		::_exit(code);
+	}
+	int status = 0;
+	::waitpid(pid, &status, 0);
+	ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status) << " (hang or crash)";
+	EXPECT_EQ(WEXITSTATUS(status), 0);
+	std::remove(path.c_str());
 }

@@ -2,6 +2,7 @@
 #include <mrpt/containers/yaml.h>
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/common/ErrorText.h>
+#include <mrpt_fog/common/Utf8.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 
 #include <cmath>
@@ -302,23 +303,6 @@ std::string calibrationToYaml(const Calibration& cal)
 	writeFigures(o, "held_out", cal.held_out);
 	writeFigures(o, "validation", cal.validation);
 	return o.str();
-}
-
-/** Offset of the first byte that is not valid UTF-8, or npos. (libfyaml, MRPT's YAML parser,
- * loops forever on some invalid UTF-8, e.g. "%\xd5\n": found by fuzz_calibration_yaml.) */
-static std::size_t firstInvalidUtf8(const std::string& t)
-{
-	std::size_t i = 0;
-	while (i < t.size())
-	{
-		const auto c = static_cast<unsigned char>(t[i]);
-		const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
-		if (n == 0 || (n > 1 && c < 0xC2 && n == 2) || i + n > t.size()) return i;
-		for (std::size_t k = 1; k < n; k++)
-			if ((static_cast<unsigned char>(t[i + k]) >> 6) != 0x2) return i;
-		i += n;
-	}
-	return std::string::npos;
 }
 
 Calibration calibrationFromYaml(const std::string& text, const std::string& source)

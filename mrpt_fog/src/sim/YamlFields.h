@@ -6,6 +6,7 @@
  * std::invalid_argument naming "<source>: <path>: <reason>". */
 
 #include <mrpt/containers/yaml.h>
+#include <mrpt_fog/common/Utf8.h>
 
 #include <cmath>
 #include <set>
@@ -113,6 +114,7 @@ inline bool readBool(const mrpt::containers::yaml& node, const std::string& key,
 
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <iostream>
 
 namespace mrpt_fog::sim::detail
@@ -122,8 +124,12 @@ namespace mrpt_fog::sim::detail
  * into std::invalid_argument "<path>: not valid YAML: <first line>". */
 inline mrpt::containers::yaml parseYamlFile(const std::string& path)
 {
-	std::ifstream f(path);
-	if (!f) throw std::invalid_argument(path + ": cannot open file");
+	std::ifstream file(path, std::ios::binary);
+	if (!file) throw std::invalid_argument(path + ": cannot open file");
+	std::stringstream f;
+	f << file.rdbuf();
+	if (const std::size_t bad = firstInvalidUtf8(f.str()); bad != std::string::npos)
+		throw std::invalid_argument(path + ": not valid UTF-8 text (byte offset " + std::to_string(bad) + ")");
 	std::fflush(stderr);
 	std::cerr.flush();
 	std::FILE* capture = std::tmpfile();
