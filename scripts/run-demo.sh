@@ -7,5 +7,5 @@ out="${1:-$PWD/fog-demo-report}"
 "$here/scripts/setup.sh"
 build="$here/build"
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
-cmake --build "$build" -j"$(nproc)" --target fog-demo fog-sim fog-calibrate fog-compensate fog-evaluate fog-drift fog-convert
+cmake --build "$build" -j"$(nproc)" --target fog-demo fog-sim fog-calibrate fog-compensate fog-evaluate fog-drift fog-convert fog-paper
 "$build/apps/fog-demo" --datasets "$here/datasets" --out "$out"
