@@ -305,7 +305,9 @@ std::string calibrationToYaml(const Calibration& cal)
 	return o.str();
 }
 
-Calibration calibrationFromYaml(const std::string& text, const std::string& source)
+namespace
+{
+Calibration parseCalibrationYaml(const std::string& text, const std::string& source)
 {
 	Reader rd{source};
 	if (const std::size_t bad = firstInvalidUtf8(text); bad != std::string::npos)
@@ -393,6 +395,26 @@ Calibration calibrationFromYaml(const std::string& text, const std::string& sour
 	cal.held_out = readFigures(rd, rd.child(st, "held_out", "statistics"), "statistics.held_out");
 	cal.validation = readFigures(rd, rd.child(st, "validation", "statistics"), "statistics.validation");
 	return cal;
+}
+}  // namespace
+
+Calibration calibrationFromYaml(const std::string& text, const std::string& source)
+{
+	try
+	{
+		return parseCalibrationYaml(text, source);
+	}
+	catch (const std::invalid_argument&)
+	{
+		throw;
+	}
+	catch (const std::exception& e)
+	{
+		// MRPT's YAML accessors throw std::logic_error for a node of the wrong kind (e.g. a map
+		// where a scalar is expected; found by fuzz_calibration_yaml): same contract as our own
+		// field errors.
+		throw std::invalid_argument(source + ": " + oneLineErrorMessage(e.what()));
+	}
 }
 
 void saveCalibrationYaml(const Calibration& cal, const std::string& path)
