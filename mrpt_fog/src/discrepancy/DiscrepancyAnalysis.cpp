@@ -63,6 +63,35 @@ JsonValue figuresJson(const GapFigures& f, double tau_s)
 	return j;
 }
 
+/** One segment's gap figures. rank > 0 (the ranked top-level list) adds the rank and the
+ * descriptive fields, in the same key order as before. */
+JsonValue segmentJson(const SegmentGap& s, int rank)
+{
+	const bool ranked = rank > 0;
+	JsonValue e = JsonValue::object();
+	if (ranked) e["rank"] = rank;
+	e["type"] = toString(s.segment.type);
+	e["direction"] = s.segment.direction;
+	e["band"] = s.segment.band;
+	if (ranked) e["description"] = s.segment.describe();
+	e["t_start_s"] = s.segment.t_start_s;
+	e["t_end_s"] = s.segment.t_end_s;
+	if (ranked) e["mean_temp_C"] = s.segment.mean_temp_C;
+	e["rms_before_dph"] = s.segment.rms_dph;
+	e["rms_after_dph"] = s.rms_after_dph;
+	e["stability_before_dph"] = s.before.stability_dph;
+	e["stability_after_dph"] = s.after.stability_dph;
+	e["range_before_dph"] = s.before.range_dph;
+	e["range_after_dph"] = s.after.range_dph;
+	if (ranked)
+	{
+		e["energy_share"] = s.segment.energy_share;
+		e["time_share"] = s.segment.time_share;
+		e["flagged"] = s.flagged;
+	}
+	return e;
+}
+
 JsonValue runGapJson(const RunGap& g, double tau_s)
 {
 	JsonValue j = JsonValue::object();
@@ -70,22 +99,7 @@ JsonValue runGapJson(const RunGap& g, double tau_s)
 	j["before"] = figuresJson(g.before, tau_s);
 	j["after"] = figuresJson(g.after, tau_s);
 	JsonValue segs = JsonValue::array();
-	for (const auto& s : g.segments)
-	{
-		JsonValue e = JsonValue::object();
-		e["type"] = toString(s.segment.type);
-		e["direction"] = s.segment.direction;
-		e["band"] = s.segment.band;
-		e["t_start_s"] = s.segment.t_start_s;
-		e["t_end_s"] = s.segment.t_end_s;
-		e["rms_before_dph"] = s.segment.rms_dph;
-		e["rms_after_dph"] = s.rms_after_dph;
-		e["stability_before_dph"] = s.before.stability_dph;
-		e["stability_after_dph"] = s.after.stability_dph;
-		e["range_before_dph"] = s.before.range_dph;
-		e["range_after_dph"] = s.after.range_dph;
-		segs.push_back(e);
-	}
+	for (const auto& s : g.segments) segs.push_back(segmentJson(s, 0));
 	j["segments"] = segs;
 	return j;
 }
@@ -222,28 +236,7 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 	j["where"] = rep.gap.ranking_before.sentence;
 	JsonValue segs = JsonValue::array();
 	int rank = 1;
-	for (const auto& s : rep.gap.segments)
-	{
-		JsonValue e = JsonValue::object();
-		e["rank"] = rank++;
-		e["type"] = toString(s.segment.type);
-		e["direction"] = s.segment.direction;
-		e["band"] = s.segment.band;
-		e["description"] = s.segment.describe();
-		e["t_start_s"] = s.segment.t_start_s;
-		e["t_end_s"] = s.segment.t_end_s;
-		e["mean_temp_C"] = s.segment.mean_temp_C;
-		e["rms_before_dph"] = s.segment.rms_dph;
-		e["rms_after_dph"] = s.rms_after_dph;
-		e["stability_before_dph"] = s.before.stability_dph;
-		e["stability_after_dph"] = s.after.stability_dph;
-		e["range_before_dph"] = s.before.range_dph;
-		e["range_after_dph"] = s.after.range_dph;
-		e["energy_share"] = s.segment.energy_share;
-		e["time_share"] = s.segment.time_share;
-		e["flagged"] = s.flagged;
-		segs.push_back(e);
-	}
+	for (const auto& s : rep.gap.segments) segs.push_back(segmentJson(s, rank++));
 	j["segments"] = segs;
 	JsonValue groups = JsonValue::array();
 	for (const auto& g : rep.gap.ranking_before.groups)

@@ -11,6 +11,22 @@ namespace mrpt_fog::discrepancy
 {
 namespace
 {
+/** "id{alias,alias};id..." of the named effects, or "none" (trial summaries). */
+void writeNamedEffects(std::ostream& os, const std::vector<NamedEffect>& named)
+{
+	if (named.empty()) os << "none";
+	for (std::size_t i = 0; i < named.size(); ++i)
+	{
+		os << (i ? ";" : "") << named[i].id;
+		if (named[i].alias_group.size() > 1)
+		{
+			os << "{";
+			for (std::size_t j = 1; j < named[i].alias_group.size(); ++j) os << (j > 1 ? "," : "") << named[i].alias_group[j];
+			os << "}";
+		}
+	}
+}
+
 double rmsOn(const Eigen::VectorXd& r, const std::vector<unsigned char>& rows)
 {
 	double s = 0;
@@ -117,17 +133,7 @@ TrialOutcome runTrial(const TrialSpec& spec, const SelectionOptions& opt)
 	for (std::size_t i = 0; i < spec.hidden.size(); ++i) os << (i ? "+" : "") << spec.hidden[i] << "@" << spec.ratios[i];
 	if (spec.hidden.empty()) os << "none";
 	os << " seed=" << spec.seed << " named=";
-	if (sel.named.empty()) os << "none";
-	for (std::size_t i = 0; i < sel.named.size(); ++i)
-	{
-		os << (i ? ";" : "") << sel.named[i].id;
-		if (sel.named[i].alias_group.size() > 1)
-		{
-			os << "{";
-			for (std::size_t j = 1; j < sel.named[i].alias_group.size(); ++j) os << (j > 1 ? "," : "") << sel.named[i].alias_group[j];
-			os << "}";
-		}
-	}
+	writeNamedEffects(os, sel.named);
 	os << " rms2 before/after/oracle=" << out.rms_before_dph << "/" << out.rms_after_dph << "/" << out.rms_oracle_dph;
 	out.summary = os.str();
 	return out;
@@ -165,17 +171,7 @@ TrialOutcome runSimulatorTrial(const std::string& effect, std::uint64_t seed, co
 	out.gap_ok = out.rms_after_dph <= out.rms_before_dph;
 	std::ostringstream os;
 	os << "sim effect=" << (effect.empty() ? "none" : effect) << " seed=" << seed << " named=";
-	if (sel.named.empty()) os << "none";
-	for (std::size_t i = 0; i < sel.named.size(); ++i)
-	{
-		os << (i ? ";" : "") << sel.named[i].id;
-		if (sel.named[i].alias_group.size() > 1)
-		{
-			os << "{";
-			for (std::size_t j = 1; j < sel.named[i].alias_group.size(); ++j) os << (j > 1 ? "," : "") << sel.named[i].alias_group[j];
-			os << "}";
-		}
-	}
+	writeNamedEffects(os, sel.named);
 	os << " rms2 before/after=" << out.rms_before_dph << "/" << out.rms_after_dph;
 	out.summary = os.str();
 	return out;
