@@ -15,6 +15,7 @@
 
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "ThermistorScreeningReport.h"
 
 using namespace mrpt_fog;
 
@@ -27,6 +28,14 @@ WHAT IT DOES
   dropout switches to the calibration's fallback model without it (and back when it returns);
   temperatures or rates outside the calibrated range are clamped, never extrapolated. Counts
   of both are printed. A calibration made for another thermistor layout is refused.
+
+THERMISTOR SCREENING (on by default)
+  Before compensation every thermistor reading is screened causally (ThermistorHealth): a
+  reading stuck at one value for >= 30 s while another thermistor moved >= 0.2 C, a spike
+  (a jump > 0.5 C + 0.2 C/s x elapsed time, shorter than 20 s), or a value outside
+  [-80, 150] C is treated as a dropout, so the fallback model takes over until the sensor
+  behaves again. The counts are printed (and under "screening" in --json). The output keeps
+  the temperatures as read. --no-screening feeds the readings to the compensator unchanged.
 
 OUTPUT (by extension of -o)
   .rawlog   stock MRPT observations: per sample a CObservationIMU (compensated rates in
@@ -70,6 +79,10 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<std::string> arg_out("o", "output", "Output (.rawlog or .csv)", true, "", "OUT", cmd);
 		TCLAP::ValueArg<std::string> arg_label("", "label", "FOG sensor label in rawlogs with several", false, "", "L", cmd);
 		TCLAP::ValueArg<std::string> arg_json("", "json", "Write the summary as JSON", false, "", "FILE", cmd);
+		TCLAP::SwitchArg arg_no_screen("", "no-screening",
+									   "Do not screen thermistor readings (stuck / spike / out of range) before "
+									   "compensating",
+									   cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-compensate", kHelp)) return *rc;
 
 		const std::string out = arg_out.getValue(), ext = fileExtension(out);
@@ -77,10 +90,12 @@ int main(int argc, char** argv)
 			throw std::runtime_error("output '" + out + "': unknown file type '" + ext + "' (expected .rawlog or .csv)");
 		const Calibration cal = loadCalibrationYaml(arg_cal.getValue());
 		const FogSeries in = readFogLog(arg_in.getValue(), arg_label.getValue());
+		const bool screen = !arg_no_screen.getValue();
+		ThermistorScreening screening;
 		CompensatedSeries c;
 		try
 		{
-			c = compensate(cal, in);
+			c = compensate(cal, app::screenedForCompensation(in, screen, screening));
 		}
 		catch (const std::invalid_argument& e)
 		{
@@ -103,6 +118,7 @@ int main(int argc, char** argv)
 		std::printf("  clamped to the calibrated range: %zu samples (%zu signal values); rate warm-up: %zu samples; "
 					"model switches: %zu\n",
 					k.clamped_samples, k.clamped_signals, k.warmup_samples, k.model_switches);
+		std::fputs(app::screeningText(screening, screen).c_str(), stdout);
 		if (!arg_json.getValue().empty())
 		{
 			JsonValue j = JsonValue::object();
@@ -116,6 +132,7 @@ int main(int argc, char** argv)
 			j["clamped_signals"] = static_cast<unsigned long>(k.clamped_signals);
 			j["warmup_samples"] = static_cast<unsigned long>(k.warmup_samples);
 			j["model_switches"] = static_cast<unsigned long>(k.model_switches);
+			j["screening"] = app::screeningJson(screening, screen);
 			writeTextFileAtomically(arg_json.getValue(), j.dump());
 		}
 		return app::kExitOk;

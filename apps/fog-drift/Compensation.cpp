@@ -1,6 +1,8 @@
 /* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
 #include "Compensation.h"
 
+#include "ThermistorScreeningReport.h"
+
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/Compensator.h>
 
@@ -9,16 +11,17 @@
 
 namespace mrpt_fog::drift
 {
-std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string& cal_path)
+std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string& cal_path, bool screen_thermistors)
 {
 	const Calibration cal = loadCalibrationYaml(cal_path);
 	if (cal.axis != GyroAxis::Z)
 		throw std::runtime_error(cal_path + ": calibration is for axis " + std::string(1, axisLetter(cal.axis)) +
 								 "; fog-drift compensates the vertical (z) gyro");
 	CompensatedSeries out;
+	ThermistorScreening screening;
 	try
 	{
-		out = compensate(cal, fog);
+		out = compensate(cal, app::screenedForCompensation(fog, screen_thermistors, screening));
 	}
 	catch (const std::exception& e)
 	{
@@ -26,6 +29,7 @@ std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string&
 	}
 	if (out.compensated_dph.size() != fog.size())
 		throw std::runtime_error(cal_path + ": the compensator returned a different number of samples");
+	if (!screen_thermistors || screening.rejected_readings) std::fputs(app::screeningText(screening, screen_thermistors).c_str(), stdout);
 	const auto& c = out.counters;
 	if (c.fallback_samples || c.no_model_samples || c.clamped_samples)
 		std::printf("  compensation: %zu samples, %zu on a fallback model, %zu without model, %zu clamped to the "

@@ -3,7 +3,8 @@
 
 /** \file Compensation.h
  * The compensated FOG rate of a drive: the calibration file loaded and run through the causal
- * Compensator (mrpt_fog/model/Compensator.h), sample by sample as in real time. */
+ * Compensator (mrpt_fog/model/Compensator.h), sample by sample as in real time, after the
+ * thermistor screening that a real-time implementation would run. */
 
 #include <mrpt_fog/obs/FogSeries.h>
 
@@ -12,8 +13,10 @@
 
 namespace mrpt_fog::drift
 {
-/** Compensated z-axis rate [deg/h], one value per sample of fog. Throws on an unreadable
- * calibration, a calibration for another axis or a layout mismatch (message names the file). */
-std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string& cal_path);
+/** Compensated z-axis rate [deg/h], one value per sample of fog. With `screen_thermistors` the
+ * thermistor readings are screened first (stuck / spike / out of range -> dropout, see
+ * ThermistorHealth.h; a summary is printed). Throws on an unreadable calibration, a
+ * calibration for another axis or a layout mismatch (message names the file). */
+std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string& cal_path, bool screen_thermistors);
 
 }  // namespace mrpt_fog::drift

@@ -84,6 +84,10 @@ int main(int argc, char** argv)
 											  "gyro samples are the mean rate over the preceding interval ('average', digital FOGs and fog-sim) or 'instantaneous' (trapezoid rule) "
 											  "preceding interval",
 											  false, "average", "KIND", cmd);
+		TCLAP::SwitchArg no_screen("", "no-screening",
+								   "do not screen the FOG's thermistor readings (stuck / spike / out of range -> "
+								   "dropout, fallback model) before compensating",
+								   cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-drift")) return *rc;
 
 		drift::HeadingOptions hopt;
@@ -120,7 +124,7 @@ int main(int argc, char** argv)
 			const double cal_lat_deg = std::isfinite(cal_lat.getValue()) ? cal_lat.getValue() : hopt.latitude_deg;
 			if (!(std::abs(cal_lat_deg) <= 90)) throw std::runtime_error("--cal-latitude-deg: must be within [-90, 90]");
 			if (!cal_no_earth.getValue()) cal_earth_dph = units::kEarthRate_dph * std::sin(cal_lat_deg * units::kDegToRad);
-			std::vector<double> comp = drift::compensatedRate_dph(drive.fog, cal.getValue());
+			std::vector<double> comp = drift::compensatedRate_dph(drive.fog, cal.getValue(), !no_screen.getValue());
 			for (double& r : comp) r += cal_earth_dph;
 			run("compensated", t_fog, comp);
 		}

@@ -49,6 +49,7 @@ void ThermistorHealthSettings::validate() const
 	requireField(std::isfinite(spike_max_duration_s) && spike_max_duration_s >= 0, "spike_max_duration_s",
 				 "must be >= 0");
 	requireField(std::isfinite(stuck_window_s) && stuck_window_s > 0, "stuck_window_s", "must be > 0");
+	requireField(stuck_min_samples >= 2, "stuck_min_samples", "must be >= 2");
 	requireField(std::isfinite(stuck_tolerance_C) && stuck_tolerance_C >= 0, "stuck_tolerance_C", "must be >= 0");
 	requireField(std::isfinite(stuck_peer_change_C) && stuck_peer_change_C > stuck_tolerance_C, "stuck_peer_change_C",
 				 "must be > stuck_tolerance_C");
@@ -78,6 +79,7 @@ void ThermistorHealth::startRun(std::size_t i, double t, double value, const dou
 	c.has_run = true;
 	c.run_value_C = value;
 	c.run_start_t = t;
+	c.run_samples = 1;
 	for (std::size_t j = 0; j < ch_.size(); j++) c.peer_at_run_start[j] = (j == i) ? kNaN : v[j];
 }
 
@@ -156,6 +158,7 @@ bool ThermistorHealth::step(double time_s, double* temp_C)
 			}
 			else
 			{
+				c.run_samples++;
 				double moved = 0;
 				for (std::size_t j = 0; j < ch_.size(); j++)
 				{
@@ -163,7 +166,8 @@ bool ThermistorHealth::step(double time_s, double* temp_C)
 					if (std::isnan(c.peer_at_run_start[j])) c.peer_at_run_start[j] = raw_[j];
 					moved = std::max(moved, std::abs(raw_[j] - c.peer_at_run_start[j]));
 				}
-				if (time_s - c.run_start_t >= s.stuck_window_s && moved >= s.stuck_peer_change_C)
+				if (time_s - c.run_start_t >= s.stuck_window_s && c.run_samples >= s.stuck_min_samples &&
+					moved >= s.stuck_peer_change_C)
 				{
 					c.stuck = true;
 					c.counters.stuck_events++;

@@ -14,8 +14,10 @@
  *    If the readings stay that far away for longer than spike_max_duration_s, the new level is
  *    accepted (a real jump, e.g. a re-seated sensor), counted as a level change.
  *  - Stuck: a reading that has stayed within stuck_tolerance_C of one value for at least
- *    stuck_window_s while some other thermistor of the same gyro moved by at least
- *    stuck_peer_change_C over that same interval. It stays flagged until the reading moves
+ *    stuck_window_s AND stuck_min_samples readings while some other thermistor of the same gyro
+ *    moved by at least stuck_peer_change_C over that same interval. (The sample count keeps
+ *    slow logs honest: at 0.1 Hz a quantised (0.01 C) reading legitimately repeats for 3-4
+ *    samples at a temperature turnaround while a peer on the other coil surface moves.) It stays flagged until the reading moves
  *    again. A sensor that is constant while all others are constant too is not flagged: its
  *    value is then right, and a single thermistor cannot be told stuck from steady.
  *    Readings of a stuck sensor before detection (up to stuck_window_s) pass unchanged.
@@ -42,6 +44,7 @@ struct ThermistorHealthSettings
 	double max_rate_C_per_s = 0.2;  //!< fastest credible coil temperature change [degC/s]
 	double spike_max_duration_s = 20.0;  //!< a longer excursion is accepted as a new level [s]
 	double stuck_window_s = 30.0;  //!< constant this long (with a moving peer) = stuck [s]
+	std::size_t stuck_min_samples = 10;  //!< ... and for at least this many readings
 	double stuck_tolerance_C = 0.0;  //!< "constant": within this of the run's first value [degC]
 	double stuck_peer_change_C = 0.2;  //!< a peer must move this much in the window [degC]
 
@@ -95,6 +98,7 @@ class ThermistorHealth
 		bool in_excursion = false;
 		bool has_run = false;  // a constant run is being tracked
 		double run_value_C = 0, run_start_t = 0;
+		std::size_t run_samples = 0;  // readings in the current constant run
 		std::vector<double> peer_at_run_start;  // peers' readings when the run started (NaN: none yet)
 		bool stuck = false;
 		ThermistorHealthCounters counters;

@@ -1,0 +1,54 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include "ThermistorScreeningReport.h"
+
+#include <sstream>
+
+namespace mrpt_fog::app
+{
+FogSeries screenedForCompensation(const FogSeries& in, bool enabled, ThermistorScreening& screening)
+{
+	FogSeries out = in;
+	screening = ThermistorScreening{};
+	if (enabled) screening = screenThermistors(out);
+	return out;
+}
+
+std::string screeningText(const ThermistorScreening& s, bool enabled)
+{
+	if (!enabled) return "  thermistor screening: off (--no-screening)\n";
+	if (s.rejected_readings == 0) return "  thermistor screening: all readings accepted\n";
+	std::ostringstream o;
+	o << "  thermistor screening: " << s.rejected_readings
+	  << " readings rejected (treated as dropouts: the fallback model covers them)\n";
+	for (std::size_t i = 0; i < s.names.size(); i++)
+	{
+		const auto& c = s.counters[i];
+		if (c.stuck + c.spike + c.out_of_range == 0) continue;
+		o << "    thermistor " << s.names[i] << ": stuck " << c.stuck << " samples (" << c.stuck_events
+		  << " events), spike " << c.spike << ", out of range " << c.out_of_range << "\n";
+	}
+	return o.str();
+}
+
+JsonValue screeningJson(const ThermistorScreening& s, bool enabled)
+{
+	JsonValue j = JsonValue::object();
+	j["enabled"] = enabled;
+	j["rejected_readings"] = static_cast<unsigned long>(s.rejected_readings);
+	JsonValue& th = j["thermistors"];
+	th = JsonValue::object();
+	for (std::size_t i = 0; i < s.names.size(); i++)
+	{
+		const auto& c = s.counters[i];
+		JsonValue& t = th[s.names[i]];
+		t["stuck"] = static_cast<unsigned long>(c.stuck);
+		t["stuck_events"] = static_cast<unsigned long>(c.stuck_events);
+		t["spike"] = static_cast<unsigned long>(c.spike);
+		t["out_of_range"] = static_cast<unsigned long>(c.out_of_range);
+		t["dropout"] = static_cast<unsigned long>(c.dropout);
+		t["level_changes"] = static_cast<unsigned long>(c.level_changes);
+	}
+	return j;
+}
+
+}  // namespace mrpt_fog::app

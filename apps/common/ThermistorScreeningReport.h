@@ -1,0 +1,29 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file ThermistorScreeningReport.h
+ * What the programs that compensate (fog-compensate, fog-drift) print and write about the
+ * thermistor screening (mrpt_fog/model/ThermistorHealth.h) they run before the Compensator:
+ * stuck, spiking or out-of-range readings become dropouts, so the fallback model takes over. */
+
+#include <mrpt_fog/common/JsonWriter.h>
+#include <mrpt_fog/model/ThermistorHealth.h>
+
+#include <string>
+
+namespace mrpt_fog::app
+{
+/** Screens a copy of the series' thermistors (the caller's data is kept as read) and returns
+ * it with the counts. With `enabled` false the copy is returned unscreened (all counts 0). */
+FogSeries screenedForCompensation(const FogSeries& in, bool enabled, ThermistorScreening& screening);
+
+/** One line per thermistor with a rejected reading ("  thermistor T3: stuck 412 samples (1
+ * event), spike 0, out of range 0"); "  thermistor screening: all readings accepted" when
+ * none; "  thermistor screening: off" when disabled. */
+std::string screeningText(const ThermistorScreening& s, bool enabled);
+
+/** {"enabled": bool, "rejected_readings": n, "thermistors": {name: {stuck, stuck_events,
+ * spike, out_of_range, dropout, level_changes}}}. */
+JsonValue screeningJson(const ThermistorScreening& s, bool enabled);
+
+}  // namespace mrpt_fog::app
