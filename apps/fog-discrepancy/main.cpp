@@ -3,10 +3,12 @@
  * physical effect is missing, and how much the gap shrinks once it is added.
  *
  *   fog-discrepancy --measured A.rawlog [--measured B.rawlog] --model multipoint --json out.json --plots dir
+ *   fog-discrepancy --measured A.csv [--measured B.csv] --sim SIM.yaml --json out.json
  */
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/discrepancy/DiscrepancyAnalysis.h>
+#include <mrpt_fog/discrepancy/SimulatorGap.h>
 #include <mrpt_fog/io/FogLogIO.h>
 
 #include <filesystem>
@@ -31,7 +33,7 @@ int main(int argc, char** argv)
 										   "bias model to test: preset (multipoint, M1..M4[:...], points:K, "
 										   "static:P[:NAME]) or calibration YAML; refitted on the measured run",
 										   false, "", "PRESET|CAL.yaml");
-		TCLAP::ValueArg<std::string> sim("", "sim", "simulator configuration to test (not yet supported)", false, "",
+		TCLAP::ValueArg<std::string> sim("", "sim", "simulator configuration to test (device, effects, free parameters, profile; see docs/discrepancy-sim.md); its free parameters are calibrated to the measured run", false, "",
 										 "SIM.yaml");
 		cmd.xorAdd(model, sim);
 		TCLAP::ValueArg<std::string> json("", "json", "write the figures as JSON", false, "", "FILE", cmd);
@@ -41,11 +43,6 @@ int main(int argc, char** argv)
 										   "LABEL", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-discrepancy")) return *rc;
 
-		if (sim.isSet())
-			throw std::runtime_error(
-				"--sim " + sim.getValue() +
-				": testing a simulator configuration is not yet supported (it needs calibrating the simulator's free "
-				"parameters to the measured run); use --model PRESET|CAL.yaml");
 		if (measured.getValue().size() > 2)
 			throw std::runtime_error("--measured given " + std::to_string(measured.getValue().size()) +
 									 " times: at most two runs (the first is analysed, the second confirms)");
@@ -64,15 +61,41 @@ int main(int argc, char** argv)
 		discrepancy::DiscrepancyOptions opt;
 		opt.selection.alpha = alpha.getValue();
 		discrepancy::DiscrepancyReport rep;
-		try
+		JsonValue doc;
+		std::string text;
+		if (sim.isSet())
 		{
-			rep = discrepancy::analyseDiscrepancy(runs, labels, model.getValue(), opt);
+			const auto cfg = discrepancy::readSimulatorConfig(sim.getValue());
+			discrepancy::SimDiscrepancyOptions sopt;
+			sopt.base = opt;
+			sopt.heat.alpha = alpha.getValue();
+			discrepancy::SimDiscrepancyReport srep;
+			try
+			{
+				srep = discrepancy::analyseSimulatorDiscrepancy(runs, labels, cfg, sopt);
+			}
+			catch (const std::invalid_argument& e)
+			{
+				throw std::runtime_error(measured.getValue().front() + ": " + e.what());
+			}
+			rep = srep.report;
+			doc = discrepancy::simDiscrepancyJson(srep);
+			text = discrepancy::simDiscrepancyText(srep);
 		}
-		catch (const std::invalid_argument& e)
+		else
 		{
-			throw std::runtime_error(measured.getValue().front() + ": " + e.what());
+			try
+			{
+				rep = discrepancy::analyseDiscrepancy(runs, labels, model.getValue(), opt);
+			}
+			catch (const std::invalid_argument& e)
+			{
+				throw std::runtime_error(measured.getValue().front() + ": " + e.what());
+			}
+			doc = discrepancy::discrepancyJson(rep);
+			text = discrepancy::discrepancyText(rep);
 		}
-		std::cout << discrepancy::discrepancyText(rep);
+		std::cout << text;
 		if (plots.isSet())
 		{
 			const std::filesystem::path dir(plots.getValue());
@@ -87,7 +110,7 @@ int main(int argc, char** argv)
 		}
 		if (json.isSet())
 		{
-			writeTextFileAtomically(json.getValue(), discrepancy::discrepancyJson(rep).dump());
+			writeTextFileAtomically(json.getValue(), doc.dump());
 			std::cout << "Wrote " << json.getValue() << "\n";
 		}
 		return 0;

@@ -137,6 +137,13 @@ GapFigures gapFigures(const std::vector<double>& time_s, const Eigen::VectorXd& 
 	return f;
 }
 
+RunGap runGapFromResiduals(const std::string& label, const RunSignals& sig, const std::vector<Segment>& segments,
+						   const Eigen::VectorXd& before, const Eigen::VectorXd& after,
+						   const std::vector<unsigned char>& rows, const DiscrepancyOptions& opt)
+{
+	return makeRunGap(label, sig, segments, before, after, rows, opt);
+}
+
 std::string DiscrepancyReport::verdict() const
 {
 	if (selection.named.empty()) return "no missing effect found";

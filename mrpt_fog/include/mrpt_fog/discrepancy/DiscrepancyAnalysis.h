@@ -78,6 +78,12 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 GapFigures gapFigures(const std::vector<double>& time_s, const Eigen::VectorXd& residual_dph,
 					  const std::vector<unsigned char>& rows, double tau_s);
 
+/** Gap figures of one run from two residuals (before / after) over rows, segments ranked by the
+ * energy before (what analyseDiscrepancy reports; also used by the simulator path). */
+RunGap runGapFromResiduals(const std::string& label, const RunSignals& sig, const std::vector<Segment>& segments,
+						   const Eigen::VectorXd& before_dph, const Eigen::VectorXd& after_dph,
+						   const std::vector<unsigned char>& rows, const DiscrepancyOptions& opt = {});
+
 /** JSON document (stable keys: named_effects, segments, gap.before.rms_dph, gap.after.rms_dph,
  * gap_confirm..., see docs/discrepancy.md). */
 JsonValue discrepancyJson(const DiscrepancyReport& report);

@@ -1,0 +1,58 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file SimulatorCalibration.h
+ * Calibrates the simulator's free parameters (SimulatorConfig.h) to one measured run, in two
+ * stages, because the temperatures drive the bias but not the other way round:
+ *  1. temperature channel: thermal_time_scale and electronics_power_W by damped Gauss-Newton
+ *     (finite-difference Jacobian through the full simulator) on the thermistor residuals, the
+ *     thermistor offsets (when free) solved inside each evaluation as each thermistor's mean
+ *     residual (variable projection); all samples with a finite reading count (powered or not);
+ *  2. bias channel: every free bias parameter by damped Gauss-Newton on the bias residual over
+ *     `bias_rows` (linear coefficients converge in one step; the winding asymmetry enters the
+ *     Shupe weights nonlinearly).
+ * The result holds the bias Jacobian at the optimum: the linearised calibrated model, which the
+ * bias-channel selector (EffectSelector) uses as its base design.
+ */
+
+#include <mrpt_fog/discrepancy/SimulatedRun.h>
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+namespace mrpt_fog::discrepancy
+{
+struct SimCalibration
+{
+	SimModel model;  //!< calibrated
+	std::vector<ParamSlot> temp_slots, bias_slots;
+	SimTrace trace;  //!< at the calibrated model
+	/** n x bias_slots: d(simulated bias)/d(parameter) at the optimum (0 off bias_rows). */
+	Eigen::MatrixXd bias_jacobian;
+	double bias_rms_dph = 0;  //!< over bias_rows
+	double temp_rms_C = 0;  //!< over every thermistor and finite sample
+	int simulations = 0;  //!< simulator runs used
+};
+
+/** Bias residual measured - simulated [deg/h] (0 where rows is 0 or the simulation is NaN). */
+Eigen::VectorXd biasResidual(const std::vector<double>& measured_bias_dph, const SimTrace& tr,
+							 const std::vector<unsigned char>& rows);
+
+/** Temperature residual measured - simulated per run thermistor [degC] (NaN where unknown). */
+std::vector<std::vector<double>> temperatureResidual(const FogSeries& run, const SimTrace& tr);
+
+/** RMS over every finite entry. */
+double rmsOfFinite(const std::vector<std::vector<double>>& r);
+
+/** Calibrates `start`'s free parameters (ids; see SimulatorConfig.h) on a run. */
+SimCalibration calibrateSimulator(const SimModel& start, const std::vector<std::string>& free, const FogSeries& run,
+								  const ChamberDrive& drive, const std::vector<double>& measured_bias_dph,
+								  const std::vector<unsigned char>& bias_rows);
+
+/** Only the constant bias re-estimated (the confirmation run: turn-on bias repeatability). */
+SimCalibration applyCalibration(const SimModel& calibrated, const std::vector<std::string>& free, const FogSeries& run,
+								const ChamberDrive& drive, const std::vector<double>& measured_bias_dph,
+								const std::vector<unsigned char>& bias_rows);
+
+}  // namespace mrpt_fog::discrepancy

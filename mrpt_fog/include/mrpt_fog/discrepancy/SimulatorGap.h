@@ -1,0 +1,74 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file SimulatorGap.h
+ * The model-gap workflow when the model under test is a simulator configuration
+ * (`fog-discrepancy --sim SIM.yaml`):
+ *  1. drive the simulator with the run's chamber conditions (SimulatedRun.h) and calibrate its
+ *     free parameters to the run (SimulatorCalibration.h): residuals of the bias and of every
+ *     thermistor;
+ *  2. temperature channel first (a wrong simulated temperature propagates into the simulated
+ *     bias): test the thermistor residual for `heat_source` (HeatSourceCandidate.h) when the
+ *     configuration has it off; if named, switch it on (electronics_power_W free) and recalibrate;
+ *  3. bias channel: the existing selector (EffectSelector.h) on the bias residual, with the
+ *     calibrated simulator linearised (its Jacobian in the free bias parameters) as the base
+ *     design; candidates = the bias-channel library ids whose simulator effect is off
+ *     (thermistor_lag excluded: in the simulator it is a sensor lag, seen in the temperatures);
+ *  4. switch every named effect on (its coefficient free; warm-up tau from the profile search),
+ *     recalibrate, and show the gap before/after: bias residual (RMS, 100 s stability, range, per
+ *     segment) and thermistor residual RMS, on the run and on the confirmation run (parameters
+ *     from the first run, only the constant bias re-estimated).
+ */
+
+#include <mrpt_fog/discrepancy/DiscrepancyAnalysis.h>
+#include <mrpt_fog/discrepancy/HeatSourceCandidate.h>
+#include <mrpt_fog/discrepancy/SimulatorCalibration.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace mrpt_fog::discrepancy
+{
+struct SimDiscrepancyOptions
+{
+	DiscrepancyOptions base;
+	HeatSourceOptions heat;
+};
+
+/** Thermistor residual RMS before/after [degC]. */
+struct TemperatureGap
+{
+	std::string label;
+	double rms_before_C = 0, rms_after_C = 0;
+	std::vector<std::string> names;
+	std::vector<double> rms_before_per_C, rms_after_per_C;
+};
+
+struct SimDiscrepancyReport
+{
+	DiscrepancyReport report;  //!< named_effects (heat_source first when named), segments, gap...
+	std::string config_source;
+	std::string drive, drive_confirm;  //!< how the driving input was obtained
+	std::vector<std::string> effects_before, effects_after;
+	std::vector<std::string> free_before, free_after;
+	std::vector<std::pair<std::string, double>> calibrated_before, calibrated_after;
+	HeatSourceResult heat;
+	HeatSourceConfirm heat_confirm;
+	TemperatureGap temp_gap, temp_gap_confirm;
+	int simulations = 0;
+};
+
+/** Runs the workflow on runs[0] (runs[1], optional, confirms). Throws std::invalid_argument on
+ * bad input (no profile for a run, layouts differ, thermistor absent from the device...). */
+SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& runs,
+												 const std::vector<std::string>& run_labels,
+												 const SimulatorConfig& config, const SimDiscrepancyOptions& opt = {});
+
+/** discrepancyJson plus the simulator keys (docs/discrepancy-sim.md). */
+JsonValue simDiscrepancyJson(const SimDiscrepancyReport& r);
+
+/** Readable report. */
+std::string simDiscrepancyText(const SimDiscrepancyReport& r);
+
+}  // namespace mrpt_fog::discrepancy

@@ -1,0 +1,193 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/discrepancy/SimulatedRun.h>
+#include <mrpt_fog/sim/ChamberRun.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <stdexcept>
+
+namespace mrpt_fog::discrepancy
+{
+namespace
+{
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+sim::ChamberProfile loadProfile(const std::string& name)
+{
+	const auto presets = sim::ChamberProfile::presetNames();
+	if (std::find(presets.begin(), presets.end(), name) != presets.end()) return sim::ChamberProfile::preset(name);
+	if (std::filesystem::exists(name)) return sim::ChamberProfile::fromFile(name);
+	throw std::invalid_argument("chamber profile '" + name + "' is neither a built-in profile nor a readable file");
+}
+
+double medianStep(const std::vector<double>& t)
+{
+	std::vector<double> d;
+	for (std::size_t k = 1; k < t.size(); ++k) d.push_back(t[k] - t[k - 1]);
+	if (d.empty()) throw std::invalid_argument("run has fewer than two samples");
+	std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
+	return d[d.size() / 2];
+}
+}  // namespace
+
+ChamberDrive chamberDriveForRun(const FogSeries& run, const SimulatorConfig& cfg)
+{
+	ChamberDrive d;
+	std::string name = cfg.profile;
+	if (!name.empty())
+		d.how = "profile '" + name + "' given in " + cfg.source;
+	else
+	{
+		name = run.metadataValue("sim.profile");
+		if (name.empty())
+			throw std::invalid_argument(
+				"no chamber profile: the run's metadata has no sim.profile and " + cfg.source +
+				" gives no `profile:`; the measured columns do not carry the chamber air temperature that drives "
+				"the simulator");
+		d.how = "profile '" + name + "' from the run's metadata sim.profile";
+	}
+	d.profile = loadProfile(name);
+	const double dt = medianStep(run.time_s);
+	if (!(dt > 0)) throw std::invalid_argument("run time step is not positive");
+	d.rate_hz = 1.0 / dt;
+	const double last = std::floor(d.profile.duration_s() * d.rate_hz + 1e-9);
+	d.sim_index.resize(run.size());
+	for (std::size_t k = 0; k < run.size(); ++k)
+	{
+		const double x = run.time_s[k] * d.rate_hz;
+		const double idx = std::round(x);
+		if (std::abs(x - idx) > 1e-3 || idx < 0 || idx > last)
+			throw std::invalid_argument("run sample " + std::to_string(k) + " (t = " + std::to_string(run.time_s[k]) +
+										" s) is not on the " + std::to_string(dt) + " s grid of profile '" + name +
+										"' (duration " + std::to_string(d.profile.duration_s()) + " s)");
+		d.sim_index[k] = static_cast<std::size_t>(idx);
+		if (run.power.size() == run.size())
+		{
+			const bool on = d.profile.stateAt(idx / d.rate_hz).power_on;
+			if (on != (run.power[k] >= 0.5))
+				throw std::invalid_argument("the run's power column disagrees with profile '" + name + "' at t = " +
+											std::to_string(run.time_s[k]) + " s: not the profile this run followed");
+		}
+	}
+	return d;
+}
+
+SimModel simModelFromConfig(const SimulatorConfig& cfg)
+{
+	SimModel m;
+	m.device = cfg.device;
+	m.effects = cfg.effects;
+	return m;
+}
+
+SimTrace simulateOnRun(const SimModel& model, const ChamberDrive& drive, const FogSeries& run)
+{
+	sim::FogDevice dev = model.device;
+	dev.noise.arw_deg_rt_h = 0;
+	dev.noise.bias_instability_dph = 0;
+	dev.noise.rrw_deg_h_rt_h = 0;
+	dev.noise.angle_quantum_arcsec = 0;
+	dev.thermistor_noise_C = 0;
+	dev.thermistor_quantum_C = 0;
+	const double s = model.thermal_time_scale;
+	dev.thermal.volumetric_heat_capacity_J_m3K *= s;
+	dev.thermal.hub_capacity_J_K *= s;
+	dev.thermal.housing_capacity_J_K *= s;
+	dev.thermal.mount_capacity_J_K *= s;
+	dev.thermal.electronics_capacity_J_K *= s;
+
+	std::vector<int> devIndex;
+	for (const auto& th : run.thermistors)
+	{
+		int found = -1;
+		for (std::size_t j = 0; j < dev.thermistors.size(); ++j)
+			if (dev.thermistors[j].info.name == th.name) found = static_cast<int>(j);
+		if (found < 0)
+			throw std::invalid_argument("run thermistor '" + th.name + "' is not a thermistor of the simulated device");
+		devIndex.push_back(found);
+	}
+	sim::SimSettings settings;
+	settings.seed = 1;
+	settings.rate_hz = drive.rate_hz;
+	settings.effects = model.effects;
+	const FogSeries out = sim::simulateChamber(drive.profile, dev, settings);
+	const auto& rate = out.primaryRate_dph();
+
+	SimTrace tr;
+	const std::size_t n = run.size();
+	tr.bias_dph.assign(n, kNaN);
+	tr.temp_C.assign(run.thermistorCount(), std::vector<double>(n, kNaN));
+	for (std::size_t k = 0; k < n; ++k)
+	{
+		const std::size_t j = drive.sim_index[k];
+		if (j >= out.size()) continue;
+		const bool on = out.power.empty() || out.power[j] >= 0.5;
+		const double table = out.table_rate_dph.empty() ? 0.0 : out.table_rate_dph[j];
+		if (on) tr.bias_dph[k] = rate[j] - table;
+		for (std::size_t i = 0; i < devIndex.size(); ++i) tr.temp_C[i][k] = out.temp_C[static_cast<std::size_t>(devIndex[i])][j];
+	}
+	return tr;
+}
+
+std::string ParamSlot::label() const
+{
+	if (id == "temp_poly_dph" || id == "thermistor_offsets_C") return id + "[" + std::to_string(index) + "]";
+	return id;
+}
+
+std::vector<ParamSlot> expandSlots(const std::vector<std::string>& free, const SimModel& m)
+{
+	std::vector<ParamSlot> out;
+	auto effectOn = [&](const std::string& id)
+	{
+		for (const auto& e : sim::allEffectIds())
+			if (coefficientParameterOf(e) == id) return m.effects.count(e) > 0;
+		return true;  // constant, scale, offsets
+	};
+	for (const auto& id : free)
+	{
+		if (!effectOn(id)) continue;
+		if (id == "temp_poly_dph")
+			for (std::size_t i = 0; i < m.device.errors.temp_poly_dph.size(); ++i) out.push_back({id, static_cast<int>(i)});
+		else if (id == "thermistor_offsets_C")
+			for (std::size_t i = 0; i < m.device.thermistors.size(); ++i) out.push_back({id, static_cast<int>(i)});
+		else
+			out.push_back({id, 0});
+	}
+	return out;
+}
+
+namespace
+{
+double* slotRef(SimModel& m, const ParamSlot& s)
+{
+	auto& e = m.device.errors;
+	if (s.id == "constant_bias_dph") return &e.constant_bias_dph;
+	if (s.id == "winding_asymmetry_m") return &m.device.winding.midpoint_offset_m;
+	if (s.id == "radial_gradient_dph_per_C") return &e.radial_gradient_dph_per_C;
+	if (s.id == "gradient_rate_dph_per_C_per_min") return &e.gradient_rate_dph_per_C_per_min;
+	if (s.id == "hysteresis_dph") return &e.hysteresis_dph;
+	if (s.id == "warmup_dph") return &e.warmup_dph;
+	if (s.id == "sf_ppm_per_C") return &e.sf_ppm_per_C;
+	if (s.id == "magnetic_dph_per_uT") return &e.magnetic_dph_per_uT;
+	if (s.id == "temp_poly_dph") return &e.temp_poly_dph.at(static_cast<std::size_t>(s.index));
+	if (s.id == "electronics_power_W") return &m.device.thermal.electronics_power_W;
+	if (s.id == "thermal_time_scale") return &m.thermal_time_scale;
+	if (s.id == "thermistor_offsets_C") return &m.device.thermistors.at(static_cast<std::size_t>(s.index)).offset_C;
+	throw std::invalid_argument("unknown free parameter '" + s.id + "'");
+}
+}  // namespace
+
+double getParam(const SimModel& m, const ParamSlot& s) { return *slotRef(const_cast<SimModel&>(m), s); }
+
+void setParam(SimModel& m, const ParamSlot& s, double v)
+{
+	if (s.id == "hysteresis_dph") v = std::max(v, 0.0);
+	if (s.id == "electronics_power_W") v = std::max(v, 1e-6);
+	if (s.id == "thermal_time_scale") v = std::clamp(v, 0.2, 5.0);
+	*slotRef(m, s) = v;
+}
+
+}  // namespace mrpt_fog::discrepancy

@@ -1,0 +1,212 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/discrepancy/SimulatorCalibration.h>
+#include <mrpt_fog/discrepancy/WhitenedRegression.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace mrpt_fog::discrepancy
+{
+namespace
+{
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+bool isTempSlot(const ParamSlot& s) { return s.id == "thermal_time_scale" || s.id == "electronics_power_W"; }
+
+/** Finite-difference step of a slot: a typical size of the parameter. */
+double fdStep(const ParamSlot& s, double v)
+{
+	static const std::pair<const char*, double> typ[] = {
+		{"constant_bias_dph", 0.01},  {"winding_asymmetry_m", 0.05}, {"radial_gradient_dph_per_C", 1e-3},
+		{"gradient_rate_dph_per_C_per_min", 1e-3}, {"hysteresis_dph", 1e-3}, {"warmup_dph", 1e-3},
+		{"sf_ppm_per_C", 0.1},		  {"magnetic_dph_per_uT", 1e-5}, {"temp_poly_dph", 1e-5},
+		{"electronics_power_W", 0.05}, {"thermal_time_scale", 0.01}};
+	double t = 1e-3;
+	for (const auto& [id, h] : typ)
+		if (s.id == id) t = h;
+	return std::max(t, 1e-3 * std::abs(v));
+}
+
+/** Stacked temperature residual (offsets projected out when free); NaN entries give 0 and are
+ * listed in `ok`. */
+Eigen::VectorXd tempResidualVector(const FogSeries& run, const SimTrace& tr, bool offsets_free,
+								   std::vector<double>* offset_shift = nullptr)
+{
+	const auto r = temperatureResidual(run, tr);
+	const std::size_t n = run.size(), nt = r.size();
+	Eigen::VectorXd v = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n * nt));
+	if (offset_shift) offset_shift->assign(nt, 0.0);
+	for (std::size_t i = 0; i < nt; ++i)
+	{
+		double mean = 0;
+		std::size_t m = 0;
+		for (double x : r[i])
+			if (std::isfinite(x)) mean += x, ++m;
+		mean = (offsets_free && m) ? mean / m : 0.0;
+		if (offset_shift) (*offset_shift)[i] = mean;
+		for (std::size_t k = 0; k < n; ++k)
+			if (std::isfinite(r[i][k])) v(static_cast<Eigen::Index>(i * n + k)) = r[i][k] - mean;
+	}
+	return v;
+}
+
+/** Damped Gauss-Newton with a forward-difference Jacobian. `residual` evaluates a model. */
+template <class F>
+SimModel gaussNewton(SimModel m, const std::vector<ParamSlot>& slots, F residual, int max_iter, int& sims)
+{
+	if (slots.empty()) return m;
+	Eigen::VectorXd r = residual(m);
+	++sims;
+	double rss = r.squaredNorm();
+	for (int it = 0; it < max_iter; ++it)
+	{
+		Eigen::MatrixXd J(r.size(), static_cast<Eigen::Index>(slots.size()));
+		for (std::size_t j = 0; j < slots.size(); ++j)
+		{
+			SimModel mj = m;
+			const double v = getParam(m, slots[j]), h = fdStep(slots[j], v);
+			setParam(mj, slots[j], v + h);
+			const double hEff = getParam(mj, slots[j]) - v;
+			J.col(static_cast<Eigen::Index>(j)) = hEff != 0 ? Eigen::VectorXd((residual(mj) - r) / hEff) : Eigen::VectorXd::Zero(r.size());
+			++sims;
+		}
+		// r(p + d) ~ r + J d -> minimise |r + J d|
+		const LsFit fit = leastSquares(J, -r);
+		bool improved = false;
+		for (double lambda = 1.0; lambda > 1e-3; lambda *= 0.5)
+		{
+			SimModel trial = m;
+			for (std::size_t j = 0; j < slots.size(); ++j)
+				setParam(trial, slots[j], getParam(m, slots[j]) + lambda * fit.coef(static_cast<Eigen::Index>(j)));
+			const Eigen::VectorXd rt = residual(trial);
+			++sims;
+			if (rt.squaredNorm() < rss)
+			{
+				const double gain = (rss - rt.squaredNorm()) / std::max(rss, 1e-300);
+				m = trial;
+				r = rt;
+				rss = rt.squaredNorm();
+				improved = gain > 1e-9;
+				break;
+			}
+		}
+		if (!improved) break;
+	}
+	return m;
+}
+
+Eigen::MatrixXd biasJacobian(const SimModel& m, const std::vector<ParamSlot>& slots, const ChamberDrive& drive,
+							 const FogSeries& run, const SimTrace& at, const std::vector<unsigned char>& rows, int& sims)
+{
+	const auto n = static_cast<Eigen::Index>(run.size());
+	Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(slots.size()));
+	for (std::size_t j = 0; j < slots.size(); ++j)
+	{
+		SimModel mj = m;
+		const double v = getParam(m, slots[j]), h = fdStep(slots[j], v);
+		setParam(mj, slots[j], v + h);
+		const double hEff = getParam(mj, slots[j]) - v;
+		const SimTrace tj = simulateOnRun(mj, drive, run);
+		++sims;
+		for (Eigen::Index k = 0; k < n; ++k)
+		{
+			const auto ku = static_cast<std::size_t>(k);
+			if (rows[ku] && std::isfinite(tj.bias_dph[ku]) && std::isfinite(at.bias_dph[ku]) && hEff != 0)
+				J(k, static_cast<Eigen::Index>(j)) = (tj.bias_dph[ku] - at.bias_dph[ku]) / hEff;
+		}
+	}
+	return J;
+}
+
+void finish(SimCalibration& c, const FogSeries& run, const ChamberDrive& drive, const std::vector<double>& bias,
+			const std::vector<unsigned char>& rows)
+{
+	c.trace = simulateOnRun(c.model, drive, run);
+	++c.simulations;
+	const auto rb = biasResidual(bias, c.trace, rows);
+	std::size_t m = 0;
+	for (std::size_t k = 0; k < rows.size(); ++k) m += rows[k] != 0;
+	c.bias_rms_dph = m ? std::sqrt(rb.squaredNorm() / m) : kNaN;
+	c.temp_rms_C = rmsOfFinite(temperatureResidual(run, c.trace));
+	c.bias_jacobian = biasJacobian(c.model, c.bias_slots, drive, run, c.trace, rows, c.simulations);
+}
+}  // namespace
+
+Eigen::VectorXd biasResidual(const std::vector<double>& measured, const SimTrace& tr, const std::vector<unsigned char>& rows)
+{
+	Eigen::VectorXd r = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(measured.size()));
+	for (std::size_t k = 0; k < measured.size(); ++k)
+		if (rows[k] && std::isfinite(tr.bias_dph[k]) && std::isfinite(measured[k]))
+			r(static_cast<Eigen::Index>(k)) = measured[k] - tr.bias_dph[k];
+	return r;
+}
+
+std::vector<std::vector<double>> temperatureResidual(const FogSeries& run, const SimTrace& tr)
+{
+	std::vector<std::vector<double>> r(run.thermistorCount(), std::vector<double>(run.size(), kNaN));
+	for (std::size_t i = 0; i < run.thermistorCount(); ++i)
+		for (std::size_t k = 0; k < run.size(); ++k)
+			r[i][k] = run.temp_C[i][k] - tr.temp_C[i][k];  // NaN stays NaN
+	return r;
+}
+
+double rmsOfFinite(const std::vector<std::vector<double>>& r)
+{
+	double s = 0;
+	std::size_t m = 0;
+	for (const auto& row : r)
+		for (double x : row)
+			if (std::isfinite(x)) s += x * x, ++m;
+	return m ? std::sqrt(s / m) : kNaN;
+}
+
+SimCalibration calibrateSimulator(const SimModel& start, const std::vector<std::string>& free, const FogSeries& run,
+								  const ChamberDrive& drive, const std::vector<double>& bias,
+								  const std::vector<unsigned char>& rows)
+{
+	SimCalibration c;
+	c.model = start;
+	const auto slots = expandSlots(free, start);
+	const bool offsetsFree = std::find(free.begin(), free.end(), "thermistor_offsets_C") != free.end();
+	for (const auto& s : slots)
+	{
+		if (isTempSlot(s)) c.temp_slots.push_back(s);
+		else if (s.id != "thermistor_offsets_C") c.bias_slots.push_back(s);
+	}
+	// 1. temperatures
+	auto tempRes = [&](const SimModel& m) { return tempResidualVector(run, simulateOnRun(m, drive, run), offsetsFree); };
+	c.model = gaussNewton(c.model, c.temp_slots, tempRes, 10, c.simulations);
+	if (offsetsFree)
+	{
+		std::vector<double> shift;
+		tempResidualVector(run, simulateOnRun(c.model, drive, run), true, &shift);
+		++c.simulations;
+		for (std::size_t i = 0; i < run.thermistorCount(); ++i)
+			for (auto& t : c.model.device.thermistors)
+				if (t.info.name == run.thermistors[i].name) t.offset_C += shift[i];
+	}
+	// 2. bias
+	auto biasRes = [&](const SimModel& m) { return biasResidual(bias, simulateOnRun(m, drive, run), rows); };
+	c.model = gaussNewton(c.model, c.bias_slots, biasRes, 6, c.simulations);
+	finish(c, run, drive, bias, rows);
+	return c;
+}
+
+SimCalibration applyCalibration(const SimModel& calibrated, const std::vector<std::string>& free, const FogSeries& run,
+								const ChamberDrive& drive, const std::vector<double>& bias,
+								const std::vector<unsigned char>& rows)
+{
+	SimCalibration c;
+	c.model = calibrated;
+	for (const auto& s : expandSlots(free, calibrated))
+		if (!isTempSlot(s) && s.id != "thermistor_offsets_C") c.bias_slots.push_back(s);
+	const ParamSlot constant{"constant_bias_dph", 0};
+	auto biasRes = [&](const SimModel& m) { return biasResidual(bias, simulateOnRun(m, drive, run), rows); };
+	c.model = gaussNewton(c.model, {constant}, biasRes, 2, c.simulations);
+	finish(c, run, drive, bias, rows);
+	return c;
+}
+
+}  // namespace mrpt_fog::discrepancy

@@ -1,0 +1,367 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/discrepancy/SimulatorGap.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+namespace mrpt_fog::discrepancy
+{
+namespace
+{
+std::string fmt(const char* f, double v)
+{
+	char b[64];
+	std::snprintf(b, sizeof b, f, v);
+	return b;
+}
+
+void addUnique(std::vector<std::string>& v, const std::string& s)
+{
+	if (!s.empty() && std::find(v.begin(), v.end(), s) == v.end()) v.push_back(s);
+}
+
+std::vector<std::string> effectList(const sim::EffectSet& e) { return {e.begin(), e.end()}; }
+
+std::vector<std::pair<std::string, double>> calibratedValues(const SimCalibration& c)
+{
+	std::vector<std::pair<std::string, double>> out;
+	for (const auto* slots : {&c.temp_slots, &c.bias_slots})
+		for (const auto& s : *slots) out.emplace_back(s.label(), getParam(c.model, s));
+	for (const auto& t : c.model.device.thermistors) out.emplace_back("thermistor_offsets_C[" + t.info.name + "]", t.offset_C);
+	return out;
+}
+
+/** The calibrated simulator, linearised, as the selector's base design. */
+BaseDesign simulatorBaseDesign(const SimCalibration& c, const RunSignals& sig)
+{
+	BaseDesign b;
+	b.X = c.bias_jacobian;
+	for (const auto& s : c.bias_slots)
+	{
+		b.names.push_back("d(sim)/d(" + s.label() + ")");
+		const bool poly = s.id == "temp_poly_dph";
+		b.is_static_temp.push_back(poly ? 1 : 0);
+		if (poly) b.max_static_order = std::max(b.max_static_order, s.index + 1);
+	}
+	b.static_temp_C = sig.temp_mean_C;
+	if (sig.has_table)
+	{
+		// nuisance: a constant scale-factor error (the nominal scale factor is never exact), as
+		// in the bias-model base designs
+		b.X.conservativeResize(Eigen::NoChange, b.X.cols() + 1);
+		for (std::size_t k = 0; k < sig.size(); ++k)
+			b.X(static_cast<Eigen::Index>(k), b.X.cols() - 1) = sig.usable[k] ? sig.table_rate_dph[k] * 1e-4 : 0.0;
+		b.names.push_back("table_rate");
+		b.is_static_temp.push_back(0);
+	}
+	return b;
+}
+
+RunSignals withBias(RunSignals sig, const Eigen::VectorXd& r)
+{
+	for (std::size_t k = 0; k < sig.size(); ++k) sig.bias_dph[k] = r(static_cast<Eigen::Index>(k));
+	return sig;
+}
+
+TemperatureGap temperatureGap(const std::string& label, const FogSeries& run, const SimTrace& before, const SimTrace& after)
+{
+	TemperatureGap g;
+	g.label = label;
+	const auto rb = temperatureResidual(run, before), ra = temperatureResidual(run, after);
+	g.rms_before_C = rmsOfFinite(rb);
+	g.rms_after_C = rmsOfFinite(ra);
+	for (std::size_t i = 0; i < run.thermistorCount(); ++i)
+	{
+		g.names.push_back(run.thermistors[i].name);
+		g.rms_before_per_C.push_back(rmsOfFinite({rb[i]}));
+		g.rms_after_per_C.push_back(rmsOfFinite({ra[i]}));
+	}
+	return g;
+}
+
+NamedEffect heatNamedEffect(const HeatSourceResult& h)
+{
+	NamedEffect ne;
+	ne.id = "heat_source";
+	ne.alias_group = {"heat_source"};
+	ne.confidence = ne.group_confidence = h.confidence;
+	ne.coefficient = h.amplitude_C;
+	ne.ci_low = h.ci_low_C;
+	ne.ci_high = h.ci_high_C;
+	ne.coefficient_unit = "degC at full power (mean over thermistors)";
+	ne.theta_name = "tau_s";
+	ne.theta = h.tau_s;
+	ne.chi2 = h.chi2;
+	ne.p_adjusted = h.p_adjusted;
+	ne.delta_bic = h.delta_bic;
+	return ne;
+}
+}  // namespace
+
+SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& runs, const std::vector<std::string>& labels,
+												 const SimulatorConfig& cfg, const SimDiscrepancyOptions& opt)
+{
+	if (runs.empty()) throw std::invalid_argument("no measured run given");
+	if (runs.size() > 2) throw std::invalid_argument("at most two measured runs: the first is analysed, the second confirms");
+	if (runs.size() == 2 && !runs[0].sameLayout(runs[1]))
+		throw std::invalid_argument("the confirmation run has a different thermistor/axis layout from the first run");
+	SimDiscrepancyReport R;
+	auto& rep = R.report;
+	rep.model_source = cfg.source;
+	rep.tau_s = opt.base.tau_s;
+	for (std::size_t i = 0; i < runs.size(); ++i)
+		rep.run_labels.push_back(i < labels.size() ? labels[i] : "run " + std::to_string(i + 1));
+	R.config_source = cfg.source;
+
+	// 1. drive + calibrate the configuration as given
+	const RunSignals sig1 = computeRunSignals(runs[0], opt.base.signals);
+	const ChamberDrive drive1 = chamberDriveForRun(runs[0], cfg);
+	R.drive = drive1.how;
+	std::vector<std::string> free0 = cfg.free;
+	if (std::find(free0.begin(), free0.end(), "constant_bias_dph") == free0.end())
+		free0.insert(free0.begin(), "constant_bias_dph");  // the turn-on bias is never known in advance
+	const SimModel model0 = simModelFromConfig(cfg);
+	const SimCalibration cal0 = calibrateSimulator(model0, free0, runs[0], drive1, sig1.bias_dph, sig1.usable);
+	R.simulations += cal0.simulations;
+	R.effects_before = effectList(model0.effects);
+	R.free_before = free0;
+	R.calibrated_before = calibratedValues(cal0);
+	for (const auto& s : cal0.bias_slots) rep.base_terms.push_back(s.label());
+	for (const auto& s : cal0.temp_slots) rep.base_terms.push_back(s.label());
+
+	// 2. temperature channel: heat_source
+	SimCalibration calT = cal0;
+	std::vector<std::string> freeT = free0;
+	if (model0.effects.count("heat_source"))
+	{
+		R.heat.untestable_reason = "heat_source is already on in the configuration";
+		R.heat.sentence = "heat_source not tested: already in the model";
+	}
+	else
+	{
+		R.heat = testHeatSource(sig1.time_s, runs[0].power, temperatureResidual(runs[0], cal0.trace), runs[0].thermistors,
+								opt.heat);
+		if (R.heat.named)
+		{
+			SimModel m = cal0.model;
+			m.effects.insert("heat_source");
+			m.device.thermal.electronics_power_W = cfg.device.thermal.electronics_power_W;
+			addUnique(freeT, "electronics_power_W");
+			calT = calibrateSimulator(m, freeT, runs[0], drive1, sig1.bias_dph, sig1.usable);
+			R.simulations += calT.simulations;
+		}
+	}
+
+	// 3. bias channel: the existing selector on the calibrated simulator's residual
+	std::vector<std::string> candidates;
+	for (const auto& c : candidateLibrary())
+		if (c.channel == ResidualChannel::Bias && c.id != "thermistor_lag" && !calT.model.effects.count(c.id))
+			candidates.push_back(c.id);
+	const Eigen::VectorXd rT = biasResidual(sig1.bias_dph, calT.trace, sig1.usable);
+	const RunSignals sigB = withBias(sig1, rT);
+	const BaseDesign baseB = simulatorBaseDesign(calT, sig1);
+	SelectionOptions selOpt = opt.base.selection;
+	selOpt.candidates = candidates;
+	if (!candidates.empty())
+		rep.selection = selectMissingEffects(sigB, baseB, selOpt);
+	else
+	{
+		rep.selection.fit_rows = sig1.usable;
+		rep.selection.residual_before = rep.selection.residual_after = rT;
+	}
+
+	// 4. switch the named effects on, recalibrate
+	SimModel mA = calT.model;
+	std::vector<std::string> freeA = freeT;
+	for (const auto& ne : rep.selection.named)
+	{
+		mA.effects.insert(ne.id);
+		if (ne.id == "warmup" && ne.theta > 0) mA.device.errors.warmup_tau_s = ne.theta;
+		addUnique(freeA, coefficientParameterOf(ne.id));
+	}
+	const bool changed = R.heat.named || !rep.selection.named.empty();
+	const SimCalibration calA = !rep.selection.named.empty()
+									? calibrateSimulator(mA, freeA, runs[0], drive1, sig1.bias_dph, sig1.usable)
+									: calT;
+	if (!rep.selection.named.empty()) R.simulations += calA.simulations;
+	if (R.heat.named) rep.selection.named.insert(rep.selection.named.begin(), heatNamedEffect(R.heat));
+	R.effects_after = effectList(calA.model.effects);
+	R.free_after = freeA;
+	R.calibrated_after = calibratedValues(calA);
+
+	const auto& rows1 = rep.selection.fit_rows.empty() ? sig1.usable : rep.selection.fit_rows;
+	const auto segs1 = segmentRun(sig1, opt.base.segmentation);
+	rep.gap = runGapFromResiduals(rep.run_labels[0], sig1, segs1, biasResidual(sig1.bias_dph, cal0.trace, rows1),
+								  biasResidual(sig1.bias_dph, calA.trace, rows1), rows1, opt.base);
+	R.temp_gap = temperatureGap(rep.run_labels[0], runs[0], cal0.trace, changed ? calA.trace : cal0.trace);
+
+	// 5. confirmation run: parameters from run 1, only the constant bias re-estimated
+	if (runs.size() == 2)
+	{
+		rep.has_confirm = true;
+		const RunSignals sig2 = computeRunSignals(runs[1], opt.base.signals);
+		const ChamberDrive drive2 = chamberDriveForRun(runs[1], cfg);
+		R.drive_confirm = drive2.how;
+		const SimCalibration b2 = applyCalibration(cal0.model, free0, runs[1], drive2, sig2.bias_dph, sig2.usable);
+		const SimCalibration a2 = applyCalibration(calA.model, freeA, runs[1], drive2, sig2.bias_dph, sig2.usable);
+		R.simulations += b2.simulations + a2.simulations;
+		if (R.heat.named)
+		{
+			R.heat_confirm = confirmHeatSource(sig2.time_s, runs[1].power, temperatureResidual(runs[1], b2.trace), R.heat.tau_s,
+											   opt.base.selection.alias_alpha, opt.heat.lrv_max_lag);
+			auto& ne = rep.selection.named.front();
+			ne.confirm_tested = R.heat_confirm.tested;
+			ne.confirmed = R.heat_confirm.confirmed;
+			ne.confirm_p = R.heat_confirm.p;
+			ne.confirm_coefficient = R.heat_confirm.amplitude_C;
+		}
+		const bool biasNamed = rep.selection.named.size() > (R.heat.named ? 1u : 0u);
+		if (biasNamed)
+		{
+			const SimCalibration t2 = R.heat.named
+										  ? applyCalibration(calT.model, freeT, runs[1], drive2, sig2.bias_dph, sig2.usable)
+										  : b2;
+			if (R.heat.named) R.simulations += t2.simulations;
+			SelectionResult sel = rep.selection;
+			if (R.heat.named) sel.named.erase(sel.named.begin());
+			confirmOnRun(sel, withBias(sig2, biasResidual(sig2.bias_dph, t2.trace, sig2.usable)),
+						 simulatorBaseDesign(t2, sig2), selOpt);
+			std::copy(sel.named.begin(), sel.named.end(), rep.selection.named.begin() + (R.heat.named ? 1 : 0));
+		}
+		rep.gap_confirm = runGapFromResiduals(rep.run_labels[1], sig2, segmentRun(sig2, opt.base.segmentation),
+											  biasResidual(sig2.bias_dph, b2.trace, sig2.usable),
+											  biasResidual(sig2.bias_dph, a2.trace, sig2.usable), sig2.usable, opt.base);
+		R.temp_gap_confirm = temperatureGap(rep.run_labels[1], runs[1], b2.trace, a2.trace);
+	}
+	return R;
+}
+
+namespace
+{
+JsonValue tempGapJson(const TemperatureGap& g)
+{
+	JsonValue j = JsonValue::object();
+	j["run"] = g.label;
+	JsonValue b = JsonValue::object(), a = JsonValue::object();
+	b["rms_C"] = g.rms_before_C;
+	a["rms_C"] = g.rms_after_C;
+	j["before"] = b;
+	j["after"] = a;
+	JsonValue th = JsonValue::array();
+	for (std::size_t i = 0; i < g.names.size(); ++i)
+	{
+		JsonValue e = JsonValue::object();
+		e["name"] = g.names[i];
+		e["rms_before_C"] = g.rms_before_per_C[i];
+		e["rms_after_C"] = g.rms_after_per_C[i];
+		th.push_back(e);
+	}
+	j["thermistors"] = th;
+	return j;
+}
+
+JsonValue stringArray(const std::vector<std::string>& v)
+{
+	JsonValue a = JsonValue::array();
+	for (const auto& s : v) a.push_back(s);
+	return a;
+}
+
+JsonValue valuesJson(const std::vector<std::pair<std::string, double>>& v)
+{
+	JsonValue o = JsonValue::object();
+	for (const auto& [k, x] : v) o[k] = x;
+	return o;
+}
+}  // namespace
+
+JsonValue simDiscrepancyJson(const SimDiscrepancyReport& R)
+{
+	JsonValue j = discrepancyJson(R.report);
+	j["model_kind"] = "simulator";
+	JsonValue s = JsonValue::object();
+	s["config"] = R.config_source;
+	s["driving_input"] = R.drive;
+	if (R.report.has_confirm) s["driving_input_confirm"] = R.drive_confirm;
+	s["effects_before"] = stringArray(R.effects_before);
+	s["effects_after"] = stringArray(R.effects_after);
+	s["free_before"] = stringArray(R.free_before);
+	s["free_after"] = stringArray(R.free_after);
+	s["calibrated_before"] = valuesJson(R.calibrated_before);
+	s["calibrated_after"] = valuesJson(R.calibrated_after);
+	s["simulations"] = R.simulations;
+	j["simulator"] = s;
+	const auto& h = R.heat;
+	JsonValue hs = JsonValue::object();
+	hs["tested"] = h.tested;
+	hs["untestable_reason"] = h.untestable_reason;
+	hs["named"] = h.named;
+	if (h.tested)
+	{
+		hs["tau_s"] = h.tau_s;
+		hs["amplitude_C"] = h.amplitude_C;
+		JsonValue ci = JsonValue::array();
+		ci.push_back(h.ci_low_C);
+		ci.push_back(h.ci_high_C);
+		hs["ci"] = ci;
+		hs["chi2"] = h.chi2;
+		hs["p_adjusted"] = h.p_adjusted;
+		hs["delta_bic"] = h.delta_bic;
+		hs["confidence"] = h.confidence;
+		hs["same_sign"] = h.same_sign;
+		hs["nearest"] = h.nearest;
+		JsonValue th = JsonValue::array();
+		for (const auto& t : h.thermistors)
+		{
+			JsonValue e = JsonValue::object();
+			e["name"] = t.info.name;
+			e["side"] = toString(t.info.side);
+			e["angle_deg"] = t.info.angle_deg;
+			e["amplitude_C"] = t.amplitude_C;
+			e["se_C"] = t.se_C;
+			th.push_back(e);
+		}
+		hs["thermistors"] = th;
+	}
+	hs["sentence"] = h.sentence;
+	if (R.heat_confirm.tested)
+	{
+		hs["confirmed"] = R.heat_confirm.confirmed;
+		hs["confirm_p"] = R.heat_confirm.p;
+	}
+	j["heat_source_test"] = hs;
+	j["temperature_gap"] = tempGapJson(R.temp_gap);
+	if (R.report.has_confirm) j["temperature_gap_confirm"] = tempGapJson(R.temp_gap_confirm);
+	return j;
+}
+
+std::string simDiscrepancyText(const SimDiscrepancyReport& R)
+{
+	std::ostringstream os;
+	os << "Simulator configuration under test: " << R.config_source << "\n";
+	os << "Driving input: " << R.drive << "\n";
+	os << "Calibrated (" << R.simulations << " simulator runs):";
+	for (const auto& [k, v] : R.calibrated_before) os << " " << k << "=" << fmt("%.4g", v);
+	os << "\n";
+	os << "Temperature channel: " << R.heat.sentence << "\n";
+	os << discrepancyText(R.report);
+	if (R.effects_after != R.effects_before)
+	{
+		os << "Recalibrated with the named effect(s) on:";
+		for (const auto& [k, v] : R.calibrated_after) os << " " << k << "=" << fmt("%.4g", v);
+		os << "\n";
+	}
+	auto line = [&](const TemperatureGap& g)
+	{
+		os << "Temperature gap on " << g.label << ": thermistor residual RMS " << fmt("%.4g", g.rms_before_C) << " -> "
+		   << fmt("%.4g", g.rms_after_C) << " C\n";
+	};
+	line(R.temp_gap);
+	if (R.report.has_confirm) line(R.temp_gap_confirm);
+	return os.str();
+}
+
+}  // namespace mrpt_fog::discrepancy
