@@ -6,6 +6,8 @@
 #include <mrpt_fog/model/ModelPreset.h>
 
 #include <algorithm>
+#include <functional>
+#include <map>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -109,15 +111,22 @@ struct Choice
 	std::vector<bool> groups;
 	double ridge = 0;
 	double cv_rms = std::numeric_limits<double>::infinity();
+	std::vector<std::string> pool;  // thermistors the choice was allowed to use
+};
+
+/** The validation folds and, for each, the accumulator of the other folds (its training set). */
+struct FoldSet
+{
+	std::vector<StreamingQr> held_out, training;
 };
 
 /** Best ridge for a group set; returns the choice with its CV RMS. */
-Choice scoreGroups(std::vector<NormalEquations>& folds, const ThermalFeatureSet& fs, const std::vector<bool>& groups,
+Choice scoreGroups(FoldSet& folds, const ThermalFeatureSet& fs, const std::vector<bool>& groups,
 				   const std::vector<double>& ridges)
 {
 	Choice c;
 	c.groups = groups;
-	const auto cv = crossValidatedRms(folds, columnsOf(fs, groups), ridges);
+	const auto cv = crossValidatedRms(folds.held_out, folds.training, columnsOf(fs, groups), ridges);
 	for (std::size_t r = 0; r < ridges.size(); r++)
 		if (cv[r] < c.cv_rms * (1 - 1e-9))
 		{
@@ -128,8 +137,7 @@ Choice scoreGroups(std::vector<NormalEquations>& folds, const ThermalFeatureSet&
 }
 
 /** Greedy forward selection of signal groups among `allowed`, by CV error. */
-Choice selectForward(std::vector<NormalEquations>& folds, const ThermalFeatureSet& fs, const std::vector<bool>& allowed,
-					 double min_gain)
+Choice selectForward(FoldSet& folds, const ThermalFeatureSet& fs, const std::vector<bool>& allowed, double min_gain)
 {
 	const std::size_t ng = fs.signals().size();
 	Choice best = scoreGroups(folds, fs, std::vector<bool>(ng, false), {0.0});
@@ -151,18 +159,69 @@ Choice selectForward(std::vector<NormalEquations>& folds, const ThermalFeatureSe
 	return best;
 }
 
-Choice selectAll(std::vector<NormalEquations>& folds, const ThermalFeatureSet& fs, const std::vector<bool>& allowed,
-				 double ridge)
+Choice selectAll(FoldSet& folds, const ThermalFeatureSet& fs, const std::vector<bool>& allowed, double ridge)
 {
 	return scoreGroups(folds, fs, allowed, {ridge});
 }
+
+/** Nested search over thermistor subsets (selection "auto" of multipoint / points:K): the
+ * choice for a set S is the best (lowest cross-validated RMS) of the greedy selection from S
+ * itself and of the choices for every S minus one thermistor, recursively. A subset's choice is
+ * therefore always a candidate for every superset: with the same folds, the K-thermistor choice
+ * has a cross-validated RMS <= that of any (K-1)-thermistor subset's choice, by construction.
+ * Memoised over subset masks (2^n - 1 greedy runs for n thermistors). */
+class NestedSelection
+{
+   public:
+	static constexpr std::size_t kMaxThermistors = 8;
+	NestedSelection(const std::vector<std::string>& thermistors,
+					std::function<Choice(const std::vector<std::string>&)> greedy)
+		: names_(thermistors), greedy_(std::move(greedy))
+	{
+		if (names_.size() > kMaxThermistors)
+			throw std::invalid_argument("fit: selection auto searches every thermistor subset and supports up to " +
+										std::to_string(kMaxThermistors) + " thermistors, got " +
+										std::to_string(names_.size()) +
+										": name fewer (multipoint:A,B,..), or use --selection none");
+	}
+	std::size_t fullMask() const { return (std::size_t{1} << names_.size()) - 1; }
+	std::size_t bit(const std::string& name) const
+	{
+		for (std::size_t i = 0; i < names_.size(); i++)
+			if (names_[i] == name) return std::size_t{1} << i;
+		return 0;
+	}
+	const Choice& best(std::size_t mask)
+	{
+		auto it = memo_.find(mask);
+		if (it != memo_.end()) return it->second;
+		std::vector<std::string> pool;
+		for (std::size_t i = 0; i < names_.size(); i++)
+			if (mask & (std::size_t{1} << i)) pool.push_back(names_[i]);
+		Choice c = greedy_(pool);
+		c.pool = pool;
+		if (pool.size() > 1)
+			for (std::size_t i = 0; i < names_.size(); i++)
+				if (mask & (std::size_t{1} << i))
+				{
+					const Choice& sub = best(mask & ~(std::size_t{1} << i));
+					if (sub.cv_rms < c.cv_rms) c = sub;
+				}
+		return memo_.emplace(mask, c).first->second;
+	}
+
+   private:
+	std::vector<std::string> names_;
+	std::function<Choice(const std::vector<std::string>&)> greedy_;
+	std::map<std::size_t, Choice> memo_;
+};
 
 std::string runName(const std::vector<std::string>& labels, std::size_t i)
 {
 	return i < labels.size() ? labels[i] : "run " + std::to_string(i + 1);
 }
 
-BiasModel makeModel(NormalEquations& total, const ThermalFeatureSet& fs, const Choice& c, const std::string& dropped,
+BiasModel makeModel(StreamingQr& total, const ThermalFeatureSet& fs, const Choice& c, const std::string& dropped,
 					const FitOptions& opt)
 {
 	const auto cols = columnsOf(fs, c.groups);
@@ -335,7 +394,8 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	// Pass 2: normal equations per fold.
 	const bool by_run = runs.size() >= 2;
 	const std::size_t nfolds = by_run ? runs.size() : opt.folds;
-	std::vector<NormalEquations> folds(nfolds, NormalEquations(fs.termCount(), y_ref, x_ref));
+	FoldSet folds;
+	folds.held_out.assign(nfolds, StreamingQr(fs.termCount(), y_ref, x_ref));
 	const auto foldOf = [&](std::size_t run, std::size_t k) {
 		if (by_run) return run;
 		const auto& t = runs[0].time_s;
@@ -351,57 +411,13 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 			if (!r.ok[k]) continue;
 			rowSignals(r, fs, k, temp, rate, values);
 			fs.features(values.data(), f.data(), false);
-			folds[foldOf(ri, k)].add(f.data(), r.y[k]);
+			folds.held_out[foldOf(ri, k)].add(f.data(), r.y[k]);
 		}
 	}
-	NormalEquations total(fs.termCount(), y_ref, x_ref);
-	for (auto& fo : folds) total.merge(fo);
+	StreamingQr total(fs.termCount(), y_ref, x_ref);
+	for (auto& fo : folds.held_out) total.merge(fo);
+	folds.training = trainingSets(folds.held_out);
 
-	// Candidate pools: all preset signals, or every K-subset of thermistors for points:K.
-	std::vector<std::vector<std::string>> pools;
-	if (preset.kind == "points")
-	{
-		const std::size_t n = preset.thermistors.size(), K = static_cast<std::size_t>(preset.points_k);
-		std::vector<bool> pick(n, false);
-		std::fill(pick.begin(), pick.begin() + static_cast<long>(K), true);
-		do
-		{
-			std::vector<std::string> sub;
-			for (std::size_t i = 0; i < n; i++)
-				if (pick[i]) sub.push_back(preset.thermistors[i]);
-			pools.push_back(sub);
-		} while (std::prev_permutation(pick.begin(), pick.end()) && pools.size() < 256);
-	}
-	else if (opt.selection == "auto" && preset.kind == "multipoint" && fs.thermistors().size() > 1)
-	{
-		// Every subset of the thermistors is a candidate pool (up to 6 thermistors: 63 pools;
-		// beyond, the full set and the leave-one-out sets): greedy selection from the full pool
-		// can end in a worse held-out optimum than from a smaller pool, and the fit must never
-		// be worse (held out) than the same preset on fewer thermistors.
-		const auto& all = fs.thermistors();
-		const std::size_t n = all.size();
-		if (n <= 6)
-			for (std::size_t mask = (std::size_t{1} << n) - 1; mask >= 1; mask--)
-			{
-				std::vector<std::string> sub;
-				for (std::size_t i = 0; i < n; i++)
-					if (mask & (std::size_t{1} << i)) sub.push_back(all[i]);
-				pools.push_back(sub);
-			}
-		else
-		{
-			pools.push_back(all);
-			for (std::size_t d = 0; d < n; d++)
-			{
-				std::vector<std::string> sub;
-				for (std::size_t i = 0; i < n; i++)
-					if (i != d) sub.push_back(all[i]);
-				pools.push_back(sub);
-			}
-		}
-	}
-	else
-		pools.push_back(fs.thermistors());
 	const auto allowedFor = [&](const std::vector<std::string>& pool, const std::string& dropped) {
 		std::vector<bool> allowed(ns);
 		for (std::size_t s = 0; s < ns; s++)
@@ -412,19 +428,83 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 		}
 		return allowed;
 	};
-	const auto choose = [&](const std::vector<bool>& allowed) {
-		return opt.selection == "auto" ? selectForward(folds, fs, allowed, opt.min_relative_gain)
-									   : selectAll(folds, fs, allowed, opt.ridge);
+	const auto choose = [&](const std::vector<std::string>& pool, const std::string& dropped) {
+		Choice c = opt.selection == "auto" ? selectForward(folds, fs, allowedFor(pool, dropped), opt.min_relative_gain)
+										   : selectAll(folds, fs, allowedFor(pool, dropped), opt.ridge);
+		c.pool = pool;
+		return c;
 	};
+	// The subsets of thermistors to consider, as masks over fs.thermistors().
+	const auto& names = fs.thermistors();
+	const bool nested = opt.selection == "auto" && (preset.kind == "multipoint" || preset.kind == "points");
 	Choice best;
-	std::vector<std::string> best_pool;
-	for (const auto& pool : pools)
+	std::vector<Choice> fallback_choices;  // for nested: the best choice without each thermistor
+	if (nested)
 	{
-		const Choice c = choose(allowedFor(pool, ""));
-		if (best_pool.empty() || c.cv_rms < best.cv_rms)
+		NestedSelection search(names, [&](const std::vector<std::string>& pool) { return choose(pool, ""); });
+		std::size_t base = search.fullMask();
+		if (preset.kind == "points")
 		{
-			best = c;
-			best_pool = pool;
+			// points:K = the best choice among all K-thermistor subsets (each with its subsets).
+			const auto K = static_cast<std::size_t>(preset.points_k);
+			bool first_set = true;
+			for (std::size_t mask = 1; mask <= search.fullMask(); mask++)
+			{
+				if (static_cast<std::size_t>(__builtin_popcountll(mask)) != K) continue;
+				const Choice& c = search.best(mask);
+				if (first_set || c.cv_rms < best.cv_rms)
+				{
+					best = c;
+					base = mask;
+					first_set = false;
+				}
+			}
+		}
+		else
+			best = search.best(base);
+		if (opt.fallbacks)
+		{
+			const ThermalFeatureSet chosen = fs.selectSignals(best.groups);
+			for (const auto& name : chosen.thermistors())
+			{
+				const std::size_t without = base & ~search.bit(name);
+				fallback_choices.push_back(without ? search.best(without) : scoreGroups(folds, fs, std::vector<bool>(ns, false), {0.0}));
+			}
+		}
+	}
+	else
+	{
+		// Candidate pools: the preset's thermistors, or every K-subset for points:K (selection none).
+		std::vector<std::vector<std::string>> pools;
+		if (preset.kind == "points")
+		{
+			const std::size_t n = names.size(), K = static_cast<std::size_t>(preset.points_k);
+			std::vector<bool> pick(n, false);
+			std::fill(pick.begin(), pick.begin() + static_cast<long>(K), true);
+			do
+			{
+				std::vector<std::string> sub;
+				for (std::size_t i = 0; i < n; i++)
+					if (pick[i]) sub.push_back(names[i]);
+				pools.push_back(sub);
+			} while (std::prev_permutation(pick.begin(), pick.end()) && pools.size() < 256);
+		}
+		else
+			pools.push_back(names);
+		bool first_pool = true;
+		for (const auto& pool : pools)
+		{
+			const Choice c = choose(pool, "");
+			if (first_pool || c.cv_rms < best.cv_rms)
+			{
+				best = c;
+				first_pool = false;
+			}
+		}
+		if (opt.fallbacks)
+		{
+			const ThermalFeatureSet chosen = fs.selectSignals(best.groups);
+			for (const auto& name : chosen.thermistors()) fallback_choices.push_back(choose(best.pool, name));
 		}
 	}
 
@@ -439,11 +519,11 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	for (std::size_t i = 0; i < runs.size(); i++) cal.runs.push_back(runName(labels, i));
 	cal.model = makeModel(total, fs, best, "", opt);
 	if (opt.fallbacks)
-		for (const auto& name : cal.model.features.thermistors())
-		{
-			const Choice c = choose(allowedFor(best_pool, name));
-			cal.fallbacks.push_back(makeModel(total, fs, c, name, opt));
-		}
+	{
+		const auto& used = cal.model.features.thermistors();
+		for (std::size_t i = 0; i < used.size() && i < fallback_choices.size(); i++)
+			cal.fallbacks.push_back(makeModel(total, fs, fallback_choices[i], used[i], opt));
+	}
 
 	// In-sample figures: the calibration runs through the real-time compensator (only when the
 	// model can run in real time), else through the fitted feature set directly.
@@ -486,9 +566,7 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 		std::vector<bool> has(nfolds, false);
 		for (std::size_t fo = 0; fo < nfolds; fo++)
 		{
-			NormalEquations train(fs.termCount(), y_ref, x_ref);
-			for (std::size_t g = 0; g < nfolds; g++)
-				if (g != fo) train.merge(folds[g]);
+			auto& train = folds.training[fo];
 			if (train.count() < cols.size()) continue;
 			coef[fo] = solveBiasFit(train, cols, best.ridge).coef_dph;
 			has[fo] = true;
