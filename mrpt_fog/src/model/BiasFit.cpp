@@ -76,15 +76,15 @@ CentredSystem centre(StreamingQr& acc, const std::vector<int>& cols)
 	return s;
 }
 
-/** Whether singular value i counts in the numerical rank (s^2 > rank_tol s_max^2). */
-bool kept(const CentredSystem& s, Eigen::Index i, double rank_tol)
+/** Whether singular value i counts in the numerical rank (s > rcond s_max). */
+bool kept(const CentredSystem& s, Eigen::Index i, double rcond)
 {
 	const double smax = s.sv.size() ? s.sv[0] : 0.0;
-	return s.sv[i] > 0 && s.sv[i] * s.sv[i] > rank_tol * smax * smax;
+	return s.sv[i] > 0 && s.sv[i] > rcond * smax;
 }
 
 /** Coefficients (full, including the constant with y_ref) for ridge lambda. */
-Eigen::VectorXd solveCentred(const CentredSystem& s, double lambda, double rank_tol, double y_ref,
+Eigen::VectorXd solveCentred(const CentredSystem& s, double lambda, double rcond, double y_ref,
 							 Eigen::VectorXd* shrink_out = nullptr)
 {
 	const Eigen::Index m = s.mean.size();
@@ -95,7 +95,7 @@ Eigen::VectorXd solveCentred(const CentredSystem& s, double lambda, double rank_
 		for (Eigen::Index i = 0; i < m; i++)
 		{
 			const double sv = s.sv[i], e = sv * sv;
-			const bool keep = kept(s, i, rank_tol);
+			const bool keep = kept(s, i, rcond);
 			g[i] = keep ? sv / (e + lambda) : 0.0;
 			shrink[i] = keep ? e / (e + lambda) : 0.0;
 		}
@@ -107,10 +107,10 @@ Eigen::VectorXd solveCentred(const CentredSystem& s, double lambda, double rank_
 	return beta;
 }
 
-std::size_t rankOf(const CentredSystem& s, double rank_tol)
+std::size_t rankOf(const CentredSystem& s, double rcond)
 {
 	std::size_t r = 1;
-	for (Eigen::Index i = 0; i < s.sv.size(); i++) r += kept(s, i, rank_tol);
+	for (Eigen::Index i = 0; i < s.sv.size(); i++) r += kept(s, i, rcond);
 	return r;
 }
 
@@ -141,7 +141,7 @@ double residualSumOfSquares(StreamingQr& acc, const std::vector<int>& cols, cons
 	return w.squaredNorm();
 }
 
-LinearFit solveBiasFit(StreamingQr& acc, const std::vector<int>& cols, double ridge, double rank_tol)
+LinearFit solveBiasFit(StreamingQr& acc, const std::vector<int>& cols, double ridge, double rcond)
 {
 	if (!(ridge >= 0) || !std::isfinite(ridge)) throw std::invalid_argument("bias fit: ridge must be >= 0");
 	const CentredSystem s = centre(acc, cols);
@@ -150,9 +150,9 @@ LinearFit solveBiasFit(StreamingQr& acc, const std::vector<int>& cols, double ri
 	fit.ridge = ridge;
 	fit.samples = acc.count();
 	Eigen::VectorXd shrink;
-	fit.coef_dph = solveCentred(s, ridge, rank_tol, acc.yRef(), &shrink);
+	fit.coef_dph = solveCentred(s, ridge, rcond, acc.yRef(), &shrink);
 	const Eigen::Index m = s.mean.size();
-	fit.numerical_rank = rankOf(s, rank_tol);
+	fit.numerical_rank = rankOf(s, rcond);
 	if (s.zero_variance)
 	{
 		std::size_t zeros = 0;
@@ -187,7 +187,7 @@ LinearFit solveBiasFit(StreamingQr& acc, const std::vector<int>& cols, double ri
 		for (Eigen::Index i = 0; i < m; i++)
 		{
 			const double e = s.sv[i] * s.sv[i];
-			w[i] = kept(s, i, rank_tol) ? e / ((e + ridge) * (e + ridge)) : 0.0;
+			w[i] = kept(s, i, rcond) ? e / ((e + ridge) * (e + ridge)) : 0.0;
 		}
 		const Eigen::MatrixXd DV = s.d.asDiagonal() * s.V;
 		const Eigen::MatrixXd cov_rest = sigma2 * DV * w.asDiagonal() * DV.transpose();
@@ -216,7 +216,7 @@ std::vector<StreamingQr> trainingSets(std::vector<StreamingQr>& folds)
 }
 
 std::vector<double> crossValidatedRms(std::vector<StreamingQr>& folds, std::vector<StreamingQr>& train,
-									  const std::vector<int>& cols, const std::vector<double>& ridges, double rank_tol)
+									  const std::vector<int>& cols, const std::vector<double>& ridges, double rcond)
 {
 	if (train.size() != folds.size()) throw std::invalid_argument("crossValidatedRms: one training set per fold needed");
 	std::vector<double> sse(ridges.size(), 0.0);
@@ -226,7 +226,7 @@ std::vector<double> crossValidatedRms(std::vector<StreamingQr>& folds, std::vect
 	{
 		if (folds[f].count() == 0 || train[f].count() == 0) continue;
 		const CentredSystem s = centre(train[f], cols);
-		const bool deficient = rankOf(s, rank_tol) < cols.size() || s.zero_variance;
+		const bool deficient = rankOf(s, rcond) < cols.size() || s.zero_variance;
 		for (std::size_t r = 0; r < ridges.size(); r++)
 		{
 			if (ridges[r] == 0 && deficient)
@@ -234,7 +234,7 @@ std::vector<double> crossValidatedRms(std::vector<StreamingQr>& folds, std::vect
 				bad[r] = true;
 				continue;
 			}
-			const Eigen::VectorXd beta = solveCentred(s, ridges[r], rank_tol, train[f].yRef());
+			const Eigen::VectorXd beta = solveCentred(s, ridges[r], rcond, train[f].yRef());
 			sse[r] += residualSumOfSquares(folds[f], cols, beta);
 		}
 		rows += static_cast<double>(folds[f].count());
@@ -247,10 +247,10 @@ std::vector<double> crossValidatedRms(std::vector<StreamingQr>& folds, std::vect
 }
 
 std::vector<double> crossValidatedRms(std::vector<StreamingQr>& folds, const std::vector<int>& cols,
-									  const std::vector<double>& ridges, double rank_tol)
+									  const std::vector<double>& ridges, double rcond)
 {
 	auto train = trainingSets(folds);
-	return crossValidatedRms(folds, train, cols, ridges, rank_tol);
+	return crossValidatedRms(folds, train, cols, ridges, rcond);
 }
 
 }  // namespace mrpt_fog

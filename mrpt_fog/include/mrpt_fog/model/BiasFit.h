@@ -14,13 +14,15 @@
  * the mean bias) and of the centred response; (2) equilibration of that factor to unit column
  * norms; (3) its SVD, U S V': condition number = (s_max / s_min)^2 (the condition number of the
  * centred, equilibrated normal matrix, i.e. cond(X)^2 of the centred, equilibrated design, kept
- * in that definition for continuity), numerical rank = singular values with s^2 > rank_tol x
- * s_max^2; (4) coefficients b = V diag(s / (s^2 + lambda)) U' Q'y over the numerical rank, with an
+ * in that definition for continuity), numerical rank = singular values with s > rcond x s_max;
+ * (4) coefficients b = V diag(s / (s^2 + lambda)) U' Q'y over the numerical rank, with an
  * optional ridge lambda (relative to the unit diagonal). Everything is computed from the factor,
  * never from X'X: the coefficients are accurate to about cond(X) x eps, not cond(X)^2 x eps.
- * Conditioning check (documented): with lambda = 0 a rank-deficient system (any s^2 below
- * rank_tol = 1e-12 of the largest, i.e. cond(X) > 1e6 for the centred, equilibrated design) is
- * refused by the caller rather than solved.
+ * Conditioning check (documented): with lambda = 0 a rank-deficient system (a singular value
+ * below rcond = 1e-10 of the largest, i.e. cond(X) > 1e10 for the centred, equilibrated design)
+ * is refused by the caller rather than solved. Why 1e-10: R is accurate to a few eps x s_max, so
+ * a kept direction retains at least ~5 of 16 digits; NumPy's lstsq default, eps x max(rows,
+ * cols), is 5e-11 for 2.4e5 rows. (Normal equations needed 1e-6: they square the condition.)
  *
  * The residual of any coefficient vector over any accumulated block is exact from the block's
  * factor (|| R [-b; 1] ||), which is what blocked k-fold cross-validation uses: one accumulator
@@ -57,7 +59,7 @@ struct LinearFit
 /** Solves on `columns` (must contain 0, the constant). See the file comment. Throws
  * std::invalid_argument for an empty accumulator, a missing constant, or a column index out of
  * range. A feature with zero variance gives numerical_rank < columns.size(). */
-LinearFit solveBiasFit(StreamingQr& acc, const std::vector<int>& columns, double ridge = 0.0, double rank_tol = 1e-12);
+LinearFit solveBiasFit(StreamingQr& acc, const std::vector<int>& columns, double ridge = 0.0, double rcond = 1e-10);
 
 /** Residual sum of squares of coef (on `columns`) over the rows accumulated in `acc`. */
 double residualSumOfSquares(StreamingQr& acc, const std::vector<int>& columns, const Eigen::VectorXd& coef_dph);
@@ -71,9 +73,9 @@ std::vector<StreamingQr> trainingSets(std::vector<StreamingQr>& folds);
  * training systems are rank deficient when ridge == 0. */
 std::vector<double> crossValidatedRms(std::vector<StreamingQr>& folds, std::vector<StreamingQr>& training,
 									  const std::vector<int>& columns, const std::vector<double>& ridges,
-									  double rank_tol = 1e-12);
+									  double rcond = 1e-10);
 /** The same, building the training sets itself. */
 std::vector<double> crossValidatedRms(std::vector<StreamingQr>& folds, const std::vector<int>& columns,
-									  const std::vector<double>& ridges, double rank_tol = 1e-12);
+									  const std::vector<double>& ridges, double rcond = 1e-10);
 
 }  // namespace mrpt_fog
