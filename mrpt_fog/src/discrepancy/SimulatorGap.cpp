@@ -155,38 +155,55 @@ SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& r
 		}
 	}
 
-	// 3. bias channel: the existing selector on the calibrated simulator's residual
-	std::vector<std::string> candidates;
-	for (const auto& c : candidateLibrary())
-		if (c.channel == ResidualChannel::Bias && c.id != "thermistor_lag" && !calT.model.effects.count(c.id))
-			candidates.push_back(c.id);
-	const Eigen::VectorXd rT = biasResidual(sig1.bias_dph, calT.trace, sig1.usable);
-	const RunSignals sigB = withBias(sig1, rT);
-	const BaseDesign baseB = simulatorBaseDesign(calT, sig1);
-	SelectionOptions selOpt = opt.base.selection;
-	selOpt.candidates = candidates;
-	if (!candidates.empty())
-		rep.selection = selectMissingEffects(sigB, baseB, selOpt);
-	else
+	// 3.+4. bias channel, simulator in the loop: the existing selector on the calibrated
+	// simulator's residual names the strongest missing effect; it is switched on in the simulator
+	// (its own physics, not the candidate's linear proxy), the simulator recalibrated, and the
+	// selector asked again, until nothing is significant (at most max_effects rounds).
+	struct Stage
 	{
-		rep.selection.fit_rows = sig1.usable;
-		rep.selection.residual_before = rep.selection.residual_after = rT;
-	}
-
-	// 4. switch the named effects on, recalibrate
-	SimModel mA = calT.model;
+		SimCalibration cal;
+		std::vector<std::string> free;
+		NamedEffect named;
+	};
+	std::vector<Stage> stages;  // stage i: model before effect i was switched on
+	SimCalibration calA = calT;
 	std::vector<std::string> freeA = freeT;
-	for (const auto& ne : rep.selection.named)
+	SelectionOptions selOpt = opt.base.selection;
+	selOpt.max_effects = 1;
+	bool firstRound = true;
+	for (int round = 0; round < std::max(1, opt.base.selection.max_effects); ++round)
 	{
-		mA.effects.insert(ne.id);
-		if (ne.id == "warmup" && ne.theta > 0) mA.device.errors.warmup_tau_s = ne.theta;
+		std::vector<std::string> candidates;
+		for (const auto& c : candidateLibrary())
+			if (c.channel == ResidualChannel::Bias && c.id != "thermistor_lag" && !calA.model.effects.count(c.id))
+				candidates.push_back(c.id);
+		const Eigen::VectorXd r = biasResidual(sig1.bias_dph, calA.trace, sig1.usable);
+		SelectionResult sel;
+		if (candidates.empty())
+		{
+			sel.fit_rows = sig1.usable;
+			sel.residual_before = sel.residual_after = r;
+		}
+		else
+		{
+			selOpt.candidates = candidates;
+			sel = selectMissingEffects(withBias(sig1, r), simulatorBaseDesign(calA, sig1), selOpt);
+		}
+		if (firstRound) rep.selection = sel;  // candidates_first_round, noise model, fit rows
+		firstRound = false;
+		if (sel.named.empty()) break;
+		const NamedEffect ne = sel.named.front();
+		stages.push_back({calA, freeA, ne});
+		SimModel m = calA.model;
+		m.effects.insert(ne.id);
+		if (ne.id == "warmup" && ne.theta > 0) m.device.errors.warmup_tau_s = ne.theta;
 		addUnique(freeA, coefficientParameterOf(ne.id));
+		calA = calibrateSimulator(m, freeA, runs[0], drive1, sig1.bias_dph, sig1.usable);
+		R.simulations += calA.simulations;
 	}
-	const bool changed = R.heat.named || !rep.selection.named.empty();
-	const SimCalibration calA = !rep.selection.named.empty()
-									? calibrateSimulator(mA, freeA, runs[0], drive1, sig1.bias_dph, sig1.usable)
-									: calT;
-	if (!rep.selection.named.empty()) R.simulations += calA.simulations;
+	rep.selection.named.clear();
+	for (const auto& st : stages) rep.selection.named.push_back(st.named);
+	const bool changed = R.heat.named || !stages.empty();
 	if (R.heat.named) rep.selection.named.insert(rep.selection.named.begin(), heatNamedEffect(R.heat));
 	R.effects_after = effectList(calA.model.effects);
 	R.free_after = freeA;
@@ -218,18 +235,18 @@ SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& r
 			ne.confirm_p = R.heat_confirm.p;
 			ne.confirm_coefficient = R.heat_confirm.amplitude_C;
 		}
-		const bool biasNamed = rep.selection.named.size() > (R.heat.named ? 1u : 0u);
-		if (biasNamed)
+		// each bias effect is confirmed against the stage it was named at
+		const std::size_t first = R.heat.named ? 1 : 0;
+		for (std::size_t i = 0; i < stages.size(); ++i)
 		{
-			const SimCalibration t2 = R.heat.named
-										  ? applyCalibration(calT.model, freeT, runs[1], drive2, sig2.bias_dph, sig2.usable)
-										  : b2;
-			if (R.heat.named) R.simulations += t2.simulations;
-			SelectionResult sel = rep.selection;
-			if (R.heat.named) sel.named.erase(sel.named.begin());
+			const SimCalibration t2 = applyCalibration(stages[i].cal.model, stages[i].free, runs[1], drive2,
+													   sig2.bias_dph, sig2.usable);
+			R.simulations += t2.simulations;
+			SelectionResult sel;
+			sel.named = {stages[i].named};
 			confirmOnRun(sel, withBias(sig2, biasResidual(sig2.bias_dph, t2.trace, sig2.usable)),
-						 simulatorBaseDesign(t2, sig2), selOpt);
-			std::copy(sel.named.begin(), sel.named.end(), rep.selection.named.begin() + (R.heat.named ? 1 : 0));
+						 simulatorBaseDesign(t2, sig2), opt.base.selection);
+			rep.selection.named[first + i] = sel.named.front();
 		}
 		rep.gap_confirm = runGapFromResiduals(rep.run_labels[1], sig2, segmentRun(sig2, opt.base.segmentation),
 											  biasResidual(sig2.bias_dph, b2.trace, sig2.usable),

@@ -10,12 +10,16 @@
  *  2. temperature channel first (a wrong simulated temperature propagates into the simulated
  *     bias): test the thermistor residual for `heat_source` (HeatSourceCandidate.h) when the
  *     configuration has it off; if named, switch it on (electronics_power_W free) and recalibrate;
- *  3. bias channel: the existing selector (EffectSelector.h) on the bias residual, with the
- *     calibrated simulator linearised (its Jacobian in the free bias parameters) as the base
+ *  3. bias channel, simulator in the loop: the existing selector (EffectSelector.h) on the
+ *     bias residual, with the calibrated simulator linearised (its Jacobian in the free bias
+ *     parameters, plus a table-rate nuisance column when the run has a rate table) as the base
  *     design; candidates = the bias-channel library ids whose simulator effect is off
- *     (thermistor_lag excluded: in the simulator it is a sensor lag, seen in the temperatures);
- *  4. switch every named effect on (its coefficient free; warm-up tau from the profile search),
- *     recalibrate, and show the gap before/after: bias residual (RMS, 100 s stability, range, per
+ *     (thermistor_lag excluded: in the simulator it is a sensor lag, seen in the temperatures).
+ *     The strongest named effect is switched on IN THE SIMULATOR (its coefficient free; warm-up
+ *     tau from the profile search), the simulator recalibrated and the selector asked again,
+ *     until nothing is significant or max_effects effects are named;
+ *  4. show the gap before/after (the configuration as given vs the one with every named effect
+ *     on, both calibrated): bias residual (RMS, 100 s stability, range, per
  *     segment) and thermistor residual RMS, on the run and on the confirmation run (parameters
  *     from the first run, only the constant bias re-estimated).
  */
