@@ -21,15 +21,15 @@ if(TARGET fog-discrepancy AND TARGET fog-sim)
     COMMAND ${CMAKE_COMMAND} -DMODE=error -DEXE=$<TARGET_FILE:fog-discrepancy>
       "-DARGS=--measured;${_disc_dir}/rich_a.csv;--model;quadratic;--json;${_disc_dir}/bad.json"
       -DEXPECT=quadratic -DNOFILE=${_disc_dir}/bad.json -P ${_disc_check})
-  add_test(NAME discrepancy.sim_not_yet_supported
+  add_test(NAME discrepancy.sim_missing_config_one_line_error
     COMMAND ${CMAKE_COMMAND} -DMODE=error -DEXE=$<TARGET_FILE:fog-discrepancy>
       "-DARGS=--measured;${_disc_dir}/rich_a.csv;--sim;whatever.yaml"
-      "-DEXPECT=not yet supported" -P ${_disc_check})
+      -DEXPECT=whatever.yaml -P ${_disc_check})
   add_test(NAME discrepancy.missing_file_one_line_error
     COMMAND ${CMAKE_COMMAND} -DMODE=error -DEXE=$<TARGET_FILE:fog-discrepancy>
       "-DARGS=--measured;${_disc_dir}/does_not_exist.csv;--model;M1"
       -DEXPECT=does_not_exist -P ${_disc_check})
   set_tests_properties(discrepancy.multipoint_named_and_confirmed discrepancy.bad_model_one_line_error
-    discrepancy.sim_not_yet_supported discrepancy.missing_file_one_line_error PROPERTIES
+    discrepancy.sim_missing_config_one_line_error discrepancy.missing_file_one_line_error PROPERTIES
     FIXTURES_REQUIRED disc_runs LABELS "integration;discrepancy")
 endif()
