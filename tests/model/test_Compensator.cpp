@@ -4,6 +4,8 @@
 #include <mrpt_fog/model/Compensator.h>
 
 #include <cmath>
+#include <cstring>
+#include <random>
 
 #include "SyntheticCoil.h"
 
@@ -181,4 +183,166 @@ TEST(Compensator, ConstantOnlyModel)
 	const CompensatedSeries c = compensate(cal, s);
 	for (std::size_t k = 0; k < c.bias_dph.size(); k++) ASSERT_EQ(c.bias_dph[k], cal.model.coef_dph[0]);
 	EXPECT_EQ(c.counters.no_model_samples, 0u);
+}
+
+namespace
+{
+/** A hostile log: irregular sampling with gaps longer than the rate window, single-sample and
+ * 150-sample dropouts on every thermistor (often two at once), temperature spikes of +-300 C
+ * and steps that drive the rates out of range. */
+FogSeries stressRun(unsigned seed, std::size_t n)
+{
+	FogSeries s = fogtest::makeCoilRun("A", seed);
+	s.resize(n);
+	std::mt19937 rng(seed);
+	std::uniform_real_distribution<double> u(0.0, 1.0);
+	const std::vector<double> t0 = s.time_s;
+	for (std::size_t k = 1; k < n; k++)
+		s.time_s[k] = s.time_s[k - 1] + (t0[k] - t0[k - 1]) * (0.3 + 1.4 * u(rng)) + (u(rng) < 0.001 ? 90.0 : 0.0);
+	for (auto& col : s.temp_C)
+		for (std::size_t k = 0; k < n; k++)
+		{
+			if (u(rng) < 0.003) col[k] = std::nan("");
+			if (u(rng) < 0.0005)
+				for (std::size_t j = k; j < std::min(n, k + 150); j++) col[j] = std::nan("");
+			if (u(rng) < 0.003) col[k] += u(rng) < 0.5 ? -300.0 : 300.0;
+			if (u(rng) < 0.0005)
+				for (std::size_t j = k; j < std::min(n, k + 40); j++) col[j] += 15.0;  // a 15 C step: large rates
+		}
+	return s;
+}
+
+const Calibration& calPlain()  // the benchmark's model: 33 terms, 4 thermistors, fallbacks
+{
+	static const Calibration cal = [] {
+		FitOptions o;
+		o.selection = "none";
+		o.fallbacks = true;
+		return fitCalibration({fogtest::makeCoilRun("A", 51)}, "multipoint", o);
+	}();
+	return cal;
+}
+
+CompensatedSeries runSteps(const Calibration& cal, const FogSeries& s, KernelBuild build)
+{
+	Compensator comp(cal, s.thermistors, build);
+	CompensatedSeries out;
+	std::vector<double> temps(s.thermistorCount());
+	for (std::size_t k = 0; k < s.size(); k++)
+	{
+		for (std::size_t i = 0; i < temps.size(); i++) temps[i] = s.temp_C[i][k];
+		const auto o = comp.step(s.time_s[k], s.rate_dph[2][k], temps.data());
+		out.bias_dph.push_back(o.bias_dph);
+		out.compensated_dph.push_back(o.compensated_dph);
+		out.flags.push_back(o.flags);
+	}
+	out.counters = comp.counters();
+	return out;
+}
+}  // namespace
+
+// The AVX2 build of the per-sample code (selected at run time) gives bitwise the numbers of the
+// portable one, on a log with every rare path (dropouts, fallbacks, no model, clamping, gaps,
+// irregular steps), for the plain 33-term model and the default (selected, 3-thermistor) one,
+// and with the layout's columns in another order than the calibration's.
+TEST(Compensator, Avx2BuildEqualsPortableBitwise)
+{
+	if (!kernel::cpuHasAvx2()) GTEST_SKIP() << "this CPU has no AVX2";
+	FogSeries s = stressRun(61, 12000);
+	FogSeries swapped = s;
+	std::swap(swapped.thermistors[0], swapped.thermistors[3]);
+	std::swap(swapped.temp_C[0], swapped.temp_C[3]);
+	for (const Calibration* cal : {&calPlain(), &calA()})
+		for (const FogSeries* series : {&s, &swapped})
+		{
+			const CompensatedSeries p = runSteps(*cal, *series, KernelBuild::Portable);
+			const CompensatedSeries a = runSteps(*cal, *series, KernelBuild::Avx2);
+			EXPECT_STREQ(Compensator(*cal, series->thermistors, KernelBuild::Avx2).kernelBuild(), "avx2");
+			for (std::size_t k = 0; k < s.size(); k++)
+			{
+				ASSERT_EQ(std::memcmp(&a.bias_dph[k], &p.bias_dph[k], sizeof(double)), 0) << k;
+				ASSERT_EQ(a.flags[k], p.flags[k]) << k;
+			}
+			EXPECT_EQ(std::memcmp(&a.counters, &p.counters, sizeof a.counters), 0);
+			// the log does exercise the rare paths
+			EXPECT_GT(p.counters.fallback_samples, 100u);
+			EXPECT_GT(p.counters.no_model_samples, 10u);
+			EXPECT_GT(p.counters.clamped_samples, 100u);
+		}
+}
+
+// The compensator (folded normalisation, 4-lane kernel, steady-state tracker path) against an
+// independent evaluation of the same documented rules on the hostile log: per-column causal
+// rates (CausalRateEstimator), the model choice (main; else the fallback without the first
+// missing thermistor of the main model if it reads no missing one; else the mean bias), and
+// BiasModel::evaluate with clamping. Bias to 1e-9 deg/h (only the order of the floating-point
+// operations differs), flags and clamp counts exactly.
+TEST(Compensator, HostileLogMatchesIndependentReference)
+{
+	const FogSeries s = stressRun(62, 12000);
+	for (const Calibration* cal : {&calPlain(), &calA()})
+	{
+		const CompensatedSeries c = compensate(*cal, s);
+		std::vector<std::vector<double>> rate(s.thermistorCount());
+		for (std::size_t i = 0; i < rate.size(); i++)
+			rate[i] = CausalRateEstimator(cal->rate_estimator.window_s).estimate(s.time_s, s.temp_C[i]);
+		std::size_t clamped_signals = 0, fallback = 0, none = 0;
+		for (std::size_t k = 0; k < s.size(); k++)
+		{
+			const auto missing = [&](const std::string& n) {
+				const int i = s.thermistorIndex(n);
+				return std::isnan(s.temp_C[i][k]) || std::isnan(rate[i][k]);
+			};
+			const auto readsMissing = [&](const BiasModel& m) {
+				for (const auto& n : m.features.thermistors())
+					if (missing(n)) return true;
+				return false;
+			};
+			const BiasModel* m = &cal->model;
+			if (readsMissing(*m))
+			{
+				std::string first;
+				for (const auto& n : cal->model.features.thermistors())
+					if (first.empty() && missing(n)) first = n;
+				m = cal->fallbackFor(first);
+				if (m && readsMissing(*m)) m = nullptr;
+			}
+			double expected = cal->mean_bias_dph;
+			int clamped = 0;
+			if (m)
+			{
+				std::vector<double> temp, rt, v(m->features.signals().size());
+				for (const auto& n : m->features.thermistors())
+				{
+					temp.push_back(s.temp_C[s.thermistorIndex(n)][k]);
+					rt.push_back(rate[s.thermistorIndex(n)][k]);
+				}
+				m->features.signalValues(temp.data(), rt.data(), v.data());
+				expected = m->evaluate(v.data(), true, &clamped);
+			}
+			ASSERT_NEAR(c.bias_dph[k], expected, 1e-9) << k;
+			ASSERT_EQ((c.flags[k] & compflags::Fallback) != 0, m && m != &cal->model) << k;
+			ASSERT_EQ((c.flags[k] & compflags::NoModel) != 0, m == nullptr) << k;
+			ASSERT_EQ((c.flags[k] & compflags::Clamped) != 0, clamped > 0) << k;
+			clamped_signals += static_cast<std::size_t>(clamped);
+			fallback += m && m != &cal->model;
+			none += m == nullptr;
+		}
+		EXPECT_EQ(c.counters.clamped_signals, clamped_signals);
+		EXPECT_EQ(c.counters.fallback_samples, fallback);
+		EXPECT_EQ(c.counters.no_model_samples, none);
+		EXPECT_GT(fallback, 100u);
+		EXPECT_GT(clamped_signals, 100u);
+	}
+}
+
+TEST(Compensator, Avx2RequestedWithoutAvx2IsRefused)
+{
+	FogSeries s = fogtest::makeCoilRun("A", 56);
+	s.resize(10);
+	if (kernel::cpuHasAvx2())
+		EXPECT_STREQ(Compensator(calA(), s.thermistors, KernelBuild::Avx2).kernelBuild(), "avx2");
+	else
+		EXPECT_THROW(Compensator(calA(), s.thermistors, KernelBuild::Avx2), std::invalid_argument);
+	EXPECT_STREQ(Compensator(calA(), s.thermistors, KernelBuild::Portable).kernelBuild(), "portable");
 }

@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/model/Compensator.h>
+#include <mrpt_fog/model/CompensatorStep.h>
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -51,11 +52,10 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 		for (int j = 0; j < 4; j++)
 		{
 			b.t_centre[j] = b.r_centre[j] = 0.0;
-			b.t_inv[j] = b.r_inv[j] = 0.0;
 			b.t_lo[j] = b.r_lo[j] = -inf;
 			b.t_hi[j] = b.r_hi[j] = inf;
-			for (auto& p : b.t_p) p[j] = 0.0;
-			for (auto& p : b.r_p) p[j] = 0.0;
+			for (auto& p : b.t_q) p[j] = 0.0;
+			for (auto& p : b.r_q) p[j] = 0.0;
 		}
 	for (std::size_t s = 0; s < fs.signals().size(); s++)
 	{
@@ -67,7 +67,6 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 		const int j = ch % 4;
 		const bool t = sig.kind == SignalKind::Temp;
 		(t ? b.t_centre : b.r_centre)[j] = nm.centre;
-		(t ? b.t_inv : b.r_inv)[j] = 1.0 / nm.scale;
 		(t ? b.t_lo : b.r_lo)[j] = nm.min;
 		(t ? b.t_hi : b.r_hi)[j] = nm.max;
 		c.uses |= 1u << ch;
@@ -109,10 +108,14 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 		const auto& sig = fs.signals()[s];
 		if (!sig.isDifference())
 		{
+			// coef * ((v - centre) / scale)^k = (coef / scale^k) * (v - centre)^k
 			const int ch = chan(sig.a);
 			const int k = fs.terms()[i].power;
+			const double inv_scale = 1.0 / fs.normalisation()[s].scale;
+			double q = m.coef_dph.at(i);
+			for (int e = 0; e < k; e++) q *= inv_scale;
 			KernelBlock& b = K[ch / 4];
-			(sig.kind == SignalKind::Temp ? b.t_p : b.r_p)[k - 1][ch % 4] += m.coef_dph.at(i);
+			(sig.kind == SignalKind::Temp ? b.t_q : b.r_q)[k - 1][ch % 4] += q;
 			continue;
 		}
 		SignalGroup& g = c.groups[group_of[s]];
@@ -122,11 +125,15 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 	return c;
 }
 
-Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInfo>& layout)
+Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInfo>& layout, KernelBuild build)
 	: window_s_(cal.rate_estimator.window_s),
+	  half_window_s_(0.5 * cal.rate_estimator.window_s),
 	  mean_bias_dph_(cal.mean_bias_dph),
 	  tracker_(1, cal.rate_estimator.window_s)
 {
+	if (build == KernelBuild::Avx2 && !kernel::cpuHasAvx2())
+		throw std::invalid_argument("compensator: the AVX2 build was requested but this CPU lacks AVX2");
+	const bool avx2 = build == KernelBuild::Avx2 || (build == KernelBuild::Auto && kernel::cpuHasAvx2());
 	cal.rate_estimator.validate();
 	if (cal.rate_estimator.kind != "causal")
 		throw std::invalid_argument("calibration was fitted with the non-causal rate estimator " +
@@ -165,6 +172,7 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 		has_fallback_.push_back(fb != nullptr);
 		models_.push_back(fb ? compile(*fb, names) : Compiled{});
 	}
+	use_avx2_ = avx2 && !names.empty() && names.size() <= 4;  // stepAvx2 covers 1..4 channels
 	const std::size_t padded = 4 * ((names.size() + 3) / 4);
 	temp_.assign(padded, 0.0);  // padding lanes stay 0: finite, never clamped, zero coefficients
 	rate_.assign(padded, 0.0);
@@ -174,8 +182,7 @@ void Compensator::reset()
 {
 	tracker_.reset();
 	counters_ = {};
-	last_model_ = 0;
-	first_ = true;
+	last_model_ = kNoSampleYet;
 }
 
 namespace
@@ -237,35 +244,12 @@ double groupSumAnyDegree(int degree, const int* a, const int* b, const double* s
 }
 }  // namespace
 
-[[gnu::always_inline]] inline double Compensator::kernelSum(const ChannelKernel& K, const double* T, const double* R, int& clamped)
+namespace kernel
 {
-	using A4 = Eigen::Array4d;
-	using M4 = Eigen::Map<const A4, Eigen::Aligned16>;  // KernelBlock members
-	using U4 = Eigen::Map<const A4>;
-	A4 acc = A4::Zero();
-	A4 moved = A4::Zero();  // sum of |clamped - raw|: > 0 iff some signal was clamped
-	for (std::size_t blk = 0; blk < K.size(); blk++)
-	{
-		const KernelBlock& b = K[blk];
-		const A4 v = U4(T + 4 * blk), w = U4(R + 4 * blk);
-		const A4 vc = v.max(M4(b.t_lo)).min(M4(b.t_hi)), wc = w.max(M4(b.r_lo)).min(M4(b.r_hi));
-		moved += (vc - v).abs() + (wc - w).abs();
-		const A4 z = (vc - M4(b.t_centre)) * M4(b.t_inv), q = (wc - M4(b.r_centre)) * M4(b.r_inv);
-		const A4 z2 = z * z, q2 = q * q;
-		// Estrin's scheme (shorter dependency chains than Horner: the evaluation is latency-bound).
-		const A4 hT = z * ((M4(b.t_p[0]) + M4(b.t_p[1]) * z) + z2 * ((M4(b.t_p[2]) + M4(b.t_p[3]) * z) + z2 * M4(b.t_p[4])));
-		const A4 hR = q * ((M4(b.r_p[0]) + M4(b.r_p[1]) * q) + q2 * M4(b.r_p[2]));
-		acc += hT + hR;
-	}
-	// Clamping is rare: one predictable test here, the exact count only when it happened.
-	if (moved.maxCoeff() > 0) clamped += countClamped(K, T, R);
-	return acc.sum();
-}
-
-int Compensator::countClamped(const ChannelKernel& K, const double* T, const double* R)
+int countClamped(const KernelBlock* K, std::size_t blocks, const double* T, const double* R)
 {
 	int cl = 0;
-	for (std::size_t blk = 0; blk < K.size(); blk++)
+	for (std::size_t blk = 0; blk < blocks; blk++)
 		for (int j = 0; j < 4; j++)
 		{
 			const KernelBlock& b = K[blk];
@@ -274,12 +258,13 @@ int Compensator::countClamped(const ChannelKernel& K, const double* T, const dou
 		}
 	return cl;
 }
+}  // namespace kernel
 
-[[gnu::noinline]] double Compensator::addGroups(const Compiled& m, double sum, int& clamped) const
+[[gnu::noinline]] double Compensator::addGroups(const Compiled& m, const double* temp_C, double sum, int& clamped) const
 {
 	for (const SignalGroup& g : m.groups)
 	{
-		const double* src = (g.kind == 0 || g.kind == 2) ? temp_.data() : rate_.data();
+		const double* src = (g.kind == 0 || g.kind == 2) ? temp_C : rate_.data();
 		if (g.kind >= 2)
 			sum += groupSumAnyDegree<true>(g.degree, g.a.data(), g.b.data(), src, g.lo.data(), g.hi.data(),
 										   g.centre.data(), g.inv_scale.data(), g.p.data(), g.a.size(), clamped);
@@ -290,25 +275,17 @@ int Compensator::countClamped(const ChannelKernel& K, const double* T, const dou
 	return sum;
 }
 
-inline double Compensator::evaluate(const Compiled& m, int& clamped) const
-{
-	// The per-channel kernel inline; the difference groups (other presets) out of line.
-	double sum = m.c0;
-	sum += kernelSum(m.kernel, temp_.data(), rate_.data(), clamped);
-	if (!m.groups.empty()) sum = addGroups(m, sum, clamped);
-	return sum;
-}
-
 Compensator::Output Compensator::step(double time_s, double raw_dph, const double* temp_C)
 {
+	if (use_avx2_) return stepAvx2(time_s, raw_dph, temp_C);
 	// Compile-time channel counts for the common layouts: the tracker's steady-state update
 	// inlines and the loops over channels unroll.
 	switch (channel_col_.size())
 	{
+		case 4: return stepFixed<4>(time_s, raw_dph, temp_C);
 		case 1: return stepFixed<1>(time_s, raw_dph, temp_C);
 		case 2: return stepFixed<2>(time_s, raw_dph, temp_C);
 		case 3: return stepFixed<3>(time_s, raw_dph, temp_C);
-		case 4: return stepFixed<4>(time_s, raw_dph, temp_C);
 		default: return stepFixed<0>(time_s, raw_dph, temp_C);
 	}
 }
@@ -316,63 +293,7 @@ Compensator::Output Compensator::step(double time_s, double raw_dph, const doubl
 template <std::size_t NC>
 Compensator::Output Compensator::stepFixed(double time_s, double raw_dph, const double* temp_C)
 {
-	const std::size_t nc = NC ? NC : channel_col_.size();
-	// Same column order (the usual case): a block copy, and the tracker reads the caller's row
-	// directly (element-wise stores read back as vectors would stall store forwarding).
-	if (same_order_ && nc > 0)  // nc == 0 (constant-only model): memcpy with a null buffer is UB
-		std::memcpy(temp_.data(), temp_C, nc * sizeof(double));  // own buffer: no overlap
-	else
-		for (std::size_t c = 0; c < nc; c++) temp_[c] = temp_C[channel_col_[c]];
-	tracker_.pushFixed<NC>(time_s, same_order_ ? temp_C : temp_.data());
-	const std::uint32_t short_span = tracker_.ratesAndCoverageFixed<NC>(rate_.data(), 0.5 * window_s_);
-	// One predictable test for the common case: the sum is NaN if any reading or rate is.
-	double all = 0.0;
-	for (std::size_t c = 0; c < nc; c++) all += temp_[c] + rate_[c];
-	std::uint32_t missing = 0;
-	if (std::isnan(all))  // dropout (rare): zero the missing channels, never read by the model in use
-		for (std::size_t c = 0; c < nc; c++)
-			if (std::isnan(temp_[c]) || std::isnan(rate_[c]))
-			{
-				missing |= 1u << c;
-				temp_[c] = rate_[c] = 0.0;
-			}
-	// Main model unless it reads a missing channel; then the fallback without that channel if
-	// it reads no other missing channel; else none.
-	int model = -1;
-	if ((missing & models_[0].uses) == 0)
-		model = 0;
-	else
-	{
-		const std::uint32_t need = missing & models_[0].uses;
-		const int c = __builtin_ctz(need);
-		if (has_fallback_[c] && (missing & models_[1 + c].uses) == 0) model = 1 + c;
-	}
-	Output out;
-	int clamped = 0;
-	bool warm = false;
-	if (model >= 0)
-	{
-		out.bias_dph = evaluate(models_[model], clamped);
-		warm = (short_span & models_[model].uses) != 0;
-	}
-	else
-		out.bias_dph = mean_bias_dph_;
-	out.compensated_dph = raw_dph - out.bias_dph;
-	out.model = model;
-	if (model > 0) out.flags |= compflags::Fallback;
-	if (model < 0) out.flags |= compflags::NoModel;
-	if (clamped) out.flags |= compflags::Clamped;
-	if (warm) out.flags |= compflags::RateWarmup;
-	counters_.samples++;
-	counters_.fallback_samples += model > 0;
-	counters_.no_model_samples += model < 0;
-	counters_.clamped_samples += clamped > 0;
-	counters_.clamped_signals += static_cast<std::size_t>(clamped);
-	counters_.warmup_samples += warm;
-	if (!first_ && model != last_model_) counters_.model_switches++;
-	last_model_ = model;
-	first_ = false;
-	return out;
+	return stepBody<NC, 2>(time_s, raw_dph, temp_C);
 }
 
 CompensatedSeries compensate(const Calibration& cal, const FogSeries& series)

@@ -28,6 +28,7 @@
  */
 
 #include <mrpt_fog/model/Calibration.h>
+#include <mrpt_fog/model/CompensatorKernel.h>
 #include <mrpt_fog/model/RateEstimator.h>
 
 #include <array>
@@ -56,11 +57,20 @@ struct CompensationCounters
 	std::size_t model_switches = 0;  //!< changes of the model in use
 };
 
+/** Which build of the per-sample code a Compensator runs. Both give bitwise the same numbers
+ * (tests/model/test_Compensator.cpp checks it); AVX2 is faster. */
+enum class KernelBuild
+{
+	Auto,  //!< AVX2 when the CPU has it and the layout has 1..4 thermistors, else portable
+	Portable,  //!< baseline x86-64 (SSE2), or the target's generic vectors elsewhere
+	Avx2  //!< AVX2; the constructor throws std::invalid_argument if the CPU lacks it
+};
+
 class Compensator
 {
    public:
 	/** layout: the thermistors of the series to be compensated, in its column order. */
-	Compensator(const Calibration& cal, const std::vector<ThermistorInfo>& layout);
+	Compensator(const Calibration& cal, const std::vector<ThermistorInfo>& layout, KernelBuild build = KernelBuild::Auto);
 
 	struct Output
 	{
@@ -74,6 +84,8 @@ class Compensator
 	Output step(double time_s, double raw_dph, const double* temp_C);
 	const CompensationCounters& counters() const { return counters_; }
 	void reset();
+	/** The build of the per-sample code in use: "avx2" or "portable". */
+	const char* kernelBuild() const { return use_avx2_ ? "avx2" : "portable"; }
 
    private:
 	/** The signals of one kind (T, dT/dt, dT, d/dt dT) of a model, struct-of-arrays, every
@@ -87,15 +99,9 @@ class Compensator
 		std::vector<double> p;  // coefficient of z^k of signal i at p[k * n + i], k = 1..degree
 	};
 	/** Per-channel kernel for the T(c) and dT/dt(c) terms (the multipoint shape), in blocks of 4
-	 * tracked channels (the last block padded): for every channel a degree-5 polynomial in T(c)
-	 * and a degree-3 one in dT/dt(c), zero padded (absent signals and padding lanes: zero
-	 * coefficients and an infinite range, so nothing is counted as clamped). Fixed shapes: each
-	 * block is a handful of 4-wide vector operations with no branch. */
-	struct alignas(32) KernelBlock
-	{
-		double t_centre[4], t_inv[4], t_lo[4], t_hi[4], t_p[5][4];  // t_p[k - 1]: coefficient of z^k
-		double r_centre[4], r_inv[4], r_lo[4], r_hi[4], r_p[3][4];
-	};
+	 * tracked channels (the last block padded), normalisation folded into the coefficients: see
+	 * CompensatorKernel.h. */
+	using KernelBlock = kernel::KernelBlock;
 	using ChannelKernel = std::vector<KernelBlock>;
 	struct Compiled
 	{
@@ -104,17 +110,23 @@ class Compensator
 		std::vector<SignalGroup> groups;  // differences and their rates
 		std::uint32_t uses = 0;  // bit mask of the channels the model reads
 	};
-	/** step() for NC == tracked channels (NC = 0: any count). */
+	/** step() for NC == tracked channels (NC = 0: any count), kernel W lanes wide; defined in
+	 * CompensatorStep.h, compiled once for baseline x86-64 (stepFixed, W = 2) and once for
+	 * AVX2 (stepAvx2, CompensatorAvx2.cpp, NC = 1..4, W = 4), with bitwise the same results. */
+	template <std::size_t NC, int W>
+	Output stepBody(double time_s, double raw_dph, const double* temp_C);
 	template <std::size_t NC>
 	Output stepFixed(double time_s, double raw_dph, const double* temp_C);
+	Output stepAvx2(double time_s, double raw_dph, const double* temp_C);  // 1..4 channels
 	static Compiled compile(const BiasModel& m, const std::vector<std::string>& channel_names);
-	double evaluate(const Compiled& m, int& clamped) const;
-	double addGroups(const Compiled& m, double sum, int& clamped) const;  // sum + the groups' terms
-	static double kernelSum(const ChannelKernel& k, const double* temp_C, const double* rate_C_s, int& clamped);
-	static int countClamped(const ChannelKernel& k, const double* temp_C, const double* rate_C_s);
+	template <std::size_t NB, int W>
+	double evaluate(const Compiled& m, const double* temp_C, int& clamped) const;
+	double addGroups(const Compiled& m, const double* temp_C, double sum, int& clamped) const;  // sum + the groups' terms
 
 	double window_s_;
+	double half_window_s_;
 	double mean_bias_dph_;
+	bool use_avx2_ = false;
 	std::vector<int> channel_col_;  // layout column of each tracked channel
 	bool same_order_ = false;  // channel_col_[c] == c for every tracked channel
 	std::vector<Compiled> models_;  // [0] main, [1 + c] fallback without channel c (may be empty)
@@ -122,8 +134,8 @@ class Compensator
 	CausalRateTracker tracker_;
 	std::vector<double> temp_, rate_;  // per tracked channel, zero padded to the kernel's blocks of 4
 	CompensationCounters counters_;
-	int last_model_ = 0;
-	bool first_ = true;
+	static constexpr int kNoSampleYet = -2;  //!< last_model_ before the first sample
+	int last_model_ = kNoSampleYet;
 };
 
 /** Output of compensate(): columns of the same length as the input. */

@@ -90,7 +90,7 @@ class CausalRateTracker
 	/** push() and ratesAndCoverage() for a compile-time channel count NC == channels() (NC = 0:
 	 * any count), inline in the caller's loop: same results, no per-call dispatch. */
 	template <std::size_t NC>
-	void pushFixed(double time_s, const double* x)
+	[[gnu::always_inline]] void pushFixed(double time_s, const double* x)
 	{
 		if (!pushSteady<NC>(time_s, x)) pushN<NC>(time_s, x);
 	}
@@ -161,7 +161,7 @@ namespace detail
 /** The rate sums' update for one sample in and one out, every channel valid (restrict: no
  * aliasing; NC > 0: compile-time channel count, the loop unrolls). */
 template <std::size_t NC>
-inline void fusedRateSumsUpdate(std::size_t nc, const double* __restrict x, const double* __restrict xo,
+[[gnu::always_inline]] inline void fusedRateSumsUpdate(std::size_t nc, const double* __restrict x, const double* __restrict xo,
 								const double* __restrict xr, double d1, double d2, double dto, double dtn,
 								double* __restrict s1, double* __restrict s2, double* __restrict sx,
 								double* __restrict stx)
@@ -180,7 +180,7 @@ inline void fusedRateSumsUpdate(std::size_t nc, const double* __restrict x, cons
 
 // ---- inline hot path of CausalRateTracker (the compensator's per-sample loop)
 template <std::size_t NC>
-inline bool CausalRateTracker::pushSteady(double time_s, const double* x)
+[[gnu::always_inline]] inline bool CausalRateTracker::pushSteady(double time_s, const double* x)
 {
 	// The steady state of uniform sampling, taken by nearly every sample: the time is valid,
 	// exactly one sample leaves the window as this one enters, both have every channel valid and
@@ -214,7 +214,7 @@ inline bool CausalRateTracker::pushSteady(double time_s, const double* x)
 }
 
 template <std::size_t NC>
-inline std::uint32_t CausalRateTracker::ratesAndCoverageFixed(double* rate_out, double min_span_s) const
+[[gnu::always_inline]] inline std::uint32_t CausalRateTracker::ratesAndCoverageFixed(double* rate_out, double min_span_s) const
 {
 	const std::size_t nc = NC ? NC : channels_;
 	const double span2 = min_span_s * min_span_s;

@@ -1,0 +1,109 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file CompensatorStep.h
+ * The body of Compensator::step (implementation detail: included only by Compensator.cpp and
+ * CompensatorAvx2.cpp, which compile it for baseline x86-64 and for AVX2 respectively).
+ * Everything it calls on the hot path is inline, so each build gets its own instructions;
+ * the rare paths (the tracker's general update, the difference groups) are ordinary calls.
+ */
+
+#include <mrpt_fog/model/Compensator.h>
+
+#include <cmath>
+#include <cstring>
+
+namespace mrpt_fog
+{
+template <std::size_t NB, int W>
+[[gnu::always_inline]] inline double Compensator::evaluate(const Compiled& m, const double* temp_C, int& clamped) const
+{
+	// The per-channel kernel inline; the difference groups (other presets) out of line.
+	double sum = m.c0;
+	sum += kernel::kernelSum<NB, W>(m.kernel.data(), m.kernel.size(), temp_C, rate_.data(), clamped);
+	if (!m.groups.empty()) sum = addGroups(m, temp_C, sum, clamped);
+	return sum;
+}
+
+template <std::size_t NC, int W>
+[[gnu::always_inline]] inline Compensator::Output Compensator::stepBody(double time_s, double raw_dph,
+																		 const double* temp_C)
+{
+	const std::size_t nc = NC ? NC : channel_col_.size();
+	constexpr std::size_t NB = NC ? (NC + 3) / 4 : 0;  // kernel blocks
+	// The temperatures the tracker and the kernel read. Same column order and a whole block (the
+	// usual 4-thermistor case): the caller's row itself, no copy. Otherwise the work buffer
+	// (zero padded to whole blocks), filled as a block copy when the order is the same
+	// (element-wise stores read back as vectors would stall store forwarding).
+	const double* T = temp_C;
+	if (!(NC == 4 && same_order_))
+	{
+		if (same_order_ && nc > 0)  // nc == 0 (constant-only model): memcpy with a null buffer is UB
+			std::memcpy(temp_.data(), temp_C, nc * sizeof(double));  // own buffer: no overlap
+		else
+			for (std::size_t c = 0; c < nc; c++) temp_[c] = temp_C[channel_col_[c]];
+		T = temp_.data();
+	}
+	tracker_.pushFixed<NC>(time_s, same_order_ ? temp_C : temp_.data());
+	const std::uint32_t short_span = tracker_.ratesAndCoverageFixed<NC>(rate_.data(), half_window_s_);
+	// One predictable test for the common case: the sum is NaN if any reading or rate is.
+	double all = 0.0;
+	for (std::size_t c = 0; c < nc; c++) all += T[c] + rate_[c];
+	std::uint32_t missing = 0;
+	if (std::isnan(all))  // dropout (rare): zero the missing channels, never read by the model in use
+	{
+		if (T != temp_.data())
+		{
+			std::memcpy(temp_.data(), temp_C, nc * sizeof(double));
+			T = temp_.data();
+		}
+		for (std::size_t c = 0; c < nc; c++)
+			if (std::isnan(temp_[c]) || std::isnan(rate_[c]))
+			{
+				missing |= 1u << c;
+				temp_[c] = rate_[c] = 0.0;
+			}
+	}
+	// Main model unless it reads a missing channel; then the fallback without that channel if
+	// it reads no other missing channel; else none.
+	int model = -1;
+	if ((missing & models_[0].uses) == 0)
+		model = 0;
+	else
+	{
+		const std::uint32_t need = missing & models_[0].uses;
+		const int c = __builtin_ctz(need);
+		if (has_fallback_[c] && (missing & models_[1 + c].uses) == 0) model = 1 + c;
+	}
+	Output out;
+	int clamped = 0;
+	bool warm = false;
+	if (model >= 0)
+	{
+		out.bias_dph = evaluate<NB, W>(models_[model], T, clamped);
+		warm = (short_span & models_[model].uses) != 0;
+	}
+	else
+		out.bias_dph = mean_bias_dph_;
+	out.compensated_dph = raw_dph - out.bias_dph;
+	out.model = model;
+	counters_.samples++;
+	if (model != last_model_)
+	{
+		counters_.model_switches += last_model_ != kNoSampleYet;
+		last_model_ = model;
+	}
+	if (model == 0 && clamped == 0 && !warm) return out;  // the common case: no flag, no other counter
+	if (model > 0) out.flags |= compflags::Fallback;
+	if (model < 0) out.flags |= compflags::NoModel;
+	if (clamped) out.flags |= compflags::Clamped;
+	if (warm) out.flags |= compflags::RateWarmup;
+	counters_.fallback_samples += model > 0;
+	counters_.no_model_samples += model < 0;
+	counters_.clamped_samples += clamped > 0;
+	counters_.clamped_signals += static_cast<std::size_t>(clamped);
+	counters_.warmup_samples += warm;
+	return out;
+}
+
+}  // namespace mrpt_fog

@@ -1,0 +1,38 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+/* The AVX2 build of Compensator::step (CompensatorStep.h) for 1..4 tracked channels: one 4-wide
+ * vector per signal kind in the kernel, and the tracker's per-channel updates vectorised 4 wide.
+ * Only stepAvx2 carries the AVX2 target (a function attribute, not a compiler flag: every other
+ * function, in this file too, stays baseline x86-64), and the compensator calls it only after
+ * cpuHasAvx2(). No FMA: a fused multiply-add rounds once instead of twice, and the build must
+ * give bitwise the numbers of the baseline one. */
+#include <mrpt_fog/model/CompensatorStep.h>
+
+namespace mrpt_fog
+{
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+bool kernel::cpuHasAvx2()
+{
+	// __builtin_cpu_supports also requires that the OS saves the AVX state (OSXSAVE / XCR0).
+	__builtin_cpu_init();
+	return __builtin_cpu_supports("avx2");
+}
+
+[[gnu::target("avx2")]] Compensator::Output Compensator::stepAvx2(double time_s, double raw_dph, const double* temp_C)
+{
+	switch (channel_col_.size())
+	{
+		case 4: return stepBody<4, 4>(time_s, raw_dph, temp_C);
+		case 1: return stepBody<1, 4>(time_s, raw_dph, temp_C);
+		case 2: return stepBody<2, 4>(time_s, raw_dph, temp_C);
+		default: return stepBody<3, 4>(time_s, raw_dph, temp_C);  // use_avx2_ only for 1..4
+	}
+}
+#else
+bool kernel::cpuHasAvx2() { return false; }
+Compensator::Output Compensator::stepAvx2(double time_s, double raw_dph, const double* temp_C)
+{
+	return step(time_s, raw_dph, temp_C);  // never called: use_avx2_ stays false
+}
+#endif
+
+}  // namespace mrpt_fog
