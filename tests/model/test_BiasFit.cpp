@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 #include <mrpt_fog/model/BiasFit.h>
 
+#include <cstdio>
+#include <limits>
 #include <random>
 
 using namespace mrpt_fog;
@@ -32,9 +34,9 @@ Problem makeProblem(int n, double noise, unsigned seed)
 	for (int i = 0; i < n; i++) p.y[i] += noise * nd(rng);
 	return p;
 }
-NormalEquations accumulate(const Problem& p, int from, int to, double y_ref)
+StreamingQr accumulate(const Problem& p, int from, int to, double y_ref)
 {
-	NormalEquations ne(static_cast<std::size_t>(p.X.cols()), y_ref);
+	StreamingQr ne(static_cast<std::size_t>(p.X.cols()), y_ref);
 	for (int i = from; i < to; i++)
 	{
 		const Eigen::VectorXd row = p.X.row(i).transpose();
@@ -87,7 +89,7 @@ TEST(BiasFit, MergeEqualsSingleAccumulatorAndSubsetsWork)
 TEST(BiasFit, CrossValidationMatchesExplicitRefits)
 {
 	const auto p = makeProblem(2000, 0.05, 5);
-	std::vector<NormalEquations> folds;
+	std::vector<StreamingQr> folds;
 	for (int f = 0; f < 4; f++) folds.push_back(accumulate(p, f * 500, (f + 1) * 500, 1.0));
 	const auto cv = crossValidatedRms(folds, kAll, {0.0});
 	double sse = 0;
@@ -119,10 +121,86 @@ TEST(BiasFit, RidgeShrinksAndKeepsMean)
 	EXPECT_GT(f1.rms_dph, f0.rms_dph);
 }
 
+// The streaming factor equals a dense Householder QR of the stored [X | y] up to row signs
+// (R'R = [X y]'[X y] and |diag R| equal), whatever the block boundaries: 1000 rows = 7 full
+// blocks of 128 + 104, and the same rows added as 3 merged pieces.
+TEST(StreamingQr, FactorEqualsDenseQrAndMergeIsExact)
+{
+	const auto p = makeProblem(1000, 0.01, 7);
+	auto one = accumulate(p, 0, 1000, 0.0);
+	auto a = accumulate(p, 0, 333, 0.0), b = accumulate(p, 333, 900, 0.0), c = accumulate(p, 900, 1000, 0.0);
+	a.merge(b);
+	a.merge(c);
+	Eigen::MatrixXd Xy(1000, 8);
+	Xy << p.X, p.y;
+	const Eigen::MatrixXd Rd = Xy.householderQr().matrixQR().topRows(8).triangularView<Eigen::Upper>();
+	for (auto* acc : {&one, &a})
+	{
+		const Eigen::MatrixXd& R = acc->r();
+		EXPECT_EQ(acc->count(), 1000u);
+		EXPECT_LT((R.transpose() * R - Xy.transpose() * Xy).norm(), 1e-12 * (Xy.transpose() * Xy).norm());
+		for (int j = 0; j < 8; j++) EXPECT_NEAR(std::abs(R(j, j)), std::abs(Rd(j, j)), 1e-12 * Rd.norm()) << j;
+		EXPECT_TRUE(R.isUpperTriangular(0.0));
+	}
+	// the residual of any coefficient vector from the factor
+	Eigen::VectorXd b0(7);
+	b0 << 1, -1, 0.5, 0.25, 0, 2, -3;
+	EXPECT_NEAR(residualSumOfSquares(one, kAll, b0), (p.y - p.X * b0).squaredNorm(), 1e-12 * (p.y - p.X * b0).squaredNorm());
+	// bad input
+	StreamingQr other(6, 0.0);
+	EXPECT_THROW(one.merge(other), std::invalid_argument);
+	EXPECT_THROW(one.columnsR({0, 7}), std::invalid_argument);
+	EXPECT_THROW(StreamingQr(3, 0.0, {0.0, 1.0}), std::invalid_argument);
+}
+
+// Ill-conditioned design (monomials 1, z..z^12 of z in [0, 1], cond(X) ~ 1e8-1e9) with an exactly
+// known truth (noise-free y = X b): a backward-stable solver recovers b to a norm-wise relative
+// error of order cond(X) x eps; the streaming QR must stay within 10 cond(X) eps. Normal
+// equations (the previous method) square the condition number: their error is printed for
+// comparison and must exceed the QR error by far.
+TEST(BiasFit, IllConditionedDesignWithinCondTimesEps)
+{
+	const int n = 20000, p = 13;
+	std::mt19937 rng(8);
+	std::uniform_real_distribution<double> u(0, 1);
+	Eigen::MatrixXd X(n, p);
+	Eigen::VectorXd b(p);
+	for (int j = 0; j < p; j++) b[j] = (j % 2 ? -1.0 : 1.0) * (1 + 0.1 * j);
+	for (int i = 0; i < n; i++)
+	{
+		const double z = u(rng);
+		double zk = 1;
+		for (int j = 0; j < p; j++, zk *= z) X(i, j) = zk;
+	}
+	const Eigen::VectorXd y = X * b;
+	Eigen::JacobiSVD<Eigen::MatrixXd> svd(X);
+	const double cond = svd.singularValues()(0) / svd.singularValues()(p - 1);
+	EXPECT_GT(cond, 1e7);  // the test must be ill-conditioned to mean anything
+	StreamingQr acc(p, 0.0);
+	for (int i = 0; i < n; i++)
+	{
+		const Eigen::VectorXd row = X.row(i).transpose();
+		acc.add(row.data(), y[i]);
+	}
+	std::vector<int> cols(p);
+	for (int j = 0; j < p; j++) cols[j] = j;
+	const LinearFit fit = solveBiasFit(acc, cols);
+	ASSERT_EQ(fit.numerical_rank, static_cast<std::size_t>(p));
+	const double eps = std::numeric_limits<double>::epsilon();
+	const double err_qr = (fit.coef_dph - b).norm() / b.norm();
+	const Eigen::VectorXd b_ne = (X.transpose() * X).ldlt().solve(X.transpose() * y);
+	const double err_ne = (b_ne - b).norm() / b.norm();
+	std::printf("  cond(X) %.3g: streaming QR error %.3g (%.3g cond eps), normal equations %.3g\n", cond, err_qr,
+				err_qr / (cond * eps), err_ne);
+	EXPECT_LE(err_qr, 10 * cond * eps);
+	EXPECT_GT(err_ne, 100 * err_qr);
+	EXPECT_LT(fit.rms_dph, 1e-9);
+}
+
 // A duplicated feature is detected: numerical rank below the column count.
 TEST(BiasFit, RankDeficiencyAndBadInput)
 {
-	NormalEquations ne(3, 0.0);
+	StreamingQr ne(3, 0.0);
 	std::mt19937 rng(1);
 	std::uniform_real_distribution<double> u(-1, 1);
 	for (int i = 0; i < 100; i++)
@@ -133,14 +211,14 @@ TEST(BiasFit, RankDeficiencyAndBadInput)
 	const LinearFit f = solveBiasFit(ne, {0, 1, 2});
 	EXPECT_EQ(f.numerical_rank, 2u);
 	EXPECT_NEAR(f.coef_dph[1] + f.coef_dph[2], 2.0, 1e-9);  // minimum-norm solution
-	NormalEquations empty(3, 0.0);
+	StreamingQr empty(3, 0.0);
 	EXPECT_THROW(solveBiasFit(empty, {0, 1}), std::invalid_argument);
 	EXPECT_THROW(solveBiasFit(ne, {1, 2}), std::invalid_argument);  // no constant
 	EXPECT_THROW(solveBiasFit(ne, {0, 3}), std::invalid_argument);
 	const double bad[3] = {1, std::nan(""), 0};
 	EXPECT_THROW(ne.add(bad, 0), std::invalid_argument);
 	// a constant feature has zero variance: rank loss
-	NormalEquations c(2, 0.0);
+	StreamingQr c(2, 0.0);
 	for (int i = 0; i < 50; i++)
 	{
 		const double g[2] = {1, 0.5};

@@ -19,10 +19,12 @@
  *     `folds` contiguous time blocks of the single run (blocked k-fold);
  *  5. term selection (default "auto"): greedy forward selection of whole signal groups (e.g. all
  *     powers of T(Ti1)) and a ridge value from a grid, both by held-out (cross-validated) error;
- *     a group is added only if it lowers the held-out RMS. For "multipoint" this runs from
- *     every subset of the thermistors (up to 6; beyond, the full set and the leave-one-out
- *     sets) and keeps the best: more thermistors only add candidates, so by construction they
- *     cannot make the cross-validated error worse.
+ *     a group is added only if it lowers the held-out RMS. For "multipoint" and "points:K" the
+ *     search is nested over thermistor subsets: the choice for a set S is the best of the
+ *     greedy selection from S and of the choices for every S minus one thermistor (recursively,
+ *     memoised; up to 8 thermistors, else refused). A subset's choice is a candidate for every
+ *     superset, so with the same folds more thermistors never give a larger cross-validated
+ *     error, by construction. Fallback for thermistor t: the nested choice without t.
  *     "none" fits every preset term (plain least squares, optional fixed ridge): the seed's way,
  *     which generalises badly on collinear thermistors;
  *  6. fallback models: for each thermistor of the model, the same selection without it;
@@ -119,6 +121,15 @@ struct Calibration
  * model. */
 Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string& preset, const FitOptions& options = {},
 						   const std::vector<std::string>& run_labels = {});
+
+/** Standard error of the mean of a serially correlated series by block averaging (Flyvbjerg &
+ * Petersen 1989): non-finite samples are dropped, the series is cut into blocks of L = 1, 2, 4,
+ * ... samples while at least 16 blocks remain (a trailing partial block is dropped), the standard
+ * error sd(block means) / sqrt(blocks) is computed for each L, and the largest is returned (the
+ * plateau, or the longest blocks allowed when the correlation outlasts them: then an
+ * underestimate, flagged by *plateau = false). Throws std::invalid_argument for fewer than 32
+ * finite samples. block_len (optional) receives the L of the returned value. */
+double blockAveragedStandardError(const std::vector<double>& x, std::size_t* block_len = nullptr, bool* plateau = nullptr);
 
 /** Runs the compensator over a series (e.g. a validation run) and returns labelled figures. */
 FitFigures evaluateCalibration(const Calibration& cal, const FogSeries& series, const std::string& label,
