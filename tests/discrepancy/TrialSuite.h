@@ -5,6 +5,7 @@
  * regenerated with:  ./build-disc/tests/test_discrepancy --gtest_filter='*ProofTrials*' | grep TRIALS
  */
 #include <mrpt_fog/discrepancy/DiscrepancyTrials.h>
+#include <mrpt_fog/discrepancy/SimEffectTrial.h>
 
 #include <cstdio>
 #include <string>
@@ -76,6 +77,25 @@ inline Tally nullTrials(int seeds, std::uint64_t first_seed)
 		t.clean += o.clean;
 		t.gap_ok += o.gap_ok;
 		if (o.false_naming) t.misses.push_back(o.summary);
+	}
+	return t;
+}
+
+/** Trials on the real simulator (SimEffectTrial.h): `seeds` seeds from first_seed. With an
+ * empty spec.hidden these are null trials (false naming counted). */
+inline Tally runSimSeeds(SimTrialSpec spec, int seeds, std::uint64_t first_seed)
+{
+	Tally t;
+	for (int s = 0; s < seeds; ++s)
+	{
+		spec.seed = first_seed + static_cast<std::uint64_t>(s);
+		const auto o = runSimEffectTrial(spec);
+		++t.trials;
+		t.named += o.named_ok;
+		t.clean += o.clean;
+		t.gap_ok += o.gap_ok;
+		t.false_naming += o.false_naming;
+		if (!o.named_ok || !o.gap_ok) t.misses.push_back(o.summary);
 	}
 	return t;
 }

@@ -43,7 +43,6 @@ TEST(CandidateEffect, ColumnsMatchClosedForms)
 
 	const auto warm = candidateById("warmup").build(ctx, 600.0);
 	const auto lag = candidateById("thermistor_lag").build(ctx, 0.0);
-	const auto hyst = candidateById("hysteresis").build(ctx, 0.0);
 	const auto mag = candidateById("magnetic").build(ctx, 0.0);
 	const auto poly = candidateById("temp_poly_order").build(ctx, 0.0);
 	ASSERT_EQ(poly.cols(), 2);
@@ -53,7 +52,6 @@ TEST(CandidateEffect, ColumnsMatchClosedForms)
 		if (sig.usable[k] && sig.time_s[k] < sig.power_on_s.at(1))
 			EXPECT_NEAR(warm(i, 0), std::exp(-(sig.time_s[k] - sig.power_on_s[0]) / 600.0), 1e-12);
 		if (sig.block[k] >= 0) EXPECT_NEAR(lag(i, 0), 2.0 * sig.dtemp_dt_Cpm[k], 1e-9);  // d/dt f(T) = f' dT/dt
-		EXPECT_NEAR(hyst(i, 0), std::tanh(sig.dtemp_dt_Cpm[k] / 0.05), 1e-12);
 		EXPECT_DOUBLE_EQ(mag(i, 0), sig.field_uT[k]);
 		if (sig.usable[k])
 		{
@@ -61,6 +59,50 @@ TEST(CandidateEffect, ColumnsMatchClosedForms)
 			EXPECT_NEAR(poly(i, 0), std::pow(x, 4), 1e-12);
 			EXPECT_NEAR(poly(i, 1), std::pow(x, 5), 1e-12);
 		}
+	}
+}
+
+TEST(CandidateEffect, HysteresisIsPlayTypeAndKeepsItsBranchThroughSoaks)
+{
+	// heating at 0.5 C/min for 40 min (20 C), soak 20 min, cooling at 0.5 C/min for 10 min (5 C):
+	// closed form of the play operator, span 5 C: h = 1 - exp(-dT/5) while heating, kept during
+	// the soak, then -1 + (h_top + 1) exp(-dT_down/5) while cooling
+	RunSignals s;
+	for (int k = 0; k <= 70; ++k)
+	{
+		const double t = 60.0 * k;
+		const double rate = k <= 40 ? 0.5 : (k <= 60 ? 0.0 : -0.5);
+		s.time_s.push_back(t);
+		s.dtemp_dt_Cpm.push_back(rate);
+		s.temp_mean_C.push_back(k <= 40 ? 0.5 * k : (k <= 60 ? 20.0 : 20.0 - 0.5 * (k - 60)));
+		s.block.push_back(0);
+	}
+	// per-sample change = trapezoid of the rates: 0.5 C up to sample 40, 0.25 C into sample 41
+	const auto h = hysteresisBranch(s, 5.0);
+	for (int k = 0; k <= 40; ++k) EXPECT_NEAR(h[k], 1 - std::exp(-0.5 * k / 5.0), 1e-12) << k;
+	const double top = 1 - std::exp(-20.25 / 5.0);
+	for (int k = 41; k <= 60; ++k) EXPECT_NEAR(h[k], top, 1e-12) << "soak keeps the branch, k " << k;
+	// cooling: 0.25 C into sample 61, then 0.5 C per sample
+	EXPECT_NEAR(h[70], -1 + (top + 1) * std::exp(-(0.25 + 0.5 * 9) / 5.0), 1e-12);
+	const auto col = candidateById("hysteresis");
+	EXPECT_EQ(col.theta_name, "span_C");
+	EXPECT_THROW(hysteresisBranch(s, 0.0), std::invalid_argument);
+}
+
+TEST(CandidateEffect, ShupeRateHoldsTheMeanRateAndTheRadialRateDifference)
+{
+	SyntheticRunOptions o;
+	o.dt_s = 20;
+	const auto run = makeSyntheticChamberRun(o);
+	const auto sig = computeRunSignals(run.series);
+	CandidateContext ctx;
+	ctx.sig = &sig;
+	const auto c = candidateById("shupe_rate").build(ctx, 0.0);
+	ASSERT_EQ(c.cols(), 2);
+	for (std::size_t k = 0; k < sig.size(); ++k)
+	{
+		EXPECT_DOUBLE_EQ(c(static_cast<Eigen::Index>(k), 0), sig.dtemp_dt_Cpm[k]);
+		EXPECT_DOUBLE_EQ(c(static_cast<Eigen::Index>(k), 1), sig.dgradient_dt_Cpm[k]);
 	}
 }
 

@@ -10,6 +10,28 @@ namespace mrpt_fog::discrepancy
 {
 double heatingCoolingSign(double dtemp_dt_Cpm) { return std::tanh(dtemp_dt_Cpm / 0.05); }
 
+std::vector<double> hysteresisBranch(const RunSignals& s, double span_C)
+{
+	if (!(span_C > 0)) throw std::invalid_argument("hysteresisBranch: span_C must be > 0");
+	std::vector<double> h(s.size(), 0.0);
+	double state = 0.0;
+	for (std::size_t k = 1; k < s.size(); ++k)
+	{
+		double dT = 0.0;
+		if (s.block[k] >= 0 && s.block[k] == s.block[k - 1])
+			dT = 0.5 * (s.dtemp_dt_Cpm[k] + s.dtemp_dt_Cpm[k - 1]) * (s.time_s[k] - s.time_s[k - 1]) / 60.0;
+		else if (std::isfinite(s.temp_mean_C[k]) && std::isfinite(s.temp_mean_C[k - 1]))
+			dT = s.temp_mean_C[k] - s.temp_mean_C[k - 1];  // across a gap or power-off: raw change
+		if (dT != 0.0)
+		{
+			const double target = dT > 0 ? 1.0 : -1.0;
+			state = target + (state - target) * std::exp(-std::fabs(dT) / span_C);
+		}
+		h[k] = state;
+	}
+	return h;
+}
+
 namespace
 {
 using Mat = Eigen::MatrixXd;
@@ -53,11 +75,25 @@ std::vector<CandidateEffect> makeLibrary()
 		CandidateEffect c;
 		c.id = "shupe_rate";
 		c.description =
-			"Shupe effect: a temperature rate through the coil makes the two counter-propagating beams see "
-			"different optical paths; bias proportional to dT/dt of the coil";
+			"Shupe effect: temperature rates along the fibre make the two counter-propagating beams see "
+			"different optical paths; sum_k w_k dT_k/dt with zero-sum winding weights, seen by surface "
+			"thermistors as d(Tin - Tout)/dt, plus the mean-rate term dT/dt of empirical models";
 		c.excited_by = "temperature steps and a sine sweep (rates of several sizes)";
-		c.coefficient_unit = "deg/h per degC/min";
-		c.build = [](const CandidateContext& ctx, double) { return column(ctx.sig->dtemp_dt_Cpm); };
+		c.coefficient_unit = "deg/h (RMS of the fitted rate terms)";
+		// Two columns when inner and outer thermistors exist: the mean rate (the seed paper's
+		// dT/dt term) and the radial rate difference. The Shupe integral of seed eq. (1) has
+		// zero-sum weights (integral of (2z - L) over the fibre is 0), so a uniform rate gives no
+		// Shupe bias; what surface thermistors can see of it is the rate of the radial difference.
+		// (Without inner/outer thermistors only dT/dt: coefficient in deg/h per degC/min.)
+		c.build = [](const CandidateContext& ctx, double)
+		{
+			const auto& s = *ctx.sig;
+			if (!s.has_inner_outer) return column(s.dtemp_dt_Cpm);
+			Mat m(static_cast<Eigen::Index>(s.size()), 2);
+			m.col(0) = column(s.dtemp_dt_Cpm);
+			m.col(1) = column(s.dgradient_dt_Cpm);
+			return m;
+		};
 		c.untestable_reason = always;
 		lib.push_back(c);
 	}
@@ -104,15 +140,15 @@ std::vector<CandidateEffect> makeLibrary()
 	{
 		CandidateEffect c;
 		c.id = "hysteresis";
-		c.description = "heating vs cooling hysteresis: a bias offset of opposite sign while heating and cooling";
-		c.excited_by = "ramps at several rates (the offset does not scale with the rate)";
+		c.description =
+			"heating vs cooling hysteresis: a bias offset of opposite sign on the heating and the cooling "
+			"branch, kept through soaks, swapping over a temperature span (play-type)";
+		c.excited_by = "ramps at several rates (the offset does not scale with the rate) and soaks after heating "
+					   "and after cooling";
 		c.coefficient_unit = "deg/h (half heating-cooling difference)";
-		c.build = [](const CandidateContext& ctx, double)
-		{
-			std::vector<double> v(ctx.sig->size());
-			for (std::size_t k = 0; k < v.size(); ++k) v[k] = heatingCoolingSign(ctx.sig->dtemp_dt_Cpm[k]);
-			return column(v);
-		};
+		c.theta_name = "span_C";
+		c.theta_grid = {0.5, 1.0, 2.0, 5.0, 10.0, 20.0};
+		c.build = [](const CandidateContext& ctx, double span_C) { return column(hysteresisBranch(*ctx.sig, span_C)); };
 		c.untestable_reason = always;
 		lib.push_back(c);
 	}

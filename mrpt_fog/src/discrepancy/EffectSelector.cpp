@@ -137,9 +137,13 @@ double waldChi2(const Mat& Xsub, const Gls& m1, const Vec& y, const std::vector<
 	return std::max(0.0, (rss0 - m1.rss) / (m1.sigma2 * m1.lrv));
 }
 
-/** Largest canonical correlation between blocks A and B after whitening and projecting out X. */
-double canonicalCorrelation(const Mat& X, const Mat& A, const Mat& B, const ArNoiseModel& ar,
-							const std::vector<std::size_t>& common, const std::vector<int>& block)
+/** How well the columns of B reproduce the named effect's fitted shape A beta_A, after
+ * whitening and projecting out X: the correlation of that shape with its projection on B's
+ * columns (for a one-column A this is the largest canonical correlation of A and B; for a
+ * several-column A it asks about the shape the data chose, so a candidate that merely shares
+ * one of A's columns is not called a look-alike of a shape it cannot reproduce). */
+double shapeReproduction(const Mat& X, const Mat& A, const Vec& betaA, const Mat& B, const ArNoiseModel& ar,
+						 const std::vector<std::size_t>& common, const std::vector<int>& block)
 {
 	const Mat Xw = whiten(X, ar, common, &block);
 	auto residualised = [&](const Mat& M)
@@ -150,12 +154,10 @@ double canonicalCorrelation(const Mat& X, const Mat& A, const Mat& B, const ArNo
 		return R;
 	};
 	const Mat Ra = residualised(A), Rb = residualised(B);
-	if (Ra.norm() <= 0 || Rb.norm() <= 0) return 0.0;
-	Eigen::HouseholderQR<Mat> qa(Ra), qb(Rb);
-	const Mat Qa = qa.householderQ() * Mat::Identity(Ra.rows(), Ra.cols());
-	const Mat Qb = qb.householderQ() * Mat::Identity(Rb.rows(), Rb.cols());
-	Eigen::JacobiSVD<Mat> svd(Qa.transpose() * Qb);
-	return std::min(1.0, svd.singularValues()(0));
+	const Vec a = Ra * betaA;
+	if (!(a.norm() > 0) || !(Rb.norm() > 0)) return 0.0;
+	const Vec r = leastSquares(Rb, a).residual;
+	return std::sqrt(std::max(0.0, 1.0 - r.squaredNorm() / a.squaredNorm()));
 }
 
 double sidak(double p, int tests)
@@ -395,7 +397,8 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 			if (static_cast<int>(i) == bestIdx) continue;
 			// collinearity on this run: canonical correlation of the two candidates' columns after
 			// whitening and removing what the model already explains
-			const double cc = canonicalCorrelation(X, B.C, cands[i].C, gB.ar, common, sig.block);
+			const double cc = shapeReproduction(X, B.C, gB.fit.coef.segment(X.cols(), B.C.cols()), cands[i].C, gB.ar,
+												common, sig.block);
 			auto it = std::find_if(report.begin(), report.end(), [&](const CandidateTest& t) { return t.id == cands[i].test.id; });
 			if (it != report.end()) it->collinearity_with_best = cc;
 			const bool collinear = cc >= opt.alias_collinearity;

@@ -236,13 +236,30 @@ SyntheticRun makeSyntheticChamberRun(const SyntheticRunOptions& opt)
 		}
 		else
 		{
+			// play-type hysteresis of the true coil mean on the 1 s grid (span 2 C), as in the simulator
+			std::vector<double> branch(n, 0.0);
+			if (id == "hysteresis")
+			{
+				double state = 0.0;
+				std::size_t next = 0;
+				for (std::size_t f = 1; f < nf && next < n; ++f)
+				{
+					const double dT = 0.5 * ((Ti[f] + To[f]) - (Ti[f - 1] + To[f - 1]));
+					if (dT != 0.0)
+					{
+						const double target = dT > 0 ? 1.0 : -1.0;
+						state = target + (state - target) * std::exp(-std::fabs(dT) / 2.0);
+					}
+					if (f == at[next]) branch[next++] = state;
+				}
+			}
 			for (std::size_t k = 0; k < n; ++k)
 			{
 				const double x = (Tm[k] - 20.0) / 50.0;
 				if (id == "shupe_rate") e[k] = dTm[k];
 				else if (id == "radial_gradient") e[k] = G[k];
 				else if (id == "gradient_rate") e[k] = dG[k];
-				else if (id == "hysteresis") e[k] = std::tanh(dTm[k] / 0.03);
+				else if (id == "hysteresis") e[k] = branch[k];
 				else if (id == "scale_factor_temp") e[k] = (Tm[k] - 25.0) * tab[k] * 1e-6;
 				else if (id == "magnetic") e[k] = fld[k];
 				else if (id == "temp_poly_order") e[k] = 0.6 * std::pow(x, 4) - 0.4 * std::pow(x, 5);

@@ -63,8 +63,15 @@ const std::vector<CandidateEffect>& candidateLibrary();
 /** Candidate by id; throws std::invalid_argument for an unknown id. */
 const CandidateEffect& candidateById(const std::string& id);
 
-/** Hysteresis regressor: a smoothed sign of the temperature rate, tanh(rate / 0.05 C/min). */
+/** A smoothed sign of the temperature rate, tanh(rate / 0.05 C/min) (the former hysteresis
+ * column; kept for callers that want the instantaneous heating/cooling sign). */
 double heatingCoolingSign(double dtemp_dt_Cpm);
+
+/** Hysteresis regressor (play-type, the form of the simulator's hysteresis): the branch state
+ * h in [-1, 1], h <- s + (h - s) exp(-|dT| / span_C) with s = sign(dT), dT the change of the
+ * smoothed mean thermistor temperature over each sample (raw change across gaps and power-off);
+ * it keeps its value through soaks. h = 0 at the run start. Throws for span_C <= 0. */
+std::vector<double> hysteresisBranch(const RunSignals& sig, double span_C);
 
 /** The advice (test profile) that would separate two candidates. */
 std::string separationAdvice(const std::string& id_a, const std::string& id_b);

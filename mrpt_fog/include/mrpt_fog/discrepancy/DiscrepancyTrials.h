@@ -54,6 +54,13 @@ struct TrialOutcome
 
 TrialOutcome runTrial(const TrialSpec& spec, const SelectionOptions& opt = {});
 
+/** Scores a selection (already confirmed on run 2) against the truth: the hidden ids
+ * (strongest first) and each one's TRUE bias contribution on run 1 and run 2 (oracle columns;
+ * may be empty when unknown). summary = "named=... rms2 before/after/oracle=...". */
+TrialOutcome scoreTrial(const std::vector<std::string>& hidden, bool accept_alias, const SelectionResult& sel,
+						const RunSignals& sig1, const BaseDesign& base1, const RunSignals& sig2, const BaseDesign& base2,
+						const std::vector<std::vector<double>>& truth1, const std::vector<std::vector<double>>& truth2);
+
 /** The same on the real simulator (mrpt_fog/sim): `rich` chamber profile at rate_hz, default
  * device, only earth_rate plus `effect` switched on ("" = none), seeds 2 seed + 1 (analysed)
  * and 2 seed + 2 (confirmation). The effect's size is the device default (not scaled to a

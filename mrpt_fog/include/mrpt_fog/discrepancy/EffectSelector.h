@@ -19,9 +19,10 @@
  *     over the grid), BIC gain vs the model, Holm correction over the candidates;
  *     significant = adjusted p < alpha and BIC gain > 0;
  *  5. the best significant candidate (largest BIC gain) is named; identifiability check: a
- *     candidate c joins its alias group when its columns are nearly collinear with the best's
- *     on this run (canonical correlation >= alias_collinearity after whitening and projecting
- *     out the model), or when c is significant and the data cannot show the best is needed
+ *     candidate c joins its alias group when its columns reproduce the best's fitted shape on
+ *     this run (correlation of that shape with its projection on c's columns, after whitening
+ *     and projecting out the model, >= alias_collinearity; for a one-column best this is the
+ *     canonical correlation), or when c is significant and the data cannot show the best is needed
  *     beyond c (conditional test p > alias_alpha); the profile that would separate them is
  *     reported. Candidates the best explains are dropped; the best's columns are added and the
  *     search repeats until nothing is significant.
@@ -45,8 +46,8 @@ struct SelectionOptions
 	 * 0.01 the false-naming rate on 200 null trials was 2.5 % (target <= 2 %). */
 	double alpha = 0.005;
 	double alias_alpha = 0.01;  //!< conditional-test level for "distinguishable"
-	/** Canonical correlation (whitened, model projected out) at or above which a candidate is
-	 * an alias of the named one whatever the significance. */
+	/** Shape reproduction (whitened, model projected out; see step 5) at or above which a
+	 * candidate is an alias of the named one whatever the significance. */
 	double alias_collinearity = 0.95;
 	int max_effects = 3;
 	int max_ar_order = 3;
@@ -90,7 +91,7 @@ struct CandidateTest
 	double p_adjusted = 1.0;
 	double delta_bic = 0.0;
 	bool significant = false;
-	double collinearity_with_best = 0.0;  //!< canonical correlation with the named one (this round)
+	double collinearity_with_best = 0.0;  //!< shape reproduction of the named one (this round)
 };
 
 struct NamedEffect

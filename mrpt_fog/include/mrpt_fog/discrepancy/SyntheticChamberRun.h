@@ -21,7 +21,8 @@
  *    (what a static:3 base model cannot absorb) is `ratio` x the noise RMS.
  * Hidden effect shapes: shupe_rate dTm/dt; radial_gradient Tin - Tout; gradient_rate
  * d(Tin - Tout)/dt; thermistor_lag f(T) - f(T_read) (tau scaled to reach the ratio);
- * hysteresis tanh(dTm/dt / 0.03 C/min); warmup exp(-(t - t_on)/700 s); scale_factor_temp
+ * hysteresis play-type branch of the true mean, h <- s + (h - s) exp(-|dT|/2 C), s = sign(dT)
+ * (kept through soaks, like the simulator's); warmup exp(-(t - t_on)/700 s); scale_factor_temp
  * (Tm - 25) x table rate; magnetic field; temp_poly_order 0.6 x^4 - 0.4 x^5.
  */
 
