@@ -3,7 +3,7 @@
  *  BM_Compensate_Multipoint4: Compensator::step with the 4-thermistor 5/3 multipoint model (33
  *    terms, plain fit so that every term is present), causal rates of the 4 thermistors included.
  *  BM_Fit_Multipoint4/N: the streaming fit core on N samples: causal rates + 33 normalised
- *    features + normal-equation accumulation + the final solve. Data cycles over one synthetic
+ *    features + streaming QR accumulation (StreamingQr) + the final solve. Data cycles over one synthetic
  *    chamber run (time shifted each cycle), so memory holds one run whatever N is; the counter
  *    peak_rss_MB (process high-water mark after the run) shows it does not grow with N. */
 #include <benchmark/benchmark.h>
@@ -94,7 +94,7 @@ static void BM_Fit_Multipoint4(benchmark::State& state)
 	for (auto _ : state)
 	{
 		CausalRateTracker tr(4, cal().rate_estimator.window_s);
-		NormalEquations ne(nt, cal().mean_bias_dph);
+		StreamingQr ne(nt, cal().mean_bias_dph);
 		double offset = 0;
 		for (std::size_t done = 0; done < total;)
 		{
