@@ -7,6 +7,9 @@
  * give bitwise the numbers of the baseline one. */
 #include <mrpt_fog/model/CompensatorStep.h>
 
+// 32-byte vectors only cross always-inlined helpers here (see CompensatorKernel.h).
+#pragma GCC diagnostic ignored "-Wpsabi"
+
 namespace mrpt_fog
 {
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))

@@ -23,6 +23,9 @@
 
 #include <cstddef>
 #include <cstring>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace mrpt_fog
 {
@@ -66,6 +69,33 @@ template <int W>
 {
 	return *reinterpret_cast<const typename Lanes<W>::V*>(p);
 }
+/** True if any lane of the comparison mask m is set (x86-64: an OR of the halves and one
+ * movmskpd instead of a lane-by-lane extraction). */
+template <int W>
+[[gnu::always_inline]] inline bool anyLane(typename Lanes<W>::M m)
+{
+#if defined(__SSE2__)
+	__m128i a, b;
+	std::memcpy(&a, &m, 16);
+	if constexpr (W == 4)
+	{
+		std::memcpy(&b, reinterpret_cast<const char*>(&m) + 16, 16);
+		a = _mm_or_si128(a, b);
+	}
+	return _mm_movemask_pd(_mm_castsi128_pd(a)) != 0;
+#else
+	long long any = 0;
+	for (int j = 0; j < W; j++) any |= m[j];
+	return any != 0;
+#endif
+}
+/** True if any of the W values at a and b, or of their sums a[j] + b[j], is NaN. */
+template <int W>
+[[gnu::always_inline]] inline bool anyNaNSum(const double* a, const double* b)
+{
+	const typename Lanes<W>::V s = loadu<W>(a) + loadu<W>(b);
+	return anyLane<W>(s != s);
+}
 }  // namespace vec
 
 /** The kernel over `blocks` blocks (NB > 0: that many, known at compile time), W lanes at a
@@ -108,9 +138,7 @@ template <std::size_t NB, int W = 2>
 		}
 	}
 	// Clamping is rare: one predictable test here, the exact count only when it happened.
-	long long any = 0;
-	for (int j = 0; j < W; j++) any |= moved[j];
-	if (any != 0) clamped += countClamped(K, nb, T, R);
+	if (vec::anyLane<W>(moved)) clamped += countClamped(K, nb, T, R);
 	if constexpr (W == 4) return (acc[0] + acc[2]) + (acc[1] + acc[3]);
 	return acc[0] + acc[1];
 }

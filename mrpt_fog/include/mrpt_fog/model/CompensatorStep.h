@@ -46,11 +46,19 @@ template <std::size_t NC, int W>
 	}
 	tracker_.pushFixed<NC>(time_s, same_order_ ? temp_C : temp_.data());
 	const std::uint32_t short_span = tracker_.ratesAndCoverageFixed<NC>(rate_.data(), half_window_s_);
-	// One predictable test for the common case: the sum is NaN if any reading or rate is.
-	double all = 0.0;
-	for (std::size_t c = 0; c < nc; c++) all += T[c] + rate_[c];
+	// One predictable test for the common case: is any reading or rate NaN? (Then the mask of
+	// missing channels is built element by element; an infinite value is not missing.)
+	bool any_nan;
+	if constexpr (NC == 4)
+		any_nan = kernel::vec::anyNaNSum<W>(T, rate_.data()) || (W == 2 && kernel::vec::anyNaNSum<W>(T + 2, rate_.data() + 2));
+	else
+	{
+		double all = 0.0;
+		for (std::size_t c = 0; c < nc; c++) all += T[c] + rate_[c];
+		any_nan = std::isnan(all);
+	}
 	std::uint32_t missing = 0;
-	if (std::isnan(all))  // dropout (rare): zero the missing channels, never read by the model in use
+	if (any_nan)  // dropout (rare): zero the missing channels, never read by the model in use
 	{
 		if (T != temp_.data())
 		{

@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <string>
@@ -204,8 +205,7 @@ template <std::size_t NC>
 	detail::fusedRateSumsUpdate<NC>(nc, x, xo, x_ref_.data(), d1, d2, dto, dtn, s1_.data(), s2_.data(), sx_.data(), stx_.data());
 	// the new sample goes after the newest; the leaving one's slot is freed (head advances)
 	const std::size_t slot = (head_ + count_) & mask;
-	double* xs = x_.data() + (slot * nc);
-	for (std::size_t c = 0; c < nc; c++) xs[c] = x[c];
+	if (nc > 0) std::memcpy(x_.data() + (slot * nc), x, nc * sizeof(double));  // no channel: no buffer (null)
 	t_[slot] = time_s;
 	slot_all_valid_[slot] = 1;  // one valid slot in, one out: nan_slots_ unchanged
 	head_ = (head_ + 1) & mask;
@@ -218,11 +218,13 @@ template <std::size_t NC>
 {
 	const std::size_t nc = NC ? NC : channels_;
 	const double span2 = min_span_s * min_span_s;
-	const double* S1 = s1_.data();
-	const double* S2 = s2_.data();
-	const double* SX = sx_.data();
-	const double* STX = stx_.data();
-	const double* N = n_.data();
+	// restrict: rate_out is the caller's buffer, never one of the sums (no overlap checks)
+	double* __restrict out = rate_out;
+	const double* __restrict S1 = s1_.data();
+	const double* __restrict S2 = s2_.data();
+	const double* __restrict SX = sx_.data();
+	const double* __restrict STX = stx_.data();
+	const double* __restrict N = n_.data();
 	if (nc > 0 && nan_slots_ == 0 && !nan_since_rebuild_)
 	{
 		// Shared time sums: one reciprocal for all channels (bitwise the per-channel value).
@@ -231,11 +233,19 @@ template <std::size_t NC>
 		const bool ok = n >= 2 && den > 0;
 		if (!ok)
 		{
-			for (std::size_t c = 0; c < nc; c++) rate_out[c] = std::numeric_limits<double>::quiet_NaN();
+			for (std::size_t c = 0; c < nc; c++) out[c] = std::numeric_limits<double>::quiet_NaN();
 			return nc >= 32 ? ~0u : ((1u << nc) - 1u);
 		}
 		const double inv = 1.0 / den, s1 = S1[0];
-		for (std::size_t c = 0; c < nc; c++) rate_out[c] = (n * STX[c] - s1 * SX[c]) * inv;
+		if constexpr (NC > 0)
+		{
+			// computed into registers, then stored: no load can follow a store to rate_out
+			double r[NC];
+			for (std::size_t c = 0; c < NC; c++) r[c] = (n * STX[c] - s1 * SX[c]) * inv;
+			std::memcpy(out, r, sizeof r);
+		}
+		else
+			for (std::size_t c = 0; c < nc; c++) out[c] = (n * STX[c] - s1 * SX[c]) * inv;
 		const bool short_span = !(12.0 * den >= span2 * n * n);
 		return short_span ? (nc >= 32 ? ~0u : ((1u << nc) - 1u)) : 0u;
 	}
@@ -245,7 +255,7 @@ template <std::size_t NC>
 		const double n = N[c];
 		const double den = n * S2[c] - S1[c] * S1[c];
 		const bool ok = n >= 2 && den > 0;
-		rate_out[c] = ok ? (n * STX[c] - S1[c] * SX[c]) * (1.0 / den) : std::numeric_limits<double>::quiet_NaN();
+		out[c] = ok ? (n * STX[c] - S1[c] * SX[c]) * (1.0 / den) : std::numeric_limits<double>::quiet_NaN();
 		// coveredSpan^2 = 12 var(t) = 12 den / n^2
 		if (!(ok && 12.0 * den >= span2 * n * n)) short_mask |= (1u << c);
 	}
