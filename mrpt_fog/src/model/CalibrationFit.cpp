@@ -391,7 +391,7 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	std::vector<double> x_ref(fs.termCount());
 	for (std::size_t j = 0; j < x_ref.size(); j++) x_ref[j] = fsum[j] / static_cast<double>(usable);
 
-	// Pass 2: normal equations per fold.
+	// Pass 2: streaming QR factor per fold.
 	const bool by_run = runs.size() >= 2;
 	const std::size_t nfolds = by_run ? runs.size() : opt.folds;
 	FoldSet folds;

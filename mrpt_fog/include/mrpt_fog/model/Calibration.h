@@ -14,7 +14,7 @@
  *  2. rates dT/dt with the chosen estimator (default: the same causal estimator the real-time
  *     compensator runs, so the compensator reproduces the fitted model);
  *  3. every signal normalised to [-1, 1] over the calibration data (ThermalFeatureSet.h);
- *  4. normal equations accumulated per validation fold (BiasFit.h): memory independent of the
+ *  4. streaming QR factors accumulated per validation fold (StreamingQr.h): memory independent of the
  *     log length. Folds: one per run when several runs are given (leave-one-run-out), else
  *     `folds` contiguous time blocks of the single run (blocked k-fold);
  *  5. term selection (default "auto"): greedy forward selection of whole signal groups (e.g. all
