@@ -1,5 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
-/* The least-squares core on a stored design matrix, for the NumPy peer comparison
+/* The least-squares core (streaming QR) on a stored design matrix, for the NumPy peer comparison
  * (scripts/bench_numpy_peer.py): the 33-term multipoint design matrix of a synthetic chamber run
  * (normalised features, causal rates), repeated `kCycles` times.
  *
@@ -78,11 +78,11 @@ Eigen::VectorXd fit(const Design& d)
 	for (std::size_t r = 0; r < d.rows; r++)
 		for (std::size_t j = 0; j < d.cols; j++) mean[j] += d.X[r * d.cols + j];
 	for (double& m : mean) m /= static_cast<double>(d.rows);
-	NormalEquations ne(d.cols, d.y_ref, mean);
-	for (std::size_t r = 0; r < d.rows; r++) ne.add(&d.X[r * d.cols], d.y[r]);
+	StreamingQr qr(d.cols, d.y_ref, mean);
+	for (std::size_t r = 0; r < d.rows; r++) qr.add(&d.X[r * d.cols], d.y[r]);
 	std::vector<int> cols(d.cols);
 	for (std::size_t j = 0; j < d.cols; j++) cols[j] = static_cast<int>(j);
-	return solveBiasFit(ne, cols).coef_dph;
+	return solveBiasFit(qr, cols).coef_dph;
 }
 
 void writeRaw(const std::string& path, const std::vector<double>& v)

@@ -38,8 +38,6 @@
 
 namespace mrpt_fog
 {
-/** Former name of the accumulator (it held normal equations before the streaming QR). */
-using NormalEquations = StreamingQr;
 
 /** A solved linear bias model on a subset of the accumulated columns. */
 struct LinearFit
