@@ -1,7 +1,9 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 /* Speed of the thermal-bias model (one item = one gyro sample):
  *  BM_Compensate_Multipoint4: Compensator::step with the 4-thermistor 5/3 multipoint model (33
- *    terms, plain fit so that every term is present), causal rates of the 4 thermistors included.
+ *    terms, plain fit so that every term is present), causal rates of the 4 thermistors included;
+ *    the label says which build ran (avx2 / portable). _Portable: the baseline build forced.
+ *    _Batch: Compensator::stepBatch over the run (same numbers, no call per sample).
  *  BM_Fit_Multipoint4/N: the streaming fit core on N samples: causal rates + 33 normalised
  *    features + streaming QR accumulation (StreamingQr) + the final solve. Data cycles over one synthetic
  *    chamber run (time shifted each cycle), so memory holds one run whatever N is; the counter
@@ -62,23 +64,44 @@ double peakRssMB()
 }
 }  // namespace
 
-static void BM_Compensate_Multipoint4(benchmark::State& state)
+static void compensateMultipoint4(benchmark::State& state, KernelBuild build, bool batch)
 {
 	const auto& r = rows();
 	const std::size_t n = r.t.size();
 	const double period = r.t.back() + 1.0;
-	Compensator comp(cal(), run().thermistors);
+	Compensator comp(cal(), run().thermistors, build);
+	std::vector<double> t(n);
+	std::vector<Compensator::Output> out(n);
 	double sink = 0, offset = 0;
 	for (auto _ : state)
 	{
-		for (std::size_t k = 0; k < n; k++) sink += comp.step(r.t[k] + offset, r.rate[k], &r.temp[4 * k]).compensated_dph;
+		if (batch)
+		{
+			for (std::size_t k = 0; k < n; k++) t[k] = r.t[k] + offset;
+			comp.stepBatch(n, t.data(), r.rate.data(), r.temp.data(), 4, out.data());
+			for (std::size_t k = 0; k < n; k++) sink += out[k].compensated_dph;
+		}
+		else
+			for (std::size_t k = 0; k < n; k++) sink += comp.step(r.t[k] + offset, r.rate[k], &r.temp[4 * k]).compensated_dph;
 		offset += period;
 	}
 	benchmark::DoNotOptimize(sink);
 	state.SetItemsProcessed(static_cast<int64_t>(state.iterations()) * static_cast<int64_t>(n));
 	state.counters["terms"] = static_cast<double>(cal().model.features.termCount());
+	state.SetLabel(comp.kernelBuild());
 }
+/** step() sample by sample, the build chosen at run time (AVX2 where the CPU has it). */
+static void BM_Compensate_Multipoint4(benchmark::State& state) { compensateMultipoint4(state, KernelBuild::Auto, false); }
 BENCHMARK(BM_Compensate_Multipoint4)->Unit(benchmark::kMillisecond);
+/** The same with the baseline x86-64 build forced (what a CPU without AVX2 runs). */
+static void BM_Compensate_Multipoint4_Portable(benchmark::State& state)
+{
+	compensateMultipoint4(state, KernelBuild::Portable, false);
+}
+BENCHMARK(BM_Compensate_Multipoint4_Portable)->Unit(benchmark::kMillisecond);
+/** stepBatch() over the whole run (times shifted into a buffer first, included in the time). */
+static void BM_Compensate_Multipoint4_Batch(benchmark::State& state) { compensateMultipoint4(state, KernelBuild::Auto, true); }
+BENCHMARK(BM_Compensate_Multipoint4_Batch)->Unit(benchmark::kMillisecond);
 
 static void BM_Fit_Multipoint4(benchmark::State& state)
 {

@@ -346,3 +346,33 @@ TEST(Compensator, Avx2RequestedWithoutAvx2IsRefused)
 		EXPECT_THROW(Compensator(calA(), s.thermistors, KernelBuild::Avx2), std::invalid_argument);
 	EXPECT_STREQ(Compensator(calA(), s.thermistors, KernelBuild::Portable).kernelBuild(), "portable");
 }
+
+// The batch form (stepBatch, which compensate() uses) is the streaming loop: bitwise the same
+// outputs and counters as step() sample by sample, in both builds, also when the two are mixed.
+TEST(Compensator, BatchEqualsStreamingBitwise)
+{
+	const FogSeries s = stressRun(63, 9000);
+	const std::size_t n = s.size(), nt = s.thermistorCount();
+	std::vector<double> rows(n * nt);
+	for (std::size_t k = 0; k < n; k++)
+		for (std::size_t i = 0; i < nt; i++) rows[k * nt + i] = s.temp_C[i][k];
+	std::vector<KernelBuild> builds{KernelBuild::Portable};
+	if (kernel::cpuHasAvx2()) builds.push_back(KernelBuild::Avx2);
+	for (const Calibration* cal : {&calPlain(), &calA()})
+		for (const KernelBuild build : builds)
+		{
+			const CompensatedSeries ref = runSteps(*cal, s, build);
+			Compensator comp(*cal, s.thermistors, build);
+			std::vector<Compensator::Output> out(n);
+			const std::size_t half = n / 2;
+			for (std::size_t k = 0; k < half; k++) out[k] = comp.step(s.time_s[k], s.rate_dph[2][k], &rows[k * nt]);
+			comp.stepBatch(n - half, &s.time_s[half], &s.rate_dph[2][half], &rows[half * nt], nt, &out[half]);
+			for (std::size_t k = 0; k < n; k++)
+			{
+				ASSERT_EQ(std::memcmp(&out[k].bias_dph, &ref.bias_dph[k], sizeof(double)), 0) << k;
+				ASSERT_EQ(out[k].compensated_dph, s.rate_dph[2][k] - out[k].bias_dph) << k;
+				ASSERT_EQ(out[k].flags, ref.flags[k]) << k;
+			}
+			EXPECT_EQ(std::memcmp(&comp.counters(), &ref.counters, sizeof ref.counters), 0);
+		}
+}

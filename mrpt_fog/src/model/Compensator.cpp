@@ -290,6 +290,20 @@ Compensator::Output Compensator::step(double time_s, double raw_dph, const doubl
 	}
 }
 
+void Compensator::stepBatch(std::size_t n, const double* time_s, const double* raw_dph, const double* temp_C,
+							std::size_t stride, Output* out)
+{
+	if (use_avx2_) return stepBatchAvx2(n, time_s, raw_dph, temp_C, stride, out);
+	switch (channel_col_.size())
+	{
+		case 4: return stepLoop<4, 2>(n, time_s, raw_dph, temp_C, stride, out);
+		case 1: return stepLoop<1, 2>(n, time_s, raw_dph, temp_C, stride, out);
+		case 2: return stepLoop<2, 2>(n, time_s, raw_dph, temp_C, stride, out);
+		case 3: return stepLoop<3, 2>(n, time_s, raw_dph, temp_C, stride, out);
+		default: return stepLoop<0, 2>(n, time_s, raw_dph, temp_C, stride, out);
+	}
+}
+
 template <std::size_t NC>
 Compensator::Output Compensator::stepFixed(double time_s, double raw_dph, const double* temp_C)
 {
@@ -311,14 +325,22 @@ CompensatedSeries compensate(const Calibration& cal, const FogSeries& series)
 	out.bias_dph.resize(n);
 	out.compensated_dph.resize(n);
 	out.flags.resize(n);
-	std::vector<double> temps(series.thermistorCount());
-	for (std::size_t k = 0; k < n; k++)
+	// The batch form of step() over chunks of rows (the series stores columns).
+	const std::size_t nt = series.thermistorCount(), stride = std::max<std::size_t>(nt, 1), chunk = 4096;
+	std::vector<double> rows(chunk * stride);
+	std::vector<Compensator::Output> res(chunk);
+	for (std::size_t k0 = 0; k0 < n; k0 += chunk)
 	{
-		for (std::size_t i = 0; i < temps.size(); i++) temps[i] = series.temp_C[i][k];
-		const auto o = comp.step(series.time_s[k], out.raw_dph[k], temps.data());
-		out.bias_dph[k] = o.bias_dph;
-		out.compensated_dph[k] = o.compensated_dph;
-		out.flags[k] = o.flags;
+		const std::size_t m = std::min(chunk, n - k0);
+		for (std::size_t j = 0; j < m; j++)
+			for (std::size_t i = 0; i < nt; i++) rows[j * stride + i] = series.temp_C[i][k0 + j];
+		comp.stepBatch(m, series.time_s.data() + k0, out.raw_dph.data() + k0, rows.data(), stride, res.data());
+		for (std::size_t j = 0; j < m; j++)
+		{
+			out.bias_dph[k0 + j] = res[j].bias_dph;
+			out.compensated_dph[k0 + j] = res[j].compensated_dph;
+			out.flags[k0 + j] = res[j].flags;
+		}
 	}
 	out.counters = comp.counters();
 	return out;

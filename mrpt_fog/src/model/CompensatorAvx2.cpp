@@ -30,8 +30,25 @@ bool kernel::cpuHasAvx2()
 		default: return stepBody<3, 4>(time_s, raw_dph, temp_C);  // use_avx2_ only for 1..4
 	}
 }
+
+[[gnu::target("avx2")]] void Compensator::stepBatchAvx2(std::size_t n, const double* time_s, const double* raw_dph,
+													   const double* temp_C, std::size_t stride, Output* out)
+{
+	switch (channel_col_.size())
+	{
+		case 4: return stepLoop<4, 4>(n, time_s, raw_dph, temp_C, stride, out);
+		case 1: return stepLoop<1, 4>(n, time_s, raw_dph, temp_C, stride, out);
+		case 2: return stepLoop<2, 4>(n, time_s, raw_dph, temp_C, stride, out);
+		default: return stepLoop<3, 4>(n, time_s, raw_dph, temp_C, stride, out);
+	}
+}
 #else
 bool kernel::cpuHasAvx2() { return false; }
+void Compensator::stepBatchAvx2(std::size_t n, const double* time_s, const double* raw_dph, const double* temp_C,
+								std::size_t stride, Output* out)
+{
+	for (std::size_t k = 0; k < n; k++) out[k] = step(time_s[k], raw_dph[k], temp_C + k * stride);
+}
 Compensator::Output Compensator::stepAvx2(double time_s, double raw_dph, const double* temp_C)
 {
 	return step(time_s, raw_dph, temp_C);  // never called: use_avx2_ stays false

@@ -82,6 +82,11 @@ class Compensator
 	/** One sample: time [s] strictly increasing, raw gyro rate [deg/h], temperatures [degC] in
 	 * layout order (NaN = dropout). */
 	Output step(double time_s, double raw_dph, const double* temp_C);
+	/** Batch form of step(), the same loop without a call per sample: for k = 0..n-1,
+	 * out[k] = step(time_s[k], raw_dph[k], temp_C + k * temp_stride) (temperatures row by row,
+	 * temp_stride >= layout size). Same state, same numbers, in any mix with step(). */
+	void stepBatch(std::size_t n, const double* time_s, const double* raw_dph, const double* temp_C,
+				   std::size_t temp_stride, Output* out);
 	const CompensationCounters& counters() const { return counters_; }
 	void reset();
 	/** The build of the per-sample code in use: "avx2" or "portable". */
@@ -118,6 +123,11 @@ class Compensator
 	template <std::size_t NC>
 	Output stepFixed(double time_s, double raw_dph, const double* temp_C);
 	Output stepAvx2(double time_s, double raw_dph, const double* temp_C);  // 1..4 channels
+	void stepBatchAvx2(std::size_t n, const double* time_s, const double* raw_dph, const double* temp_C,
+					   std::size_t temp_stride, Output* out);
+	template <std::size_t NC, int W>  // stepBatch's loop, CompensatorStep.h
+	void stepLoop(std::size_t n, const double* time_s, const double* raw_dph, const double* temp_C,
+				  std::size_t temp_stride, Output* out);
 	static Compiled compile(const BiasModel& m, const std::vector<std::string>& channel_names);
 	template <std::size_t NB, int W>
 	double evaluate(const Compiled& m, const double* temp_C, int& clamped) const;

@@ -114,4 +114,20 @@ template <std::size_t NC, int W>
 	return out;
 }
 
+template <std::size_t NC, int W>
+[[gnu::always_inline]] inline void Compensator::stepLoop(std::size_t n, const double* time_s, const double* raw_dph,
+														 const double* temp_C, std::size_t temp_stride, Output* out)
+{
+	for (std::size_t k = 0; k < n; k++)
+	{
+		// field by field: a whole-struct copy of the just-built Output would read back its
+		// element-wise stores as one wide load (a store-forwarding stall on every sample)
+		const Output o = stepBody<NC, W>(time_s[k], raw_dph[k], temp_C + k * temp_stride);
+		out[k].bias_dph = o.bias_dph;
+		out[k].compensated_dph = o.compensated_dph;
+		out[k].flags = o.flags;
+		out[k].model = o.model;
+	}
+}
+
 }  // namespace mrpt_fog

@@ -237,12 +237,17 @@ template <std::size_t NC>
 			return nc >= 32 ? ~0u : ((1u << nc) - 1u);
 		}
 		const double inv = 1.0 / den, s1 = S1[0];
-		if constexpr (NC > 0)
+		if constexpr (NC == 4)
 		{
-			// computed into registers, then stored: no load can follow a store to rate_out
-			double r[NC];
-			for (std::size_t c = 0; c < NC; c++) r[c] = (n * STX[c] - s1 * SX[c]) * inv;
-			std::memcpy(out, r, sizeof r);
+			// As one 4-wide vector (the same operations per lane): written as whole vectors, so a
+			// caller that loads the rates as vectors never reads back narrower stores (which
+			// stalls store forwarding); compilers do not always vectorise the loop below.
+			typedef double V4 __attribute__((vector_size(32)));
+			V4 stx, sx;
+			std::memcpy(&stx, STX, sizeof stx);
+			std::memcpy(&sx, SX, sizeof sx);
+			const V4 r = (n * stx - s1 * sx) * inv;
+			std::memcpy(out, &r, sizeof r);
 		}
 		else
 			for (std::size_t c = 0; c < nc; c++) out[c] = (n * STX[c] - s1 * SX[c]) * inv;
