@@ -1,6 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/SimulatedRun.h>
 #include <mrpt_fog/sim/ChamberRun.h>
+#include <mrpt_fog/sim/FogSimulator.h>
 
 #include <algorithm>
 #include <cmath>
@@ -108,25 +109,33 @@ SimTrace simulateOnRun(const SimModel& model, const ChamberDrive& drive, const F
 			throw std::invalid_argument("run thermistor '" + th.name + "' is not a thermistor of the simulated device");
 		devIndex.push_back(found);
 	}
-	sim::SimSettings settings;
-	settings.seed = 1;
-	settings.rate_hz = drive.rate_hz;
-	settings.effects = model.effects;
-	const FogSeries out = sim::simulateChamber(drive.profile, dev, settings);
-	const auto& rate = out.primaryRate_dph();
+	// Stepped exactly as sim::simulateChamber steps it (same grid, same start), noise off; the
+	// simulator is driven directly to read the electronics node as well.
+	sim::FogSimulator fog(dev, model.effects, 1);
+	const double dt = 1.0 / drive.rate_hz;
+	const auto nSim = static_cast<std::size_t>(std::floor(drive.profile.duration_s() * drive.rate_hz + 1e-9)) + 1;
+	const std::size_t n = run.size();
+	// run samples per simulator sample (a run sample maps to one simulator sample)
+	std::vector<std::vector<std::size_t>> atSim(nSim);
+	for (std::size_t k = 0; k < n; ++k)
+		if (drive.sim_index[k] < nSim) atSim[drive.sim_index[k]].push_back(k);
 
 	SimTrace tr;
-	const std::size_t n = run.size();
 	tr.bias_dph.assign(n, kNaN);
+	tr.electronics_C.assign(n, kNaN);
 	tr.temp_C.assign(run.thermistorCount(), std::vector<double>(n, kNaN));
-	for (std::size_t k = 0; k < n; ++k)
+	const int eNode = fog.thermal().electronicsNode();
+	for (std::size_t j = 0; j < nSim; ++j)
 	{
-		const std::size_t j = drive.sim_index[k];
-		if (j >= out.size()) continue;
-		const bool on = out.power.empty() || out.power[j] >= 0.5;
-		const double table = out.table_rate_dph.empty() ? 0.0 : out.table_rate_dph[j];
-		if (on) tr.bias_dph[k] = rate[j] - table;
-		for (std::size_t i = 0; i < devIndex.size(); ++i) tr.temp_C[i][k] = out.temp_C[static_cast<std::size_t>(devIndex[i])][j];
+		const double t = static_cast<double>(j) / drive.rate_hz;
+		const sim::ChamberState st = drive.profile.stateAt(t);
+		const sim::FogSample s = j == 0 ? fog.start(st, drive.profile.initialState()) : fog.advance(dt, st);
+		for (std::size_t k : atSim[j])
+		{
+			if (s.power_on) tr.bias_dph[k] = s.rate_dph - st.table_rate_dph;
+			tr.electronics_C[k] = fog.nodeTemperatures_C()(eNode);
+			for (std::size_t i = 0; i < devIndex.size(); ++i) tr.temp_C[i][k] = s.temp_C[static_cast<std::size_t>(devIndex[i])];
+		}
 	}
 	return tr;
 }

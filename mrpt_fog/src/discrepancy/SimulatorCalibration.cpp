@@ -120,8 +120,45 @@ Eigen::MatrixXd biasJacobian(const SimModel& m, const std::vector<ParamSlot>& sl
 	return J;
 }
 
+/** Long-run variance of a residual by batch means: blocks of round(sqrt(m)) consecutive entries
+ * of each series (NaN/excluded entries skipped), pooled; NaN with fewer than 2 blocks. */
+double blockAveragedVariance(const std::vector<std::vector<double>>& series)
+{
+	std::size_t m = 0;
+	for (const auto& s : series) m += s.size();
+	if (m < 8) return kNaN;
+	const auto b = static_cast<std::size_t>(std::max(1.0, std::round(std::sqrt(static_cast<double>(m) / series.size()))));
+	std::vector<double> means;
+	double grand = 0;
+	for (const auto& s : series)
+		for (std::size_t i = 0; i + b <= s.size(); i += b)
+		{
+			double x = 0;
+			for (std::size_t j = i; j < i + b; ++j) x += s[j];
+			means.push_back(x / b);
+			grand += x / b;
+		}
+	if (means.size() < 2) return kNaN;
+	grand /= means.size();
+	double v = 0;
+	for (double x : means) v += (x - grand) * (x - grand);
+	return static_cast<double>(b) * v / (means.size() - 1);
+}
+
+std::vector<double> ciHalfWidths(const Eigen::MatrixXd& J, double s2)
+{
+	std::vector<double> out(static_cast<std::size_t>(J.cols()), kNaN);
+	if (J.cols() == 0 || !std::isfinite(s2)) return out;
+	const Eigen::MatrixXd JtJ = J.transpose() * J;
+	Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(JtJ);
+	if (cod.rank() < JtJ.cols()) return out;
+	const Eigen::MatrixXd cov = s2 * cod.pseudoInverse();
+	for (Eigen::Index j = 0; j < J.cols(); ++j) out[static_cast<std::size_t>(j)] = 1.96 * std::sqrt(std::max(0.0, cov(j, j)));
+	return out;
+}
+
 void finish(SimCalibration& c, const FogSeries& run, const ChamberDrive& drive, const std::vector<double>& bias,
-			const std::vector<unsigned char>& rows)
+			const std::vector<unsigned char>& rows, bool offsets_free)
 {
 	c.trace = simulateOnRun(c.model, drive, run);
 	++c.simulations;
@@ -131,6 +168,39 @@ void finish(SimCalibration& c, const FogSeries& run, const ChamberDrive& drive, 
 	c.bias_rms_dph = m ? std::sqrt(rb.squaredNorm() / m) : kNaN;
 	c.temp_rms_C = rmsOfFinite(temperatureResidual(run, c.trace));
 	c.bias_jacobian = biasJacobian(c.model, c.bias_slots, drive, run, c.trace, rows, c.simulations);
+
+	// 95 % intervals (see header): bias
+	std::vector<double> rbUsed;
+	for (std::size_t k = 0; k < rows.size(); ++k)
+		if (rows[k]) rbUsed.push_back(rb(static_cast<Eigen::Index>(k)));
+	c.bias_ci95_half = ciHalfWidths(c.bias_jacobian, blockAveragedVariance({rbUsed}));
+	// temperatures: Jacobian of the stacked residual (offsets projected out when free)
+	if (!c.temp_slots.empty())
+	{
+		const Eigen::VectorXd r0 = tempResidualVector(run, c.trace, offsets_free);
+		Eigen::MatrixXd JT(r0.size(), static_cast<Eigen::Index>(c.temp_slots.size()));
+		for (std::size_t j = 0; j < c.temp_slots.size(); ++j)
+		{
+			SimModel mj = c.model;
+			const double v = getParam(c.model, c.temp_slots[j]), h = fdStep(c.temp_slots[j], v);
+			setParam(mj, c.temp_slots[j], v + h);
+			const double hEff = getParam(mj, c.temp_slots[j]) - v;
+			const Eigen::VectorXd rj = tempResidualVector(run, simulateOnRun(mj, drive, run), offsets_free);
+			++c.simulations;
+			JT.col(static_cast<Eigen::Index>(j)) = hEff != 0 ? Eigen::VectorXd((rj - r0) / hEff) : Eigen::VectorXd::Zero(r0.size());
+		}
+		const auto rt = temperatureResidual(run, c.trace);
+		std::vector<std::vector<double>> perThermistor;
+		const std::size_t n = run.size();
+		for (std::size_t i = 0; i < rt.size(); ++i)
+		{
+			std::vector<double> s;
+			for (std::size_t k = 0; k < n; ++k)
+				if (std::isfinite(rt[i][k])) s.push_back(r0(static_cast<Eigen::Index>(i * n + k)));
+			perThermistor.push_back(std::move(s));
+		}
+		c.temp_ci95_half = ciHalfWidths(JT, blockAveragedVariance(perThermistor));
+	}
 }
 }  // namespace
 
@@ -190,7 +260,7 @@ SimCalibration calibrateSimulator(const SimModel& start, const std::vector<std::
 	// 2. bias
 	auto biasRes = [&](const SimModel& m) { return biasResidual(bias, simulateOnRun(m, drive, run), rows); };
 	c.model = gaussNewton(c.model, c.bias_slots, biasRes, 6, c.simulations);
-	finish(c, run, drive, bias, rows);
+	finish(c, run, drive, bias, rows, offsetsFree);
 	return c;
 }
 
@@ -205,7 +275,7 @@ SimCalibration applyCalibration(const SimModel& calibrated, const std::vector<st
 	const ParamSlot constant{"constant_bias_dph", 0};
 	auto biasRes = [&](const SimModel& m) { return biasResidual(bias, simulateOnRun(m, drive, run), rows); };
 	c.model = gaussNewton(c.model, {constant}, biasRes, 2, c.simulations);
-	finish(c, run, drive, bias, rows);
+	finish(c, run, drive, bias, rows, false);
 	return c;
 }
 

@@ -34,6 +34,16 @@ std::vector<std::pair<std::string, double>> calibratedValues(const SimCalibratio
 	return out;
 }
 
+std::vector<std::pair<std::string, double>> calibratedCi95(const SimCalibration& c)
+{
+	std::vector<std::pair<std::string, double>> out;
+	for (std::size_t j = 0; j < c.temp_slots.size() && j < c.temp_ci95_half.size(); ++j)
+		out.emplace_back(c.temp_slots[j].label(), c.temp_ci95_half[j]);
+	for (std::size_t j = 0; j < c.bias_slots.size() && j < c.bias_ci95_half.size(); ++j)
+		out.emplace_back(c.bias_slots[j].label(), c.bias_ci95_half[j]);
+	return out;
+}
+
 /** The calibrated simulator, linearised, as the selector's base design. */
 BaseDesign simulatorBaseDesign(const SimCalibration& c, const RunSignals& sig)
 {
@@ -46,6 +56,10 @@ BaseDesign simulatorBaseDesign(const SimCalibration& c, const RunSignals& sig)
 		b.is_static_temp.push_back(poly ? 1 : 0);
 		if (poly) b.max_static_order = std::max(b.max_static_order, s.index + 1);
 	}
+	// static temperature of the temp_poly_order candidate: the thermistor mean. The simulator's
+	// own (the electronics temperature, SimTrace::electronics_C) was tried: hysteresis was still
+	// named first with temp_poly_order hidden, since the candidate adds powers 2 and 3 only while
+	// the hidden polynomial is mostly linear (docs/discrepancy-sim.md)
 	b.static_temp_C = sig.temp_mean_C;
 	if (sig.has_table)
 	{
@@ -129,6 +143,7 @@ SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& r
 	R.effects_before = effectList(model0.effects);
 	R.free_before = free0;
 	R.calibrated_before = calibratedValues(cal0);
+	R.calibrated_before_ci95_half = calibratedCi95(cal0);
 	for (const auto& s : cal0.bias_slots) rep.base_terms.push_back(s.label());
 	for (const auto& s : cal0.temp_slots) rep.base_terms.push_back(s.label());
 
@@ -208,6 +223,7 @@ SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& r
 	R.effects_after = effectList(calA.model.effects);
 	R.free_after = freeA;
 	R.calibrated_after = calibratedValues(calA);
+	R.calibrated_after_ci95_half = calibratedCi95(calA);
 
 	const auto& rows1 = rep.selection.fit_rows.empty() ? sig1.usable : rep.selection.fit_rows;
 	const auto segs1 = segmentRun(sig1, opt.base.segmentation);
@@ -293,6 +309,42 @@ JsonValue valuesJson(const std::vector<std::pair<std::string, double>>& v)
 	for (const auto& [k, x] : v) o[k] = x;
 	return o;
 }
+
+/** {label: [low, high]} from values and half-widths (null when not estimable). */
+JsonValue ciJson(const std::vector<std::pair<std::string, double>>& values,
+				 const std::vector<std::pair<std::string, double>>& half)
+{
+	JsonValue o = JsonValue::object();
+	for (const auto& [k, h] : half)
+		for (const auto& [kv, v] : values)
+			if (kv == k)
+			{
+				if (!std::isfinite(h))
+				{
+					o[k] = JsonValue();
+					break;
+				}
+				JsonValue a = JsonValue::array();
+				a.push_back(v - h);
+				a.push_back(v + h);
+				o[k] = a;
+				break;
+			}
+	return o;
+}
+
+std::string valuesText(const std::vector<std::pair<std::string, double>>& values,
+					   const std::vector<std::pair<std::string, double>>& half)
+{
+	std::string out;
+	for (const auto& [k, v] : values)
+	{
+		out += " " + k + "=" + fmt("%.4g", v);
+		for (const auto& [kh, h] : half)
+			if (kh == k && std::isfinite(h)) out += " (+-" + fmt("%.2g", h) + ")";
+	}
+	return out;
+}
 }  // namespace
 
 JsonValue simDiscrepancyJson(const SimDiscrepancyReport& R)
@@ -309,6 +361,8 @@ JsonValue simDiscrepancyJson(const SimDiscrepancyReport& R)
 	s["free_after"] = stringArray(R.free_after);
 	s["calibrated_before"] = valuesJson(R.calibrated_before);
 	s["calibrated_after"] = valuesJson(R.calibrated_after);
+	s["calibrated_before_ci95"] = ciJson(R.calibrated_before, R.calibrated_before_ci95_half);
+	s["calibrated_after_ci95"] = ciJson(R.calibrated_after, R.calibrated_after_ci95_half);
 	s["simulations"] = R.simulations;
 	j["simulator"] = s;
 	const auto& h = R.heat;
@@ -361,15 +415,13 @@ std::string simDiscrepancyText(const SimDiscrepancyReport& R)
 	os << "Simulator configuration under test: " << R.config_source << "\n";
 	os << "Driving input: " << R.drive << "\n";
 	os << "Calibrated (" << R.simulations << " simulator runs):";
-	for (const auto& [k, v] : R.calibrated_before) os << " " << k << "=" << fmt("%.4g", v);
-	os << "\n";
+	os << valuesText(R.calibrated_before, R.calibrated_before_ci95_half) << "\n";
 	os << "Temperature channel: " << R.heat.sentence << "\n";
 	os << discrepancyText(R.report);
 	if (R.effects_after != R.effects_before)
 	{
 		os << "Recalibrated with the named effect(s) on:";
-		for (const auto& [k, v] : R.calibrated_after) os << " " << k << "=" << fmt("%.4g", v);
-		os << "\n";
+		os << valuesText(R.calibrated_after, R.calibrated_after_ci95_half) << "\n";
 	}
 	auto line = [&](const TemperatureGap& g)
 	{

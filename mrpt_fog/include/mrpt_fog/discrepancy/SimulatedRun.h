@@ -52,6 +52,9 @@ struct SimTrace
 {
 	std::vector<double> bias_dph;  //!< rate - table rate; NaN while unpowered
 	std::vector<std::vector<double>> temp_C;  //!< per RUN thermistor (matched by name)
+	/** Simulated electronics-board temperature [degC]: the temperature of the simulator's static
+	 * bias polynomial (temp_poly_order), hence the model's "static temperature". */
+	std::vector<double> electronics_C;
 };
 
 /** Simulates `model` with every noise source off on the drive's grid, mapped to the run's

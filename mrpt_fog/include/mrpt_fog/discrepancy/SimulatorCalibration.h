@@ -13,6 +13,12 @@
  *     Shupe weights nonlinearly).
  * The result holds the bias Jacobian at the optimum: the linearised calibrated model, which the
  * bias-channel selector (EffectSelector) uses as its base design.
+ * 95 % intervals of the calibrated parameters: +-1.96 sqrt(diag(s2_LR (J^T J)^-1)), J the
+ * Jacobian at the optimum (bias: bias_jacobian; temperatures: the stacked thermistor residual
+ * with the offsets projected out), s2_LR the long-run residual variance by block averaging
+ * (batch means over blocks of round(sqrt(m)) consecutive samples, per thermistor for the
+ * temperatures), which covers autocorrelated noise and unmodelled structure alike. Approximate:
+ * linearised, and the sandwich is reduced to s2_LR (J^T J)^-1 (columns slow against a block).
  */
 
 #include <mrpt_fog/discrepancy/SimulatedRun.h>
@@ -32,6 +38,8 @@ struct SimCalibration
 	Eigen::MatrixXd bias_jacobian;
 	double bias_rms_dph = 0;  //!< over bias_rows
 	double temp_rms_C = 0;  //!< over every thermistor and finite sample
+	/** 95 % half-widths, aligned with temp_slots / bias_slots (NaN: not estimable). */
+	std::vector<double> temp_ci95_half, bias_ci95_half;
 	int simulations = 0;  //!< simulator runs used
 };
 

@@ -57,6 +57,9 @@ struct SimDiscrepancyReport
 	std::vector<std::string> effects_before, effects_after;
 	std::vector<std::string> free_before, free_after;
 	std::vector<std::pair<std::string, double>> calibrated_before, calibrated_after;
+	/** 95 % half-widths of the calibrated parameters (SimulatorCalibration.h; thermistor
+	 * offsets have none), keyed like calibrated_before / calibrated_after. */
+	std::vector<std::pair<std::string, double>> calibrated_before_ci95_half, calibrated_after_ci95_half;
 	HeatSourceResult heat;
 	HeatSourceConfirm heat_confirm;
 	TemperatureGap temp_gap, temp_gap_confirm;
