@@ -46,11 +46,23 @@ TEST(CandidateEffect, ColumnsMatchClosedForms)
 	const auto mag = candidateById("magnetic").build(ctx, 0.0);
 	const auto poly = candidateById("temp_poly_order").build(ctx, 0.0);
 	ASSERT_EQ(poly.cols(), 2);
+	ASSERT_EQ(warm.cols(), 2);
+	ASSERT_EQ(sig.power_on_s.size(), 2u);
 	for (std::size_t k = 0; k < sig.size(); ++k)
 	{
 		const auto i = static_cast<Eigen::Index>(k);
+		// the run starts powered and has one power cycle: column 1 decays from the start, column 0
+		// from the power-on inside the run
 		if (sig.usable[k] && sig.time_s[k] < sig.power_on_s.at(1))
-			EXPECT_NEAR(warm(i, 0), std::exp(-(sig.time_s[k] - sig.power_on_s[0]) / 600.0), 1e-12);
+		{
+			EXPECT_NEAR(warm(i, 1), std::exp(-(sig.time_s[k] - sig.power_on_s[0]) / 600.0), 1e-12);
+			EXPECT_EQ(warm(i, 0), 0.0);
+		}
+		if (sig.usable[k] && sig.time_s[k] >= sig.power_on_s.at(1))
+		{
+			EXPECT_NEAR(warm(i, 0), std::exp(-(sig.time_s[k] - sig.power_on_s[1]) / 600.0), 1e-12);
+			EXPECT_EQ(warm(i, 1), 0.0);
+		}
 		if (sig.block[k] >= 0) EXPECT_NEAR(lag(i, 0), 2.0 * sig.dtemp_dt_Cpm[k], 1e-9);  // d/dt f(T) = f' dT/dt
 		EXPECT_DOUBLE_EQ(mag(i, 0), sig.field_uT[k]);
 		if (sig.usable[k])
