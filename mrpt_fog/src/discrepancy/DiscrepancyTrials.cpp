@@ -1,6 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/DiscrepancyTrials.h>
-#include <mrpt_fog/sim/ChamberRun.h>
 
 #include <algorithm>
 #include <cmath>
@@ -152,44 +151,6 @@ TrialOutcome runTrial(const TrialSpec& spec, const SelectionOptions& opt)
 	for (std::size_t i = 0; i < spec.hidden.size(); ++i) os << (i ? "+" : "") << spec.hidden[i] << "@" << spec.ratios[i];
 	if (spec.hidden.empty()) os << "none";
 	os << " seed=" << spec.seed << " " << out.summary;
-	out.summary = os.str();
-	return out;
-}
-
-TrialOutcome runSimulatorTrial(const std::string& effect, std::uint64_t seed, const std::string& base_preset,
-							   double rate_hz, const SelectionOptions& opt)
-{
-	sim::SimSettings st;
-	st.rate_hz = rate_hz;
-	st.effects = {"earth_rate"};
-	if (!effect.empty()) st.effects.insert(effect);
-	st.profile_source = "rich";
-	const auto profile = sim::ChamberProfile::preset("rich");
-	const auto device = sim::FogDevice::defaultDevice();
-	st.seed = 2 * seed + 1;
-	const FogSeries run1 = sim::simulateChamber(profile, device, st);
-	st.seed = 2 * seed + 2;
-	const FogSeries run2 = sim::simulateChamber(profile, device, st);
-	const auto bspec = resolveBaseModel(base_preset, run1);
-	const auto sig1 = computeRunSignals(run1), sig2 = computeRunSignals(run2);
-	const auto base1 = buildBaseDesign(bspec, run1, sig1), base2 = buildBaseDesign(bspec, run2, sig2);
-	auto sel = selectMissingEffects(sig1, base1, opt);
-	confirmOnRun(sel, sig2, base2, opt);
-	TrialOutcome out;
-	out.named = sel.named;
-	out.false_naming = effect.empty() && !sel.named.empty();
-	out.named_ok = effect.empty() ? sel.named.empty() : (!sel.named.empty() && inGroup(sel.named[0], effect, true));
-	out.clean = effect.empty() ? sel.named.empty() : (!sel.named.empty() && sel.named[0].id == effect);
-	const auto rBefore = residualWithCoefficients(base2.X, sig2, sel.coef_before);
-	const auto rAfter = residualWithCoefficients(sel.model.design(base2, sig2), sig2, sel.coef_after);
-	out.rms_before_dph = rmsOn(rBefore, sig2.usable);
-	out.rms_after_dph = rmsOn(rAfter, sig2.usable);
-	out.rms_oracle_dph = std::numeric_limits<double>::quiet_NaN();
-	out.gap_ok = out.rms_after_dph <= out.rms_before_dph;
-	std::ostringstream os;
-	os << "sim effect=" << (effect.empty() ? "none" : effect) << " seed=" << seed << " named=";
-	writeNamedEffects(os, sel.named);
-	os << " rms2 before/after=" << out.rms_before_dph << "/" << out.rms_after_dph;
 	out.summary = os.str();
 	return out;
 }

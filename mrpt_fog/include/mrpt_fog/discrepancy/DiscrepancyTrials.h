@@ -61,11 +61,6 @@ TrialOutcome scoreTrial(const std::vector<std::string>& hidden, bool accept_alia
 						const RunSignals& sig1, const BaseDesign& base1, const RunSignals& sig2, const BaseDesign& base2,
 						const std::vector<std::vector<double>>& truth1, const std::vector<std::vector<double>>& truth2);
 
-/** The same on the real simulator (mrpt_fog/sim): `rich` chamber profile at rate_hz, default
- * device, only earth_rate plus `effect` switched on ("" = none), seeds 2 seed + 1 (analysed)
- * and 2 seed + 2 (confirmation). The effect's size is the device default (not scaled to a
- * ratio); no oracle exists, so gap_ok = the confirmation RMS fell at all. */
-TrialOutcome runSimulatorTrial(const std::string& effect, std::uint64_t seed, const std::string& base_preset = "static:3",
-							   double rate_hz = 0.05, const SelectionOptions& opt = {});
+/* The same on the real simulator, with the effect scaled to a ratio: SimEffectTrial.h. */
 
 }  // namespace mrpt_fog::discrepancy
