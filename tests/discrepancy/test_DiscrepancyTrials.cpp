@@ -28,8 +28,8 @@ TEST_P(ProofTrials, HiddenEffectNamedAtRatios1And3)
 		all.named += t.named;
 		all.gap_ok += t.gap_ok;
 	}
-	EXPECT_GE(all.named, 19) << "named " << all.named << "/" << all.trials << " (target >= 95 %)";
-	EXPECT_GE(all.gap_ok, 19) << "gap target met " << all.gap_ok << "/" << all.trials;
+	EXPECT_GE(all.named, all.trials - 1) << "named " << all.named << "/" << all.trials << " (target >= 95 %)";
+	EXPECT_GE(all.gap_ok, all.trials - 1) << "gap target met " << all.gap_ok << "/" << all.trials;
 }
 
 INSTANTIATE_TEST_SUITE_P(Effects, ProofTrials, ::testing::ValuesIn(biasEffects()),
@@ -53,8 +53,9 @@ TEST(ProofTrialsConfounders, NamedDespiteConfounders)
 		all.named += t.named;
 		all.gap_ok += t.gap_ok;
 	}
-	EXPECT_GE(all.named, 0.95 * all.trials) << all.named << "/" << all.trials;
-	EXPECT_GE(all.gap_ok, 0.95 * all.trials) << all.gap_ok << "/" << all.trials;
+	// 5 % of the full count (6 scenarios x 10 seeds = 60) may miss: 3 (also on a FOG_TRIAL_SEEDS subset)
+	EXPECT_GE(all.named, all.trials - 3) << all.named << "/" << all.trials;
+	EXPECT_GE(all.gap_ok, all.trials - 3) << all.gap_ok << "/" << all.trials;
 }
 
 TEST(ProofTrialsAlias, UnseparableProfileYieldsAliasGroupNotCoinToss)
@@ -109,8 +110,8 @@ TEST_P(ProofTrialsSimulator, HiddenEffectNamedAtRatios1And3)
 		all.named += t.named;
 		all.gap_ok += t.gap_ok;
 	}
-	EXPECT_GE(all.named, 19) << "named " << all.named << "/" << all.trials << " (target >= 95 %)";
-	EXPECT_GE(all.gap_ok, 19) << "gap target met " << all.gap_ok << "/" << all.trials;
+	EXPECT_GE(all.named, all.trials - 1) << "named " << all.named << "/" << all.trials << " (target >= 95 %)";
+	EXPECT_GE(all.gap_ok, all.trials - 1) << "gap target met " << all.gap_ok << "/" << all.trials;
 }
 
 INSTANTIATE_TEST_SUITE_P(Effects, ProofTrialsSimulator, ::testing::ValuesIn(simTrialEffects()),

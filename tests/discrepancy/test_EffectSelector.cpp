@@ -108,6 +108,48 @@ TEST(EffectSelector, ConfirmationRunConfirmsARealEffect)
 	EXPECT_LT(s.named.front().confirm_p, 1e-3);
 }
 
+// An effect present in the analysed run only (a one-off disturbance, or a chance naming) is not
+// confirmed on a second run without it: keepConfirmedEffects moves it to not_confirmed and the
+// augmented model falls back to the base columns (its residual equals the base fit's). A real
+// effect present in both runs stays named.
+TEST(EffectSelector, UnconfirmedEffectIsReportedNotAdded)
+{
+	SyntheticRunOptions o;
+	o.dt_s = 20;
+	o.hidden["magnetic"] = 2.0;
+	o.seed = 21;
+	const auto r1 = makeSyntheticChamberRun(o);
+	const auto spec = resolveBaseModel("static:3", r1.series);
+	const auto sig1 = computeRunSignals(r1.series);
+	const auto base1 = buildBaseDesign(spec, r1.series, sig1);
+
+	o.hidden.clear();  // the second run has no magnetic sensitivity
+	o.seed = 22;
+	const auto r2 = makeSyntheticChamberRun(o);
+	const auto sig2 = computeRunSignals(r2.series);
+	auto s = selectMissingEffects(sig1, base1);
+	ASSERT_EQ(s.named.size(), 1u);
+	ASSERT_EQ(s.named.front().id, "magnetic");
+	confirmOnRun(s, sig2, buildBaseDesign(spec, r2.series, sig2));
+	keepConfirmedEffects(s, sig1, base1);
+	EXPECT_TRUE(s.named.empty());
+	ASSERT_EQ(s.not_confirmed.size(), 1u);
+	EXPECT_EQ(s.not_confirmed.front().id, "magnetic");
+	EXPECT_TRUE(s.model.effects.empty());
+	ASSERT_EQ(s.coef_after.size(), s.coef_before.size());
+	EXPECT_LT((s.residual_after - s.residual_before).cwiseAbs().maxCoeff(), 1e-9);
+
+	o.hidden["magnetic"] = 2.0;  // present in both runs: stays
+	const auto r3 = makeSyntheticChamberRun(o);
+	const auto sig3 = computeRunSignals(r3.series);
+	auto s3 = selectMissingEffects(sig1, base1);
+	confirmOnRun(s3, sig3, buildBaseDesign(spec, r3.series, sig3));
+	keepConfirmedEffects(s3, sig1, base1);
+	ASSERT_EQ(s3.named.size(), 1u);
+	EXPECT_TRUE(s3.not_confirmed.empty());
+	EXPECT_EQ(s3.model.effects.size(), 1u);
+}
+
 TEST(EffectSelector, RejectsTooFewSamples)
 {
 	SyntheticRunOptions o;

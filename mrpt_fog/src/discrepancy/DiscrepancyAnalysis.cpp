@@ -181,19 +181,21 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 	const auto base1 = buildBaseDesign(spec, runs[0], sig1);
 	rep.base_terms = base1.names;
 	rep.selection = selectMissingEffects(sig1, base1, opt.selection);
-	const auto segs1 = segmentRun(sig1, opt.segmentation);
-	rep.gap = makeRunGap(rep.run_labels[0], sig1, segs1, rep.selection.residual_before, rep.selection.residual_after,
-						 rep.selection.fit_rows, opt);
 	if (runs.size() == 2)
 	{
+		// confirm first: only effects confirmed on the second run are added (keepConfirmedEffects)
 		rep.has_confirm = true;
 		const auto sig2 = computeRunSignals(runs[1], opt.signals);
 		const auto base2 = buildBaseDesign(spec, runs[1], sig2);
 		confirmOnRun(rep.selection, sig2, base2, opt.selection);
+		keepConfirmedEffects(rep.selection, sig1, base1);
 		const auto rb = residualWithCoefficients(base2.X, sig2, rep.selection.coef_before);
 		const auto ra = residualWithCoefficients(rep.selection.model.design(base2, sig2), sig2, rep.selection.coef_after);
 		rep.gap_confirm = makeRunGap(rep.run_labels[1], sig2, segmentRun(sig2, opt.segmentation), rb, ra, sig2.usable, opt);
 	}
+	const auto segs1 = segmentRun(sig1, opt.segmentation);
+	rep.gap = makeRunGap(rep.run_labels[0], sig1, segs1, rep.selection.residual_before, rep.selection.residual_after,
+						 rep.selection.fit_rows, opt);
 	return rep;
 }
 
@@ -240,6 +242,19 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 		named.push_back(e);
 	}
 	j["named_effects"] = named;
+	// named on the analysed run, not confirmed on the second run: reported, not added
+	JsonValue unconfirmed = JsonValue::array();
+	for (const auto& ne : sel.not_confirmed)
+	{
+		JsonValue e = JsonValue::object();
+		e["id"] = ne.id;
+		e["p_adjusted"] = ne.p_adjusted;
+		e["coefficient"] = ne.coefficient;
+		e["coefficient_unit"] = ne.coefficient_unit;
+		e["confirm_p"] = ne.confirm_p;
+		unconfirmed.push_back(e);
+	}
+	j["not_confirmed"] = unconfirmed;
 	j["where"] = rep.gap.ranking_before.sentence;
 	JsonValue segs = JsonValue::array();
 	int rank = 1;
@@ -323,6 +338,11 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 			os << "    confirmation run: " << (ne.confirmed ? "confirmed" : "NOT confirmed") << " (p "
 			   << fmt("%.2g", ne.confirm_p) << ")\n";
 	}
+	for (const auto& ne : sel.not_confirmed)
+		os << "  not confirmed (named on " << rep.run_labels[0] << ", not added): " << ne.id << ", coefficient "
+		   << fmt("%.4g", ne.coefficient) << " " << ne.coefficient_unit << ", Holm p " << fmt("%.2g", ne.p_adjusted)
+		   << "; on the confirmation run p " << fmt("%.2g", ne.confirm_p)
+		   << (ne.confirm_p < 0.01 ? " with the opposite sign" : "") << "\n";
 	if (!sel.rounds.empty())
 	{
 		std::string skipped;

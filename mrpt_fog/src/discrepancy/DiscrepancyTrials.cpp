@@ -138,6 +138,7 @@ TrialOutcome runTrial(const TrialSpec& spec, const SelectionOptions& opt)
 	const auto base2 = buildBaseDesign(bspec, run2.series, sig2);
 	auto sel = selectMissingEffects(sig1, base1, opt);
 	confirmOnRun(sel, sig2, base2, opt);
+	keepConfirmedEffects(sel, sig1, base1);  // the verdict rule of analyseDiscrepancy
 
 	std::vector<std::vector<double>> truth1, truth2;
 	for (const auto& id : spec.hidden)

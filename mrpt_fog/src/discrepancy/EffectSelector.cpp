@@ -509,4 +509,22 @@ void confirmOnRun(SelectionResult& result, const RunSignals& sig2, const BaseDes
 	}
 }
 
+void keepConfirmedEffects(SelectionResult& result, const RunSignals& sig1, const BaseDesign& base1)
+{
+	std::vector<NamedEffect> kept;
+	for (auto& ne : result.named)
+		(ne.confirm_tested && !ne.confirmed ? result.not_confirmed : kept).push_back(ne);
+	if (kept.size() == result.named.size()) return;
+	result.named = kept;
+	std::vector<EffectTerm> effects;
+	for (const auto& term : result.model.effects)
+		for (const auto& ne : kept)
+			if (ne.id == term.id) effects.push_back(term);
+	result.model.effects = effects;
+	const Mat X = result.model.design(base1, sig1);
+	Vec ra;
+	result.coef_after = olsOnRows(X, yVector(sig1), rowsOf(result.fit_rows), ra).coef;
+	result.residual_after = ra;
+}
+
 }  // namespace mrpt_fog::discrepancy

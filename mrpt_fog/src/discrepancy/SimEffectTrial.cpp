@@ -269,6 +269,7 @@ TrialOutcome runSimEffectTrial(const SimTrialSpec& spec, const SelectionOptions&
 	const auto base2 = buildBaseDesign(bspec, runs.confirm.series, sig2);
 	auto sel = selectMissingEffects(sig1, base1, opt);
 	confirmOnRun(sel, sig2, base2, opt);
+	keepConfirmedEffects(sel, sig1, base1);  // the verdict rule of analyseDiscrepancy
 	std::vector<std::string> hidden;
 	std::vector<std::vector<double>> t1, t2;
 	if (!spec.hidden.empty())

@@ -117,6 +117,9 @@ struct NamedEffect
 struct SelectionResult
 {
 	std::vector<NamedEffect> named;
+	/** Named on the analysed run but not confirmed on the confirmation run (keepConfirmedEffects):
+	 * reported, not added to the model. */
+	std::vector<NamedEffect> not_confirmed;
 	std::vector<std::vector<CandidateTest>> rounds;
 	AugmentedModel model;
 	std::vector<unsigned char> fit_rows;  //!< usable and not an outlier
@@ -137,6 +140,14 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
  * chi-square test at alias_alpha with the same coefficient sign. Fills confirm_* fields. */
 void confirmOnRun(SelectionResult& result, const RunSignals& sig2, const BaseDesign& base2,
 				  const SelectionOptions& opt = {});
+
+/** The verdict rule when a confirmation run is given: an effect named on the analysed run but
+ * tested and NOT confirmed on the confirmation run (confirmOnRun) is moved to not_confirmed,
+ * and the augmented model is refitted on the analysed run (sig1/base1) with the confirmed
+ * effects only (coef_after, residual_after). Effects that could not be tested on the second run
+ * (e.g. it has no rate-table segment) stay named. A one-run analysis has nothing to confirm.
+ * Why: on null trials every false naming seen was unconfirmed (docs/discrepancy.md). */
+void keepConfirmedEffects(SelectionResult& result, const RunSignals& sig1, const BaseDesign& base1);
 
 /** Residuals on another run with coefficients fitted elsewhere, re-estimating only the
  * constant offset (turn-on to turn-on bias repeatability). Rows not usable give 0. */
