@@ -36,6 +36,9 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1:strict_strin
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$here/scripts/lsan.supp:print_suppressions=0}
 export FOG_TRIAL_SEEDS=${FOG_TRIAL_SEEDS:-3}
+# For tests that run an uninstrumented program (MRPT's rawlog-edit) on our instrumented plugin:
+# the ASan runtime must be preloaded there (docs/hardening.md, "Status at the end of the session").
+export FOG_ASAN_PRELOAD=${FOG_ASAN_PRELOAD:-$(${CXX:-g++} -print-file-name=libasan.so)}
 status=0
 ctest --test-dir "$build" -LE long -j"$jobs" --output-on-failure --timeout 1200 "$@" || status=$?
 t2=$(date +%s)
