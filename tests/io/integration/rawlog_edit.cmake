@@ -4,6 +4,11 @@
 # -D MODE=plugin-info|export-txt|stock-info
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
+# Sanitizer build (scripts/run-sanitizers.sh exports FOG_ASAN_PRELOAD): the uninstrumented
+# rawlog-edit loads our ASan-instrumented plugin, so the ASan runtime must be loaded first.
+if(DEFINED ENV{FOG_ASAN_PRELOAD} AND NOT "$ENV{FOG_ASAN_PRELOAD}" STREQUAL "")
+  set(ENV{LD_PRELOAD} "$ENV{FOG_ASAN_PRELOAD}")
+endif()
 
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE so ERROR_VARIABLE se WORKING_DIRECTORY ${WORK})
