@@ -13,6 +13,7 @@ PACKAGES=(
   libbenchmark-dev     # Google Benchmark (bench/)
   python3 python3-numpy  # NumPy peer for the fit benchmark
   xxd                  # test helpers that patch binary files
+  clang libclang-rt-14-dev  # libFuzzer targets (scripts/run-fuzz.sh, CI hardening step)
 )
 
 missing=()
