@@ -21,7 +21,8 @@ CandidateContext makeCandidateContext(const RunSignals& sig, const BaseDesign& b
 	for (Eigen::Index j = 0; j < base.X.cols() && j < base_coef.size(); ++j)
 		if (base.is_static_temp[static_cast<std::size_t>(j)])
 			for (Eigen::Index k = 0; k < n; ++k) ctx.base_static_dph[static_cast<std::size_t>(k)] += base.X(k, j) * base_coef(j);
-	ctx.base_static_order = std::max(1, base.max_static_order);
+	// a base without any static temperature term is tested for the linear term first (powers 1, 2)
+	ctx.base_static_order = base.max_static_order;
 	ctx.static_temp_C = base.static_temp_C.empty() ? sig.temp_mean_C : base.static_temp_C;
 	return ctx;
 }
