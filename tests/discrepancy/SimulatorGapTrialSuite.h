@@ -141,11 +141,7 @@ inline SimulatorConfig baseConfig(const std::string& hidden, double k)
 	d.errors.magnetic_dph_per_uT = 1e-4;
 	for (auto& x : d.errors.temp_poly_dph) x *= 0.5;
 	d.thermal.electronics_power_W = 2.0;
-	d.thermal.volumetric_heat_capacity_J_m3K *= 1.1;
-	d.thermal.hub_capacity_J_K *= 1.1;
-	d.thermal.housing_capacity_J_K *= 1.1;
-	d.thermal.mount_capacity_J_K *= 1.1;
-	d.thermal.electronics_capacity_J_K *= 1.1;
+	d.thermal.scaleHeatCapacities(1.1);
 	for (auto& t : d.thermistors) t.offset_C = 0;
 	c.free = defaultFreeParameters(c.effects);
 	return c;

@@ -34,14 +34,16 @@ struct Tally
 	std::vector<std::string> misses;
 };
 
-inline Tally runSeeds(TrialSpec spec, int seeds, std::uint64_t first_seed)
+/** Runs `seeds` trials (FOG_TRIAL_SEEDS subset aware), seed = first_seed + i, through
+ * `trial(seed)` and tallies them; misses are the trials not named or without the gap target. */
+template <class Trial>
+Tally tallySeeds(int seeds, std::uint64_t first_seed, Trial trial)
 {
 	seeds = trialSeeds(seeds);
 	Tally t;
 	for (int s = 0; s < seeds; ++s)
 	{
-		spec.seed = first_seed + static_cast<std::uint64_t>(s);
-		const auto o = runTrial(spec);
+		const auto o = trial(first_seed + static_cast<std::uint64_t>(s));
 		++t.trials;
 		t.named += o.named_ok;
 		t.clean += o.clean;
@@ -50,6 +52,14 @@ inline Tally runSeeds(TrialSpec spec, int seeds, std::uint64_t first_seed)
 		if (!o.named_ok || !o.gap_ok) t.misses.push_back(o.summary);
 	}
 	return t;
+}
+
+inline Tally runSeeds(TrialSpec spec, int seeds, std::uint64_t first_seed)
+{
+	return tallySeeds(seeds, first_seed, [&](std::uint64_t seed) {
+		spec.seed = seed;
+		return runTrial(spec);
+	});
 }
 
 inline void print(const std::string& what, const Tally& t)
@@ -101,20 +111,10 @@ inline Tally nullTrials(int seeds, std::uint64_t first_seed)
  * empty spec.hidden these are null trials (false naming counted). */
 inline Tally runSimSeeds(SimTrialSpec spec, int seeds, std::uint64_t first_seed)
 {
-	seeds = trialSeeds(seeds);
-	Tally t;
-	for (int s = 0; s < seeds; ++s)
-	{
-		spec.seed = first_seed + static_cast<std::uint64_t>(s);
-		const auto o = runSimEffectTrial(spec);
-		++t.trials;
-		t.named += o.named_ok;
-		t.clean += o.clean;
-		t.gap_ok += o.gap_ok;
-		t.false_naming += o.false_naming;
-		if (!o.named_ok || !o.gap_ok) t.misses.push_back(o.summary);
-	}
-	return t;
+	return tallySeeds(seeds, first_seed, [&](std::uint64_t seed) {
+		spec.seed = seed;
+		return runSimEffectTrial(spec);
+	});
 }
 
 /** Confounder scenarios (ratio 3 unless stated), each over `seeds` seeds. */

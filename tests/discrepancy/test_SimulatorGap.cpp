@@ -52,11 +52,7 @@ SimulatorConfig configWithout(const std::string& hidden)
 	d.errors.sf_ppm_per_C = 10;
 	d.errors.warmup_dph = 0.05;
 	d.thermal.electronics_power_W = 2.0;
-	d.thermal.volumetric_heat_capacity_J_m3K *= 1.1;
-	d.thermal.hub_capacity_J_K *= 1.1;
-	d.thermal.housing_capacity_J_K *= 1.1;
-	d.thermal.mount_capacity_J_K *= 1.1;
-	d.thermal.electronics_capacity_J_K *= 1.1;
+	d.thermal.scaleHeatCapacities(1.1);
 	for (auto& t : d.thermistors) t.offset_C = 0;
 	c.free = defaultFreeParameters(c.effects);
 	return c;

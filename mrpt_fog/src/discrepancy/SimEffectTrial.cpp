@@ -96,48 +96,35 @@ void applyScale(DeviceSetup& d, const std::string& id, double scale, SimTrialDev
 {
 	auto& e = d.device.errors;
 	info.scale = scale;
+	// effects with one scalar coefficient in errors: (id, member, YAML name)
+	struct ScalarEffect
+	{
+		const char* id;
+		double sim::ErrorCoefficients::*coef;
+		const char* name;
+	};
+	static const ScalarEffect kScalar[] = {
+		{"radial_gradient", &sim::ErrorCoefficients::radial_gradient_dph_per_C, "errors.radial_gradient_dph_per_C"},
+		{"gradient_rate", &sim::ErrorCoefficients::gradient_rate_dph_per_C_per_min,
+		 "errors.gradient_rate_dph_per_C_per_min"},
+		{"hysteresis", &sim::ErrorCoefficients::hysteresis_dph, "errors.hysteresis_dph"},
+		{"warmup", &sim::ErrorCoefficients::warmup_dph, "errors.warmup_dph"},
+		{"scale_factor_temp", &sim::ErrorCoefficients::sf_ppm_per_C, "errors.sf_ppm_per_C"},
+		{"magnetic", &sim::ErrorCoefficients::magnetic_dph_per_uT, "errors.magnetic_dph_per_uT"}};
+	for (const auto& se : kScalar)
+		if (id == se.id)
+		{
+			e.*se.coef *= scale;
+			info.parameter = se.name;
+			info.parameter_value = e.*se.coef;
+			return;
+		}
 	if (id == "shupe_rate")
 	{
 		d.device.winding.dn_dT_per_K *= scale;
 		d.device.winding.expansion_per_K *= scale;
 		info.parameter = "coil.dn_dT_per_K (and expansion_per_K alike)";
 		info.parameter_value = d.device.winding.dn_dT_per_K;
-	}
-	else if (id == "radial_gradient")
-	{
-		e.radial_gradient_dph_per_C *= scale;
-		info.parameter = "errors.radial_gradient_dph_per_C";
-		info.parameter_value = e.radial_gradient_dph_per_C;
-	}
-	else if (id == "gradient_rate")
-	{
-		e.gradient_rate_dph_per_C_per_min *= scale;
-		info.parameter = "errors.gradient_rate_dph_per_C_per_min";
-		info.parameter_value = e.gradient_rate_dph_per_C_per_min;
-	}
-	else if (id == "hysteresis")
-	{
-		e.hysteresis_dph *= scale;
-		info.parameter = "errors.hysteresis_dph";
-		info.parameter_value = e.hysteresis_dph;
-	}
-	else if (id == "warmup")
-	{
-		e.warmup_dph *= scale;
-		info.parameter = "errors.warmup_dph";
-		info.parameter_value = e.warmup_dph;
-	}
-	else if (id == "scale_factor_temp")
-	{
-		e.sf_ppm_per_C *= scale;
-		info.parameter = "errors.sf_ppm_per_C";
-		info.parameter_value = e.sf_ppm_per_C;
-	}
-	else if (id == "magnetic")
-	{
-		e.magnetic_dph_per_uT *= scale;
-		info.parameter = "errors.magnetic_dph_per_uT";
-		info.parameter_value = e.magnetic_dph_per_uT;
 	}
 	else if (id == "temp_poly_order")
 	{

@@ -93,11 +93,7 @@ SimTrace simulateOnRun(const SimModel& model, const ChamberDrive& drive, const F
 	dev.thermistor_noise_C = 0;
 	dev.thermistor_quantum_C = 0;
 	const double s = model.thermal_time_scale;
-	dev.thermal.volumetric_heat_capacity_J_m3K *= s;
-	dev.thermal.hub_capacity_J_K *= s;
-	dev.thermal.housing_capacity_J_K *= s;
-	dev.thermal.mount_capacity_J_K *= s;
-	dev.thermal.electronics_capacity_J_K *= s;
+	dev.thermal.scaleHeatCapacities(s);
 
 	std::vector<int> devIndex;
 	for (const auto& th : run.thermistors)

@@ -74,6 +74,17 @@ struct CoilThermalParams
 	double electronics_to_coil_W_K = 0.03;  //!< air path to the outer layer near 180 deg (estimate)
 	double electronics_power_W = 2.5;  //!< FOG electronics + source, typical 2-5 W (estimate)
 
+	/** Multiplies every heat capacity (coil, hub, housing, mount, electronics) by `factor`:
+	 * every thermal time constant scales by it, the steady state does not change. */
+	void scaleHeatCapacities(double factor)
+	{
+		volumetric_heat_capacity_J_m3K *= factor;
+		hub_capacity_J_K *= factor;
+		housing_capacity_J_K *= factor;
+		mount_capacity_J_K *= factor;
+		electronics_capacity_J_K *= factor;
+	}
+
 	/** Throws std::invalid_argument naming the first bad field (non-positive, too few nodes). */
 	void validate() const;
 };
