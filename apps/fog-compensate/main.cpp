@@ -9,6 +9,7 @@
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/Compensator.h>
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -43,6 +44,9 @@ OUTPUT (by extension of -o)
             CObservationRawDAQ '<label>_THERMISTORS' (thermistors [degC], NaN = dropout).
   .csv      time_s, raw_rate_<a>_dph, bias_<a>_dph, compensated_rate_<a>_dph, flags,
             temp_<name>_C...  flags: 1 fallback, 2 no model, 4 clamped, 8 rate warm-up.
+  Power-off rows (power 0, empty rate cell): the thermistors keep feeding the rate estimator,
+  no compensated rate is written (empty cells; no IMU rate in the rawlog), and the number of
+  turn-on events (power back to 1) is printed.
 
 EXAMPLES
   fog-compensate -i datasets/chamber_B.rawlog --cal cal.yaml -o chamber_B_comp.rawlog
@@ -58,9 +62,10 @@ std::string csvText(const FogSeries& s, const CompensatedSeries& c, char axis, c
 	o << "\n";
 	for (std::size_t k = 0; k < c.time_s.size(); k++)
 	{
-		o << io::formatNumber(c.time_s[k]) << ',' << io::formatNumber(c.raw_dph[k]) << ','
-		  << io::formatNumber(c.bias_dph[k]) << ',' << io::formatNumber(c.compensated_dph[k]) << ','
-		  << static_cast<int>(c.flags[k]);
+		// gyro off (power 0, no rate sample): raw and compensated cells empty, the bias kept
+		auto cell = [](double v) { return std::isnan(v) ? std::string() : io::formatNumber(v); };
+		o << io::formatNumber(c.time_s[k]) << ',' << cell(c.raw_dph[k]) << ',' << io::formatNumber(c.bias_dph[k])
+		  << ',' << cell(c.compensated_dph[k]) << ',' << static_cast<int>(c.flags[k]);
 		for (const auto& col : s.temp_C) o << ',' << (std::isnan(col[k]) ? std::string() : io::formatNumber(col[k]));
 		o << "\n";
 	}
@@ -118,6 +123,13 @@ int main(int argc, char** argv)
 		std::printf("  clamped to the calibrated range: %zu samples (%zu signal values); rate warm-up: %zu samples; "
 					"model switches: %zu\n",
 					k.clamped_samples, k.clamped_signals, k.warmup_samples, k.model_switches);
+		std::size_t gyro_off_rows = 0;
+		for (std::size_t i = 0; i < in.size(); i++) gyro_off_rows += in.gyroOn(i) ? 0 : 1;
+		const std::size_t turn_ons = in.turnOnSamples().size();
+		if (!in.power.empty())
+			std::printf("  gyro off: %zu rows (bias tracked on the thermistors, no compensated sample where the rate "
+						"is empty); turn-on events: %zu\n",
+						gyro_off_rows, turn_ons);
 		std::fputs(app::screeningText(screening, screen).c_str(), stdout);
 		if (!arg_json.getValue().empty())
 		{
@@ -132,6 +144,8 @@ int main(int argc, char** argv)
 			j["clamped_signals"] = static_cast<unsigned long>(k.clamped_signals);
 			j["warmup_samples"] = static_cast<unsigned long>(k.warmup_samples);
 			j["model_switches"] = static_cast<unsigned long>(k.model_switches);
+			j["gyro_off_rows"] = static_cast<unsigned long>(gyro_off_rows);
+			j["turn_on_events"] = static_cast<unsigned long>(turn_ons);
 			j["screening"] = app::screeningJson(screening, screen);
 			writeTextFileAtomically(arg_json.getValue(), j.dump());
 		}

@@ -168,10 +168,16 @@ int main(int argc, char** argv)
 		for (int a = 0; a < 3; a++)
 			if (s.has_axis[a]) axes += axes.empty() ? "" : ",", axes += axisLetter(static_cast<GyroAxis>(a));
 		const double t0 = s.time_s.front(), t1 = s.time_s.back();
+		std::size_t gyro_off_rows = 0;
+		for (std::size_t k = 0; k < s.size(); k++) gyro_off_rows += s.gyroOn(k) ? 0 : 1;
+		const std::size_t turn_ons = s.turnOnSamples().size();
 		std::cout << "fog-convert: " << in << " -> " << out << (arg_stock.getValue() ? " (stock IMU+DAQ)" : "")
 				  << "\n  sensor '" << s.sensor_label << "': " << s.size() << " samples, axes " << axes << ", "
 				  << s.thermistorCount() << " thermistors, " << dropouts << " dropouts, time "
 				  << io::formatNumber(t0) << " .. " << io::formatNumber(t1) << " s\n";
+		if (!s.power.empty())
+			std::cout << "  gyro off on " << gyro_off_rows << " rows (thermistors kept, no gyro sample), " << turn_ons
+					  << " turn-on events\n";
 		if (isRawlog(out)) std::cout << "  wrote " << objects_written << " objects (" << others_written << " other observations)\n";
 
 		if (!arg_json.getValue().empty())
@@ -214,6 +220,8 @@ int main(int argc, char** argv)
 				th.push_back(t);
 			}
 			j["dropouts"] = static_cast<unsigned long>(dropouts);
+			j["gyro_off_rows"] = static_cast<unsigned long>(gyro_off_rows);
+			j["turn_on_events"] = static_cast<unsigned long>(turn_ons);
 			JsonValue& opt = j["optional_columns"] = JsonValue::array();
 			if (!s.table_rate_dph.empty()) opt.push_back("table_rate_dph");
 			if (!s.field_uT.empty()) opt.push_back("field_uT");

@@ -49,7 +49,8 @@ VariantResult deadReckonVariant(const std::vector<double>& t_s, const std::vecto
 		if (t_s[k] < t0 || (t_s[k] == t0 && options.sampling == nav::RateSampling::IntervalAverage)) continue;
 		if (t_s[k] > t_end) break;
 		if (!std::isfinite(rate_dph[k]))
-			throw std::runtime_error("gyro rate is not finite at sample " + std::to_string(k));
+			throw std::runtime_error("gyro rate is not finite at sample " + std::to_string(k) + " (t = " +
+									 std::to_string(t_s[k]) + " s; a heading cannot be integrated while the gyro is off)");
 		const double w = rate_dph[k] * units::kDegPerHourToRadPerSec;
 		Eigen::Vector3d vel = Eigen::Vector3d::Zero();
 		if (options.transport_rate)

@@ -69,7 +69,8 @@ inline void expectSameSeries(const mrpt_fog::FogSeries& a, const mrpt_fog::FogSe
 	{
 		EXPECT_EQ(a.time_s[k], b.time_s[k]) << "sample " << k;
 		for (int ax = 0; ax < 3; ax++)
-			if (a.has_axis[ax]) EXPECT_EQ(a.rate_dph[ax][k], b.rate_dph[ax][k]) << "axis " << ax << " sample " << k;
+			if (a.has_axis[ax])  // NaN == NaN here: a power-off row has no rate sample
+				EXPECT_TRUE(sameValue(a.rate_dph[ax][k], b.rate_dph[ax][k])) << "axis " << ax << " sample " << k;
 		for (std::size_t i = 0; i < a.temp_C.size(); i++)
 			EXPECT_TRUE(sameValue(a.temp_C[i][k], b.temp_C[i][k]))
 				<< "thermistor " << i << " sample " << k << ": " << a.temp_C[i][k] << " vs " << b.temp_C[i][k];

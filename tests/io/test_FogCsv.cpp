@@ -146,6 +146,68 @@ TEST(FogCsv, EmptyRateCellIsAnErrorNotADropout)
 	EXPECT_NE(msg.find("bad_empty_rate.csv:2: column 2 (rate_z_dph): empty cell"), std::string::npos) << msg;
 }
 
+TEST(FogCsv, PowerOffRowsKeepTheThermistorsAndHaveNoGyroSample)
+{
+	// power 0 with an empty rate cell: thermistors kept, rate NaN (no sample), turn-on when
+	// power returns; the power column may come before or after the rate column.
+	iotest::ScratchDir dir;
+	for (const std::string header : {"time_s,rate_z_dph,temp_Ti1_C,power", "time_s,power,temp_Ti1_C,rate_z_dph"})
+	{
+		const bool power_first = header.find("power") < header.find("rate");
+		auto row = [&](const char* t, const char* rate, const char* temp, const char* p) {
+			return power_first ? std::string(t) + "," + p + "," + temp + "," + rate + "\n"
+							   : std::string(t) + "," + rate + "," + temp + "," + p + "\n";
+		};
+		spit(dir.path("p.csv"), header + "\n" + row("0", "1.5", "20", "1") + row("1", "", "20.5", "0") +
+									row("2", "", "21", "0") + row("3", "1.25", "21.5", "1") + row("4", "1.0", "22", "1"));
+		const FogSeries s = readFogCsv(dir.path("p.csv"));
+		ASSERT_EQ(s.size(), 5u);
+		EXPECT_EQ(s.rate_dph[2][0], 1.5);
+		EXPECT_TRUE(std::isnan(s.rate_dph[2][1]));
+		EXPECT_TRUE(std::isnan(s.rate_dph[2][2]));
+		EXPECT_EQ(s.rate_dph[2][3], 1.25);
+		EXPECT_EQ(s.temp_C[0][1], 20.5);  // thermistor kept on the power-off row
+		EXPECT_EQ(s.temp_C[0][2], 21.0);
+		EXPECT_FALSE(s.gyroOn(1));
+		EXPECT_TRUE(s.gyroOn(3));
+		EXPECT_EQ(s.turnOnSamples(), std::vector<std::size_t>({3}));
+		EXPECT_NO_THROW(s.validate());
+		// written back: the power-off rate is an empty cell again, everything else exact
+		writeFogCsv(dir.path("back.csv"), s);
+		const FogSeries b = readFogCsv(dir.path("back.csv"));
+		EXPECT_TRUE(std::isnan(b.rate_dph[2][1]));
+		EXPECT_EQ(b.temp_C[0], s.temp_C[0]);
+		EXPECT_EQ(b.power, s.power);
+	}
+}
+
+TEST(FogCsv, EmptyRateCellWithThePowerOnIsAnError)
+{
+	iotest::ScratchDir dir;
+	spit(dir.path("t.csv"), "time_s,rate_z_dph,temp_Ti1_C,power\n0,1,20,1\n1,,20,1\n");
+	std::string msg = ioErrorOf([&] { readFogCsv(dir.path("t.csv")); });
+	EXPECT_NE(msg.find("t.csv:3: column 2 (rate_z_dph): empty cell with the gyro powered"), std::string::npos) << msg;
+	// an empty power cell is an error of its own (not "off")
+	spit(dir.path("t.csv"), "time_s,rate_z_dph,power\n0,,\n");
+	msg = ioErrorOf([&] { readFogCsv(dir.path("t.csv")); });
+	EXPECT_NE(msg.find("t.csv:2: column"), std::string::npos) << msg;
+	EXPECT_NE(msg.find("empty cell"), std::string::npos) << msg;
+	// no power column: an empty rate is an error that says where a rate may be empty
+	spit(dir.path("t.csv"), "time_s,rate_z_dph\n0,1\n1,\n");
+	msg = ioErrorOf([&] { readFogCsv(dir.path("t.csv")); });
+	EXPECT_NE(msg.find("t.csv:3: column 2 (rate_z_dph): empty cell"), std::string::npos) << msg;
+	EXPECT_NE(msg.find("power 0"), std::string::npos) << msg;
+	// a NaN rate with the power on cannot be written either
+	FogSeries s;
+	s.thermistors = {{"Ti1", CoilSide::Inner, 0}};
+	s.time_s = {0, 1};
+	s.rate_dph[2] = {1.0, std::nan("")};
+	s.temp_C = {{20, 21}};
+	s.power = {1, 1};
+	msg = ioErrorOf([&] { writeFogCsv(dir.path("w.csv"), s); });
+	EXPECT_NE(msg.find("non-finite rate_z_dph at sample 1"), std::string::npos) << msg;
+}
+
 TEST(FogCsv, EmptyFile)
 {
 	const std::string msg = ioErrorOf([] { readFogCsv(dataFile("empty.csv")); });

@@ -114,6 +114,39 @@ TEST(FogRawlog, CsvToRawlogToCsvKeepsEveryValue)
 	EXPECT_NE(slurp(dir.path("via_rawlog.csv")).find("0.3,1e-05,25.04,25.33,25.01,,15.041,,0\n"), std::string::npos);
 }
 
+TEST(FogRawlog, PowerOffRowsSurviveCsvRawlogCsvAndStockHasNoRateThere)
+{
+	iotest::ScratchDir dir;
+	const FogSeries csv = readFogCsv(dataFile("power_cycle.csv"));
+	std::size_t off = 0;
+	for (std::size_t k = 0; k < csv.size(); k++) off += csv.gyroOn(k) ? 0 : 1;
+	ASSERT_EQ(off, 225u);  // make_power_cycle.py: 3000 <= t < 3900 s at 4 s
+	ASSERT_EQ(csv.turnOnSamples(), std::vector<std::size_t>({975}));
+	writeFogRawlog(dir.path("p.rawlog"), csv);
+	const FogRawlogContents back = readFogRawlog(dir.path("p.rawlog"));
+	iotest::expectSameSeries(csv, back.fog);
+	writeFogCsv(dir.path("direct.csv"), csv);
+	writeFogCsv(dir.path("via_rawlog.csv"), back.fog);
+	EXPECT_EQ(slurp(dir.path("direct.csv")), slurp(dir.path("via_rawlog.csv")));
+	EXPECT_NE(slurp(dir.path("via_rawlog.csv")).find("\n3000,,11.95,7.47,0\n"), std::string::npos);
+	// Stock form: the IMU observation of a power-off row carries no rate (absent, not NaN).
+	const auto stock = stockObservationsForRawlog(csv);
+	std::size_t imu_without_rate = 0, imu_with_rate = 0;
+	for (const auto& o : stock)
+		if (auto imu = std::dynamic_pointer_cast<mrpt::obs::CObservationIMU>(o))
+		{
+			if (imu->has(mrpt::obs::IMU_WZ))
+			{
+				EXPECT_TRUE(std::isfinite(imu->get(mrpt::obs::IMU_WZ)));
+				imu_with_rate++;
+			}
+			else
+				imu_without_rate++;
+		}
+	EXPECT_EQ(imu_without_rate, 225u);
+	EXPECT_EQ(imu_with_rate, csv.size() - 225u);
+}
+
 TEST(FogRawlog, TimesAreExactToTheTickFarFromTheEpoch)
 {
 	iotest::ScratchDir dir;

@@ -135,8 +135,29 @@ TEST(CObservationFOG, DescriptionMentionsDropout)
 TEST(CObservationFOG, InvalidNotSerialized)
 {
 	auto o = makeSample();
+	o->powerOn = true;  // a NaN rate with the gyro powered is invalid
 	o->rate_dph[2] = std::nan("");
 	mrpt::io::CMemoryStream buf;
 	auto arch = mrpt::serialization::archiveFrom(buf);
 	EXPECT_ANY_THROW(arch << *o);
+	o->hasPower = false;  // ... and without a power state
+	EXPECT_ANY_THROW(arch << *o);
+}
+
+TEST(CObservationFOG, GyroOffHasNoRateSampleButKeepsTheThermistors)
+{
+	auto o = makeSample();  // power off
+	o->rate_dph[2] = std::nan("");
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << *o;
+	buf.Seek(0);
+	CObservationFOG back;
+	arch >> back;
+	EXPECT_TRUE(std::isnan(back.rate_dph[2]));
+	EXPECT_FALSE(back.powerOn);
+	ASSERT_EQ(back.tempValid, o->tempValid);
+	for (std::size_t i = 0; i < o->temp_C.size(); i++)
+		if (o->tempValid[i]) EXPECT_EQ(back.temp_C[i], o->temp_C[i]);
+	EXPECT_FALSE(o->toIMU()->has(mrpt::obs::IMU_WZ));  // stock form: no rate, not a NaN rate
 }

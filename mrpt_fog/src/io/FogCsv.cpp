@@ -261,6 +261,7 @@ class CsvParser
 		double table = kNaN, field = kNaN, power = kNaN;
 		std::array<double, 3> rate{kNaN, kNaN, kNaN};
 		double t = kNaN;
+		int empty_rate_col = -1;  // first rate column with an empty cell (gyro off), -1 when none
 		std::vector<double> temps(s_.thermistors.size(), kNaN);
 		for (std::size_t c = 0; c < cells.size(); c++)
 		{
@@ -271,6 +272,11 @@ class CsvParser
 				case Column::Kind::Time:
 				case Column::Kind::Rate:
 				{
+					if (cell.empty() && col.kind == Column::Kind::Rate)
+					{
+						if (empty_rate_col < 0) empty_rate_col = static_cast<int>(c);  // power-off rows only: checked below
+						break;
+					}
 					if (cell.empty()) failCell(line, c, "empty cell (only temperatures may be missing)");
 					const double v = number(cell, line, c);
 					if (!std::isfinite(v)) failCell(line, c, "value '" + cell + "' is not finite");
@@ -301,6 +307,11 @@ class CsvParser
 				}
 			}
 		}
+		if (empty_rate_col >= 0 && power != 0.0)
+			failCell(line, static_cast<std::size_t>(empty_rate_col),
+					 has_power_ ? "empty cell with the gyro powered (a rate may be empty only where power is 0)"
+								: "empty cell (only temperatures may be missing; a rate may be empty only on a "
+								  "power-off row, power 0)");
 		if (!s_.time_s.empty() && !(t > s_.time_s.back()))
 		{
 			const std::string prev = io::formatNumber(s_.time_s.back());

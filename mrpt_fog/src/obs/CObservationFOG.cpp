@@ -136,7 +136,7 @@ void CObservationFOG::validate() const
 		throw std::invalid_argument("CObservationFOG: thermistors, temp_C and tempValid differ in size");
 	if (thermistors.size() > 65535) throw std::invalid_argument("CObservationFOG: too many thermistors");
 	for (int a = 0; a < 3; a++)
-		if (hasAxis[a] && !std::isfinite(rate_dph[a]))
+		if (hasAxis[a] && !std::isfinite(rate_dph[a]) && !(std::isnan(rate_dph[a]) && hasPower && !powerOn))
 			throw std::invalid_argument(std::string("CObservationFOG: non-finite rate on axis ") +
 										axisLetter(static_cast<GyroAxis>(a)));
 }
@@ -149,7 +149,8 @@ mrpt::obs::CObservationIMU::Ptr CObservationFOG::toIMU() const
 	imu->sensorPose = sensorPose;
 	const mrpt::obs::TIMUDataIndex idx[3] = {mrpt::obs::IMU_WX, mrpt::obs::IMU_WY, mrpt::obs::IMU_WZ};
 	for (int a = 0; a < 3; a++)
-		if (hasAxis[a]) imu->set(idx[a], rate_dph[a] * units::kDegPerHourToRadPerSec);
+		if (hasAxis[a] && !std::isnan(rate_dph[a]))  // NaN: gyro off, no rate sample (left absent)
+			imu->set(idx[a], rate_dph[a] * units::kDegPerHourToRadPerSec);
 	const double t = meanTemperature_C();
 	if (std::isfinite(t)) imu->set(mrpt::obs::IMU_TEMPERATURE, t);
 	return imu;

@@ -75,6 +75,14 @@ void FogSeries::setMetadata(const std::string& key, const std::string& value)
 	metadata.emplace_back(key, value);
 }
 
+std::vector<std::size_t> FogSeries::turnOnSamples() const
+{
+	std::vector<std::size_t> on;
+	for (std::size_t k = 1; k < power.size(); k++)
+		if (power[k] != 0.0 && power[k - 1] == 0.0) on.push_back(k);
+	return on;
+}
+
 void FogSeries::resize(std::size_t n)
 {
 	time_s.resize(n, 0.0);
@@ -113,8 +121,9 @@ void FogSeries::validate() const
 		if (!has_axis[a] && !rate_dph[a].empty()) fail("FOG series: column " + col + " filled but axis absent");
 		if (has_axis[a])
 			for (std::size_t k = 0; k < n; k++)
-				if (!std::isfinite(rate_dph[a][k]))
-					fail("FOG series: non-finite " + col + " at sample " + std::to_string(k));
+				if (!std::isfinite(rate_dph[a][k]) && !(std::isnan(rate_dph[a][k]) && power.size() == n && power[k] == 0.0))
+					fail("FOG series: non-finite " + col + " at sample " + std::to_string(k) +
+						 (std::isnan(rate_dph[a][k]) ? " (a missing rate is allowed only where power is 0)" : ""));
 	}
 	if (temp_C.size() != thermistors.size())
 		fail("FOG series: " + std::to_string(thermistors.size()) + " thermistors but " +

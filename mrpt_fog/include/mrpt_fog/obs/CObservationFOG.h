@@ -40,7 +40,8 @@ class CObservationFOG : public mrpt::obs::CObservation
 
 	/** Which sensitive axes (x, y, z of sensorPose) this gyro has. */
 	std::array<bool, 3> hasAxis{{false, false, true}};
-	/** Gyro output per axis [deg/h] (meaningful only where hasAxis). */
+	/** Gyro output per axis [deg/h] (meaningful only where hasAxis); NaN = no gyro sample,
+	 * allowed only with the power off (hasPower && !powerOn). */
 	std::array<double, 3> rate_dph{{0, 0, 0}};
 
 	/** Metadata of each thermistor (same order as temp_C). */
@@ -71,7 +72,8 @@ class CObservationFOG : public mrpt::obs::CObservation
 	/** Mean of the valid thermistor readings [degC], NaN when none is valid. */
 	double meanTemperature_C() const;
 
-	/** Checks internal consistency (sizes, at least one axis, finite rates); throws
+	/** Checks internal consistency (sizes, at least one axis, finite rates: NaN only with the
+	 * power off); throws
 	 * std::invalid_argument with the reason. */
 	void validate() const;
 

@@ -6,7 +6,8 @@
  * engineers use (time in s, rate in deg/h, temperature in degC). This is the form the model,
  * metrics and simulator work on; CObservationFOG is the per-sample MRPT form of the same data
  * (see obs/FogSeriesConversion.h). A NaN temperature is a missing reading (thermistor dropout),
- * never a real 0 degC.
+ * never a real 0 degC. A power-off row (power 0) keeps its thermistor readings but may have no
+ * gyro sample: its rate is NaN (only there); the row where power returns is a turn-on event.
  */
 
 #include <array>
@@ -64,7 +65,8 @@ struct FogSeries
 	std::array<bool, 3> has_axis{{false, false, true}};
 
 	std::vector<double> time_s;  //!< strictly increasing [s]
-	/** Gyro output per axis [deg/h]; rate_dph[a] is empty when axis a is absent. */
+	/** Gyro output per axis [deg/h]; rate_dph[a] is empty when axis a is absent. NaN only on
+	 * a power-off row (power 0): no gyro sample there. */
 	std::array<std::vector<double>, 3> rate_dph;
 	/** temp_C[i][k]: thermistor i at sample k [degC]; NaN = dropout. */
 	std::vector<std::vector<double>> temp_C;
@@ -72,7 +74,7 @@ struct FogSeries
 	// Optional lab columns: empty when absent.
 	std::vector<double> table_rate_dph;  //!< applied table rate about the sensitive axis [deg/h]
 	std::vector<double> field_uT;  //!< applied axial magnetic field [uT]
-	std::vector<double> power;  //!< 1 = gyro powered, 0 = off
+	std::vector<double> power;  //!< 1 = gyro powered, 0 = off (rates may be NaN there)
 
 	/** Free `key: value` metadata (CSV `# key: value` lines); unknown keys are kept. */
 	std::vector<std::pair<std::string, std::string>> metadata;
@@ -89,6 +91,12 @@ struct FogSeries
 	/** Rate column of the primary axis [deg/h]. */
 	const std::vector<double>& primaryRate_dph() const;
 
+	/** True when the gyro is powered at sample k (no power column: always). */
+	bool gyroOn(std::size_t k) const { return power.empty() || power[k] != 0.0; }
+	/** Turn-on events: indices k > 0 where power is 1 after a 0 at k - 1 (a run that starts
+	 * powered has no event at 0: when it was switched on is unknown). */
+	std::vector<std::size_t> turnOnSamples() const;
+
 	/** Metadata value for key, or `fallback` when absent. */
 	std::string metadataValue(const std::string& key, const std::string& fallback = {}) const;
 	/** Sets (replaces) a metadata value. */
@@ -101,7 +109,7 @@ struct FogSeries
 	void appendSampleFrom(const FogSeries& other, std::size_t k);
 
 	/** Checks the invariants: at least one axis, column sizes, strictly increasing finite
-	 * time, finite rates, unique valid thermistor names. Throws std::invalid_argument naming
+	 * time, finite rates (NaN allowed only where power is 0), unique valid thermistor names. Throws std::invalid_argument naming
 	 * the first violation (column and sample index). */
 	void validate() const;
 
