@@ -17,6 +17,7 @@ StrapdownOptions options()
 {
 	StrapdownOptions o;
 	o.latitude_rad = 40.0 * M_PI / 180.0;
+	o.sampling = RateSampling::Instantaneous;
 	return o;
 }
 }  // namespace

@@ -24,6 +24,25 @@ void StrapdownAttitude::initialize(double t_s, const Eigen::Quaterniond& q_nb)
 	prev_dtheta_.reset();
 	prev_rate_.reset();
 	initialized_ = true;
+	updated_since_init_ = false;
+}
+
+RateSampling rateSamplingFromString(const std::string& text)
+{
+	if (text == "instantaneous") return RateSampling::Instantaneous;
+	if (text == "average") return RateSampling::IntervalAverage;
+	throw std::invalid_argument("rate sampling '" + text + "' is not instantaneous|average");
+}
+
+const char* rateSamplingName(RateSampling s)
+{
+	switch (s)
+	{
+		case RateSampling::Instantaneous: return "instantaneous";
+		case RateSampling::IntervalAverage: return "average";
+		case RateSampling::Unspecified: break;
+	}
+	return "unspecified";
 }
 
 void StrapdownAttitude::checkTime(double t_s, const char* what) const
@@ -57,12 +76,19 @@ void StrapdownAttitude::updateIncrement(double t_s, const Eigen::Vector3d& dthet
 
 	q_nb_ = (q_nn * q_nb_ * q_bb).normalized();
 	t_s_ = t_s;
+	updated_since_init_ = true;
 }
 
 void StrapdownAttitude::updateRate(double t_s, const Eigen::Vector3d& omega_b_rad_s, const Eigen::Vector3d& vel_enu_mps)
 {
 	if (!omega_b_rad_s.allFinite())
 		throw std::invalid_argument(mrpt::format("StrapdownAttitude: non-finite rate at t=%.6f s", t_s));
+	if (options_.sampling == RateSampling::Unspecified)
+		throw std::invalid_argument(
+			"StrapdownAttitude::updateRate: StrapdownOptions::sampling is not set: IntervalAverage for digital "
+			"FOGs and fog-sim data (mean rate over the preceding interval), Instantaneous for sampled analog rates");
+	if (initialized_ && !updated_since_init_ && t_s == t_s_ && options_.sampling == RateSampling::IntervalAverage)
+		return;  // mean over the interval that ended at initialisation: nothing to integrate
 	if (options_.sampling == RateSampling::Instantaneous)
 	{
 		if (!prev_rate_ && initialized_ && t_s == t_s_)

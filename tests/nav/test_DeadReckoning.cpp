@@ -24,6 +24,7 @@ TEST(DeadReckoning, Circle2D_FromGyro)
 {
 	StrapdownOptions opt;
 	opt.remove_earth_rate = false;
+	opt.sampling = RateSampling::Instantaneous;
 	StrapdownAttitude att(opt, StrapdownAttitude::Mode::VerticalOnly);
 	const double dt = 0.1, duration = 3 * M_PI / kR;
 	const int n = static_cast<int>(duration / dt);

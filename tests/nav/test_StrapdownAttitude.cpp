@@ -61,6 +61,7 @@ double smoothMotionError(double dt, double duration)
 	SmoothMotion m;
 	StrapdownOptions opt;
 	opt.remove_earth_rate = false;
+	opt.sampling = RateSampling::Instantaneous;  // exact rates at the sample instants
 	StrapdownAttitude att(opt);
 	const double t0 = 1.0;
 	att.initialize(t0, m.q(t0));
@@ -161,6 +162,7 @@ TEST(StrapdownAttitude, StationaryEarthRateRemoved_ThreeAxis)
 	const Eigen::Vector3d omega_b = q0.conjugate() * earthRateEnu(lat);
 	StrapdownOptions opt;
 	opt.latitude_rad = lat;
+	opt.sampling = RateSampling::Instantaneous;
 	StrapdownAttitude att(opt);
 	att.initialize(0.0, q0);
 	for (int k = 0; k <= 36000; ++k) att.updateRate(k * 0.1, omega_b);
@@ -176,6 +178,7 @@ TEST(StrapdownAttitude, StationaryVerticalGyroEarthRate)
 		StrapdownOptions opt;
 		opt.latitude_rad = lat;
 		opt.remove_earth_rate = remove;
+		opt.sampling = RateSampling::Instantaneous;
 		StrapdownAttitude att(opt, StrapdownAttitude::Mode::VerticalOnly);
 		att.initialize(0.0, quatFromYawPitchRoll(0.5, 0, 0));
 		for (int k = 0; k <= 36000; ++k) att.updateRateZ(k * 0.1, omega_up);
@@ -202,6 +205,7 @@ TEST(StrapdownAttitude, TransportRateAlongParallel)
 		StrapdownOptions opt;
 		opt.latitude_rad = lat;
 		opt.use_transport_rate = transport;
+		opt.sampling = RateSampling::Instantaneous;
 		StrapdownAttitude att(opt, StrapdownAttitude::Mode::VerticalOnly);
 		att.initialize(0.0, Eigen::Quaterniond::Identity());
 		for (int k = 0; k <= 36000; ++k) att.updateRateZ(k * 0.1, omega_up, vel);
@@ -212,7 +216,9 @@ TEST(StrapdownAttitude, TransportRateAlongParallel)
 
 TEST(StrapdownAttitude, BadInputThrows)
 {
-	StrapdownAttitude att;
+	StrapdownOptions inst;
+	inst.sampling = RateSampling::Instantaneous;
+	StrapdownAttitude att(inst);
 	EXPECT_THROW(att.updateRateZ(1.0, 0.0), std::invalid_argument);  // before initialize
 	att.initialize(1.0, Eigen::Quaterniond::Identity());
 	EXPECT_THROW(att.updateRateZ(0.5, 0.0), std::invalid_argument);  // time goes back
@@ -220,4 +226,53 @@ TEST(StrapdownAttitude, BadInputThrows)
 	StrapdownOptions bad;
 	bad.latitude_rad = 2.0;
 	EXPECT_THROW(StrapdownAttitude{bad}, std::invalid_argument);
+}
+
+// No silent default for the rate sampling: updateRate() without a choice throws and says what
+// to choose; updateIncrement() does not need it.
+TEST(StrapdownAttitude, UnspecifiedSamplingThrows)
+{
+	StrapdownOptions opt;
+	opt.remove_earth_rate = false;
+	StrapdownAttitude att(opt);
+	att.initialize(0.0, Eigen::Quaterniond::Identity());
+	try
+	{
+		att.updateRateZ(0.1, 0.2);
+		FAIL() << "updateRate with RateSampling::Unspecified must throw";
+	}
+	catch (const std::invalid_argument& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("IntervalAverage"), std::string::npos) << e.what();
+	}
+	att.updateIncrement(0.1, Eigen::Vector3d(0, 0, 0.02));
+	EXPECT_NEAR(att.yaw(), 0.02, 1e-15);
+	EXPECT_EQ(rateSamplingFromString("average"), RateSampling::IntervalAverage);
+	EXPECT_EQ(rateSamplingFromString("instantaneous"), RateSampling::Instantaneous);
+	EXPECT_THROW(rateSamplingFromString("mean"), std::invalid_argument);
+	EXPECT_STREQ(rateSamplingName(RateSampling::IntervalAverage), "average");
+}
+
+// Interval-average stream whose first sample carries the initialisation time (as fog-sim's
+// t = 0 sample does): it is accepted and contributes nothing (it averages the interval before
+// the start), so the yaw is the exact sum of the later samples' increments. The first sample
+// is given a large rate so that integrating it over any interval would show. A second sample at
+// the same time is still an error.
+TEST(StrapdownAttitude, IntervalAverageFirstSampleAtInitialisationTime)
+{
+	StrapdownOptions opt;
+	opt.remove_earth_rate = false;
+	opt.sampling = RateSampling::IntervalAverage;
+	StrapdownAttitude att(opt, StrapdownAttitude::Mode::VerticalOnly);
+	att.initialize(5.0, Eigen::Quaterniond::Identity());
+	att.updateRateZ(5.0, 100.0);
+	EXPECT_EQ(att.yaw(), 0.0);
+	att.updateRateZ(5.1, 0.3);
+	att.updateRateZ(5.3, -0.1);
+	EXPECT_NEAR(att.yaw(), 0.3 * 0.1 - 0.1 * 0.2, 1e-15);
+	EXPECT_THROW(att.updateRateZ(5.3, 0.0), std::invalid_argument);
+	// After initialize() again the rule applies again.
+	att.initialize(6.0, Eigen::Quaterniond::Identity());
+	EXPECT_NO_THROW(att.updateRateZ(6.0, 1.0));
+	EXPECT_EQ(att.yaw(), 0.0);
 }

@@ -19,21 +19,41 @@
  *   attitude.
  *
  * Rates are rad/s, times s (any origin, e.g. UNIX time), angle increments rad.
- * Bad input (time not increasing, non-finite values, update before initialize) throws
- * std::invalid_argument naming the sample time. */
+ * Bad input (time not increasing, non-finite values, update before initialize, rate samples
+ * without a chosen RateSampling) throws std::invalid_argument naming the sample time.
+ *
+ * Earth rate: the attitude is referred to the local-level ENU frame, so the gyro's full output
+ * (including the Earth rate it senses) goes in. A bias compensation fitted on a static
+ * calibration has already removed the Earth rate at the calibration site: add it back
+ * (Omega sin(calibration latitude)) before updateRate(), or the Earth rate is removed twice
+ * (fog-drift and examples/fog_heading_odometry do this from the calibration file). */
 
 #include <Eigen/Geometry>
 
 #include <optional>
+#include <string>
 
 namespace mrpt_fog::nav
 {
-/** How a rate sample relates to the interval before it. */
+/** How a rate sample relates to the interval before it. There is no safe default: the wrong
+ * choice shifts the heading by half a sample of rotation (0.81 deg at the end of the bundled
+ * drive), so updateRate() throws until one is chosen.
+ * - IntervalAverage: digital FOGs (closed-loop, the output is the phase accumulated over the
+ *   sample period divided by it), `fog-sim`'s output and the bundled datasets, MRPT
+ *   CObservationIMU rates made by fog-compensate from such data.
+ * - Instantaneous: a sampled analog rate (or a rate evaluated at the sample instant, as in
+ *   closed-form tests). */
 enum class RateSampling
 {
+	Unspecified,  //!< not chosen: updateRate() throws (updateIncrement() does not need it)
 	Instantaneous,  //!< rate at the sample instant: increments by the trapezoid rule
 	IntervalAverage  //!< mean rate over (t_prev, t]: increment = rate * dt (exact)
 };
+
+/** "instantaneous" / "average" (as fog-drift's --rate-sampling) -> RateSampling; throws
+ * std::invalid_argument naming the text otherwise. */
+RateSampling rateSamplingFromString(const std::string& text);
+const char* rateSamplingName(RateSampling s);  //!< "instantaneous", "average", "unspecified"
 
 struct StrapdownOptions
 {
@@ -42,7 +62,7 @@ struct StrapdownOptions
 	bool remove_earth_rate = true;  //!< rotate the nav frame with the Earth (subtract Omega)
 	bool use_transport_rate = false;  //!< also rotate with the transport rate (needs velocity)
 	bool coning_correction = true;  //!< two-sample coning term dtheta_{k-1} x dtheta_k / 12
-	RateSampling sampling = RateSampling::Instantaneous;
+	RateSampling sampling = RateSampling::Unspecified;  //!< must be set before updateRate()
 };
 
 class StrapdownAttitude
@@ -65,9 +85,11 @@ class StrapdownAttitude
 	void updateIncrement(double t_s, const Eigen::Vector3d& dtheta_b_rad,
 						 const Eigen::Vector3d& vel_enu_mps = Eigen::Vector3d::Zero());
 
-	/** Rate-sample input [rad/s] (see RateSampling). With Instantaneous sampling, the first
-	 * sample after initialize() at the same time only seeds the trapezoid; a first sample at a
-	 * later time is held constant over the first interval. */
+	/** Rate-sample input [rad/s] (see RateSampling; throws while it is Unspecified). A first
+	 * sample after initialize() at the initialisation time is accepted with either sampling:
+	 * with Instantaneous it seeds the trapezoid; with IntervalAverage it is the mean over the
+	 * interval that ended at initialisation and contributes nothing. With Instantaneous, a first
+	 * sample at a later time is held constant over the first interval. */
 	void updateRate(double t_s, const Eigen::Vector3d& omega_b_rad_s,
 					const Eigen::Vector3d& vel_enu_mps = Eigen::Vector3d::Zero());
 
@@ -91,6 +113,7 @@ class StrapdownAttitude
 	Eigen::Quaterniond q_nb_ = Eigen::Quaterniond::Identity();
 	std::optional<Eigen::Vector3d> prev_dtheta_;  //!< for the coning term
 	std::optional<Eigen::Vector3d> prev_rate_;  //!< for the trapezoid rule
+	bool updated_since_init_ = false;  //!< a time step was taken after initialize()
 };
 
 }  // namespace mrpt_fog::nav

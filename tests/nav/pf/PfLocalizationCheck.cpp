@@ -55,6 +55,7 @@ int writeCase(const std::string& dir)
 
 	StrapdownOptions opt;
 	opt.latitude_rad = lat;
+	opt.sampling = RateSampling::Instantaneous;  // rates evaluated at the sample instants
 	StrapdownAttitude att(opt, StrapdownAttitude::Mode::VerticalOnly);
 	const double yaw0 = mrpt::DEG2RAD(30.0);
 	att.initialize(kT0, quatFromYawPitchRoll(yaw0, 0, 0));

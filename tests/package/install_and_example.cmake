@@ -1,0 +1,84 @@
+# -D BUILD_DIR=<project build dir> -D EXAMPLE_SRC=<examples/fog_heading_odometry> -D WORK=<scratch>
+# -D DRIVE=<synthetic drive rawlog> -D CAL=<its calibration> -D CMAKE_GENERATOR=<generator>
+# -D READER_SRC=<tests/package/reader_only> -D CHAMBER=<a rawlog with CObservationFOG>
+# 1. install to WORK/prefix, then move it to WORK/moved (a relocated package);
+# 2. the installed programs carry RUNPATH $ORIGIN/... and run with no LD_LIBRARY_PATH:
+#    bin/fog-demo --help, bin/fog-drift on the synthetic circle drive (compensated heading
+#    error must be ~0: the drive's thermal bias law is inside the model class);
+# 3. a program that reads a rawlog with MRPT's archive API only (tests/package/reader_only: no
+#    mrpt_fog symbol, no registerAllClasses call) reads every CObservationFOG of a chamber run;
+# 4. examples/fog_heading_odometry built with find_package(mrpt_fog) against the moved prefix,
+#    linked to its libraries, run on the same drive: its compensated heading must come back to
+#    the closed-form circle (< 1e-3 deg, < 0.01 m) and it must write the odometry rawlog.
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+set(ENV{LD_LIBRARY_PATH} "")
+
+function(step what)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE so ERROR_VARIABLE se)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${what} failed (${rc}):\n${so}\n${se}")
+  endif()
+  message(STATUS "${what}: ok")
+  set(out "${so}" PARENT_SCOPE)
+endfunction()
+
+step("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK}/prefix)
+file(RENAME ${WORK}/prefix ${WORK}/moved)
+set(prefix ${WORK}/moved)
+
+step("readelf fog-drift" readelf -d ${prefix}/bin/fog-drift)
+if(NOT out MATCHES "(RUNPATH|RPATH)[^\n]*\\$ORIGIN/")
+  message(FATAL_ERROR "installed fog-drift has no $ORIGIN RUNPATH:\n${out}")
+endif()
+step("fog-demo --help" ${prefix}/bin/fog-demo --help)
+if(NOT out MATCHES "fog-demo")
+  message(FATAL_ERROR "fog-demo --help printed no usage:\n${out}")
+endif()
+step("ldd fog-drift" ldd ${prefix}/bin/fog-drift)
+string(REGEX MATCH "libmrpt_fog\\.so[^\n]*" libline "${out}")
+string(FIND "${libline}" "${prefix}/" in_prefix)
+if(in_prefix EQUAL -1)
+  message(FATAL_ERROR "installed fog-drift resolves libmrpt_fog from '${libline}', not from ${prefix}")
+endif()
+step("installed fog-drift" ${prefix}/bin/fog-drift -i ${DRIVE} --cal ${CAL} --json ${WORK}/drift.json)
+file(READ ${WORK}/drift.json drift)
+string(JSON comp_deg GET "${drift}" heading_error_final_deg compensated)
+if(NOT comp_deg LESS 1e-3)
+  message(FATAL_ERROR "installed fog-drift: compensated final heading error ${comp_deg} deg (expected < 1e-3)")
+endif()
+
+step("configure example" ${CMAKE_COMMAND} -S ${EXAMPLE_SRC} -B ${WORK}/example -G ${CMAKE_GENERATOR}
+  -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
+step("build example" ${CMAKE_COMMAND} --build ${WORK}/example)
+step("ldd example" ldd ${WORK}/example/fog_heading_odometry)
+foreach(lib libmrpt_fog libmrpt_fog_nav)
+  string(REGEX MATCH "${lib}\\.so[^\n]*" libline "${out}")
+  string(FIND "${libline}" "${prefix}/" in_prefix)
+  if(in_prefix EQUAL -1)
+    message(FATAL_ERROR "example resolves ${lib} from '${libline}', not from ${prefix}")
+  endif()
+endforeach()
+step("run example" ${WORK}/example/fog_heading_odometry ${DRIVE} ${CAL} ${WORK}/odometry.rawlog)
+message(STATUS "${out}")
+if(NOT out MATCHES "heading error ([-+0-9.eE]+) deg, position error ([-+0-9.eE]+) m")
+  message(FATAL_ERROR "example printed no error line:\n${out}")
+endif()
+set(h "${CMAKE_MATCH_1}")
+set(p "${CMAKE_MATCH_2}")
+string(REGEX REPLACE "^-" "" h_abs "${h}")
+if(NOT h_abs LESS 1e-3 OR NOT p LESS 0.01)
+  message(FATAL_ERROR "example: heading error ${h} deg, position error ${p} m (expected < 1e-3 deg, < 0.01 m)")
+endif()
+if(NOT EXISTS ${WORK}/odometry.rawlog)
+  message(FATAL_ERROR "example wrote no odometry rawlog")
+endif()
+
+step("configure reader-only" ${CMAKE_COMMAND} -S ${READER_SRC} -B ${WORK}/reader -G ${CMAKE_GENERATOR}
+  -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
+step("build reader-only" ${CMAKE_COMMAND} --build ${WORK}/reader)
+step("run reader-only" ${WORK}/reader/fog_reader_only ${CHAMBER})
+message(STATUS "${out}")
+if(NOT out MATCHES "^([0-9]+) objects, ([0-9]+) of class" OR NOT CMAKE_MATCH_2 GREATER 1000)
+  message(FATAL_ERROR "reader-only program did not read the FOG objects:\n${out}")
+endif()
