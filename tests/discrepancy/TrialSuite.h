@@ -4,8 +4,8 @@
  * prints one table line "TRIALS <what> named <k>/<n> ..." so that the success table can be
  * regenerated with:  ./build-disc/tests/test_discrepancy --gtest_filter='*ProofTrials*' | grep TRIALS
  */
-#include <mrpt_fog/discrepancy/DiscrepancyTrials.h>
-#include <mrpt_fog/discrepancy/SimEffectTrial.h>
+#include "support/DiscrepancyTrials.h"
+#include "support/SimEffectTrial.h"
 
 #include <algorithm>
 #include <cstdio>

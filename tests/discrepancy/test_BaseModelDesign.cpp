@@ -1,7 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <gtest/gtest.h>
 #include <mrpt_fog/discrepancy/BaseModelDesign.h>
-#include <mrpt_fog/discrepancy/SyntheticChamberRun.h>
+#include "support/SyntheticChamberRun.h"
 
 #include <cmath>
 

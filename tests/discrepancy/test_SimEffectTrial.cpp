@@ -2,7 +2,7 @@
 /** The real-simulator trial harness: the hidden effect is scaled to the requested
  * effect-to-noise ratio, its truth is what the simulator adds, and bad input is refused. */
 #include <gtest/gtest.h>
-#include <mrpt_fog/discrepancy/SimEffectTrial.h>
+#include "support/SimEffectTrial.h"
 
 #include <cmath>
 

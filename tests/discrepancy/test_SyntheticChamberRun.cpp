@@ -1,6 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <gtest/gtest.h>
-#include <mrpt_fog/discrepancy/SyntheticChamberRun.h>
+#include "support/SyntheticChamberRun.h"
 
 #include <Eigen/Dense>
 #include <cmath>

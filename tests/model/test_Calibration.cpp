@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "SyntheticCoil.h"
+#include "support/BlockAveraging.h"
 
 using namespace mrpt_fog;
 
@@ -170,7 +171,7 @@ TEST(Calibration, MoreThermistorsNotWorseOnUnseenRunBeyondTwoStandardErrors)
 		for (std::size_t k = 0; k < e.size(); k++)
 			if (std::isfinite(sq[k] = e[k] * e[k])) ms += sq[k], n++;
 		ms /= n;
-		return std::make_pair(std::sqrt(ms), blockAveragedStandardError(sq) / (2 * std::sqrt(ms)));
+		return std::make_pair(std::sqrt(ms), fogtest::blockAveragedStandardError(sq) / (2 * std::sqrt(ms)));
 	};
 	const auto change = [](const std::vector<double>& eK, const std::vector<double>& eK1) {
 		std::vector<double> d(eK.size());
@@ -179,7 +180,7 @@ TEST(Calibration, MoreThermistorsNotWorseOnUnseenRunBeyondTwoStandardErrors)
 			if (std::isfinite(d[k] = eK[k] * eK[k] - eK1[k] * eK1[k])) sum += d[k], n++;
 		std::size_t len = 0;
 		bool plateau = false;
-		const double se = blockAveragedStandardError(d, &len, &plateau);
+		const double se = fogtest::blockAveragedStandardError(d, &len, &plateau);
 		return std::make_tuple(sum / n, se, len, plateau);
 	};
 	for (std::size_t i = 0; i < sets.size(); i++)

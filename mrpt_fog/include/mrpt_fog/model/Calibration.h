@@ -122,15 +122,6 @@ struct Calibration
 Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string& preset, const FitOptions& options = {},
 						   const std::vector<std::string>& run_labels = {});
 
-/** Standard error of the mean of a serially correlated series by block averaging (Flyvbjerg &
- * Petersen 1989): non-finite samples are dropped, the series is cut into blocks of L = 1, 2, 4,
- * ... samples while at least 16 blocks remain (a trailing partial block is dropped), the standard
- * error sd(block means) / sqrt(blocks) is computed for each L, and the largest is returned (the
- * plateau, or the longest blocks allowed when the correlation outlasts them: then an
- * underestimate, flagged by *plateau = false). Throws std::invalid_argument for fewer than 32
- * finite samples. block_len (optional) receives the L of the returned value. */
-double blockAveragedStandardError(const std::vector<double>& x, std::size_t* block_len = nullptr, bool* plateau = nullptr);
-
 /** Runs the compensator over a series (e.g. a validation run) and returns labelled figures. */
 FitFigures evaluateCalibration(const Calibration& cal, const FogSeries& series, const std::string& label,
 							   double tau_s = 100.0);

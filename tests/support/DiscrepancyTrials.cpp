@@ -1,5 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
-#include <mrpt_fog/discrepancy/DiscrepancyTrials.h>
+#include "support/DiscrepancyTrials.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
-#include <mrpt_fog/discrepancy/SyntheticChamberRun.h>
+#include "support/SyntheticChamberRun.h"
 
 #include <Eigen/Dense>
 #include <algorithm>

@@ -16,7 +16,7 @@
  */
 
 #include <mrpt_fog/discrepancy/EffectSelector.h>
-#include <mrpt_fog/discrepancy/SyntheticChamberRun.h>
+#include "support/SyntheticChamberRun.h"
 
 #include <cstdint>
 #include <string>

@@ -1,5 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
-#include <mrpt_fog/discrepancy/SimEffectTrial.h>
+#include "support/SimEffectTrial.h"
 #include <mrpt_fog/sim/ChamberProfile.h>
 #include <mrpt_fog/sim/ChamberRun.h>
 #include <mrpt_fog/sim/FogSimulator.h>

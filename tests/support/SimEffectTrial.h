@@ -36,7 +36,7 @@
  * The analysed run uses seed 2 s + 1, the confirmation run 2 s + 2 (same device).
  */
 
-#include <mrpt_fog/discrepancy/DiscrepancyTrials.h>
+#include "support/DiscrepancyTrials.h"
 #include <mrpt_fog/obs/FogSeries.h>
 
 #include <cstdint>
