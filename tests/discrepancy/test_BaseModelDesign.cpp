@@ -29,7 +29,7 @@ TEST(BaseModelDesign, StaticPresetColumns)
 	Fixture f;
 	const auto spec = resolveBaseModel("static:3", f.run.series);
 	const auto d = buildBaseDesign(spec, f.run.series, f.sig);
-	// constant, x, x^2, x^3 and the table-rate nuisance column (the rich profile has a table)
+	// constant, x, x^2, x^3 and the table-rate nuisance column (the all_conditions profile has a table)
 	EXPECT_EQ(d.names, (std::vector<std::string>{"1", "T(mean)^1", "T(mean)^2", "T(mean)^3", "table_rate*1e-6"}));
 	EXPECT_EQ(d.max_static_order, 3);
 	EXPECT_EQ(d.is_static_temp, (std::vector<unsigned char>{0, 1, 1, 1, 0}));

@@ -121,7 +121,7 @@ TEST(CandidateEffect, ShupeRateHoldsTheMeanRateAndTheRadialRateDifference)
 TEST(CandidateEffect, UntestableWithoutTheExcitingColumns)
 {
 	SyntheticRunOptions o;
-	o.profile = "ramp";  // no table rate, no field
+	o.profile = SyntheticProfile::Ramp;  // no table rate, no field
 	o.dt_s = 20;
 	const auto run = makeSyntheticChamberRun(o);
 	const auto sig = computeRunSignals(run.series);

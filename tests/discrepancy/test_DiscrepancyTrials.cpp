@@ -66,7 +66,7 @@ TEST(ProofTrialsAlias, UnseparableProfileYieldsAliasGroupNotCoinToss)
 	for (int s = 0; s < 5; ++s)
 	{
 		TrialSpec spec;
-		spec.profile = "long_ramp";
+		spec.profile = SyntheticProfile::LongRamp;
 		spec.hidden = {"shupe_rate"};
 		spec.ratios = {3};
 		spec.seed = 700 + static_cast<std::uint64_t>(s);

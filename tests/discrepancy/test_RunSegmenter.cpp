@@ -20,7 +20,7 @@ const Segment& segmentAt(const std::vector<Segment>& segs, double t_s)
 
 TEST(RunSegmenter, LabelsTheRichProfileFromTheData)
 {
-	// the synthetic "rich" profile (SyntheticChamberRun.cpp, minutes): 0-30 hold 25 C (power-on),
+	// the synthetic all_conditions profile (SyntheticChamberRun.cpp, minutes): 0-30 hold 25 C (power-on),
 	// 30-95 ramp to -40, 140 step to -20, 200-220 table, 280-360 ramp 60 -> 20, 460-475 field,
 	// 510-530 power off, 530 power on
 	SyntheticRunOptions o;
@@ -51,7 +51,7 @@ TEST(RunSegmenter, LabelsTheRichProfileFromTheData)
 			if (s.band == "above 40 C") EXPECT_GE(T, 40.0 - 1e-9);
 		}
 	// the "ramp" profile: 1 C/min ramp 25 -> -40 C ending at 85 min, then a 2 h soak
-	o.profile = "ramp";
+	o.profile = SyntheticProfile::Ramp;
 	const auto ramp = makeSyntheticChamberRun(o);
 	const auto rsig = computeRunSignals(ramp.series);
 	const auto rsegs = segmentRun(rsig);

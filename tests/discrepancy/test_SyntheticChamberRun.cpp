@@ -52,12 +52,10 @@ TEST(SyntheticChamberRun, ProfilesAndConfounders)
 	EXPECT_NEAR(q, std::round(q), 1e-6);
 	EXPECT_FALSE(r.series.table_rate_dph.empty());
 	EXPECT_FALSE(r.series.field_uT.empty());
-	o.profile = "ramp";
+	o.profile = SyntheticProfile::Ramp;
 	const auto ramp = makeSyntheticChamberRun(o);
 	EXPECT_TRUE(ramp.series.table_rate_dph.empty());
-	o.profile = "nope";
-	EXPECT_THROW(makeSyntheticChamberRun(o), std::invalid_argument);
-	o.profile = "rich";
+	o.profile = SyntheticProfile::AllConditions;
 	o.hidden["heat_source"] = 1;
 	EXPECT_THROW(makeSyntheticChamberRun(o), std::invalid_argument);
 }

@@ -29,7 +29,7 @@ struct TrialSpec
 	std::vector<std::string> hidden;  //!< ids, strongest first (empty = no hidden effect)
 	std::vector<double> ratios;  //!< effect-to-noise ratio per hidden id
 	std::uint64_t seed = 1;
-	std::string profile = "rich";
+	SyntheticProfile profile = SyntheticProfile::AllConditions;
 	std::string base_preset = "static:3";
 	double dt_s = 20.0;
 	// confounders

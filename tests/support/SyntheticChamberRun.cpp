@@ -25,14 +25,13 @@ struct Seg
 	double field_uT = 0.0;
 };
 
-std::vector<Seg> profileSegments(const std::string& name)
+std::vector<Seg> profileSegments(SyntheticProfile profile)
 {
 	const double min = 60.0;
-	if (name == "ramp")
+	if (profile == SyntheticProfile::Ramp)
 		return {{20 * min, 25}, {65 * min, -40}, {120 * min, -40}};
-	if (name == "long_ramp")
+	if (profile == SyntheticProfile::LongRamp)
 		return {{10 * min, 25}, {520 * min, -40}};
-	if (name != "rich") throw std::invalid_argument("unknown synthetic profile '" + name + "' (rich, ramp, long_ramp)");
 	return {
 		{30 * min, 25},
 		{65 * min, -40},
@@ -129,6 +128,17 @@ double unexplainedRms(const std::vector<double>& v, const std::vector<double>& T
 	return std::sqrt(r.squaredNorm() / std::max<std::size_t>(1, rows.size()));
 }
 }  // namespace
+
+const char* toString(SyntheticProfile p)
+{
+	switch (p)
+	{
+		case SyntheticProfile::Ramp: return "ramp";
+		case SyntheticProfile::LongRamp: return "long_ramp";
+		case SyntheticProfile::AllConditions: break;
+	}
+	return "all_conditions";
+}
 
 SyntheticRun makeSyntheticChamberRun(const SyntheticRunOptions& opt)
 {
@@ -312,7 +322,7 @@ SyntheticRun makeSyntheticChamberRun(const SyntheticRunOptions& opt)
 	s.thermistors = {{"Ti1", CoilSide::Inner, 0.0}, {"Ti2", CoilSide::Inner, 180.0},
 					 {"To1", CoilSide::Outer, 0.0}, {"To2", CoilSide::Outer, 180.0}};
 	s.temp_C.assign(4, {});
-	const bool hasTable = opt.profile == "rich", hasField = opt.profile == "rich";
+	const bool hasTable = opt.profile == SyntheticProfile::AllConditions, hasField = hasTable;
 	// gap: 20 min in the middle
 	const double gapStart = t[n / 2], gapEnd = gapStart + 1200.0;
 	for (auto& [id, e] : out.effect_dph) (void)id, (void)e;
@@ -330,7 +340,7 @@ SyntheticRun makeSyntheticChamberRun(const SyntheticRunOptions& opt)
 	}
 	out.effect_dph = keptEffects;
 	s.setMetadata("generator", "mrpt_fog::discrepancy::makeSyntheticChamberRun");
-	s.setMetadata("profile", opt.profile);
+	s.setMetadata("profile", toString(opt.profile));
 	s.setMetadata("seed", std::to_string(opt.seed));
 	return out;
 }

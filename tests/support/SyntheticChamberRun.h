@@ -5,10 +5,10 @@
  * A small, fully documented generator of chamber runs with KNOWN hidden effects, for the
  * model-gap proof trials (independent of the full simulator in mrpt_fog/sim, which the trials
  * also use where it fits). Physics kept deliberately simple and stated here:
- *  - chamber air temperature from a profile: "rich" (ramps at 0.5/1/2 C/min, steps, a log sine
+ *  - chamber air temperature from a profile: all_conditions (ramps at 0.5/1/2 C/min, steps, a log sine
  *    sweep 40 -> 4 min periods, rate-table segments at -10/0/60 C, field segments, a power
- *    cycle; ~12.4 h), "ramp" (one constant 1 C/min ramp 25 -> -40 C and a soak) or
- *    "long_ramp" (one slow 0.125 C/min ramp 25 -> -40 C: nothing but a constant rate);
+ *    cycle; ~12.4 h; the simulator's ChamberProfile "rich" is another profile), ramp (one constant 1 C/min ramp 25 -> -40 C and a soak) or
+ *    long_ramp (one slow 0.125 C/min ramp 25 -> -40 C: nothing but a constant rate);
  *  - coil: outer node first-order towards the air (tau 900 s), inner node first-order towards
  *    the outer node (tau 240 s), integrated exactly at 1 s sub-steps;
  *  - thermistors Ti1, Ti2 (inner) and To1, To2 (outer) with fixed offsets, white noise and
@@ -35,9 +35,19 @@
 
 namespace mrpt_fog::discrepancy
 {
+/** The generator's chamber profiles (see the file comment). */
+enum class SyntheticProfile
+{
+	AllConditions,  //!< ramps, steps, sine sweep, rate table, field, power cycle (~12.4 h)
+	Ramp,  //!< one 1 C/min ramp 25 -> -40 C and a soak
+	LongRamp  //!< one slow 0.125 C/min ramp 25 -> -40 C
+};
+/** "all_conditions", "ramp" or "long_ramp" (series metadata). */
+const char* toString(SyntheticProfile p);
+
 struct SyntheticRunOptions
 {
-	std::string profile = "rich";  //!< "rich", "ramp" or "long_ramp"
+	SyntheticProfile profile = SyntheticProfile::AllConditions;
 	double dt_s = 10.0;  //!< output sample period [s]
 	std::uint64_t seed = 1;
 	std::map<std::string, double> hidden;  //!< effect id -> effect-to-noise ratio
@@ -61,7 +71,7 @@ struct SyntheticRun
 	double thermistor_tau_s = 0.0;  //!< lag used when thermistor_lag is hidden
 };
 
-/** Generates a run. Throws std::invalid_argument for an unknown profile or effect id (or
+/** Generates a run. Throws std::invalid_argument for an unknown effect id (or
  * heat_source, which concerns temperatures and is not generated here). */
 SyntheticRun makeSyntheticChamberRun(const SyntheticRunOptions& opt);
 
