@@ -3,6 +3,7 @@
  * calibration YAML (model, fallbacks, ranges, statistics). Thin main over model/Calibration.h. */
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt_fog/common/OutputSafety.h>
 #include <mrpt_fog/common/JsonWriter.h>
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/model/Calibration.h>
@@ -119,6 +120,10 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<double> arg_tau("", "tau", "Averaging time of the stability figures [s]", false, 100.0, "S", cmd);
 		TCLAP::SwitchArg arg_nofb("", "no-fallbacks", "Do not fit per-thermistor fallback models", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-calibrate", kHelp)) return *rc;
+
+		std::vector<FileArg> inputs{{"--validate", arg_val.getValue()}};
+		for (const auto& p : arg_in.getValue()) inputs.push_back({"-i", p});
+		requireSafeOutputs(inputs, {{"-o", arg_out.getValue()}, {"--json", arg_json.getValue()}});
 
 		FitOptions opt;
 		opt.selection = arg_sel.getValue();

@@ -3,6 +3,7 @@
  * on the vehicle), and writes a stock-MRPT rawlog or a CSV with raw and compensated columns. */
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt_fog/common/OutputSafety.h>
 #include <mrpt_fog/common/JsonWriter.h>
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/io/NumberText.h>
@@ -93,6 +94,8 @@ int main(int argc, char** argv)
 		const std::string out = arg_out.getValue(), ext = fileExtension(out);
 		if (ext != ".rawlog" && ext != ".csv")
 			throw std::runtime_error("output '" + out + "': unknown file type '" + ext + "' (expected .rawlog or .csv)");
+		requireSafeOutputs({{"-i", arg_in.getValue()}, {"--cal", arg_cal.getValue()}},
+						   {{"-o", out}, {"--json", arg_json.getValue()}});
 		const Calibration cal = loadCalibrationYaml(arg_cal.getValue());
 		const FogSeries in = readFogLog(arg_in.getValue(), arg_label.getValue());
 		const bool screen = !arg_no_screen.getValue();

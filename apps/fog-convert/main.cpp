@@ -3,6 +3,7 @@
  * stock-MRPT output (CObservationIMU + CObservationRawDAQ) readable without the plugin. */
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt_fog/common/OutputSafety.h>
 #include <mrpt_fog/common/JsonWriter.h>
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/io/NumberText.h>
@@ -59,18 +60,6 @@ EXAMPLES
   fog-convert -i chamber.rawlog -o chamber_stock.rawlog --to-stock
 )";
 
-/** TCLAP's usage followed by the format summary and examples. */
-/** Fails before any work if the directory of an output file cannot be written, so that a bad
- * --json path does not leave a converted file behind with a non-zero exit. */
-void requireWritableDirectory(const std::string& path, const char* what)
-{
-	std::filesystem::path dir = std::filesystem::path(path).parent_path();
-	if (dir.empty()) dir = ".";
-	if (!std::filesystem::is_directory(dir) || ::access(dir.c_str(), W_OK) != 0)
-		throw std::runtime_error(std::string(what) + " '" + path + "': directory '" + dir.string() +
-								 "' does not exist or is not writable");
-}
-
 bool isRawlog(const std::string& path) { return fileExtension(path) == ".rawlog"; }
 
 void requireKnownExtension(const std::string& path, const char* what)
@@ -111,8 +100,7 @@ int main(int argc, char** argv)
 		const std::string in = arg_in.getValue(), out = arg_out.getValue();
 		requireKnownExtension(in, "input");
 		requireKnownExtension(out, "output");
-		requireWritableDirectory(out, "output");
-		if (!arg_json.getValue().empty()) requireWritableDirectory(arg_json.getValue(), "--json");
+		requireSafeOutputs({{"-i", in}}, {{"-o", out}, {"--json", arg_json.getValue()}});
 		if (arg_stock.getValue() && !isRawlog(out))
 			throw std::runtime_error("--to-stock writes a rawlog: the output '" + out + "' must end in .rawlog");
 

@@ -6,6 +6,7 @@
  *   fog-discrepancy --measured A.csv [--measured B.csv] --sim SIM.yaml --json out.json
  */
 #include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt_fog/common/OutputSafety.h>
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/discrepancy/DiscrepancyAnalysis.h>
 #include <mrpt_fog/discrepancy/SimulatorGap.h>
@@ -50,6 +51,10 @@ int main(int argc, char** argv)
 			throw std::runtime_error("--alpha " + std::to_string(alpha.getValue()) + ": must be in (0, 0.5)");
 		if (plots.isSet() && !std::filesystem::is_directory(plots.getValue()))
 			throw std::runtime_error("--plots " + plots.getValue() + ": not a directory");
+
+		std::vector<FileArg> inputs{{"--model", model.getValue()}, {"--sim", sim.getValue()}};
+		for (const auto& f : measured.getValue()) inputs.push_back({"--measured", f});
+		requireSafeOutputs(inputs, {{"--json", json.getValue()}});
 
 		std::vector<FogSeries> runs;
 		std::vector<std::string> labels;

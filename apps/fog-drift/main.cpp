@@ -14,6 +14,7 @@
 #include "HeadingDeadReckoning.h"
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt_fog/common/OutputSafety.h>
 #include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog_nav/DriftReport.h>
 
@@ -96,6 +97,8 @@ int main(int argc, char** argv)
 		else throw std::runtime_error("--rate-sampling: '" + sampling.getValue() + "' is not instantaneous|average");
 		hopt.transport_rate = transport.getValue();
 
+		requireSafeOutputs({{"-i", in.getValue()}, {"--cal", cal.getValue()}},
+						   {{"--json", json.getValue()}, {"--odometry-out", odo_out.getValue()}});
 		const drift::DriveData drive = drift::readDrive(in.getValue());
 		if (std::isfinite(lat.getValue())) hopt.latitude_deg = lat.getValue();
 		else if (drive.latitude_deg) hopt.latitude_deg = *drive.latitude_deg;

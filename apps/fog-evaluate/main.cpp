@@ -15,6 +15,7 @@
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt_fog/common/OutputSafety.h>
 #include <mrpt_fog/io/FogLogIO.h>
 
 #include <cmath>
@@ -69,6 +70,7 @@ int main(int argc, char** argv)
 			throw std::invalid_argument("--tau must be a positive number of seconds, got " + num(tau_s));
 
 		const std::string path = in.getValue();
+		requireSafeOutputs({{"-i", path}, {"--cal", cal.getValue()}}, {{"--json", json.getValue()}});
 		const FogSeries series = readFogLog(path, label.getValue());
 		try
 		{

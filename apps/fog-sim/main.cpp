@@ -9,6 +9,7 @@
  *                                                     GROUND_TRUTH)
  */
 #include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt_fog/common/OutputSafety.h>
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/common/JsonWriter.h>
 #include <mrpt_fog/io/FogLogIO.h>
@@ -81,6 +82,8 @@ int main(int argc, char** argv)
 		const std::string ext = fileExtension(out.getValue());
 		if (ext != ".rawlog" && ext != ".csv" && ext != ".csv.gz")
 			throw std::invalid_argument(out.getValue() + ": output must end in .rawlog, .csv or .csv.gz");
+		requireSafeOutputs({{"--profile", profile.getValue()}, {"--device", device.getValue()}},
+						   {{"-o", out.getValue()}, {"--json", json.getValue()}});
 		SimSettings settings;
 		settings.seed = seed.getValue();
 		settings.rate_hz = rate.getValue();

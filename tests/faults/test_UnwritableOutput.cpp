@@ -23,38 +23,36 @@ std::vector<std::string> listing(const std::filesystem::path& dir)
 }
 }  // namespace
 
-// The temporary name cannot be created (occupied by a directory, which even root cannot open as
-// a file): every writer throws naming the output, the previous file is byte-identical, and no
-// other file appears.
+// The temporary file cannot be created (the output's name is so long that "<name>.tmp-XXXXXX"
+// exceeds the file-name limit: ENAMETOOLONG, which even root gets): every writer throws naming
+// the output, the previous file is byte-identical, and no other file appears. (Before issue 14
+// this occupied the predictable "<name>.tmp-<pid>"; temporary names are now unpredictable.)
 TEST(UnwritableOutput, TemporaryCannotBeCreatedPreviousFileIntact)
 {
 	faulttest::ScratchDir dir;
 	const FogSeries s = faulttest::head(faulttest::validationRun(), 100);
-	const std::string tmp_suffix = ".tmp-" + std::to_string(::getpid());
-	const auto check = [&](const std::string& name, const std::function<void(const std::string&)>& write) {
+	const auto check = [&](const std::string& ext, const std::function<void(const std::string&)>& write) {
+		const std::string name = std::string(250 - ext.size(), 'r') + ext;  // 250 bytes: fits NAME_MAX = 255
 		const std::string out = dir.path(name);
-		faulttest::writeBytes(out, "previous contents of " + name + "\n");
-		std::filesystem::create_directory(out + tmp_suffix);
-		faulttest::writeBytes(out + tmp_suffix + "/occupied", "x");  // non-empty: cannot be removed either
+		faulttest::writeBytes(out, "previous contents of " + ext + "\n");
 		const auto before = listing(dir.dir());
 		try
 		{
 			write(out);
-			ADD_FAILURE() << name << ": nothing thrown";
+			ADD_FAILURE() << ext << ": nothing thrown";
 		}
 		catch (const std::exception& e)
 		{
 			EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
 		}
-		EXPECT_EQ(faulttest::readBytes(out), "previous contents of " + name + "\n");
+		EXPECT_EQ(faulttest::readBytes(out), "previous contents of " + ext + "\n");
 		EXPECT_EQ(listing(dir.dir()), before);
-		std::filesystem::remove_all(out + tmp_suffix);
 	};
-	check("run.csv", [&](const std::string& p) { writeFogCsv(p, s); });
-	check("run.csv.gz", [&](const std::string& p) { writeFogCsv(p, s); });
-	check("run.rawlog", [&](const std::string& p) { writeFogRawlog(p, s); });
-	check("cal.yaml", [&](const std::string& p) { saveCalibrationYaml(faulttest::calibration(), p); });
-	check("notes.txt", [&](const std::string& p) { writeTextFileAtomically(p, "new"); });
+	check(".csv", [&](const std::string& p) { writeFogCsv(p, s); });
+	check(".csv.gz", [&](const std::string& p) { writeFogCsv(p, s); });
+	check(".rawlog", [&](const std::string& p) { writeFogRawlog(p, s); });
+	check(".yaml", [&](const std::string& p) { saveCalibrationYaml(faulttest::calibration(), p); });
+	check(".txt", [&](const std::string& p) { writeTextFileAtomically(p, "new"); });
 }
 
 // The rename fails (the output name is a non-empty directory): the temporary is removed, the

@@ -33,3 +33,10 @@ add_test(NAME io_find_package_consumer COMMAND ${CMAKE_COMMAND} -DBUILD_DIR=${PR
   -DCONSUMER_SRC=${FOG_SOURCE_DIR}/tests/consumer -DWORK=${io_work}/consumer
   -DCMAKE_GENERATOR=${CMAKE_GENERATOR} -P ${io_scripts}/find_package_consumer.cmake)
 set_tests_properties(io_find_package_consumer PROPERTIES LABELS "io;integration" TIMEOUT 600)
+
+# Files are sacred: outputs equal to inputs, FIFOs, symlinks, modes, signals (issue 14).
+if(TARGET fog-convert AND TARGET fog-calibrate AND TARGET fog-compensate AND TARGET fog-evaluate)
+  add_test(NAME io_files_sacred COMMAND bash ${io_scripts}/files_sacred.sh $<TARGET_FILE_DIR:fog-convert>
+    ${FOG_SOURCE_DIR} ${io_work}/files_sacred)
+  set_tests_properties(io_files_sacred PROPERTIES LABELS "io;integration" TIMEOUT 300)
+endif()

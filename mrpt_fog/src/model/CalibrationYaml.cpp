@@ -3,6 +3,7 @@
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/common/ErrorText.h>
 #include <mrpt_fog/common/Utf8.h>
+#include <mrpt_fog/common/YamlGuard.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 
 #include <cmath>
@@ -18,6 +19,13 @@ namespace
 {
 constexpr const char* kFormat = "mrpt_fog_calibration";
 constexpr int kVersion = 1;
+// Plausibility limits of loaded values (issue 14: a coef_dph of 1e308 compensated to -2e307
+// deg/h). Every term is z^k with |z| <= 1 after clamping, so a coefficient bounds its term's
+// contribution to the bias: 1e6 deg/h (278 deg/s) is beyond any gyro's bias.
+constexpr double kMaxCoef_dph = 1e6;
+constexpr const char* kCoefWhy = "a bias term of more than 1e6 deg/h is no gyro's";
+constexpr double kMaxSignal_C = 1000.0;  // temperatures and differences [degC]
+constexpr double kMaxSignalRate_Cps = 100.0;  // temperature rates [degC/s]
 
 std::string num(double v)
 {
@@ -141,6 +149,14 @@ struct Reader
 		if (!std::isfinite(v)) fail(path + "." + key, "must be a finite number");
 		return v;
 	}
+	/** A finite number within [lo, hi] (physically plausible), else "<field>: <v> is outside ...". */
+	double bounded(const yaml& n, const std::string& key, const std::string& path, double lo, double hi,
+				   const char* why) const
+	{
+		const double v = finite(n, key, path);
+		if (v < lo || v > hi) fail(path + "." + key, num(v) + " is outside [" + num(lo) + ", " + num(hi) + "] (" + why + ")");
+		return v;
+	}
 	std::string text(const yaml& n, const std::string& key, const std::string& path) const
 	{
 		const yaml c = child(n, key, path);
@@ -173,7 +189,7 @@ BiasModel readModel(const Reader& rd, const yaml& n, const std::string& path)
 		const std::string p = path + ".terms[" + std::to_string(i) + "]";
 		const yaml t(terms[i]);
 		names.push_back(rd.text(t, "name", p));
-		coefs.push_back(rd.finite(t, "coef_dph", p));
+		coefs.push_back(rd.bounded(t, "coef_dph", p, -kMaxCoef_dph, kMaxCoef_dph, kCoefWhy));
 	}
 	if (names.empty() || names[0] != "1") rd.fail(path + ".terms", "the first term must be the constant \"1\"");
 	try
@@ -198,10 +214,14 @@ BiasModel readModel(const Reader& rd, const yaml& n, const std::string& path)
 			if (m.features.signals()[q].name() == name) idx = static_cast<int>(q);
 		if (idx < 0) rd.fail(p + ".name", "signal '" + name + "' is used by no term");
 		SignalNormalisation nm;
-		nm.centre = rd.finite(s, "centre", p);
-		nm.scale = rd.finite(s, "scale", p);
-		nm.min = rd.finite(s, "min", p);
-		nm.max = rd.finite(s, "max", p);
+		// Plausible signal values: temperatures and their differences [degC], rates [degC/s].
+		const bool rate = m.features.signals()[idx].isRate();
+		const double lim = rate ? kMaxSignalRate_Cps : kMaxSignal_C;
+		const char* why = rate ? "a thermistor rate [degC/s] no coil reaches" : "a temperature [degC] no coil reaches";
+		nm.centre = rd.bounded(s, "centre", p, -lim, lim, why);
+		nm.scale = rd.bounded(s, "scale", p, -lim, lim, why);
+		nm.min = rd.bounded(s, "min", p, -lim, lim, why);
+		nm.max = rd.bounded(s, "max", p, -lim, lim, why);
 		if (!(nm.scale > 0)) rd.fail(p + ".scale", "must be > 0");
 		if (nm.min > nm.max) rd.fail(p + ".min", "min > max");
 		m.features.normalisation()[idx] = nm;
@@ -310,8 +330,7 @@ namespace
 Calibration parseCalibrationYaml(const std::string& text, const std::string& source)
 {
 	Reader rd{source};
-	if (const std::size_t bad = firstInvalidUtf8(text); bad != std::string::npos)
-		throw std::invalid_argument(source + ": not valid UTF-8 text (byte offset " + std::to_string(bad) + ")");
+	requireSafeYamlText(text, source);  // size, nesting depth, aliases, UTF-8: before MRPT's parser
 	yaml root;
 	try
 	{
@@ -366,7 +385,7 @@ Calibration parseCalibrationYaml(const std::string& text, const std::string& sou
 	{
 		rd.fail("rate_estimator", e.what());
 	}
-	cal.mean_bias_dph = rd.finite(root, "mean_bias_dph", "");
+	cal.mean_bias_dph = rd.bounded(root, "mean_bias_dph", "", -kMaxCoef_dph, kMaxCoef_dph, kCoefWhy);
 	for (const auto& r : rd.seq(root, "calibration_runs", "")) cal.runs.push_back(yaml(r).as<std::string>());
 	const auto checkLayout = [&](const BiasModel& m, const std::string& path) {
 		for (const auto& n : m.features.thermistors())
@@ -424,11 +443,7 @@ void saveCalibrationYaml(const Calibration& cal, const std::string& path)
 
 Calibration loadCalibrationYaml(const std::string& path)
 {
-	std::ifstream in(path);
-	if (!in) throw std::invalid_argument(path + ": cannot open calibration file");
-	std::stringstream ss;
-	ss << in.rdbuf();
-	return calibrationFromYaml(ss.str(), path);
+	return calibrationFromYaml(readYamlTextLimited(path), path);
 }
 
 }  // namespace mrpt_fog

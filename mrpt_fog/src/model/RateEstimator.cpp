@@ -36,12 +36,20 @@ std::string RateEstimatorSettings::describe() const
 	return o.str();
 }
 
+namespace
+{
+constexpr double kMaxWindow_s = 3600.0;
+}
+
 void RateEstimatorSettings::validate() const
 {
 	if (kind != "causal" && kind != "savgol")
 		throw std::invalid_argument("rate estimator kind must be 'causal' or 'savgol', got '" + kind + "'");
 	if (!std::isfinite(window_s) || window_s <= 0)
 		throw std::invalid_argument("rate estimator window_s must be a positive number of seconds");
+	if (window_s > kMaxWindow_s)  // issue 14: window_s 1e9 was accepted (worse than raw)
+		throw std::invalid_argument("rate estimator window_s " + std::to_string(window_s) +
+									" s exceeds the limit of 3600 s (the causal estimate lags by half the window)");
 	if (kind == "causal" && poly_order != 1)
 		throw std::invalid_argument("rate estimator: the causal estimator is a local line (order 1), got order " +
 									std::to_string(poly_order));

@@ -110,6 +110,7 @@ inline bool readBool(const mrpt::containers::yaml& node, const std::string& key,
 
 }  // namespace mrpt_fog::sim::detail
 
+#include <mrpt_fog/common/YamlGuard.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -124,12 +125,8 @@ namespace mrpt_fog::sim::detail
  * into std::invalid_argument "<path>: not valid YAML: <first line>". */
 inline mrpt::containers::yaml parseYamlFile(const std::string& path)
 {
-	std::ifstream file(path, std::ios::binary);
-	if (!file) throw std::invalid_argument(path + ": cannot open file");
-	std::stringstream f;
-	f << file.rdbuf();
-	if (const std::size_t bad = firstInvalidUtf8(f.str()); bad != std::string::npos)
-		throw std::invalid_argument(path + ": not valid UTF-8 text (byte offset " + std::to_string(bad) + ")");
+	// Size, nesting depth, aliases and UTF-8 checked before MRPT's parser sees the text.
+	std::stringstream f(readYamlTextLimited(path));
 	std::fflush(stderr);
 	std::cerr.flush();
 	std::FILE* capture = std::tmpfile();

@@ -2,9 +2,19 @@
 #pragma once
 
 /** \file AtomicFile.h
- * Output files are never left half-written under the name the user asked for: everything is
- * written to a temporary sibling ("<path>.tmp-<pid>") and renamed over `path` only on success.
- * On failure (exception) the temporary file is removed and any previous file at `path` is intact.
+ * Output files are never left half-written under the name the user asked for, and a user's
+ * file is never destroyed by accident:
+ *  - a regular output (new or existing) is written to a temporary sibling created exclusively
+ *    (mkstemp: unpredictable name "<path>.tmp-XXXXXX", O_EXCL so a planted symlink or file is
+ *    never opened), which gets the existing output's mode (and owner, where permitted; else the
+ *    mode a new file would have under the umask), is synced and then renamed over `path` only
+ *    on success. On failure (exception), or when the program is stopped by SIGINT/SIGTERM/
+ *    SIGHUP while writing, the temporary is removed and a previous file at `path` is intact.
+ *  - an output that is a symlink is written THROUGH to its target (the link is kept; the
+ *    target is replaced atomically in its own directory); a dangling symlink is refused.
+ *  - an output that exists and is not a regular file (character/block device such as
+ *    /dev/null or /dev/stdout, FIFO, socket) is written directly, never replaced.
+ *  - a directory is refused.
  */
 
 #include <functional>
@@ -12,9 +22,10 @@
 
 namespace mrpt_fog
 {
-/** Calls write(tmp_path) and then renames tmp_path to path (atomic on POSIX filesystems).
- * If write throws, or the rename fails, tmp_path is deleted and a std::runtime_error naming
- * `path` is thrown; an existing file at `path` is left untouched. */
+/** Calls write(tmp_path) and then renames tmp_path to path (atomic on POSIX filesystems); see
+ * the file comment for symlinks and non-regular outputs (write() then receives the output path
+ * itself). If write throws, or the rename fails, tmp_path is deleted and a std::runtime_error
+ * naming `path` is thrown; an existing file at `path` is left untouched. */
 void writeFileAtomically(const std::string& path, const std::function<void(const std::string& tmp_path)>& write);
 
 /** Writes `text` to `path` atomically (see writeFileAtomically). */
@@ -23,5 +34,8 @@ void writeTextFileAtomically(const std::string& path, const std::string& text);
 /** Lower-case extension including the dot, with ".gz" folded in: "a.rawlog" -> ".rawlog",
  * "a.csv" -> ".csv", "a.csv.gz" -> ".csv.gz". Empty when none. */
 std::string fileExtension(const std::string& path);
+
+/** How many temporary output files are open right now (tests: none may be left behind). */
+int liveTemporaryFileCount();
 
 }  // namespace mrpt_fog
