@@ -69,3 +69,20 @@ TEST(SimulatorConfig, BadInputNamesFileAndField)
 	EXPECT_NE(errorOf("- a\n- b\n").find("fog_simcfg_bad.yaml"), std::string::npos);
 	EXPECT_THROW(readSimulatorConfig("/nonexistent/sim.yaml"), std::invalid_argument);
 }
+
+// Issue 17: an empty SIM.yaml gave "not valid YAML: ==== MRPT exception ====". Empty, blank and
+// comment-only files now say what a configuration needs; a parse error keeps the parser's line.
+TEST(SimulatorConfig, EmptyOrMalformedFileGivesUsefulMessage)
+{
+	for (const std::string text : {std::string(""), std::string("\n  \n"), std::string("# nothing yet\n")})
+	{
+		const std::string e = errorOf(text);
+		EXPECT_NE(e.find("fog_simcfg_bad.yaml: empty: a simulator configuration needs at least the device"), std::string::npos) << e;
+		EXPECT_EQ(e.find("MRPT exception"), std::string::npos) << e;
+	}
+	const std::string bad = errorOf("effects: [shupe_rate\nfree: []\n");
+	EXPECT_NE(bad.find("fog_simcfg_bad.yaml: not valid YAML: line 3"), std::string::npos) << bad;
+	EXPECT_NE(bad.find("flow sequence without a closing bracket"), std::string::npos) << bad;
+	EXPECT_EQ(bad.find("===="), std::string::npos) << bad;
+	EXPECT_NE(errorOf("just a string\n").find("expected a map of key: value"), std::string::npos);
+}

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <mrpt_fog/metrics/AllanNoiseTerms.h>
 
+#include "FlickerNoise.h"
+
 #include <cmath>
 #include <random>
 
@@ -26,6 +28,8 @@ TEST(AllanNoiseTerms, WhiteNoiseGivesKnownArw)
 	EXPECT_LE(t.arw.tau_min_s, 0.1 + 1e-12);  // the region starts at the first point
 	EXPECT_FALSE(t.rrw.identified());
 	EXPECT_FALSE(t.quantization.identified());
+	EXPECT_FALSE(t.flat.identified());
+	EXPECT_TRUE(std::isnan(t.bias_instability_dph));
 }
 
 // Rate random walk: y_k = y_{k-1} + e_k, e ~ N(0, q). Discrete closed form:
@@ -53,14 +57,82 @@ TEST(AllanNoiseTerms, RandomWalkGivesKnownK)
 	EXPECT_NEAR(t.rrw_dphsh / k_true, 1.0, 0.06);
 	EXPECT_FALSE(t.arw.identified());
 	EXPECT_FALSE(t.quantization.identified());
+	EXPECT_TRUE(std::isnan(t.bias_instability_dph));
+}
+
+// White noise plus rate random walk, no flicker: the curve has a minimum between its -1/2 and
+// +1/2 slopes (where the local slope passes through 0) but no flat region, so B is not
+// reported. Before the joint fit this read B = 0.016 deg/h on 2 of 4 such records. Five seeds,
+// all must give NaN; ARW must still be read (within 1.5 %, as above).
+TEST(AllanNoiseTerms, WhitePlusRandomWalkHasNoBiasInstability)
+{
+	const double fs = 10.0, arw_true = 0.002, q_sigma = 2e-4;  // deg/sqrt(h), deg/h per step
+	const double sigma_w = arw_true * 60.0 * std::sqrt(fs);
+	for (unsigned seed = 1; seed <= 5; seed++)
+	{
+		std::mt19937_64 rng(seed);
+		std::normal_distribution<double> gw(0.0, sigma_w), gq(0.0, q_sigma);
+		std::vector<double> y(131072);
+		double r = 0;
+		for (double& v : y)
+		{
+			r += gq(rng);
+			v = gw(rng) + r;
+		}
+		const AllanNoiseTerms t = allanNoiseTerms(allanDeviation(y, 1.0 / fs, AllanKind::Overlapping));
+		EXPECT_TRUE(std::isnan(t.bias_instability_dph)) << "seed " << seed << ": B = " << t.bias_instability_dph;
+		EXPECT_NEAR(t.arw_dpsh / arw_true, 1.0, 0.015) << "seed " << seed;
+	}
+}
+
+// Flicker rate noise of known B (FlickerNoise.h: B is the innovation sigma by the PSD
+// definition, IEEE 952 S(f) = B^2 / (2 pi f); block means of 8 fine samples). IEEE 952 value: flat AVAR = (2 ln2 / pi) B^2.
+// Target: within 5 %. Over 20 other seeds (numpy prototype of the same generator and
+// estimator) B / B_true = 0.998 +- 0.006 (1 sd); the 5 % bound is > 8 sd.
+TEST(AllanNoiseTerms, FlickerGivesKnownB)
+{
+	const double fs = 10.0, b_true = 0.01;  // deg/h
+	std::mt19937_64 rng(1952);
+	const std::vector<double> y = fog_test::flickerRate(65536, b_true, 8, rng);
+	const AllanNoiseTerms t = allanNoiseTerms(allanDeviation(y, 1.0 / fs, AllanKind::Overlapping));
+	ASSERT_TRUE(t.flat.identified());
+	EXPECT_NEAR(t.bias_instability_dph / b_true, 1.0, 0.05);
+	EXPECT_FALSE(t.arw.identified());
+	EXPECT_FALSE(t.quantization.identified());
+}
+
+// White noise (N = 0.002 deg/sqrt(h)) plus flicker (B = 0.05 deg/h, crossing the ARW line at
+// tau = (N / 0.664 B)^2 = 13 s): both read. One record's B scatters by about 3 % (1 sd over 20
+// seeds in the prototype), so the target (within 5 %) is checked on the mean of 8 seeds (sd of
+// the mean ~1 %), and every seed must identify the flat region. (Block means of 4 fine samples:
+// the generator's +2.5 % excess at tau = 0.1 s lies where ARW dominates.)
+TEST(AllanNoiseTerms, WhitePlusFlickerGivesKnownBAndN)
+{
+	const double fs = 10.0, arw_true = 0.002, b_true = 0.05;
+	const double sigma_w = arw_true * 60.0 * std::sqrt(fs);
+	double sum_b = 0;
+	const int seeds = 8;
+	for (int seed = 0; seed < seeds; seed++)
+	{
+		std::mt19937_64 rng(100 + seed);
+		std::vector<double> y = fog_test::flickerRate(65536, b_true, 4, rng);
+		std::normal_distribution<double> g(0.0, sigma_w);
+		for (double& v : y) v += g(rng);
+		const AllanNoiseTerms t = allanNoiseTerms(allanDeviation(y, 1.0 / fs, AllanKind::Overlapping));
+		ASSERT_TRUE(t.flat.identified()) << "seed " << seed;
+		EXPECT_NEAR(t.arw_dpsh / arw_true, 1.0, 0.03) << "seed " << seed;
+		sum_b += t.bias_instability_dph;
+	}
+	EXPECT_NEAR(sum_b / seeds / b_true, 1.0, 0.05);
 }
 
 // A closed-form curve with all four terms in separate decades of tau:
 // AVAR = 3 Q^2/tau^2 + N^2/tau + (0.664 B)^2 + K^2 tau/3 (tau in s, rates in deg/h).
 // Each region still contains a little of its neighbours; the terms are placed so that inside the
 // fitted regions the neighbours add less than about 20 % to the variance (10 % to the deviation),
-// which is the bound used. (Measured: Q +8.6 %, N +3.4 %, B +3.9 %, K +6.6 %: every neighbour adds
-// variance, so the read values are biased high.)
+// which is the bound used for the line-read terms. (Measured: Q +8.6 %, N +3.4 %, K +6.6 %: every
+// neighbour adds variance, so the read values are biased high.) B comes from the joint fit of all
+// four terms, exact on this exact curve (was +3.9 % from a line through the flat points).
 TEST(AllanNoiseTerms, ClosedFormCurveAllFourTerms)
 {
 	const double Q_as = 0.001;  // arcsec (deg/h * s); crosses the ARW line at 3 Q^2/N^2 = 8e-4 s
@@ -81,7 +153,7 @@ TEST(AllanNoiseTerms, ClosedFormCurveAllFourTerms)
 	const AllanNoiseTerms t = allanNoiseTerms(c);
 	EXPECT_NEAR(t.quantization_arcsec / Q_as, 1.0, 0.10);
 	EXPECT_NEAR(t.arw_dpsh / (N_s / 60.0), 1.0, 0.10);
-	EXPECT_NEAR(t.bias_instability_dph / B, 1.0, 0.10);
+	EXPECT_NEAR(t.bias_instability_dph / B, 1.0, 1e-6);
 	EXPECT_NEAR(t.rrw_dphsh / (K_s * 60.0), 1.0, 0.10);
 	// B is the flat level / 0.664, not the curve minimum.
 	double mn = 1e300;

@@ -78,7 +78,13 @@ SimulatorConfig simulatorConfigFromYaml(const yaml& doc, const std::string& sour
 	SimulatorConfig cfg;
 	cfg.source = source;
 	const std::string top = source + ":";
-	if (doc.isNullNode() || !doc.isMap()) throw std::invalid_argument(source + ": expected a map (device, effects, free, profile)");
+	if (doc.isNullNode())
+		throw std::invalid_argument(source +
+									": empty: a simulator configuration needs at least the device, e.g. `device_file: gyro.yaml` "
+									"or `device: {}` for fog-sim's default gyro (keys: device, device_file, effects, free, "
+									"profile; docs/discrepancy-sim.md)");
+	if (!doc.isMap())
+		throw std::invalid_argument(source + ": expected a map of key: value (keys: device, device_file, effects, free, profile)");
 	checkKeys(doc, {"device", "device_file", "effects", "free", "profile"}, top);
 	if (doc.has("device") && doc.has("device_file"))
 		throw std::invalid_argument(source + ": device, device_file: give one of them, not both");

@@ -8,6 +8,7 @@
 #include <mrpt/containers/yaml.h>
 #include <mrpt_fog/common/Utf8.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -127,6 +128,9 @@ inline mrpt::containers::yaml parseYamlFile(const std::string& path)
 {
 	// Size, nesting depth, aliases and UTF-8 checked before MRPT's parser sees the text.
 	std::stringstream f(readYamlTextLimited(path));
+	// An empty (or all-blank) file is an empty document: the caller says what it needed. (MRPT's
+	// parser throws a bare std::length_error on an empty stream.)
+	if (f.str().find_first_not_of(" \t\r\n") == std::string::npos) return mrpt::containers::yaml();
 	std::fflush(stderr);
 	std::cerr.flush();
 	std::FILE* capture = std::tmpfile();
@@ -160,8 +164,17 @@ inline mrpt::containers::yaml parseYamlFile(const std::string& path)
 	if (error.empty()) error = captured;
 	if (!error.empty())
 	{
-		// Keep the first line with text; drop the parser's buffer address prefix.
-		std::string line = error.substr(0, error.find('\n'));
+		// Keep the first line with text that is not MRPT's exception banner; drop the parser's
+		// buffer address prefix.
+		std::string line;
+		for (std::size_t a = 0; a < error.size();)
+		{
+			const std::size_t b = std::min(error.find('\n', a), error.size());
+			line = error.substr(a, b - a);
+			if (line.find_first_not_of(" \t\r") != std::string::npos && line.rfind("====", 0) != 0) break;
+			line.clear();
+			a = b + 1;
+		}
 		const auto pos = line.find(">:");
 		if (pos != std::string::npos) line = "line " + line.substr(pos + 2);
 		throw std::invalid_argument(path + ": not valid YAML: " + line);

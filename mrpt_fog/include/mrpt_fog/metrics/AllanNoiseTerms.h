@@ -14,15 +14,24 @@
  *
  * B is the flat level divided by 0.664 = sqrt(2 ln2 / pi), not the minimum of the curve.
  *
- * How the region of a term is found: only points with at least min_clusters clusters are used
- * (fewer makes the local slope too noisy); a point belongs to the term when the mean of the
- * log-log slopes of its neighbouring segments is within slope_tolerance of the term's slope;
- * of the contiguous runs of such points the one with the largest statistical weight (sum of
- * clusters) is fitted, the intercept by weighted least squares in log space with weights equal
- * to the clusters (var(log adev) ~ 1/clusters). The terms dominate at increasing tau in the
- * order Q, N, B, K, so each is looked for only beyond the tau range of the previous identified
- * ones, and Q only in a run that starts at the shortest usable tau (a -1 slope at long tau, e.g.
- * a slow signal removed by a fit, is not quantisation). A term with no such run is NaN (not
+ * Bias instability (the flat region): the usable points (at least min_clusters clusters) are
+ * fitted jointly by AVAR = c_-2/tau^2 + c_-1/tau + c_0 + c_1 tau with c_k >= 0 (weighted by the
+ * clusters, residuals relative to the model: IEEE 952 Annex C's sum-of-terms fit). A flat region
+ * exists where c_0 holds at least flat_share (half) of the fitted variance, on at least two curve
+ * points; only then is B = sqrt(c_0) / 0.664 reported. The minimum between a -1/2 and a +1/2
+ * slope (white noise plus rate random walk, no flicker) is not a flat region: B is NaN there.
+ * Subtracting the neighbouring terms, B is not biased high by them as a line through the flat
+ * points would be.
+ *
+ * The other terms, each by a straight line of the term's fixed log-log slope through the part of
+ * the curve that has that slope: a point belongs to the term when the mean of the log-log slopes
+ * of its neighbouring segments is within slope_tolerance of the term's slope; of the contiguous
+ * runs of such points the one with the largest statistical weight (sum of clusters) is fitted,
+ * the intercept by weighted least squares in log space with weights equal to the clusters
+ * (var(log adev) ~ 1/clusters). Q is looked for only in a run that starts at the shortest usable
+ * tau (a -1 slope at long tau, e.g. a slow signal removed by a fit, is not quantisation) and
+ * before the flat region; N after Q and before the flat region (a noisy falling tail of a flicker
+ * curve is not ARW); K after N and the flat region. A term with no such run is NaN (not
  * identified): e.g. no flat part in a record too short to reach it.
  */
 
@@ -61,6 +70,7 @@ struct AllanTermOptions
 {
 	double slope_tolerance = 0.15;  //!< a point belongs to a term when |slope - term slope| <= this
 	std::size_t min_clusters = 8;  //!< points with fewer clusters are not used
+	double flat_share = 0.5;  //!< the flat region: where the flat term holds at least this share of the AVAR
 };
 
 /** Reads the noise terms from an Allan deviation curve of a rate in deg/h (tau ascending).
