@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/model/Compensator.h>
+#include <mrpt_fog/model/CompensatorKernel.h>  // internal: kernel::cpuHasAvx2
 
 #include <cmath>
 #include <cstring>

@@ -46,9 +46,9 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 			degree[fs.termSignal(i)] = std::max(degree[fs.termSignal(i)], fs.terms()[i].power);
 	const std::size_t nc = names.size();
 	const double inf = std::numeric_limits<double>::infinity();
-	ChannelKernel& K = c.kernel;
+	std::vector<kernel::KernelBlock>& K = c.kernel;
 	K.resize((nc + 3) / 4);
-	for (KernelBlock& b : K)
+	for (kernel::KernelBlock& b : K)
 		for (int j = 0; j < 4; j++)
 		{
 			b.t_centre[j] = b.r_centre[j] = 0.0;
@@ -63,7 +63,7 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 		if (sig.isDifference()) continue;
 		const auto& nm = fs.normalisation()[s];
 		const int ch = chan(sig.a);
-		KernelBlock& b = K[ch / 4];
+		kernel::KernelBlock& b = K[ch / 4];
 		const int j = ch % 4;
 		const bool t = sig.kind == SignalKind::Temp;
 		(t ? b.t_centre : b.r_centre)[j] = nm.centre;
@@ -114,7 +114,7 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 			const double inv_scale = 1.0 / fs.normalisation()[s].scale;
 			double q = m.coef_dph.at(i);
 			for (int e = 0; e < k; e++) q *= inv_scale;
-			KernelBlock& b = K[ch / 4];
+			kernel::KernelBlock& b = K[ch / 4];
 			(sig.kind == SignalKind::Temp ? b.t_q : b.r_q)[k - 1][ch % 4] += q;
 			continue;
 		}
@@ -124,6 +124,13 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 	}
 	return c;
 }
+
+// Defined here, where Compiled is complete (Compensator.h only declares it).
+Compensator::~Compensator() = default;
+Compensator::Compensator(const Compensator&) = default;
+Compensator::Compensator(Compensator&&) noexcept = default;
+Compensator& Compensator::operator=(const Compensator&) = default;
+Compensator& Compensator::operator=(Compensator&&) noexcept = default;
 
 Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInfo>& layout, KernelBuild build)
 	: window_s_(cal.rate_estimator.window_s),

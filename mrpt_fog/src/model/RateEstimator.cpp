@@ -1,4 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/model/CausalRateTrackerInline.h>
 #include <mrpt_fog/model/RateEstimator.h>
 
 #include <Eigen/Dense>

@@ -28,7 +28,6 @@
  */
 
 #include <mrpt_fog/model/Calibration.h>
-#include <mrpt_fog/model/CompensatorKernel.h>
 #include <mrpt_fog/model/RateEstimator.h>
 
 #include <array>
@@ -71,6 +70,11 @@ class Compensator
    public:
 	/** layout: the thermistors of the series to be compensated, in its column order. */
 	Compensator(const Calibration& cal, const std::vector<ThermistorInfo>& layout, KernelBuild build = KernelBuild::Auto);
+	~Compensator();
+	Compensator(const Compensator&);
+	Compensator(Compensator&&) noexcept;
+	Compensator& operator=(const Compensator&);
+	Compensator& operator=(Compensator&&) noexcept;
 
 	struct Output
 	{
@@ -93,28 +97,10 @@ class Compensator
 	const char* kernelBuild() const { return use_avx2_ ? "avx2" : "portable"; }
 
    private:
-	/** The signals of one kind (T, dT/dt, dT, d/dt dT) of a model, struct-of-arrays, every
-	 * polynomial padded with zeros to the group's highest degree: clamping, normalisation and
-	 * Horner then run as fixed-length, branch-free loops over the signals. */
-	struct SignalGroup
-	{
-		int kind = 0, degree = 0;
-		std::vector<int> a, b;  // tracked-channel indices
-		std::vector<double> centre, inv_scale, lo, hi;
-		std::vector<double> p;  // coefficient of z^k of signal i at p[k * n + i], k = 1..degree
-	};
-	/** Per-channel kernel for the T(c) and dT/dt(c) terms (the multipoint shape), in blocks of 4
-	 * tracked channels (the last block padded), normalisation folded into the coefficients: see
-	 * CompensatorKernel.h. */
-	using KernelBlock = kernel::KernelBlock;
-	using ChannelKernel = std::vector<KernelBlock>;
-	struct Compiled
-	{
-		double c0 = 0;
-		ChannelKernel kernel;
-		std::vector<SignalGroup> groups;  // differences and their rates
-		std::uint32_t uses = 0;  // bit mask of the channels the model reads
-	};
+	/** One model compiled for the per-sample loop, and its signal groups: defined in
+	 * internal/mrpt_fog/model/CompensatorStep.h (an implementation detail, not installed). */
+	struct SignalGroup;
+	struct Compiled;
 	/** step() for NC == tracked channels (NC = 0: any count), kernel W lanes wide; defined in
 	 * CompensatorStep.h, compiled once for baseline x86-64 (stepFixed, W = 2) and once for
 	 * AVX2 (stepAvx2, CompensatorAvx2.cpp, NC = 1..4, W = 4), with bitwise the same results. */

@@ -2,8 +2,8 @@
 #pragma once
 
 /** \file CompensatorKernel.h
- * The compensator's per-channel polynomial kernel (an implementation detail of Compensator,
- * public so that the tests can compare its two builds). For every tracked channel c, a
+ * The compensator's per-channel polynomial kernel (an implementation detail of Compensator:
+ * internal, not installed; the tests compare its two builds through the build-tree path). For every tracked channel c, a
  * degree-5 polynomial in its temperature T_c and a degree-3 one in its rate R_c = dT_c/dt:
  *
  *   bias_dph = sum_c sum_k tq[k][c] (clamp(T_c) - t_centre[c])^k + rq[k][c] (clamp(R_c) - r_centre[c])^k

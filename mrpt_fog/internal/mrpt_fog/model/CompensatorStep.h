@@ -9,12 +9,36 @@
  */
 
 #include <mrpt_fog/model/Compensator.h>
+#include <mrpt_fog/model/CausalRateTrackerInline.h>
+#include <mrpt_fog/model/CompensatorKernel.h>
 
 #include <cmath>
 #include <cstring>
 
 namespace mrpt_fog
 {
+/** The signals of one kind (T, dT/dt, dT, d/dt dT) of a model, struct-of-arrays, every
+ * polynomial padded with zeros to the group's highest degree: clamping, normalisation and
+ * Horner then run as fixed-length, branch-free loops over the signals. */
+struct Compensator::SignalGroup
+{
+	int kind = 0, degree = 0;
+	std::vector<int> a, b;  // tracked-channel indices
+	std::vector<double> centre, inv_scale, lo, hi;
+	std::vector<double> p;  // coefficient of z^k of signal i at p[k * n + i], k = 1..degree
+};
+
+/** A compiled model. Per-channel kernel for the T(c) and dT/dt(c) terms (the multipoint shape),
+ * in blocks of 4 tracked channels (the last block padded), normalisation folded into the
+ * coefficients (CompensatorKernel.h); the other terms as signal groups. */
+struct Compensator::Compiled
+{
+	double c0 = 0;
+	std::vector<kernel::KernelBlock> kernel;
+	std::vector<SignalGroup> groups;  // differences and their rates
+	std::uint32_t uses = 0;  // bit mask of the channels the model reads
+};
+
 template <std::size_t NB, int W>
 [[gnu::always_inline]] inline double Compensator::evaluate(const Compiled& m, const double* temp_C, int& clamped) const
 {
