@@ -1,0 +1,121 @@
+/* fog-localize: MRPT particle-filter localization with raw, compensated and ideal FOG heading. */
+#include "Localization.h"
+
+#include <mrpt/bayes/CParticleFilter.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/random/RandomGenerators.h>
+#include <mrpt/slam/CMonteCarloLocalization2D.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace mrpt_fog::localize
+{
+mrpt::obs::CActionRobotMovement2D::TMotionModelOptions FogMotionModel::toMrpt(double dt_s) const
+{
+	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions m;
+	m.modelSelection = mrpt::obs::CActionRobotMovement2D::mmGaussian;
+	auto& g = m.gaussianModel;
+	g.a1 = distance_frac;  // [m/m]
+	g.a2 = 0.0;  // no position noise from turning
+	g.a3 = 0.0;  // no heading noise per metre: the heading is the FOG's, not the wheels'
+	g.a4 = scale_factor_ppm * 1e-6;  // [rad/rad]
+	g.minStdXY = min_std_xy_m;
+	g.minStdPHI = heading_bias_dph / 3600.0 * M_PI / 180.0 * std::sqrt(dt_s * horizon_s);  // [rad]
+	return m;
+}
+
+void applyLikelihoodOptions(mrpt::maps::COccupancyGridMap2D& grid, const MclOptions& o, double laser_range_m)
+{
+	auto& lo = grid.likelihoodOptions;
+	lo.likelihoodMethod = mrpt::maps::COccupancyGridMap2D::lmLikelihoodField_Thrun;
+	lo.LF_stdHit = static_cast<float>(o.lf_std_hit_m);
+	lo.LF_zHit = 0.95f;
+	lo.LF_zRandom = 0.05f;
+	lo.LF_maxRange = static_cast<float>(laser_range_m);
+	lo.LF_decimation = o.lf_decimation;
+	lo.LF_maxCorrsDistance = static_cast<float>(3.0 * o.lf_std_hit_m);
+	lo.enableLikelihoodCache = true;
+}
+
+MclRun runMcl(const World& world, const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& scans,
+			  const std::vector<double>& t, const std::vector<mrpt::poses::CPose2D>& odo, const mrpt::poses::CPose2D& start,
+			  const MclOptions& o, std::uint32_t seed)
+{
+	if (scans.size() != t.size() || odo.size() != t.size() || t.size() < 2)
+		throw std::invalid_argument("runMcl: scans, times and odometry differ in size or have fewer than 2 steps");
+	mrpt::random::getRandomGenerator().randomize(seed);
+
+	mrpt::slam::CMonteCarloLocalization2D pdf(o.particles);
+	pdf.options.metricMap = world.grid;
+	const double dyaw = o.init_yaw_deg * M_PI / 180.0;
+	pdf.resetUniform(start.x() - o.init_xy_m, start.x() + o.init_xy_m, start.y() - o.init_xy_m, start.y() + o.init_xy_m,
+					 start.phi() - dyaw, start.phi() + dyaw, static_cast<int>(o.particles));
+
+	mrpt::bayes::CParticleFilter pf;
+	pf.m_options.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
+	pf.m_options.resamplingMethod = mrpt::bayes::CParticleFilter::prSystematic;
+	pf.m_options.adaptiveSampleSize = false;
+	pf.m_options.BETA = 0.5;
+	pf.m_options.powFactor = o.pow_factor;
+
+	MclRun run;
+	auto record = [&](double tk, double scale) {
+		const mrpt::poses::CPose2D m = pdf.getMeanVal();
+		run.t_s.push_back(tk);
+		run.x_m.push_back(m.x());
+		run.y_m.push_back(m.y());
+		run.yaw_rad.push_back(m.phi());
+		run.odometry_scale.push_back(scale);
+	};
+	record(t[0], 1.0);
+
+	double scale = 1.0, sum_est_m = 0.0, sum_odo_m = 0.0;
+	std::size_t window_start = 0;  // first index of the current urban window
+	const Stretch* current = &stretchAt(world.stretches, t[0]);
+	for (std::size_t k = 1; k < t.size(); ++k)
+	{
+		mrpt::poses::CPose2D incr = odo[k] - odo[k - 1];
+		incr.x(incr.x() * scale);
+		incr.y(incr.y() * scale);
+		mrpt::obs::CActionRobotMovement2D act;
+		act.timestamp = mrpt::Clock::fromDouble(t[k]);
+		act.computeFromOdometry(incr, o.motion.toMrpt(t[k] - t[k - 1]));
+		mrpt::obs::CActionCollection acts;
+		acts.insert(act);
+		mrpt::obs::CSensoryFrame sf;
+		sf.insert(scans[k]);
+		mrpt::bayes::CParticleFilter::TParticleFilterStats stats;
+		pf.executeOn(pdf, &acts, &sf, &stats);
+		if (stats.ESS_beforeResample < pf.m_options.BETA) ++run.resamplings;
+		record(t[k], scale);
+
+		// Online odometry-scale calibration at the end of each urban stretch.
+		const Stretch* s = &stretchAt(world.stretches, t[k]);
+		if (s != current)
+		{
+			if (o.calibrate_odometry_scale && current->kind == StretchKind::Urban)
+			{
+				std::size_t a = window_start;
+				while (a < k && t[a] < current->t_begin_s + o.settle_s) ++a;
+				if (a + 1 < k)
+				{
+					const double est = std::hypot(run.x_m[k - 1] - run.x_m[a], run.y_m[k - 1] - run.y_m[a]);
+					const double od = std::hypot(odo[k - 1].x() - odo[a].x(), odo[k - 1].y() - odo[a].y());
+					if (od > 300.0)
+					{
+						sum_est_m += est;
+						sum_odo_m += od;
+						scale = sum_est_m / sum_odo_m;
+					}
+				}
+			}
+			current = s;
+			window_start = k;
+		}
+	}
+	return run;
+}
+
+}  // namespace mrpt_fog::localize

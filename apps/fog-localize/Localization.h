@@ -1,0 +1,81 @@
+/* fog-localize: MRPT particle-filter localization with raw, compensated and ideal FOG heading. */
+#pragma once
+
+/** \file Localization.h
+ * MRPT's Monte Carlo localization (mrpt::slam::CMonteCarloLocalization2D + CParticleFilter,
+ * standard proposal: the same code path as the pf-localization app) over the world's grid,
+ * with one laser scan and one odometry increment per step.
+ *
+ * Motion model (why not pf-localization's): the odometry's heading comes from the FOG, its
+ * distance from the wheels. pf-localization, given an observations-only rawlog, builds
+ * CActionRobotMovement2D with MRPT's Gaussian model of which it reads only minStdXY/minStdPHI:
+ * the model's a3 = 1 deg of heading noise per metre stays, i.e. 11 deg per 1 s step at 40 km/h,
+ * a wheel-odometry heading. Here every action carries its own Gaussian model (an
+ * actions-observations rawlog stores it, so pf-localization uses it too on the rawlog written):
+ *   heading std per step = minStdPHI (FOG bias uncertainty, see FogMotionModel)
+ *                          + a4 * |turn| (scale-factor uncertainty), a3 = 0 (no per-metre term);
+ *   position std per step = minStdXY + a1 * distance (wheel distance noise and residual scale).
+ *
+ * Odometry scale: wheel odometry carries a tyre-radius scale error (0.4 % on the bundled drive)
+ * that would dominate every open stretch whatever the gyro. As a vehicle does, the scale is
+ * calibrated online from the map-matched stretches: at the end of each urban stretch the
+ * filter's own estimated displacement over it (from 60 s after its start) is compared with
+ * the odometry's, and the accumulated ratio scales the following increments. No truth is used. */
+
+#include "Sensors.h"
+#include "World.h"
+
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace mrpt_fog::localize
+{
+/** A FOG's heading noise and a wheel's distance noise per step (defaults documented in
+ * docs/localize.md). */
+struct FogMotionModel
+{
+	double heading_bias_dph = 0.5;  //!< FOG bias uncertainty the filter allows [deg/h]
+	double horizon_s = 900.0;  //!< longest time without heading fixes the random walk must cover [s]
+	double scale_factor_ppm = 2000.0;  //!< heading error per turned angle [ppm]
+	double distance_frac = 0.003;  //!< distance std per metre driven [-]
+	double min_std_xy_m = 0.05;  //!< position std per step [m]
+
+	/** MRPT's Gaussian model for a step of dt_s. Per-step heading std = bias * sqrt(dt * horizon):
+	 * a random walk whose spread after `horizon` equals the drift of a constant bias of that size. */
+	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions toMrpt(double dt_s) const;
+};
+
+struct MclOptions
+{
+	std::size_t particles = 300;
+	FogMotionModel motion;
+	double init_xy_m = 2.0;  //!< initial particles uniform within +- this of the true start [m]
+	double init_yaw_deg = 0.5;  //!< and within +- this of the true heading
+	double lf_std_hit_m = 1.0;  //!< likelihood-field hit std (grid 2 m)
+	unsigned lf_decimation = 4;  //!< every 4th ray in the likelihood
+	double pow_factor = 0.2;  //!< likelihood exponent (scan rays are not independent)
+	bool calibrate_odometry_scale = true;
+	double settle_s = 60.0;  //!< scale calibration ignores the first seconds of an urban stretch
+};
+
+struct MclRun
+{
+	std::vector<double> t_s, x_m, y_m, yaw_rad;  //!< weighted-mean estimate at each scan
+	std::vector<double> odometry_scale;  //!< scale applied at each step
+	std::size_t resamplings = 0;
+};
+
+/** odo: the dead-reckoned odometry pose (FOG heading + wheel distance) at each scan time.
+ * The filter starts around start (the true pose at scan_t_s[0], as after a GNSS fix).
+ * seed seeds MRPT's global random generator (the filter is the only user during the run). */
+MclRun runMcl(const World& world, const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& scans,
+			  const std::vector<double>& scan_t_s, const std::vector<mrpt::poses::CPose2D>& odo,
+			  const mrpt::poses::CPose2D& start, const MclOptions& options, std::uint32_t seed);
+
+/** The grid's likelihood options used by runMcl (also written to the .ini). */
+void applyLikelihoodOptions(mrpt::maps::COccupancyGridMap2D& grid, const MclOptions& options, double laser_range_m);
+
+}  // namespace mrpt_fog::localize

@@ -1,0 +1,91 @@
+/* fog-localize: MRPT particle-filter localization with raw, compensated and ideal FOG heading. */
+#include "LocalizationErrors.h"
+
+#include <mrpt_fog_nav/Rotation.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mrpt_fog::localize
+{
+RunErrors computeErrors(const MclRun& run, const nav::Trajectory& truth, const std::vector<Stretch>& stretches,
+						double divergence_m, double recover_s)
+{
+	RunErrors e;
+	for (std::size_t k = 0; k < run.t_s.size(); ++k)
+	{
+		const nav::TrajectoryPoint p = nav::interpolate(truth, run.t_s[k]);
+		const double pos = std::hypot(run.x_m[k] - p.x_m, run.y_m[k] - p.y_m);
+		e.t_s.push_back(run.t_s[k]);
+		e.position_m.push_back(pos);
+		e.heading_deg.push_back(nav::wrapToPi(run.yaw_rad[k] - p.yaw_rad) * 180.0 / M_PI);
+		const Stretch& s = stretchAt(stretches, run.t_s[k]);
+		if (s.kind == StretchKind::Urban && run.t_s[k] > s.t_begin_s + recover_s)
+		{
+			e.max_urban_error_m = std::max(e.max_urban_error_m, pos);
+			if (pos > divergence_m) e.diverged = true;
+		}
+	}
+	return e;
+}
+
+GyroSummary summarize(const std::vector<RunErrors>& seeds, const std::vector<Stretch>& stretches)
+{
+	GyroSummary g;
+	std::vector<double> s2(stretches.size(), 0), h2(stretches.size(), 0), mx(stretches.size(), 0);
+	std::vector<std::size_t> n(stretches.size(), 0);
+	double all2 = 0;
+	std::size_t all_n = 0;
+	for (const auto& r : seeds)
+	{
+		double open2 = 0;
+		std::size_t open_n = 0;
+		for (std::size_t k = 0; k < r.t_s.size(); ++k)
+		{
+			const Stretch& s = stretchAt(stretches, r.t_s[k]);
+			const std::size_t i = static_cast<std::size_t>(&s - stretches.data());
+			s2[i] += r.position_m[k] * r.position_m[k];
+			h2[i] += r.heading_deg[k] * r.heading_deg[k];
+			mx[i] = std::max(mx[i], r.position_m[k]);
+			++n[i];
+			all2 += r.position_m[k] * r.position_m[k];
+			++all_n;
+			if (s.kind == StretchKind::Open)
+			{
+				open2 += r.position_m[k] * r.position_m[k];
+				++open_n;
+			}
+		}
+		g.open_rms_per_seed_m.push_back(open_n ? std::sqrt(open2 / open_n) : NAN);
+		g.diverged_runs += r.diverged ? 1 : 0;
+	}
+	std::map<StretchKind, double> k2, kh2;
+	std::map<StretchKind, std::size_t> kn;
+	double worst = -1;
+	for (std::size_t i = 0; i < stretches.size(); ++i)
+	{
+		StretchFigure f;
+		f.index = i;
+		f.position_rms_m = n[i] ? std::sqrt(s2[i] / n[i]) : NAN;
+		f.heading_rms_deg = n[i] ? std::sqrt(h2[i] / n[i]) : NAN;
+		f.position_max_m = mx[i];
+		g.stretches.push_back(f);
+		k2[stretches[i].kind] += s2[i];
+		kh2[stretches[i].kind] += h2[i];
+		kn[stretches[i].kind] += n[i];
+		if (stretches[i].kind == StretchKind::Open && f.position_rms_m > worst)
+		{
+			worst = f.position_rms_m;
+			g.worst_open = i;
+		}
+	}
+	for (const auto& [kind, sum] : k2)
+	{
+		g.position_rms_m[kind] = kn[kind] ? std::sqrt(sum / kn[kind]) : NAN;
+		g.heading_rms_deg[kind] = kn[kind] ? std::sqrt(kh2[kind] / kn[kind]) : NAN;
+	}
+	g.position_rms_all_m = all_n ? std::sqrt(all2 / all_n) : NAN;
+	return g;
+}
+
+}  // namespace mrpt_fog::localize

@@ -1,0 +1,45 @@
+/* fog-localize: MRPT particle-filter localization with raw, compensated and ideal FOG heading. */
+#pragma once
+
+/** \file LocalizeOutputs.h
+ * fog-localize's outputs: the text summary, the JSON (stable keys, docs/localize.md), the
+ * plots (map.png: the world and the stretches; errors.png: position and heading error vs
+ * time per gyro), and what MRPT's pf-localization app needs to rerun a gyro's case: the map
+ * (map.gridmap.gz), an actions-observations rawlog per gyro, an .ini per gyro and the ground
+ * truth as text. Every file is written atomically. */
+
+#include "Localization.h"
+#include "LocalizationErrors.h"
+#include "Sensors.h"
+#include "World.h"
+
+#include <string>
+#include <vector>
+
+namespace mrpt_fog::localize
+{
+struct GyroResult
+{
+	std::string name;
+	std::vector<unsigned> seeds;
+	std::vector<RunErrors> runs;  //!< per seed
+	std::vector<double> final_scale;  //!< odometry scale calibrated by the end, per seed
+	GyroSummary summary;
+	MclRun first_run;  //!< the first seed's estimate (for the plots)
+	std::vector<mrpt::poses::CPose2D> odometry;  //!< at the scan times (for the rawlog)
+};
+
+struct LocalizeResults
+{
+	std::string drive, calibration;
+	double t0_s = 0, runtime_s = 0;
+	std::vector<GyroResult> gyros;  //!< raw, compensated, ideal
+};
+
+void printSummary(const LocalizeResults& r, const World& world);
+
+void writeOutputs(const std::string& dir, const std::string& json_path, const LocalizeResults& r, const World& world,
+				  const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& scans, const std::vector<double>& scan_t_s,
+				  const nav::Trajectory& truth, const MclOptions& mcl, const LaserOptions& laser);
+
+}  // namespace mrpt_fog::localize

@@ -1,0 +1,28 @@
+# fog-localize end to end on the bundled drive (1 filter seed, 100 particles: ~10 s), checks of
+# what the world must give (tests/localize/check_localize.cmake), MRPT's own pf-localization run
+# on the written map / rawlog / .ini, and bad input.
+if(TARGET fog-localize)
+  set(LOC_DIR ${CMAKE_CURRENT_BINARY_DIR}/localize)
+  add_test(NAME localize.fog_localize.run COMMAND ${CMAKE_COMMAND} -E env
+    $<TARGET_FILE:fog-localize> --drive ${FOG_SOURCE_DIR}/datasets/drive.rawlog --out ${LOC_DIR} --json ${LOC_DIR}.json
+    --seeds 1 --particles 100)
+  set_tests_properties(localize.fog_localize.run PROPERTIES FIXTURES_SETUP loc_run LABELS "localize;integration" TIMEOUT 600)
+  add_test(NAME localize.fog_localize.check COMMAND ${CMAKE_COMMAND} -DJSON=${LOC_DIR}.json -DDIR=${LOC_DIR}
+    -P ${FOG_SOURCE_DIR}/tests/localize/check_localize.cmake)
+  set_tests_properties(localize.fog_localize.check PROPERTIES FIXTURES_REQUIRED loc_run LABELS "localize;integration")
+  find_program(LOC_PF_LOCALIZATION pf-localization)
+  if(LOC_PF_LOCALIZATION)
+    add_test(NAME localize.pf_localization.run
+      COMMAND sh -c "'${LOC_PF_LOCALIZATION}' pf-localization_compensated.ini < /dev/null > pf.log 2>&1"
+      WORKING_DIRECTORY ${LOC_DIR})
+    set_tests_properties(localize.pf_localization.run PROPERTIES FIXTURES_REQUIRED loc_run FIXTURES_SETUP loc_pf
+      ENVIRONMENT "DISPLAY=" LABELS "localize;integration" TIMEOUT 300)
+    add_test(NAME localize.pf_localization.check COMMAND ${CMAKE_COMMAND}
+      -DGT_ERROR=${LOC_DIR}/LOG_compensated_000_0000100/GT_error.txt -P ${FOG_SOURCE_DIR}/tests/localize/check_pf_error.cmake)
+    set_tests_properties(localize.pf_localization.check PROPERTIES FIXTURES_REQUIRED loc_pf LABELS "localize;integration")
+  endif()
+  add_test(NAME localize.fog_localize.bad_seeds COMMAND fog-localize --seeds 0 --out ${LOC_DIR}_bad)
+  add_test(NAME localize.fog_localize.missing_drive COMMAND fog-localize --drive ${LOC_DIR}/no_such.rawlog --cal x.yaml --out ${LOC_DIR}_bad)
+  set_tests_properties(localize.fog_localize.bad_seeds localize.fog_localize.missing_drive PROPERTIES
+    WILL_FAIL TRUE LABELS "localize;integration")
+endif()

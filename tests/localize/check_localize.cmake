@@ -1,0 +1,31 @@
+# Checks fog-localize's JSON (-D JSON=) and output folder (-D DIR=) on the bundled drive:
+# - every gyro has an open-stretch position RMS (the --json contract);
+# - the map localizes: urban RMS < 1 m for every gyro, and no run diverged;
+# - the open fields are observation-poor: their RMS exceeds the urban one for every gyro;
+# - the tunnel fixes heading and lateral position: its RMS is below the open fields' RMS;
+# - the files pf-localization needs exist.
+file(READ ${JSON} j)
+foreach(g raw compensated ideal)
+  string(JSON open GET "${j}" position_rms_m ${g})
+  string(JSON urban GET "${j}" position_rms_m_by_kind ${g} urban)
+  string(JSON tunnel GET "${j}" position_rms_m_by_kind ${g} tunnel)
+  string(JSON div GET "${j}" diverged_runs ${g})
+  message(STATUS "${g}: open ${open} m, tunnel ${tunnel} m, urban ${urban} m, diverged ${div}")
+  if(NOT urban LESS 1.0)
+    message(FATAL_ERROR "${g}: urban position RMS ${urban} m (the map should localize to < 1 m)")
+  endif()
+  if(NOT div EQUAL 0)
+    message(FATAL_ERROR "${g}: ${div} run(s) diverged")
+  endif()
+  if(NOT open GREATER urban)
+    message(FATAL_ERROR "${g}: open-field RMS ${open} m not above the urban ${urban} m")
+  endif()
+  if(NOT tunnel LESS open)
+    message(FATAL_ERROR "${g}: tunnel RMS ${tunnel} m not below the open-field ${open} m")
+  endif()
+endforeach()
+foreach(f map.gridmap.gz map.png errors.png ground_truth.txt localize_compensated.rawlog pf-localization_compensated.ini localize.json)
+  if(NOT EXISTS ${DIR}/${f})
+    message(FATAL_ERROR "fog-localize did not write ${DIR}/${f}")
+  endif()
+endforeach()
