@@ -99,16 +99,23 @@ MclRun runMcl(const World& world, const std::vector<mrpt::obs::CObservation2DRan
 			{
 				std::size_t a = window_start;
 				while (a < k && t[a] < current->t_begin_s + o.settle_s) ++a;
-				if (a + 1 < k)
+				// Sum of chords over sub-windows of ~chord_s: each chord is nearly the path length
+				// for both the estimate and the odometry, so a heading error of the odometry (which
+				// would change one long chord of a winding window) does not bias the ratio.
+				double est = 0, od = 0;
+				for (std::size_t b = a; b + 1 < k;)
 				{
-					const double est = std::hypot(run.x_m[k - 1] - run.x_m[a], run.y_m[k - 1] - run.y_m[a]);
-					const double od = std::hypot(odo[k - 1].x() - odo[a].x(), odo[k - 1].y() - odo[a].y());
-					if (od > 300.0)
-					{
-						sum_est_m += est;
-						sum_odo_m += od;
-						scale = sum_est_m / sum_odo_m;
-					}
+					std::size_t c = b;
+					while (c + 1 < k && t[c] < t[b] + o.chord_s) ++c;
+					est += std::hypot(run.x_m[c] - run.x_m[b], run.y_m[c] - run.y_m[b]);
+					od += std::hypot(odo[c].x() - odo[b].x(), odo[c].y() - odo[b].y());
+					b = c;
+				}
+				if (od > 300.0)
+				{
+					sum_est_m += est;
+					sum_odo_m += od;
+					scale = sum_est_m / sum_odo_m;
 				}
 			}
 			current = s;

@@ -113,12 +113,12 @@ int main(int argc, char** argv)
 										 "DPH", cmd);
 		TCLAP::ValueArg<double> arg_horizon("", "fog-horizon-s",
 											"motion model: heading random walk per step = bias * sqrt(dt * horizon) [s]",
-											false, 900.0, "S", cmd);
+											false, 60.0, "S", cmd);
 		TCLAP::ValueArg<double> arg_sf("", "fog-scale-factor-ppm",
 									   "motion model: heading error per turned angle [ppm]", false, 2000.0, "PPM", cmd);
 		TCLAP::ValueArg<double> arg_pow("", "pow-factor", "likelihood exponent of a scan (rays are not independent)",
-										false, 0.2, "X", cmd);
-		TCLAP::ValueArg<unsigned> arg_dec("", "lf-decimation", "use every N-th laser ray in the likelihood", false, 4,
+										false, 1.0, "X", cmd);
+		TCLAP::ValueArg<unsigned> arg_dec("", "lf-decimation", "use every N-th laser ray in the likelihood", false, 1,
 										  "N", cmd);
 		TCLAP::SwitchArg arg_noscale("", "no-scale-calibration",
 									 "do not calibrate the wheel odometry's distance scale on urban stretches", cmd);

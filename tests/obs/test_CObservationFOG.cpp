@@ -7,6 +7,9 @@
 #include <mrpt_fog/obs/registerAllClasses.h>
 
 #include <cmath>
+#include <vector>
+#include <sstream>
+#include <iterator>
 
 using namespace mrpt_fog;
 
@@ -121,6 +124,21 @@ TEST(CObservationFOG, ExportTxt)
 	EXPECT_EQ(o->exportTxtHeader(),
 			  "rate_x_dph rate_y_dph rate_z_dph temp_Ti1_C temp_To1_C temp_Ti2_C table_rate_dph field_uT power");
 	EXPECT_EQ(o->exportTxtDataRow(), "-3.25 NaN 12.5 21.37 NaN -39.99 15 NaN 0");
+}
+
+// rawlog-edit --export-txt keeps every stored bit: values that need 17 significant digits
+// (the former 10-digit export lost 1e-9 relative) read back to the same double.
+TEST(CObservationFOG, ExportTxtFullPrecision)
+{
+	auto o = makeSample();
+	const double rate = 0.1 + 1.0 / 3.0 * 1e-7, temp = -39.987654321098765;
+	o->setRate_dph(GyroAxis::Z, rate);
+	o->temp_C[0] = temp;
+	std::istringstream row(o->exportTxtDataRow());
+	std::vector<std::string> cols{std::istream_iterator<std::string>(row), std::istream_iterator<std::string>()};
+	ASSERT_EQ(cols.size(), 9u);
+	EXPECT_EQ(std::stod(cols[2]), rate) << cols[2];
+	EXPECT_EQ(std::stod(cols[3]), temp) << cols[3];
 }
 
 TEST(CObservationFOG, DescriptionMentionsDropout)

@@ -74,6 +74,15 @@ if(NOT EXISTS ${WORK}/odometry.rawlog)
   message(FATAL_ERROR "example wrote no odometry rawlog")
 endif()
 
+# fog-rawlog-edit (installed script): rawlog-edit with the moved prefix's plugin reads every
+# FOG object of the drive (12001 FOG + 12001 FOG_IDEAL samples).
+find_program(RAWLOG_EDIT_FOUND rawlog-edit)
+if(RAWLOG_EDIT_FOUND)
+  step("fog-rawlog-edit --info" ${prefix}/bin/fog-rawlog-edit --info -i ${DRIVE})
+  if(NOT out MATCHES "FOG_IDEAL / +12001 ")
+    message(FATAL_ERROR "fog-rawlog-edit --info did not read the FOG_IDEAL objects:\n${out}")
+  endif()
+endif()
 step("configure reader-only" ${CMAKE_COMMAND} -S ${READER_SRC} -B ${WORK}/reader -G ${CMAKE_GENERATOR}
   -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
 step("build reader-only" ${CMAKE_COMMAND} --build ${WORK}/reader)

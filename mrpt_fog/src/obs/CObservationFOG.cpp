@@ -7,6 +7,7 @@
 #include <mrpt_fog/obs/CObservationFOG.h>
 #include <mrpt_fog/obs/Units.h>
 
+#include <charconv>
 #include <cmath>
 #include <limits>
 #include <ostream>
@@ -199,11 +200,17 @@ std::string CObservationFOG::exportTxtHeader() const
 
 std::string CObservationFOG::exportTxtDataRow() const
 {
+	// Shortest text that reads back to the same double (std::to_chars): rawlog-edit --export-txt
+	// keeps the full precision of the stored values.
 	std::ostringstream s;
-	s.precision(10);
 	auto put = [&](bool present, double v) {
 		s << ' ';
-		if (present && std::isfinite(v)) s << v;
+		if (present && std::isfinite(v))
+		{
+			char buf[32];
+			const auto r = std::to_chars(buf, buf + sizeof(buf), v);
+			s.write(buf, r.ptr - buf);
+		}
 		else s << "NaN";
 	};
 	for (int a = 0; a < 3; a++) put(hasAxis[a], rate_dph[a]);
