@@ -138,7 +138,8 @@ int main(int argc, char** argv)
 		{
 			const std::string chamber = (defaultDatasetsDir() / "chamber_A.rawlog").string();
 			cal_path = (out / "cal_A.yaml").string();
-			saveCalibrationYaml(fitCalibration({readFogLog(chamber)}, "multipoint", {}, {chamber}), cal_path);
+			const FitOptions fit_options;
+			saveCalibrationYaml(fitCalibration({readFogLog(chamber)}, "multipoint", fit_options, {chamber}), cal_path);
 			std::printf("fog-localize: calibration fitted on %s (multipoint) -> %s\n", chamber.c_str(), cal_path.c_str());
 		}
 
