@@ -8,9 +8,11 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt_fog/common/OutputSafety.h>
 #include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt_fog/discrepancy/CalibrationAugment.h>
 #include <mrpt_fog/discrepancy/DiscrepancyAnalysis.h>
 #include <mrpt_fog/discrepancy/SimulatorGap.h>
 #include <mrpt_fog/io/FogLogIO.h>
+#include <mrpt_fog/model/CalibrationYaml.h>
 
 #include <filesystem>
 #include <iostream>
@@ -39,6 +41,12 @@ int main(int argc, char** argv)
 		cmd.xorAdd(model, sim);
 		TCLAP::ValueArg<std::string> json("", "json", "write the figures as JSON", false, "", "FILE", cmd);
 		TCLAP::ValueArg<std::string> plots("", "plots", "write residual PNGs into this directory", false, "", "DIR", cmd);
+		TCLAP::ValueArg<std::string> write_cal(
+			"", "write-cal",
+			"write the calibration under test plus the named, confirmed effects the compensator can run (thermal "
+			"terms), refitted on the first run, and show the gap before/after on the second run through the "
+			"compensator (--model only)",
+			false, "", "OUT.yaml", cmd);
 		TCLAP::ValueArg<double> alpha("", "alpha", "family-wise significance level (Holm)", false, 0.005, "P", cmd);
 		TCLAP::ValueArg<std::string> label("", "fog-label", "FOG sensor label in a rawlog with several", false, "",
 										   "LABEL", cmd);
@@ -49,8 +57,14 @@ int main(int argc, char** argv)
 									 " times: at most two runs (the first is analysed, the second confirms)");
 		if (!(alpha.getValue() > 0 && alpha.getValue() < 0.5))
 			throw std::runtime_error("--alpha " + std::to_string(alpha.getValue()) + ": must be in (0, 0.5)");
-		if (plots.isSet() && !std::filesystem::is_directory(plots.getValue()))
-			throw std::runtime_error("--plots " + plots.getValue() + ": not a directory");
+		if (plots.isSet())
+		{
+			std::error_code ec;
+			std::filesystem::create_directories(plots.getValue(), ec);  // like fog-evaluate
+			if (!std::filesystem::is_directory(plots.getValue()))
+				throw std::runtime_error("--plots " + plots.getValue() + ": cannot create the directory" +
+										 (ec ? ": " + ec.message() : std::string()));
+		}
 
 		std::vector<FileArg> inputs{{"--model", model.getValue()}, {"--sim", sim.getValue()}};
 		for (const auto& f : measured.getValue()) inputs.push_back({"--measured", f});
@@ -99,6 +113,24 @@ int main(int argc, char** argv)
 			}
 			doc = discrepancy::discrepancyJson(rep);
 			text = discrepancy::discrepancyText(rep);
+		}
+		if (write_cal.isSet())
+		{
+			if (sim.isSet()) throw std::runtime_error("--write-cal needs --model (a bias-model preset or calibration)");
+			discrepancy::AugmentedCalibration aug;
+			try
+			{
+				aug = discrepancy::augmentCalibration(model.getValue(), rep.selection.named, runs[0],
+													  runs.size() == 2 ? &runs[1] : nullptr,
+													  runs.size() == 2 ? labels[1] : std::string());
+			}
+			catch (const std::invalid_argument& e)
+			{
+				throw std::runtime_error(measured.getValue().front() + ": --write-cal: " + e.what());
+			}
+			saveCalibrationYaml(aug.augmented, write_cal.getValue());
+			text += discrepancy::augmentedCalibrationText(aug, write_cal.getValue());
+			doc["write_cal"] = discrepancy::augmentedCalibrationJson(aug, write_cal.getValue());
 		}
 		std::cout << text;
 		if (plots.isSet())

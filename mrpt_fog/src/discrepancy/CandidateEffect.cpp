@@ -3,6 +3,7 @@
 #include <mrpt_fog/discrepancy/CandidateEffect.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <stdexcept>
 
@@ -68,6 +69,62 @@ std::vector<double> firstOrderLag(const RunSignals& s, const std::vector<double>
 	return y;
 }
 
+std::vector<CandidateEffect> makeLibrary();
+}  // namespace
+
+HeatingCoolingCoverage heatingCoolingCoverage(const RunSignals& s, double moving_rate_Cpm)
+{
+	HeatingCoolingCoverage c;
+	double hLo = INFINITY, hHi = -INFINITY, cLo = INFINITY, cHi = -INFINITY;
+	for (std::size_t k = 0; k < s.size(); ++k)
+	{
+		if (!s.usable[k] || !std::isfinite(s.temp_mean_C[k])) continue;
+		const double r = s.dtemp_dt_Cpm[k], T = s.temp_mean_C[k];
+		const double dt = k > 0 ? std::min(s.time_s[k] - s.time_s[k - 1], 3.0 * s.dt_s) : s.dt_s;
+		if (r >= moving_rate_Cpm)
+		{
+			c.heating_s += dt;
+			hLo = std::min(hLo, T);
+			hHi = std::max(hHi, T);
+		}
+		else if (r <= -moving_rate_Cpm)
+		{
+			c.cooling_s += dt;
+			cLo = std::min(cLo, T);
+			cHi = std::max(cHi, T);
+		}
+	}
+	if (c.heating_s > 0) c.heating_C = {hLo, hHi};
+	if (c.cooling_s > 0) c.cooling_C = {cLo, cHi};
+	if (c.heating_s > 0 && c.cooling_s > 0) c.shared_span_C = std::max(0.0, std::min(hHi, cHi) - std::max(hLo, cLo));
+	return c;
+}
+
+std::string hysteresisUntestableReason(const RunSignals& s)
+{
+	const auto c = heatingCoolingCoverage(s);
+	char buf[300];
+	if (c.heating_s < 600 || c.cooling_s < 600)
+	{
+		std::snprintf(buf, sizeof buf,
+					  "the run does not both heat and cool (heating %.0f s, cooling %.0f s at |dT/dt| >= 0.05 C/min; "
+					  "at least 600 s of each is needed)",
+					  c.heating_s, c.cooling_s);
+		return buf;
+	}
+	if (c.shared_span_C < 1.0)
+	{
+		std::snprintf(buf, sizeof buf,
+					  "heating (%.1f..%.1f C) and cooling (%.1f..%.1f C) share %.2f C of temperature range "
+					  "(at least 1 C is needed)",
+					  c.heating_C.first, c.heating_C.second, c.cooling_C.first, c.cooling_C.second, c.shared_span_C);
+		return buf;
+	}
+	return {};
+}
+
+namespace
+{
 std::vector<CandidateEffect> makeLibrary()
 {
 	std::vector<CandidateEffect> lib;
@@ -149,7 +206,7 @@ std::vector<CandidateEffect> makeLibrary()
 		c.theta_name = "span_C";
 		c.theta_grid = {0.5, 1.0, 2.0, 5.0, 10.0, 20.0};
 		c.build = [](const CandidateContext& ctx, double span_C) { return column(hysteresisBranch(*ctx.sig, span_C)); };
-		c.untestable_reason = always;
+		c.untestable_reason = hysteresisUntestableReason;
 		lib.push_back(c);
 	}
 	{
@@ -188,7 +245,13 @@ std::vector<CandidateEffect> makeLibrary()
 			return column(transitions ? after : start);
 		};
 		c.untestable_reason = [](const RunSignals& s)
-		{ return s.power_on_s.empty() ? std::string("no power-on in the run") : std::string(); };
+		{
+			// a turn-on must be seen (power 0 -> 1): a run powered from its first sample does not
+			// say when the gyro was switched on, so a decay from the run start is not identified
+			for (double t_on : s.power_on_s)
+				if (s.size() > 0 && t_on > s.time_s.front()) return std::string();
+			return std::string("no turn-on in the run (power never goes from 0 to 1)");
+		};
 		lib.push_back(c);
 	}
 	{

@@ -3,7 +3,9 @@
 #include <mrpt_fog/metrics/BiasMetrics.h>
 #include <mrpt_fog/metrics/PlotCanvas.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <cstdio>
 #include <limits>
 #include <sstream>
@@ -96,6 +98,8 @@ JsonValue runGapJson(const RunGap& g, double tau_s)
 {
 	JsonValue j = JsonValue::object();
 	j["run"] = g.label;
+	j["outside_model_range_samples"] = static_cast<unsigned long>(g.outside_model_range);
+	j["validity_note"] = g.validity_note;
 	j["before"] = figuresJson(g.before, tau_s);
 	j["after"] = figuresJson(g.after, tau_s);
 	JsonValue segs = JsonValue::array();
@@ -146,6 +150,7 @@ RunGap runGapFromResiduals(const std::string& label, const RunSignals& sig, cons
 
 std::string DiscrepancyReport::verdict() const
 {
+	if (!cannot_tell.empty()) return "cannot tell: " + cannot_tell;
 	if (selection.named.empty()) return "no missing effect found";
 	std::string v = "missing: ";
 	for (std::size_t i = 0; i < selection.named.size(); ++i)
@@ -162,6 +167,95 @@ std::string DiscrepancyReport::verdict() const
 	return v;
 }
 
+namespace
+{
+double percentile(std::vector<double> v, double q)
+{
+	if (v.empty()) return kNaN;
+	std::sort(v.begin(), v.end());
+	return v[static_cast<std::size_t>(std::floor(q * static_cast<double>(v.size() - 1)))];
+}
+
+/** Why the analysed run cannot answer, or "" (see DiscrepancyOptions). */
+std::string informationShortfall(const RunSignals& sig, const FogSeries& run, const DiscrepancyOptions& opt)
+{
+	char buf[300];
+	double usable_s = 0;
+	std::vector<double> temps;
+	for (std::size_t k = 0; k < sig.size(); ++k)
+		if (sig.usable[k])
+		{
+			usable_s += k > 0 ? std::min(sig.time_s[k] - sig.time_s[k - 1], 3.0 * sig.dt_s) : sig.dt_s;
+			temps.push_back(sig.temp_mean_C[k]);
+		}
+	if (usable_s < opt.min_usable_s)
+	{
+		std::snprintf(buf, sizeof buf, "only %.0f min of usable data on the analysed run (at least %.0f min needed)",
+					  usable_s / 60.0, opt.min_usable_s / 60.0);
+		return buf;
+	}
+	const double span = percentile(temps, 0.99) - percentile(temps, 0.01);
+	if (!(span >= opt.min_temp_span_C))
+	{
+		std::snprintf(buf, sizeof buf, "the mean temperature spans only %.2f C (at least %.1f C needed)", span,
+					  opt.min_temp_span_C);
+		return buf;
+	}
+	// quantisation: the most common non-zero step between consecutive readings
+	std::vector<double> steps;
+	for (const auto& col : run.temp_C)
+		for (std::size_t k = 1; k < col.size(); ++k)
+		{
+			const double d = std::fabs(col[k] - col[k - 1]);
+			if (std::isfinite(d) && d > 0) steps.push_back(d);
+		}
+	const double quantum = steps.size() >= 20 ? percentile(steps, 0.05) : 0.0;
+	if (quantum > 0 && span / quantum < opt.min_span_quanta)
+	{
+		std::snprintf(buf, sizeof buf,
+					  "the temperatures are quantised to about %.3g C over a span of %.2f C (%.0f levels, at least "
+					  "%.0f needed)",
+					  quantum, span, span / quantum, opt.min_span_quanta);
+		return buf;
+	}
+	return {};
+}
+
+/** Range of each thermistor over the usable samples of the run a model was fitted on. */
+std::vector<std::pair<double, double>> fittedRanges(const RunSignals& sig)
+{
+	std::vector<std::pair<double, double>> r(sig.thermistor_C.size(), {INFINITY, -INFINITY});
+	for (std::size_t i = 0; i < r.size(); ++i)
+		for (std::size_t k = 0; k < sig.size(); ++k)
+			if (sig.usable[k])
+			{
+				r[i].first = std::min(r[i].first, sig.thermistor_C[i][k]);
+				r[i].second = std::max(r[i].second, sig.thermistor_C[i][k]);
+			}
+	return r;
+}
+
+/** Usable rows of `sig` inside the fitted ranges; counts those outside. */
+std::vector<unsigned char> rowsInsideRange(const RunSignals& sig, const std::vector<std::pair<double, double>>& range,
+										   std::size_t& outside)
+{
+	std::vector<unsigned char> rows(sig.usable);
+	outside = 0;
+	for (std::size_t k = 0; k < sig.size(); ++k)
+	{
+		if (!rows[k]) continue;
+		for (std::size_t i = 0; i < range.size() && i < sig.thermistor_C.size(); ++i)
+			if (sig.thermistor_C[i][k] < range[i].first || sig.thermistor_C[i][k] > range[i].second)
+			{
+				rows[k] = 0;
+				++outside;
+				break;
+			}
+	}
+	return rows;
+}
+}  // namespace
+
 DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const std::vector<std::string>& labels,
 									 const std::string& model, const DiscrepancyOptions& opt)
 {
@@ -176,22 +270,154 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 	for (std::size_t i = 0; i < runs.size(); ++i)
 		rep.run_labels.push_back(i < labels.size() ? labels[i] : "run " + std::to_string(i + 1));
 
-	const auto spec = resolveBaseModel(model, runs[0]);
 	const auto sig1 = computeRunSignals(runs[0], opt.signals);
+	BaseModelSpec spec;
+	try
+	{
+		spec = resolveBaseModel(model, runs[0]);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		// the model cannot even be fitted: when the run holds too little information that is
+		// the answer ("cannot tell"), otherwise the error stands
+		rep.cannot_tell = informationShortfall(sig1, runs[0], opt);
+		if (rep.cannot_tell.empty()) throw;
+		rep.cannot_tell += std::string(" (the model cannot be fitted: ") + e.what() + ")";
+		return rep;
+	}
 	const auto base1 = buildBaseDesign(spec, runs[0], sig1);
 	rep.base_terms = base1.names;
 	rep.selection = selectMissingEffects(sig1, base1, opt.selection);
+	rep.cannot_tell = informationShortfall(sig1, runs[0], opt);
+	if (rep.cannot_tell.empty() && !rep.selection.named.empty() && !rep.selection.ar.phi.empty())
+	{
+		// slow bias wander: a run a few correlation times long cannot tell a drift from an effect
+		const double phi = rep.selection.ar.phi.front();
+		if (phi > 0 && phi < 1)
+		{
+			const double corr_s = -sig1.dt_s / std::log(phi);
+			const double spans = (sig1.time_s.back() - sig1.time_s.front()) / corr_s;
+			if (spans < opt.min_wander_spans)
+			{
+				char buf[300];
+				std::snprintf(buf, sizeof buf,
+							  "the residual wanders with a correlation time of %.0f min: the run covers only %.1f of them "
+							  "(at least %.0f needed to tell a slow drift from an effect)",
+							  corr_s / 60.0, spans, opt.min_wander_spans);
+				rep.cannot_tell = buf;
+			}
+		}
+	}
+	std::optional<RunSignals> sig2;
+	std::optional<BaseDesign> base2;
 	if (runs.size() == 2)
 	{
-		// confirm first: only effects confirmed on the second run are added (keepConfirmedEffects)
+		sig2 = computeRunSignals(runs[1], opt.signals);
+		base2 = buildBaseDesign(spec, runs[1], *sig2);
+		confirmOnRun(rep.selection, *sig2, *base2, opt.selection);
+	}
+	// Guard rails (after confirmation): an effect is not named when the data cannot answer,
+	// when its fitted contribution is larger than the raw bias range, or when its 95 %
+	// interval includes zero; it is then refitted away like an unconfirmed one.
+	{
+		auto& sel = rep.selection;
+		double lo = INFINITY, hi = -INFINITY;
+		for (std::size_t k = 0; k < sig1.size(); ++k)
+			if (sel.fit_rows[k] && std::isfinite(sig1.bias_dph[k]))
+			{
+				lo = std::min(lo, sig1.bias_dph[k]);
+				hi = std::max(hi, sig1.bias_dph[k]);
+			}
+		const double raw_range = hi - lo;
+		const Eigen::MatrixXd X = sel.model.design(base1, sig1);
+		const auto ctx = makeCandidateContext(sig1, base1, sel.model.lag_base_coef);
+		Eigen::Index col = base1.X.cols();
+		std::vector<std::pair<std::string, std::string>> reasons;
+		for (const auto& term : sel.model.effects)
+		{
+			const Eigen::Index q = candidateById(term.id).build(ctx, term.theta).cols();
+			std::string reason;
+			if (!rep.cannot_tell.empty()) reason = "cannot tell: " + rep.cannot_tell;
+			else if (col + q <= X.cols() && col + q <= sel.coef_after.size())
+			{
+				const Eigen::VectorXd part = X.middleCols(col, q) * sel.coef_after.segment(col, q);
+				double plo = INFINITY, phi = -INFINITY;
+				for (std::size_t k = 0; k < sig1.size(); ++k)
+					if (sel.fit_rows[k])
+					{
+						plo = std::min(plo, part(static_cast<Eigen::Index>(k)));
+						phi = std::max(phi, part(static_cast<Eigen::Index>(k)));
+					}
+				if (phi - plo > raw_range)
+				{
+					char buf[200];
+					std::snprintf(buf, sizeof buf,
+								  "implausible: its fitted contribution spans %.4g deg/h, more than the raw bias range "
+								  "%.4g deg/h",
+								  phi - plo, raw_range);
+					reason = buf;
+				}
+			}
+			col += q;
+			if (reason.empty())
+				for (const auto& ne : sel.named)
+					if (ne.id == term.id && ne.ci_low <= 0 && ne.ci_high >= 0)
+						reason = "its 95 % interval includes zero";
+			if (!reason.empty()) reasons.emplace_back(term.id, reason);
+		}
+		if (!reasons.empty())
+		{
+			for (auto& ne : sel.named)
+				for (const auto& [id, why] : reasons)
+					if (ne.id == id)
+					{
+						ne.confirm_tested = true;
+						ne.confirmed = false;
+					}
+			const std::size_t before = sel.not_confirmed.size();
+			keepConfirmedEffects(sel, sig1, base1);
+			// the guard-railed ones go to `rejected`, not to `not_confirmed`
+			std::vector<NamedEffect> still;
+			for (std::size_t i = 0; i < sel.not_confirmed.size(); ++i)
+			{
+				bool guarded = false;
+				if (i >= before)
+					for (const auto& [id, why] : reasons)
+						if (sel.not_confirmed[i].id == id)
+						{
+							rep.rejected.push_back({id, why});
+							guarded = true;
+						}
+				if (!guarded) still.push_back(sel.not_confirmed[i]);
+			}
+			sel.not_confirmed = still;
+		}
+	}
+	if (runs.size() == 2)
+	{
+		// only effects confirmed on the second run are added (keepConfirmedEffects); the gap is
+		// computed only where the model is valid (inside the temperatures it was fitted on)
 		rep.has_confirm = true;
-		const auto sig2 = computeRunSignals(runs[1], opt.signals);
-		const auto base2 = buildBaseDesign(spec, runs[1], sig2);
-		confirmOnRun(rep.selection, sig2, base2, opt.selection);
 		keepConfirmedEffects(rep.selection, sig1, base1);
-		const auto rb = residualWithCoefficients(base2.X, sig2, rep.selection.coef_before);
-		const auto ra = residualWithCoefficients(rep.selection.model.design(base2, sig2), sig2, rep.selection.coef_after);
-		rep.gap_confirm = makeRunGap(rep.run_labels[1], sig2, segmentRun(sig2, opt.segmentation), rb, ra, sig2.usable, opt);
+		const auto rb = residualWithCoefficients(base2->X, *sig2, rep.selection.coef_before);
+		const auto ra = residualWithCoefficients(rep.selection.model.design(*base2, *sig2), *sig2, rep.selection.coef_after);
+		std::size_t outside = 0;
+		const auto range = fittedRanges(sig1);
+		const auto rows2 = rowsInsideRange(*sig2, range, outside);
+		rep.gap_confirm = makeRunGap(rep.run_labels[1], *sig2, segmentRun(*sig2, opt.segmentation), rb, ra, rows2, opt);
+		rep.gap_confirm.outside_model_range = outside;
+		if (outside > 0)
+		{
+			const std::size_t usable = sig2->usableCount();
+			char buf[300];
+			std::snprintf(buf, sizeof buf,
+						  "%.1f %% of %s's usable samples have a thermistor outside the range the model was fitted on "
+						  "(e.g. %s %.2f..%.2f C): left out of its gap figures (no extrapolation)",
+						  usable ? 100.0 * double(outside) / double(usable) : 0.0, rep.run_labels[1].c_str(),
+						  runs[0].thermistors.empty() ? "?" : runs[0].thermistors[0].name.c_str(),
+						  range.empty() ? NAN : range[0].first, range.empty() ? NAN : range[0].second);
+			rep.gap_confirm.validity_note = buf;
+		}
 	}
 	const auto segs1 = segmentRun(sig1, opt.segmentation);
 	rep.gap = makeRunGap(rep.run_labels[0], sig1, segs1, rep.selection.residual_before, rep.selection.residual_after,
@@ -255,6 +481,16 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 		unconfirmed.push_back(e);
 	}
 	j["not_confirmed"] = unconfirmed;
+	JsonValue rejected = JsonValue::array();
+	for (const auto& r : rep.rejected)
+	{
+		JsonValue e = JsonValue::object();
+		e["id"] = r.id;
+		e["reason"] = r.reason;
+		rejected.push_back(e);
+	}
+	j["not_named"] = rejected;
+	j["cannot_tell"] = rep.cannot_tell;
 	j["where"] = rep.gap.ranking_before.sentence;
 	JsonValue segs = JsonValue::array();
 	int rank = 1;
@@ -308,6 +544,8 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 {
 	std::ostringstream os;
 	const auto& sel = rep.selection;
+	if (rep.base_terms.empty() && !rep.cannot_tell.empty())
+		return "Model under test: " + rep.model_source + " (not fitted)\nVerdict: " + rep.verdict() + "\n";
 	os << "Model under test: " << rep.model_source << " (" << rep.base_terms.size() << " terms, refitted on "
 	   << rep.run_labels[0] << ")\n";
 	os << "Where: " << rep.gap.ranking_before.sentence << "\n";
@@ -343,6 +581,7 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 		   << fmt("%.4g", ne.coefficient) << " " << ne.coefficient_unit << ", Holm p " << fmt("%.2g", ne.p_adjusted)
 		   << "; on the confirmation run p " << fmt("%.2g", ne.confirm_p)
 		   << (ne.confirm_p < 0.01 ? " with the opposite sign" : "") << "\n";
+	for (const auto& r : rep.rejected) os << "  not named: " << r.id << " (" << r.reason << ")\n";
 	if (!sel.rounds.empty())
 	{
 		std::string skipped;
@@ -359,6 +598,7 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 	};
 	gapLine(rep.gap);
 	if (rep.has_confirm) gapLine(rep.gap_confirm);
+	if (rep.has_confirm && !rep.gap_confirm.validity_note.empty()) os << "  (" << rep.gap_confirm.validity_note << ")\n";
 	os << "Noise model: ARMA(" << sel.ar.order() << ",1) theta " << fmt("%.2f", sel.ar.theta) << ", long-run factor "
 	   << fmt("%.2f", sel.lrv_factor) << ", " << sel.outliers << " outlier(s) excluded\n";
 	return os.str();

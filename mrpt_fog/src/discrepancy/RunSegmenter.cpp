@@ -52,7 +52,8 @@ std::string kindPhrase(SegmentType t, const std::string& dir, bool plural)
 	{
 		case SegmentType::RampUp: return "heating ramp" + s;
 		case SegmentType::RampDown: return "cooling ramp" + s;
-		case SegmentType::Step: return (dir == "cooling" ? "cooling step" : "heating step") + s;
+		case SegmentType::Step:
+			return (dir == "cooling" ? "cooling step" : dir == "heating" ? "heating step" : "temperature step") + s;
 		case SegmentType::Soak: return "soak" + s;
 		case SegmentType::PowerOn: return "power-on transient" + s;
 		case SegmentType::RateTable: return "rate-table segment" + s;
@@ -112,15 +113,18 @@ std::vector<Segment> segmentRun(const RunSignals& s, const SegmentationOptions& 
 		if (s.has_power)
 		{
 			while (on + 1 < s.power_on_s.size() && s.power_on_s[on + 1] <= s.time_s[k]) ++on;
-			if (!s.power_on_s.empty() && s.time_s[k] >= s.power_on_s[on] &&
+			// only after a turn-on seen in the run (a run that starts powered has no known turn-on)
+			if (!s.power_on_s.empty() && s.power_on_s[on] > s.time_s.front() && s.time_s[k] >= s.power_on_s[on] &&
 				s.time_s[k] - s.power_on_s[on] < opt.power_on_transient_s)
 				lab[k] = SegmentType::PowerOn;
 			if (s.power[k] < 0.5) lab[k] = SegmentType::PowerOff;
 		}
 	}
-	// 3. run-length segments, short ones merged into the previous one
+	// 3. run-length segments, short ones merged into the previous one; a step keeps the sign of
+	// its stretch (a cooling step is never merged into a heating one)
 	std::vector<int> band(n);
-	for (std::size_t k = 0; k < n; ++k) band[k] = bandIndex(s.temp_mean_C[k]);
+	for (std::size_t k = 0; k < n; ++k)
+		band[k] = bandIndex(s.temp_mean_C[k]) * 4 + (lab[k] == SegmentType::Step ? dir[k] + 1 : 3);
 	std::vector<Segment> segs;
 	for (std::size_t k = 0; k < n;)
 	{
@@ -143,8 +147,7 @@ std::vector<Segment> segmentRun(const RunSignals& s, const SegmentationOptions& 
 	std::vector<Segment> merged;
 	for (const auto& g : segs)
 	{
-		if (!merged.empty() && merged.back().type == g.type &&
-			bandIndex(s.temp_mean_C[merged.back().begin]) == bandIndex(s.temp_mean_C[g.begin]))
+		if (!merged.empty() && merged.back().type == g.type && band[merged.back().begin] == band[g.begin])
 			merged.back().end = g.end;
 		else
 			merged.push_back(g);
@@ -168,6 +171,7 @@ std::vector<Segment> segmentRun(const RunSignals& s, const SegmentationOptions& 
 		g.direction = std::fabs(g.mean_rate_Cpm) < opt.moving_rate_Cpm ? "steady" : (g.mean_rate_Cpm > 0 ? "heating" : "cooling");
 		if (g.type == SegmentType::RampUp) g.direction = "heating";
 		if (g.type == SegmentType::RampDown) g.direction = "cooling";
+		if (g.type == SegmentType::Step && dir[g.begin] != 0) g.direction = dir[g.begin] > 0 ? "heating" : "cooling";
 	}
 	return merged;
 }

@@ -15,6 +15,8 @@
 #include <mrpt_fog/discrepancy/RunSignals.h>
 
 #include <Eigen/Dense>
+#include <cmath>
+#include <utility>
 #include <functional>
 #include <string>
 #include <vector>
@@ -72,6 +74,20 @@ double heatingCoolingSign(double dtemp_dt_Cpm);
  * smoothed mean thermistor temperature over each sample (raw change across gaps and power-off);
  * it keeps its value through soaks. h = 0 at the run start. Throws for span_C <= 0. */
 std::vector<double> hysteresisBranch(const RunSignals& sig, double span_C);
+
+/** Where a run heats and where it cools (usable samples, |d(mean T)/dt| >= moving_rate_Cpm). */
+struct HeatingCoolingCoverage
+{
+	double heating_s = 0, cooling_s = 0;  //!< time spent heating / cooling [s]
+	std::pair<double, double> heating_C{NAN, NAN}, cooling_C{NAN, NAN};  //!< temperature ranges [degC]
+	double shared_span_C = 0;  //!< overlap of the two ranges [degC] (0 when one is missing)
+};
+HeatingCoolingCoverage heatingCoolingCoverage(const RunSignals& sig, double moving_rate_Cpm = 0.05);
+
+/** Why hysteresis cannot be identified on this run ("" when it can): it needs >= 600 s of both
+ * heating and cooling over a shared temperature range of >= 1 C (a monotonic run, or heating and
+ * cooling in disjoint bands, cannot tell a hysteresis from a static temperature term). */
+std::string hysteresisUntestableReason(const RunSignals& sig);
 
 /** The advice (test profile) that would separate two candidates. */
 std::string separationAdvice(const std::string& id_a, const std::string& id_b);

@@ -24,6 +24,11 @@ struct DiscrepancyOptions
 	SegmentationOptions segmentation;
 	RunSignalsOptions signals;
 	double tau_s = 100.0;  //!< averaging time of the stability / range figures [s]
+	// Information needed before anything is named ("cannot tell" otherwise):
+	double min_usable_s = 3600.0;  //!< usable (powered, thermistors known) time on the analysed run [s]
+	double min_temp_span_C = 3.0;  //!< span (1st..99th percentile) of the mean temperature [degC]
+	double min_span_quanta = 30.0;  //!< that span in thermistor quanta (coarse quantisation)
+	double min_wander_spans = 5.0;  //!< run length in correlation times of the residual's AR(1) part
 	double flag_rms_ratio = 1.5;  //!< a segment is flagged when its RMS >= this x the run's
 };
 
@@ -47,6 +52,10 @@ struct SegmentGap
 struct RunGap
 {
 	std::string label;
+	/** Samples left out of the gap figures because a thermistor was outside the temperature
+	 * range the model was fitted on (the model is not valid there; it is never extrapolated). */
+	std::size_t outside_model_range = 0;
+	std::string validity_note;  //!< "" or which range and how much of the run left it
 	GapFigures before, after;
 	std::vector<SegmentGap> segments;  //!< ranked by residual energy before
 	SegmentRanking ranking_before;
@@ -64,7 +73,17 @@ struct DiscrepancyReport
 	bool has_confirm = false;
 	RunGap gap_confirm;
 	double tau_s = 100.0;
-	/** "no missing effect found" or "missing: a, b (strongest first)". */
+	/** Significant effects NOT named, with the reason: fitted contribution larger than the raw
+	 * bias range (implausible), or a 95 % interval that includes zero. */
+	struct Rejected
+	{
+		std::string id, reason;
+	};
+	std::vector<Rejected> rejected;
+	/** Non-empty when the data cannot answer (too short, too narrow a temperature span, too
+	 * coarse a quantisation, bias wander too slow for the run): nothing is named, this says why. */
+	std::string cannot_tell;
+	/** "cannot tell: ...", "no missing effect found" or "missing: a, b (strongest first)". */
 	std::string verdict() const;
 };
 

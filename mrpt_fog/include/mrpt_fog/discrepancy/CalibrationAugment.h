@@ -1,0 +1,58 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file CalibrationAugment.h
+ * Closing the loop (fog-discrepancy --write-cal): the calibration under test, plus the named
+ * and confirmed effects that the compensator can run, refitted on the analysed run by the
+ * calibration code (fitCalibration), and the gap before/after measured on the confirmation run
+ * through the compensator (evaluateCalibration: exactly what fog-compensate computes).
+ *
+ * Effect -> compensator terms (thermal terms as extra bias terms, model/ThermalFeatureSet.h;
+ * IN = first inner thermistor, OUT = first outer one, S = the thermistor of the base's
+ * temperature polynomial of order p):
+ *   radial_gradient  dT(IN-OUT)^1          gradient_rate  d/dt dT(IN-OUT)^1
+ *   shupe_rate       dT/dt(IN)^1 and d/dt dT(IN-OUT)^1 (without an OUT: dT/dt(S)^1)
+ *   temp_poly_order  T(S)^(p+1), T(S)^(p+2) (at most 5)
+ * Effects without a compensator term in this calibration schema (warmup, scale_factor_temp,
+ * magnetic, hysteresis, thermistor_lag) are listed in `not_written` with the reason.
+ * The base calibration: the YAML given, or fitCalibration(run, preset) with default options
+ * (what fog-calibrate writes). The augmented one: the base's selected terms plus the added
+ * ones, fitted by plain least squares on the same run (selection "none": the named terms are
+ * kept), same rate estimator.
+ */
+
+#include <mrpt_fog/common/JsonWriter.h>
+#include <mrpt_fog/discrepancy/EffectSelector.h>
+#include <mrpt_fog/model/Calibration.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace mrpt_fog::discrepancy
+{
+struct AugmentedCalibration
+{
+	Calibration base;  //!< the calibration under test
+	Calibration augmented;  //!< base + added terms (== base when nothing could be added)
+	std::vector<std::string> added_terms;  //!< term names added
+	std::vector<std::pair<std::string, std::string>> not_written;  //!< effect id, why
+	bool has_confirm = false;
+	FitFigures before, after;  //!< confirmation run through the compensator (base / augmented)
+};
+
+/** The calibration under test: a calibration YAML (*.yaml, *.yml) loaded as is, or the preset
+ * fitted on `run` with default options. Throws std::invalid_argument as fitCalibration does. */
+Calibration calibrationUnderTest(const std::string& preset_or_yaml, const FogSeries& run);
+
+/** Builds the augmented calibration for the named effects (see file comment). confirm may be
+ * null (no before/after figures). Throws std::invalid_argument when the refit fails. */
+AugmentedCalibration augmentCalibration(const std::string& preset_or_yaml, const std::vector<NamedEffect>& named,
+										const FogSeries& run, const FogSeries* confirm, const std::string& confirm_label);
+
+/** Readable lines (what was written, what not and why, the gap before/after). */
+std::string augmentedCalibrationText(const AugmentedCalibration& aug, const std::string& path);
+/** JSON: path, added_terms, not_written [{id, reason}], confirm {before, after} figures. */
+JsonValue augmentedCalibrationJson(const AugmentedCalibration& aug, const std::string& path);
+
+}  // namespace mrpt_fog::discrepancy

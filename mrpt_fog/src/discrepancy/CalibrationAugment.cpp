@@ -1,0 +1,162 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/discrepancy/CalibrationAugment.h>
+#include <mrpt_fog/model/CalibrationYaml.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <stdexcept>
+
+namespace mrpt_fog::discrepancy
+{
+namespace
+{
+bool endsWith(const std::string& s, const std::string& suffix)
+{
+	return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string firstOnSide(const FogSeries& run, CoilSide side)
+{
+	for (const auto& t : run.thermistors)
+		if (t.side == side) return t.name;
+	return {};
+}
+}  // namespace
+
+Calibration calibrationUnderTest(const std::string& text, const FogSeries& run)
+{
+	if (endsWith(text, ".yaml") || endsWith(text, ".yml")) return loadCalibrationYaml(text);
+	return fitCalibration({run}, text);
+}
+
+AugmentedCalibration augmentCalibration(const std::string& text, const std::vector<NamedEffect>& named,
+										const FogSeries& run, const FogSeries* confirm, const std::string& confirm_label)
+{
+	AugmentedCalibration out;
+	out.base = calibrationUnderTest(text, run);
+	std::vector<std::string> terms;
+	for (const auto& n : out.base.model.features.termNames())
+		if (n != "1") terms.push_back(n);
+	// the static polynomial's thermistor and order
+	std::string S;
+	int p = 0;
+	for (const auto& t : out.base.model.features.terms())
+		if (!t.constant && t.signal.kind == SignalKind::Temp)
+		{
+			if (S.empty()) S = t.signal.a;
+			if (t.signal.a == S) p = std::max(p, t.power);
+		}
+	const std::string in = firstOnSide(run, CoilSide::Inner), outer = firstOnSide(run, CoilSide::Outer);
+	if (S.empty()) S = in.empty() ? run.thermistors.front().name : in;
+	auto add = [&](const std::string& term) {
+		if (std::find(terms.begin(), terms.end(), term) == terms.end())
+		{
+			terms.push_back(term);
+			out.added_terms.push_back(term);
+		}
+	};
+	for (const auto& ne : named)
+	{
+		const bool pair = !in.empty() && !outer.empty();
+		if (ne.id == "radial_gradient" && pair) add("dT(" + in + "-" + outer + ")^1");
+		else if (ne.id == "gradient_rate" && pair) add("d/dt dT(" + in + "-" + outer + ")^1");
+		else if (ne.id == "shupe_rate")
+		{
+			add("dT/dt(" + (in.empty() ? S : in) + ")^1");
+			if (pair) add("d/dt dT(" + in + "-" + outer + ")^1");
+		}
+		else if (ne.id == "temp_poly_order" && p < 5)
+			for (int k = p + 1; k <= std::min(p + 2, 5); ++k) add("T(" + S + ")^" + std::to_string(k));
+		else
+			out.not_written.emplace_back(
+				ne.id, ne.id == "radial_gradient" || ne.id == "gradient_rate"
+						   ? "needs an inner and an outer thermistor"
+						   : ne.id == "temp_poly_order" ? "the temperature polynomial is already of order 5"
+														: "no compensator term for it in this calibration schema");
+	}
+	if (out.added_terms.empty())
+		out.augmented = out.base;
+	else
+	{
+		std::string preset = "terms:";
+		for (std::size_t i = 0; i < terms.size(); ++i) preset += (i ? ";" : "") + terms[i];
+		FitOptions fo;
+		fo.selection = "none";
+		fo.rate_estimator = out.base.rate_estimator;
+		out.augmented = fitCalibration({run}, preset, fo);
+	}
+	if (confirm)
+	{
+		out.has_confirm = true;
+		out.before = evaluateCalibration(out.base, *confirm, confirm_label + " (calibration under test)");
+		out.after = evaluateCalibration(out.augmented, *confirm, confirm_label + " (with the added terms)");
+	}
+	return out;
+}
+
+namespace
+{
+JsonValue figures(const FitFigures& f)
+{
+	JsonValue j = JsonValue::object();
+	j["label"] = f.label;
+	j["samples"] = static_cast<unsigned long>(f.samples);
+	j["rms_dph"] = f.rms_dph;
+	j["stability_dph"] = f.stability_dph;
+	j["range_dph"] = f.range_dph;
+	j["tau_s"] = f.tau_s;
+	return j;
+}
+std::string num(double v)
+{
+	char b[32];
+	std::snprintf(b, sizeof b, "%.4g", v);
+	return b;
+}
+}  // namespace
+
+std::string augmentedCalibrationText(const AugmentedCalibration& aug, const std::string& path)
+{
+	std::string t = "Calibration written to " + path + ": ";
+	if (aug.added_terms.empty()) t += "the calibration under test, nothing added\n";
+	else
+	{
+		t += "the calibration under test plus";
+		for (const auto& a : aug.added_terms) t += " " + a;
+		t += " (refitted on the analysed run)\n";
+	}
+	for (const auto& [id, why] : aug.not_written) t += "  not written: " + id + " (" + why + ")\n";
+	if (aug.has_confirm)
+		t += "  through the compensator on the confirmation run: RMS " + num(aug.before.rms_dph) + " -> " +
+			 num(aug.after.rms_dph) + " deg/h, " + num(aug.before.tau_s) + " s stability " +
+			 num(aug.before.stability_dph) + " -> " + num(aug.after.stability_dph) + " deg/h\n";
+	return t;
+}
+
+JsonValue augmentedCalibrationJson(const AugmentedCalibration& aug, const std::string& path)
+{
+	JsonValue j = JsonValue::object();
+	j["path"] = path;
+	JsonValue added = JsonValue::array();
+	for (const auto& a : aug.added_terms) added.push_back(a);
+	j["added_terms"] = added;
+	JsonValue nw = JsonValue::array();
+	for (const auto& [id, why] : aug.not_written)
+	{
+		JsonValue e = JsonValue::object();
+		e["id"] = id;
+		e["reason"] = why;
+		nw.push_back(e);
+	}
+	j["not_written"] = nw;
+	if (aug.has_confirm)
+	{
+		JsonValue c = JsonValue::object();
+		c["before"] = figures(aug.before);
+		c["after"] = figures(aug.after);
+		j["confirm_through_compensator"] = c;
+	}
+	return j;
+}
+
+}  // namespace mrpt_fog::discrepancy

@@ -1,0 +1,165 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+/** Hidden-effect trials on data this project's simulator did not make: the lumped-coil second
+ * generator (tests/support/LumpedCoilGenerator.h), analysed exactly as fog-discrepancy does
+ * (analyseDiscrepancy: selection, confirmation on a second run, guard rails), base model
+ * M2:Ca@3/1. Trial with seed s: run 1 = seed 2s, run 2 = seed 2s + 1 (same hidden effect and
+ * ratio, other noise, other turn-on offset).
+ *  - named: the hidden id is the first named effect or in its alias group;
+ *  - null trial: false naming when anything is named;
+ *  - gap share on the confirmation run: (before - after) / (before - oracle), RMS [deg/h] over the
+ *    rows fog-discrepancy reports the gap on, with oracle = the base model plus the TRUE effect
+ *    shape fitted on run 1 (least squares) and predicted on run 2, constant re-estimated (the
+ *    DiscrepancyTrials.h definition).
+ * Each loop prints "FOREIGN <cell> named k/n ..." lines (grep FOREIGN).
+ */
+#include <gtest/gtest.h>
+#include <mrpt_fog/discrepancy/DiscrepancyAnalysis.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "LumpedCoilGenerator.h"
+
+namespace foreign_trials
+{
+using namespace mrpt_fog::discrepancy;
+
+constexpr const char* kBaseModel = "M2:Ca@3/1";
+
+struct Outcome
+{
+	bool named_ok = false, false_naming = false;
+	double gap_share = NAN;  //!< (before - after) / (before - oracle) on the confirmation run
+	std::string summary;
+};
+
+inline Outcome runForeignTrial(const std::string& hidden, double ratio, std::uint64_t seed,
+							   const std::string& profile = "lab")
+{
+	fogtest::LumpedCoilOptions o1, o2;
+	o1.seed = 2 * seed;
+	o2.seed = 2 * seed + 1;
+	o1.profile = o2.profile = profile;
+	if (!hidden.empty()) o1.hidden[hidden] = o2.hidden[hidden] = ratio;
+	const auto r1 = fogtest::makeLumpedCoilRun(o1), r2 = fogtest::makeLumpedCoilRun(o2);
+	const auto rep = analyseDiscrepancy({r1.series, r2.series}, {"run1", "run2"}, kBaseModel);
+	Outcome out;
+	const auto& named = rep.selection.named;
+	if (hidden.empty())
+	{
+		out.false_naming = !named.empty();
+		out.named_ok = named.empty();
+	}
+	else if (!named.empty())
+		out.named_ok = named[0].id == hidden || std::find(named[0].alias_group.begin(), named[0].alias_group.end(),
+														   hidden) != named[0].alias_group.end();
+	if (!hidden.empty())
+	{
+		// oracle: base + true effect shape fitted on run 1, predicted on run 2
+		const auto& g = rep.gap_confirm;
+		const auto spec = resolveBaseModel(kBaseModel, r1.series);
+		const auto sig1 = computeRunSignals(r1.series), sig2 = computeRunSignals(r2.series);
+		const auto b1 = buildBaseDesign(spec, r1.series, sig1), b2 = buildBaseDesign(spec, r2.series, sig2);
+		auto withTruth = [&](const BaseDesign& b, const std::vector<double>& truth) {
+			Eigen::MatrixXd X(b.X.rows(), b.X.cols() + 1);
+			X << b.X, Eigen::Map<const Eigen::VectorXd>(truth.data(), static_cast<Eigen::Index>(truth.size()));
+			return X;
+		};
+		const Eigen::MatrixXd X1 = withTruth(b1, r1.effect_dph.at(hidden));
+		std::vector<Eigen::Index> rows;
+		for (std::size_t k = 0; k < sig1.size(); ++k)
+			if (sig1.usable[k]) rows.push_back(static_cast<Eigen::Index>(k));
+		Eigen::MatrixXd A(static_cast<Eigen::Index>(rows.size()), X1.cols());
+		Eigen::VectorXd y(static_cast<Eigen::Index>(rows.size()));
+		for (std::size_t i = 0; i < rows.size(); ++i)
+		{
+			A.row(static_cast<Eigen::Index>(i)) = X1.row(rows[i]);
+			y(static_cast<Eigen::Index>(i)) = sig1.bias_dph[static_cast<std::size_t>(rows[i])];
+		}
+		const Eigen::VectorXd coef = A.colPivHouseholderQr().solve(y);
+		const Eigen::VectorXd r = residualWithCoefficients(withTruth(b2, r2.effect_dph.at(hidden)), sig2, coef);
+		double m = 0, n = 0, s = 0;
+		for (std::size_t k = 0; k < g.residual_before_dph.size(); ++k)
+			if (std::isfinite(g.residual_before_dph[k]))
+			{
+				m += r(static_cast<Eigen::Index>(k));
+				n += 1;
+			}
+		m /= std::max(n, 1.0);
+		for (std::size_t k = 0; k < g.residual_before_dph.size(); ++k)
+			if (std::isfinite(g.residual_before_dph[k])) s += std::pow(r(static_cast<Eigen::Index>(k)) - m, 2);
+		const double oracle = std::sqrt(s / std::max(n, 1.0));
+		out.gap_share = (g.before.rms_dph - g.after.rms_dph) / (g.before.rms_dph - oracle);
+	}
+	char buf[160];
+	std::snprintf(buf, sizeof buf, "seed %llu %s x%g: %s; gap share %.2f", static_cast<unsigned long long>(seed),
+				  hidden.empty() ? "null" : hidden.c_str(), ratio, rep.verdict().c_str(), out.gap_share);
+	out.summary = buf;
+	return out;
+}
+
+struct Tally
+{
+	int trials = 0, named = 0, false_naming = 0, gap_ok = 0;
+	std::vector<double> shares;
+	std::vector<std::string> misses;
+};
+
+/** seeds first_seed .. first_seed + count - 1; prints one FOREIGN line. */
+inline Tally runCell(const std::string& hidden, double ratio, std::uint64_t first_seed, int count,
+					 const std::string& profile = "lab")
+{
+	Tally t;
+	for (int i = 0; i < count; ++i)
+	{
+		const auto o = runForeignTrial(hidden, ratio, first_seed + static_cast<std::uint64_t>(i), profile);
+		++t.trials;
+		t.named += o.named_ok;
+		t.false_naming += o.false_naming;
+		if (std::isfinite(o.gap_share))
+		{
+			t.shares.push_back(o.gap_share);
+			t.gap_ok += o.gap_share >= 0.5;
+		}
+		if (!o.named_ok || (!hidden.empty() && !(o.gap_share >= 0.5))) t.misses.push_back(o.summary);
+	}
+	std::vector<double> sh = t.shares;
+	std::sort(sh.begin(), sh.end());
+	std::printf("FOREIGN %s %s x%g seeds %llu..%llu: named %d/%d, false naming %d, gap share >= 0.5: %d/%zu "
+				"(median %.2f)\n",
+				profile.c_str(), hidden.empty() ? "null" : hidden.c_str(), ratio,
+				static_cast<unsigned long long>(first_seed), static_cast<unsigned long long>(first_seed + count - 1),
+				t.named, t.trials, t.false_naming, t.gap_ok, sh.size(), sh.empty() ? NAN : sh[sh.size() / 2]);
+	for (const auto& m : t.misses) std::printf("  miss: %s\n", m.c_str());
+	std::fflush(stdout);
+	return t;
+}
+
+/** Clopper-Pearson upper bound (two-sided 95 %, i.e. one-sided 97.5 %) of a rate k/n. */
+inline double clopperPearsonUpper(int k, int n, double alpha = 0.05)
+{
+	if (k >= n) return 1.0;
+	// bisection on the binomial CDF: P(X <= k | p) = alpha / 2
+	auto cdf = [&](double p) {
+		double term = std::pow(1 - p, n), sum = term;
+		for (int i = 1; i <= k; ++i)
+		{
+			term *= (double(n - i + 1) / i) * (p / (1 - p));
+			sum += term;
+		}
+		return sum;
+	};
+	double lo = 0, hi = 1;
+	for (int it = 0; it < 100; ++it)
+	{
+		const double mid = 0.5 * (lo + hi);
+		(cdf(mid) > alpha / 2 ? lo : hi) = mid;
+	}
+	return 0.5 * (lo + hi);
+}
+
+}  // namespace foreign_trials

@@ -1,0 +1,54 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+/* --write-cal: named effects added to the calibration as compensator terms, judged on a second
+ * run through the compensator, on the lumped-coil second generator (truth: its hidden z^5). */
+#include <gtest/gtest.h>
+#include <mrpt_fog/discrepancy/CalibrationAugment.h>
+#include <mrpt_fog/model/Compensator.h>
+
+#include <algorithm>
+
+#include "LumpedCoilGenerator.h"
+
+using namespace mrpt_fog;
+using namespace mrpt_fog::discrepancy;
+
+TEST(CalibrationAugment, TempPolyOrderBecomesCompensatorTermsAndClosesTheGap)
+{
+	fogtest::LumpedCoilOptions o1, o2;
+	o2.seed = 2;
+	o1.hidden["temp_poly_order"] = o2.hidden["temp_poly_order"] = 3.0;
+	const auto r1 = fogtest::makeLumpedCoilRun(o1), r2 = fogtest::makeLumpedCoilRun(o2);
+	NamedEffect poly, warm;
+	poly.id = "temp_poly_order";
+	warm.id = "warmup";
+	const auto aug = augmentCalibration("M2:Ca@3/1", {poly, warm}, r1.series, &r2.series, "run2");
+	EXPECT_EQ(aug.added_terms, (std::vector<std::string>{"T(Ca)^4", "T(Ca)^5"}));
+	ASSERT_EQ(aug.not_written.size(), 1u);
+	EXPECT_EQ(aug.not_written[0].first, "warmup");
+	const auto names = aug.augmented.model.features.termNames();
+	for (const auto& t : aug.added_terms) EXPECT_NE(std::find(names.begin(), names.end(), t), names.end()) << t;
+	ASSERT_TRUE(aug.has_confirm);
+	// the hidden part not absorbed by the base is 3 x the noise RMS (0.0141 deg/h): adding the
+	// terms must remove most of it on the other run, through the compensator
+	std::printf("through the compensator on run 2: RMS %.4f -> %.4f deg/h (noise RMS %.4f)\n", aug.before.rms_dph,
+				aug.after.rms_dph, r2.noise_rms_dph);
+	EXPECT_GT(aug.before.rms_dph, 2.0 * r2.noise_rms_dph);
+	EXPECT_LT(aug.after.rms_dph, 0.5 * aug.before.rms_dph);
+	// what was evaluated is what fog-compensate runs: the augmented calibration's compensator
+	const auto c = compensate(aug.augmented, r2.series);
+	EXPECT_EQ(c.time_s.size(), r2.series.size());
+}
+
+TEST(CalibrationAugment, NothingAddableLeavesTheCalibrationUnchanged)
+{
+	const auto r1 = fogtest::makeLumpedCoilRun({});
+	NamedEffect mag;
+	mag.id = "magnetic";
+	const auto aug = augmentCalibration("M2:Ca@3/1", {mag}, r1.series, nullptr, "");
+	EXPECT_TRUE(aug.added_terms.empty());
+	EXPECT_FALSE(aug.has_confirm);
+	EXPECT_EQ(aug.augmented.model.features.termNames(), aug.base.model.features.termNames());
+	EXPECT_EQ(aug.augmented.model.coef_dph, aug.base.model.coef_dph);
+	ASSERT_EQ(aug.not_written.size(), 1u);
+	EXPECT_NE(aug.not_written[0].second.find("no compensator term"), std::string::npos);
+}
