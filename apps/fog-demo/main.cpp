@@ -241,7 +241,10 @@ int main(int argc, char** argv)
 			   << "Particle filter on a simulated map around the route (laser scans), odometry heading from each gyro; "
 			   << "position RMS on the open-field (observation-poor) stretches, pooled over the filter seeds: raw " << fmt(lr)
 			   << " m, compensated " << fmt(lc) << " m, ideal " << fmt(li) << " m (compensated/raw = " << ratio(lc, lr)
-			   << ", target <= 0.5; compensated/ideal = " << ratio(lc, li) << ", target <= 1.5). Map, rawlogs, "
+			   << ", target <= 0.5; compensated/ideal = " << ratio(lc, li) << ", target <= 1.5); paired over the seeds, "
+			   << "compensated - raw = " << fmt(loc.number("paired_open_rms_difference_m.compensated_minus_raw.mean"), "%+.2f")
+			   << " +- " << fmt(loc.number("paired_open_rms_difference_m.compensated_minus_raw.standard_error"), "%.2f")
+			   << " m (below 2 standard errors: cannot be told from the filter's seed-to-seed spread). Map, rawlogs, "
 			   << "pf-localization .ini files and plots: `localize/`; details: docs/localize.md.\n";
 		}
 		if (have_paper)

@@ -38,6 +38,29 @@ const GyroResult* gyro(const LocalizeResults& r, const std::string& name)
 
 double ratio(double a, double b) { return b > 0 ? a / b : NAN; }
 
+/** Paired comparison of two gyros' open-field RMS over the same seeds: mean difference a - b
+ * [m] and its standard error (NaN with fewer than 2 seeds). */
+std::pair<double, double> pairedDifference(const GyroResult& a, const GyroResult& b)
+{
+	const auto& x = a.summary.open_rms_per_seed_m;
+	const auto& y = b.summary.open_rms_per_seed_m;
+	const std::size_t n = std::min(x.size(), y.size());
+	if (n < 2) return {n ? x[0] - y[0] : NAN, NAN};
+	double m = 0;
+	for (std::size_t i = 0; i < n; ++i) m += x[i] - y[i];
+	m /= n;
+	double v = 0;
+	for (std::size_t i = 0; i < n; ++i) v += (x[i] - y[i] - m) * (x[i] - y[i] - m);
+	return {m, std::sqrt(v / (n - 1) / n)};
+}
+
+/** "better", "worse" or "cannot tell" (|difference| < 2 standard errors, or < 2 seeds). */
+const char* verdict(const std::pair<double, double>& d)
+{
+	if (!std::isfinite(d.second) || std::abs(d.first) < 2 * d.second) return "cannot tell";
+	return d.first < 0 ? "better" : "worse";
+}
+
 void writeGz(const std::string& path, const std::function<void(mrpt::serialization::CArchive&)>& body)
 {
 	writeFileAtomically(path, [&](const std::string& tmp) {
@@ -115,6 +138,10 @@ void printSummary(const LocalizeResults& r, const World& world)
 		const double o_i = ideal->summary.position_rms_m.at(StretchKind::Open);
 		std::printf("  open stretches: compensated / raw = %.3f (target <= 0.5), compensated / ideal = %.3f (target <= 1.5)\n",
 					ratio(o_c, o_r), ratio(o_c, o_i));
+		const auto dr = pairedDifference(*comp, *raw), di = pairedDifference(*comp, *ideal);
+		std::printf("  paired over seeds (open-field RMS): compensated - raw = %+.2f +- %.2f m (%s), compensated - ideal = "
+					"%+.2f +- %.2f m (%s)\n",
+					dr.first, dr.second, verdict(dr), di.first, di.second, verdict(di));
 	}
 	(void)world;
 }
@@ -144,6 +171,18 @@ void writeOutputs(const std::string& dir, const std::string& json_path, const Lo
 											  raw->summary.position_rms_m.at(StretchKind::Open));
 		j["ratio_compensated_to_ideal"] = ratio(comp->summary.position_rms_m.at(StretchKind::Open),
 												ideal->summary.position_rms_m.at(StretchKind::Open));
+	}
+	if (raw && comp && ideal)
+	{
+		for (const auto& [key, other] : {std::pair<const char*, const GyroResult*>{"compensated_minus_raw", raw},
+										 {"compensated_minus_ideal", ideal}})
+		{
+			const auto d = pairedDifference(*comp, *other);
+			JsonValue& e = j["paired_open_rms_difference_m"][key];
+			e["mean"] = d.first;
+			e["standard_error"] = std::isfinite(d.second) ? JsonValue(d.second) : JsonValue();
+			e["verdict"] = verdict(d);
+		}
 	}
 	JsonValue& kinds = j["position_rms_m_by_kind"];
 	kinds = JsonValue::object();
