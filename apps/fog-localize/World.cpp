@@ -19,6 +19,13 @@ const char* stretchKindName(StretchKind k)
 	return "?";
 }
 
+FieldPlacement fieldPlacementFromString(const std::string& text)
+{
+	if (text == "straights") return FieldPlacement::Straights;
+	if (text == "turns") return FieldPlacement::Turns;
+	throw std::invalid_argument("field placement '" + text + "' is not straights|turns");
+}
+
 const Stretch& stretchAt(const std::vector<Stretch>& stretches, double t_s)
 {
 	for (const auto& s : stretches)
@@ -94,14 +101,51 @@ World buildWorld(const nav::Trajectory& truth, const WorldOptions& o)
 	}
 	std::sort(straights.begin(), straights.end(), [](const Straight& a, const Straight& b) { return a.length() > b.length(); });
 
-	// Open stretches on the longest straights, a tunnel on the next one.
+	// Open stretches on the longest straights (or the most turning windows), a tunnel on the
+	// longest straight not used.
 	std::vector<std::pair<Straight, StretchKind>> special;
 	std::size_t k = 0;
-	for (; k < straights.size() && static_cast<int>(special.size()) < o.open_stretches; ++k)
+	if (o.placement == FieldPlacement::Straights)
 	{
-		const Straight& st = straights[k];
-		if (st.length() - 2 * o.margin_m < o.min_open_m) break;
-		special.push_back({{st.s0 + o.margin_m, st.s1 - o.margin_m}, StretchKind::Open});
+		for (; k < straights.size() && static_cast<int>(special.size()) < o.open_stretches; ++k)
+		{
+			const Straight& st = straights[k];
+			if (st.length() - 2 * o.margin_m < o.min_open_m) break;
+			special.push_back({{st.s0 + o.margin_m, st.s1 - o.margin_m}, StretchKind::Open});
+		}
+	}
+	else
+	{
+		// Cumulative |heading change| along the route; windows of turn_field_m every 100 m,
+		// greedily the most turning ones that keep turn_field_gap_m from each other and from
+		// both ends of the route.
+		std::vector<double> turn(truth.size(), 0.0);
+		for (std::size_t i = 1; i < truth.size(); ++i)
+			turn[i] = turn[i - 1] + std::abs(std::remainder(truth[i].yaw_rad - truth[i - 1].yaw_rad, 2 * M_PI));
+		auto turnAt = [&](double s) {
+			auto it = std::lower_bound(s_m.begin(), s_m.end(), s);
+			return turn[std::min<std::size_t>(static_cast<std::size_t>(it - s_m.begin()), turn.size() - 1)];
+		};
+		std::vector<std::pair<double, double>> windows;  // (turned angle, start)
+		for (double s0 = o.turn_field_gap_m; s0 + o.turn_field_m + o.turn_field_gap_m <= s_m.back(); s0 += 100.0)
+			windows.push_back({turnAt(s0 + o.turn_field_m) - turnAt(s0), s0});
+		std::sort(windows.begin(), windows.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+		for (const auto& [angle, s0] : windows)
+		{
+			if (static_cast<int>(special.size()) >= o.open_stretches) break;
+			bool clear = true;
+			for (const auto& sp : special)
+				clear = clear && (s0 + o.turn_field_m + o.turn_field_gap_m <= sp.first.s0 || s0 >= sp.first.s1 + o.turn_field_gap_m);
+			if (clear) special.push_back({{s0, s0 + o.turn_field_m}, StretchKind::Open});
+		}
+		// The tunnel goes on the longest straight that does not overlap a field.
+		for (; k < straights.size(); ++k)
+		{
+			bool overlaps = false;
+			for (const auto& sp : special)
+				overlaps = overlaps || !(straights[k].s1 <= sp.first.s0 - 200.0 || straights[k].s0 >= sp.first.s1 + 200.0);
+			if (!overlaps) break;
+		}
 	}
 	if (static_cast<int>(special.size()) < o.open_stretches)
 		throw std::runtime_error("world: the route has " + std::to_string(special.size()) + " straight(s) long enough for an open stretch of " +

@@ -8,10 +8,12 @@
  *   sees corners and facades, which fix position and heading.
  * - Open (open fields): nothing within the laser's range of the road, and nothing of other
  *   stretches either: the filter dead-reckons on odometry (wheel distance + FOG heading).
- *   These are the observation-poor stretches the FOG is judged on. They are placed on the
- *   route's longest straight roads, away from turns, because the cross-track error a heading
- *   error causes grows with the distance driven on it (chosen by route geometry, not by any
- *   gyro's error).
+ *   These are the observation-poor stretches the FOG is judged on. FieldPlacement::Straights
+ *   (default) puts them on the route's longest straight roads, away from turns: a heading
+ *   error's cross-track error grows with the distance driven on it, and only the gyro's bias
+ *   acts there. FieldPlacement::Turns puts them on the windows of the route that turn most
+ *   (sum of |heading change|): there the gyro's scale-factor error at each turn acts as well.
+ *   Both are chosen by route geometry, never by any gyro's error.
  * - Tunnel: smooth walls 6 m either side. The laser fixes lateral position and heading but
  *   not the position along the road: here the map makes the FOG heading irrelevant (only the
  *   wheel distance matters), which fog-localize reports separately.
@@ -35,6 +37,15 @@ enum class StretchKind
 };
 const char* stretchKindName(StretchKind k);  //!< "urban", "open", "tunnel"
 
+/** Where the open fields go (see the file comment). */
+enum class FieldPlacement
+{
+	Straights,
+	Turns
+};
+/** "straights" / "turns"; throws std::invalid_argument naming the allowed values. */
+FieldPlacement fieldPlacementFromString(const std::string& text);
+
 struct Stretch
 {
 	StretchKind kind = StretchKind::Urban;
@@ -45,7 +56,10 @@ struct Stretch
 struct WorldOptions
 {
 	double resolution_m = 2.0;  //!< grid cell size
-	int open_stretches = 3;  //!< on the longest straights
+	int open_stretches = 3;
+	FieldPlacement placement = FieldPlacement::Straights;
+	double turn_field_m = 4000.0;  //!< open-field length with FieldPlacement::Turns
+	double turn_field_gap_m = 2000.0;  //!< urban road at least this long between such fields
 	double margin_m = 800.0;  //!< urban road kept at both ends of a straight holding an open stretch
 	double min_open_m = 2000.0;  //!< shortest open stretch
 	double tunnel_m = 1500.0;  //!< tunnel length (on the next longest straight), 0 = none

@@ -120,6 +120,11 @@ int main(int argc, char** argv)
 										false, 1.0, "X", cmd);
 		TCLAP::ValueArg<unsigned> arg_dec("", "lf-decimation", "use every N-th laser ray in the likelihood", false, 1,
 										  "N", cmd);
+		TCLAP::ValueArg<std::string> arg_fields("", "fields",
+												"where the open fields go: 'straights' (the 3 longest straights) or "
+												"'turns' (the 3 most turning 4 km windows: the gyro's scale-factor "
+												"error at each turn acts too)",
+												false, "straights", "straights|turns", cmd);
 		TCLAP::SwitchArg arg_noscale("", "no-scale-calibration",
 									 "do not calibrate the wheel odometry's distance scale on urban stretches", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-localize", kHelp)) return *rc;
@@ -162,6 +167,7 @@ int main(int argc, char** argv)
 
 		// World and scans.
 		WorldOptions wopt;
+		wopt.placement = fieldPlacementFromString(arg_fields.getValue());
 		LaserOptions lopt;
 		const World world = buildWorld(drive.truth, wopt);
 		double t0 = drive.truth.front().t_s, t1 = drive.truth.back().t_s;

@@ -23,6 +23,7 @@ if(TARGET fog-localize)
   endif()
   add_test(NAME localize.fog_localize.bad_seeds COMMAND fog-localize --seeds 0 --out ${LOC_DIR}_bad)
   add_test(NAME localize.fog_localize.missing_drive COMMAND fog-localize --drive ${LOC_DIR}/no_such.rawlog --cal x.yaml --out ${LOC_DIR}_bad)
-  set_tests_properties(localize.fog_localize.bad_seeds localize.fog_localize.missing_drive PROPERTIES
+  add_test(NAME localize.fog_localize.bad_fields COMMAND fog-localize --fields curvy --out ${LOC_DIR}_bad)
+  set_tests_properties(localize.fog_localize.bad_seeds localize.fog_localize.missing_drive localize.fog_localize.bad_fields PROPERTIES
     WILL_FAIL TRUE LABELS "localize;integration")
 endif()
