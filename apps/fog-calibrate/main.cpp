@@ -14,6 +14,7 @@
 
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "RangeWarning.h"
 
 using namespace mrpt_fog;
 
@@ -26,7 +27,7 @@ WHAT IT DOES
   YAML for fog-compensate / fog-evaluate / fog-drift. Every figure is printed twice, side by
   side: IN-SAMPLE (the data the model was fitted on: optimistic) and HELD-OUT (data the model
   did not see: what to expect in use). Held-out = leave-one-run-out with several -i runs,
-  blocked k-fold with one run, plus the --validate run if given.
+  leave-regime-out with one run, plus the --validate run if given.
 
 MODEL PRESETS (--model)
   multipoint            seed eq. 2: per thermistor T^1..T^5 and dT/dt^1..^3 (all thermistors)
@@ -36,12 +37,27 @@ MODEL PRESETS (--model)
   M4[:IN,OUT]           seed eq. 6: poly3(IN - OUT) + poly3(d/dt (IN - OUT))
   points:K              multipoint on the best K-thermistor subset (by held-out error)
   terms:T(Ti1)^1;dT/dt(Ti1)^1;dT(Ti1-To1)^1   an explicit term list
-  Append @T/R to change the orders, e.g. multipoint@3/1.
+  Append @T/R to change the orders, e.g. multipoint@3/1, or @T for the temperature order only
+  (M1:imu@3); the orders of auto are upper limits.
+
+OUTSIDE THE CALIBRATED RANGE (--extrapolation)
+  linear (default): each signal's polynomial is continued along its tangent at the range edge
+    (on held-out simulated devices 1.2-1.5x better than clamp, see docs/model.md);
+  clamp: the signal is held at the edge (the bias stops changing: compensated = raw beyond);
+  polynomial: the raw polynomial (studies only).
+  With --validate, a warning gives the share of samples outside the range and how far out.
 
 HOW THE FIT GUARDS AGAINST OVER-FITTING (--selection)
-  auto (default): features normalised to [-1, 1]; whole signal groups (e.g. all powers of
-    T(Ti1)) are added one at a time, and a ridge value picked, only when they lower the
-    cross-validated (held-out) error. More thermistors can then not make that error worse.
+  auto (default): features normalised to [-1, 1]; the search starts from the linear
+    multipoint model (T^1 and dT/dt^1 of every thermistor of the preset: the Shupe error is
+    linear in the coil's temperature rates) and raises a signal's order (T up to 5, rates up
+    to 3, never above the preset's) or adds a physics-shaped candidate (inner-outer
+    difference dT(in-out)^1 and its rate, pairs at the same angle) only when that lowers the
+    cross-validated error; a ridge value is picked the same way. Parsimony: the simplest model
+    within one standard error of the best is kept. Folds (--folds-by): whole thermal regimes of
+    the run (cooling ramps, soaks, heating ramps) are held out, so the error is that of a
+    temperature history the fit did not see; blocks = interleaved time blocks. points:K also
+    searches thermistor subsets.
   none: every preset term, plain least squares (plus --ridge): the seed's method; with several
     collinear thermistors it fits the calibration run and fails on others.
   The fit refuses (with the reason) too few samples, a temperature span too narrow for the
@@ -119,6 +135,10 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<unsigned> arg_folds("", "folds", "Cross-validation folds for a single run", false, 5, "K", cmd);
 		TCLAP::ValueArg<double> arg_tau("", "tau", "Averaging time of the stability figures [s]", false, 100.0, "S", cmd);
 		TCLAP::SwitchArg arg_nofb("", "no-fallbacks", "Do not fit per-thermistor fallback models", cmd);
+		TCLAP::ValueArg<std::string> arg_extra("", "extrapolation", "Outside the calibrated range: linear (default), clamp or polynomial",
+											   false, "linear", "POLICY", cmd);
+		TCLAP::ValueArg<std::string> arg_foldby("", "folds-by", "Validation folds of a single run: regimes (default) or blocks",
+												false, "regimes", "SCHEME", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-calibrate", kHelp)) return *rc;
 
 		std::vector<FileArg> inputs{{"--validate", arg_val.getValue()}};
@@ -134,6 +154,10 @@ int main(int argc, char** argv)
 		opt.folds = arg_folds.getValue();
 		opt.tau_s = arg_tau.getValue();
 		opt.fallbacks = !arg_nofb.getValue();
+		opt.extrapolation = extrapolationPolicyFromString(arg_extra.getValue());
+		if (arg_foldby.getValue() != "regimes" && arg_foldby.getValue() != "blocks")
+			throw std::invalid_argument("--folds-by must be regimes or blocks, got '" + arg_foldby.getValue() + "'");
+		opt.fold_scheme = arg_foldby.getValue() == "regimes" ? FoldScheme::Regimes : FoldScheme::Blocks;
 
 		std::vector<FogSeries> runs;
 		for (const auto& path : arg_in.getValue()) runs.push_back(readFogLog(path, arg_label.getValue()));
@@ -158,6 +182,13 @@ int main(int argc, char** argv)
 		std::vector<const FitFigures*> figs{&cal.in_sample, &cal.held_out};
 		if (!arg_val.getValue().empty()) figs.push_back(&cal.validation);
 		printFigures(figs);
+		CompensationCounters range;  // of the validation run, through the compensator
+		range.samples = cal.validation.samples;
+		range.temp_outside_samples = cal.validation.temp_outside_samples;
+		range.rate_outside_samples = cal.validation.rate_outside_samples;
+		range.max_temp_excursion_C = cal.validation.max_temp_excursion_C;
+		range.max_rate_excursion_C_per_s = cal.validation.max_rate_excursion_C_per_s;
+		if (!arg_val.getValue().empty()) std::fputs(app::outOfRangeWarning(range, cal.extrapolation).c_str(), stdout);
 		std::printf("  wrote %s\n", arg_out.getValue().c_str());
 
 		if (!arg_json.getValue().empty())
@@ -175,7 +206,12 @@ int main(int argc, char** argv)
 			j["samples"] = static_cast<unsigned long>(m.samples);
 			j["in_sample"] = figuresJson(cal.in_sample);
 			j["held_out"] = figuresJson(cal.held_out);
-			if (!arg_val.getValue().empty()) j["validation"] = figuresJson(cal.validation);
+			if (!arg_val.getValue().empty())
+			{
+				j["validation"] = figuresJson(cal.validation);
+				j["validation"]["out_of_range"] = app::outOfRangeJson(range, cal.extrapolation);
+			}
+			j["extrapolation"] = toString(cal.extrapolation);
 			j["calibration"] = arg_out.getValue();
 			writeTextFileAtomically(arg_json.getValue(), j.dump());
 		}

@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "AppMain.h"
+#include "RangeWarning.h"
 #include "CommandLine.h"
 #include "ThermistorScreeningReport.h"
 
@@ -28,7 +29,9 @@ WHAT IT DOES
   Removes the thermal bias: compensated = raw - bias(temperatures, causal rates), sample by
   sample with only past samples (what a real-time implementation computes). A thermistor
   dropout switches to the calibration's fallback model without it (and back when it returns);
-  temperatures or rates outside the calibrated range are clamped, never extrapolated. Counts
+  temperatures or rates outside the calibrated range follow the calibration's extrapolation
+  policy (default linear: each signal's polynomial continued along its edge tangent; clamp
+  holds the edge value); a warning gives the share of such samples and how far out. Counts
   of both are printed. A calibration made for another thermistor layout is refused.
 
 THERMISTOR SCREENING (on by default)
@@ -134,6 +137,7 @@ int main(int argc, char** argv)
 						"is empty); turn-on events: %zu\n",
 						gyro_off_rows, turn_ons);
 		std::fputs(app::screeningText(screening, screen).c_str(), stdout);
+		std::fputs(app::outOfRangeWarning(k, cal.extrapolation).c_str(), stdout);
 		if (!arg_json.getValue().empty())
 		{
 			JsonValue j = JsonValue::object();
@@ -150,6 +154,7 @@ int main(int argc, char** argv)
 			j["gyro_off_rows"] = static_cast<unsigned long>(gyro_off_rows);
 			j["turn_on_events"] = static_cast<unsigned long>(turn_ons);
 			j["screening"] = app::screeningJson(screening, screen);
+			j["out_of_range"] = app::outOfRangeJson(k, cal.extrapolation);
 			writeTextFileAtomically(arg_json.getValue(), j.dump());
 		}
 		return app::kExitOk;

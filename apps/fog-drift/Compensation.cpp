@@ -1,6 +1,7 @@
 /* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
 #include "Compensation.h"
 
+#include "RangeWarning.h"
 #include "ThermistorScreeningReport.h"
 
 #include <mrpt_fog/model/CalibrationYaml.h>
@@ -35,6 +36,7 @@ std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string&
 		std::printf("  compensation: %zu samples, %zu on a fallback model, %zu without model, %zu clamped to the "
 					"calibrated range\n",
 					c.samples, c.fallback_samples, c.no_model_samples, c.clamped_samples);
+	std::fputs(app::outOfRangeWarning(c, cal.extrapolation).c_str(), stdout);
 	return out.compensated_dph;
 }
 

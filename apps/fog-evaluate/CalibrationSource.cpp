@@ -24,6 +24,7 @@ CompensationResult compensateWithCalibration(const std::string& cal_path, const 
 	const Calibration cal = loadCalibrationYaml(cal_path);
 	CompensationResult r;
 	r.axis = cal.axis;
+	r.extrapolation = cal.extrapolation;
 	try
 	{
 		r.series = compensate(cal, series);

@@ -14,6 +14,7 @@ struct CompensationResult
 	GyroAxis axis = GyroAxis::Z;  //!< the calibrated axis
 	/** The evaluated log is one of the calibration's runs: the figures are in-sample. */
 	bool in_sample = false;
+	ExtrapolationPolicy extrapolation = ExtrapolationPolicy::Linear;  //!< the calibration's policy
 };
 
 /** Loads the calibration YAML at cal_path and runs the causal compensator (model/Compensator.h)

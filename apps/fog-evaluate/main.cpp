@@ -10,6 +10,7 @@
 #include "AppMain.h"
 #include "CommandLine.h"
 #include "CalibrationSource.h"
+#include "RangeWarning.h"
 #include "EvaluationPlots.h"
 #include "RateEvaluation.h"
 
@@ -134,6 +135,7 @@ int main(int argc, char** argv)
 						k.fallback_samples, k.no_model_samples, k.clamped_samples, k.warmup_samples);
 			if (comp_series->in_sample)
 				std::printf("  * in-sample: this log is one of the calibration's runs\n");
+			std::fputs(app::outOfRangeWarning(k, comp_series->extrapolation).c_str(), stdout);
 		}
 		std::printf("  (Earth rate is not removed: it is in the mean only; stability, range and Allan terms "
 					"measure spread)\n");
@@ -173,6 +175,7 @@ int main(int argc, char** argv)
 				j["compensated"]["no_model_samples"] = k.no_model_samples;
 				j["compensated"]["clamped_samples"] = k.clamped_samples;
 				j["compensated"]["rate_warmup_samples"] = k.warmup_samples;
+				j["compensated"]["out_of_range"] = app::outOfRangeJson(k, comp_series->extrapolation);
 				j["improvement"]["stability_ratio"] = raw.stats.stability_dph / comp->stats.stability_dph;
 				j["improvement"]["range_ratio"] = raw.stats.range_dph / comp->stats.range_dph;
 			}

@@ -12,7 +12,7 @@ add_test(NAME model.calibrate
   COMMAND fog-calibrate -i ${_md}/coil_A.csv --model multipoint -o ${_mo}/cal.yaml
           --validate ${_md}/coil_B.csv --json ${_mo}/fit.json)
 set_tests_properties(model.calibrate PROPERTIES LABELS "integration;model" FIXTURES_SETUP model_cal
-  PASS_REGULAR_EXPRESSION "in-sample +held-out \\(blocked 5-fold\\) +validation run")
+  PASS_REGULAR_EXPRESSION "in-sample +held-out \\(leave-regime-out, [0-9]+ regimes in [0-9]+ folds\\) +validation run")
 
 # The JSON has the stable keys.
 add_test(NAME model.calibrate_json

@@ -106,6 +106,8 @@ TEST(Calibration, MoreThermistorsNeverWorseCrossValidated)
 	const FogSeries A = fogtest::makeCoilRun("A", 11);
 	FitOptions o;
 	o.fallbacks = false;
+	o.linear_base = false;  // the subset search (the default keeps all of multipoint's thermistors)
+	o.parsimony = false;  // the lowest CV error, not the simplest within one SE
 	std::vector<double> cv(16, 0.0);
 	for (unsigned mask = 1; mask < 16; mask++) cv[mask] = fitCalibration({A}, subsetPreset(mask), o).model.rms_held_out_dph;
 	double worst = 0;
@@ -208,11 +210,14 @@ TEST(Calibration, MoreThermistorsNotWorseOnUnseenRunBeyondTwoStandardErrors)
 TEST(Calibration, PointsKPicksBestSubsetByHeldOutError)
 {
 	const FogSeries A = fogtest::makeCoilRun("A", 21);
-	const Calibration best = fitCalibration({A}, "points:2");
+	FitOptions o;
+	o.linear_base = false;
+	o.parsimony = false;
+	const Calibration best = fitCalibration({A}, "points:2", o);
 	double min_cv = 1e9;
 	const char* pairs[] = {"Ti1,To1", "Ti1,Ti2", "Ti1,To2", "To1,Ti2", "To1,To2", "Ti2,To2"};
 	for (const char* p : pairs)
-		min_cv = std::min(min_cv, fitCalibration({A}, std::string("multipoint:") + p).model.rms_held_out_dph);
+		min_cv = std::min(min_cv, fitCalibration({A}, std::string("multipoint:") + p, o).model.rms_held_out_dph);
 	EXPECT_NEAR(best.model.rms_held_out_dph, min_cv, 1e-12);
 	EXPECT_LE(best.model.features.thermistors().size(), 2u);
 }
@@ -228,7 +233,10 @@ TEST(Calibration, FallbacksAndFiguresAreLabelled)
 		EXPECT_GE(f.rms_held_out_dph, 0.0);
 	}
 	EXPECT_EQ(cal.in_sample.label, "in-sample");
-	EXPECT_EQ(cal.held_out.label, "held-out (blocked 5-fold)");
+	EXPECT_EQ(cal.held_out.label.rfind("held-out (leave-regime-out, ", 0), 0u) << cal.held_out.label;
+	FitOptions blocks;
+	blocks.fold_scheme = FoldScheme::Blocks;
+	EXPECT_EQ(fitCalibration({A}, "multipoint", blocks).held_out.label, "held-out (blocked 5-fold)");
 	EXPECT_TRUE(cal.in_sample.valid);
 	EXPECT_LT(cal.in_sample.stability_dph, 0.1 * cal.in_sample.raw_stability_dph);
 	EXPECT_GE(cal.held_out.rms_dph, cal.in_sample.rms_dph * 0.99);

@@ -115,8 +115,21 @@ TEST(Compensator, OutOfRangeTemperaturesAreClampedAndCounted)
 	hot.resize(3000);
 	for (auto& col : hot.temp_C)
 		for (std::size_t k = 1000; k < 1500; k++) col[k] += 200.0;  // +200 C for 500 samples
-	const CompensatedSeries c = compensate(calA(), hot);
+	Calibration clampCal = calA();
+	clampCal.extrapolation = ExtrapolationPolicy::Clamp;
+	const CompensatedSeries c = compensate(clampCal, hot);
 	EXPECT_GE(c.counters.clamped_samples, 500u);
+	EXPECT_GE(c.counters.temp_outside_samples, 500u);
+	double excursion = 0;  // the largest temperature beyond its calibrated maximum, from the data
+	for (std::size_t sg = 0; sg < calA().model.features.signals().size(); sg++)
+	{
+		const auto& sig = calA().model.features.signals()[sg];
+		if (sig.kind != SignalKind::Temp) continue;
+		for (std::size_t k = 0; k < hot.size(); k++)
+			excursion = std::max(excursion, hot.temp_C[hot.thermistorIndex(sig.a)][k] - calA().model.features.normalisation()[sg].max);
+	}
+	EXPECT_GT(excursion, 100.0);
+	EXPECT_NEAR(c.counters.max_temp_excursion_C, excursion, 1e-9);
 	for (std::size_t k = 1100; k < 1400; k++) ASSERT_TRUE(c.flags[k] & compflags::Clamped) << k;
 	// Independent check at k = 1300 (step out of the rate window): the model evaluated with
 	// the temperatures clamped to the calibrated maximum and the column-wise causal rates.
@@ -134,9 +147,62 @@ TEST(Compensator, OutOfRangeTemperaturesAreClampedAndCounted)
 	const double edge = m.evaluate(v.data(), true, &clamped);
 	EXPECT_GE(clamped, 4);  // every temperature signal
 	EXPECT_NEAR(c.bias_dph[k], edge, 1e-9);
+	// The Polynomial policy (studies only) evaluates the raw polynomial beyond the range: the
+	// compensator's rare-path correction must give the generic feature path's unclamped value.
 	const double extrapolated = m.evaluate(v.data(), false);
-	EXPECT_GT(std::abs(extrapolated - edge), 10 * std::abs(edge - calA().mean_bias_dph))
-		<< "the unclamped polynomial would extrapolate far off";
+	Calibration polyCal = calA();
+	polyCal.extrapolation = ExtrapolationPolicy::Polynomial;
+	EXPECT_NEAR(compensate(polyCal, hot).bias_dph[k], extrapolated, 1e-9 * (1 + std::abs(extrapolated)));
+}
+
+// Linear extrapolation: beyond the range each signal's polynomial continues along its tangent at
+// the edge. Checked against a finite-difference tangent of the fitted model (not the code's own
+// edge slopes): the bias at k equals the clamped value plus, for every temperature signal,
+// (p(edge) - p(edge - h)) / h x (T - edge) to O(h).
+TEST(Compensator, OutOfRangeTemperaturesLinearPolicyContinuesTheEdgeTangent)
+{
+	FogSeries hot = fogtest::makeCoilRun("A", 53);
+	hot.resize(3000);
+	for (auto& col : hot.temp_C)
+		for (std::size_t k = 1000; k < 1500; k++) col[k] += 80.0;
+	Calibration cal = calA();
+	cal.extrapolation = ExtrapolationPolicy::Linear;
+	const CompensatedSeries c = compensate(cal, hot);
+	EXPECT_GE(c.counters.temp_outside_samples, 400u);
+	const auto& m = cal.model;
+	const std::size_t k = 1300;
+	std::vector<double> temp, rate, v(m.features.signals().size());
+	for (const auto& n : m.features.thermistors())
+	{
+		const int col = hot.thermistorIndex(n);
+		temp.push_back(hot.temp_C[col][k]);
+		rate.push_back(CausalRateEstimator(cal.rate_estimator.window_s).estimate(hot.time_s, hot.temp_C[col])[k]);
+	}
+	m.features.signalValues(temp.data(), rate.data(), v.data());
+	double expected = m.evaluate(v.data(), true);  // every signal clamped
+	const double h = 1e-4;
+	int outside = 0;
+	for (std::size_t s = 0; s < v.size(); s++)
+	{
+		const auto& nm = m.features.normalisation()[s];
+		if (v[s] <= nm.max && v[s] >= nm.min) continue;
+		outside++;
+		const double edge = v[s] > nm.max ? nm.max : nm.min;
+		const double inward = v[s] > nm.max ? -h : h;
+		std::vector<double> a(v), b(v);
+		for (std::size_t q = 0; q < v.size(); q++)  // others clamped as in the model
+		{
+			const auto& nq = m.features.normalisation()[q];
+			a[q] = b[q] = std::min(std::max(v[q], nq.min), nq.max);
+		}
+		a[s] = edge;
+		b[s] = edge + inward;
+		const double slope = (m.evaluate(a.data(), false) - m.evaluate(b.data(), false)) / -inward;
+		expected += slope * (v[s] - edge);
+	}
+	EXPECT_GE(outside, 4);
+	EXPECT_NEAR(c.bias_dph[k], expected, 1e-4 * (1 + std::abs(expected)));
+	EXPECT_NEAR(c.bias_dph[k], m.evaluate(v.data(), ExtrapolationPolicy::Linear), 1e-9);
 }
 
 TEST(Compensator, LayoutMismatchAndNonCausalCalibrationRefused)
@@ -177,6 +243,7 @@ TEST(Compensator, ConstantOnlyModel)
 	FogSeries s = fogtest::makeCoilRun("A", 55);
 	FitOptions o;
 	o.min_relative_gain = 0.99;  // no group can lower the held-out RMS by 99 %
+	o.linear_base = false;  // search from the constant (the default starts from the linear model)
 	const Calibration cal = fitCalibration({s}, "multipoint", o);
 	ASSERT_EQ(cal.model.features.termCount(), 1u);
 	EXPECT_TRUE(cal.fallbacks.empty());
@@ -319,7 +386,7 @@ TEST(Compensator, HostileLogMatchesIndependentReference)
 					rt.push_back(rate[s.thermistorIndex(n)][k]);
 				}
 				m->features.signalValues(temp.data(), rt.data(), v.data());
-				expected = m->evaluate(v.data(), true, &clamped);
+				expected = m->evaluate(v.data(), cal->extrapolation, &clamped);
 			}
 			ASSERT_NEAR(c.bias_dph[k], expected, 1e-9) << k;
 			ASSERT_EQ((c.flags[k] & compflags::Fallback) != 0, m && m != &cal->model) << k;

@@ -35,10 +35,33 @@ TEST(ModelPreset, DefaultsPickInnerAndNearestOuter)
 	EXPECT_EQ(parseModelPreset("M1", kLayout).thermistors, (std::vector<std::string>{"Ti1"}));
 }
 
+// Orders written @T set the temperature order only (issue 11: "M1:imu@3" was refused); M1 has
+// no rate terms, so a rate order other than 0 is refused with the reason, not silently ignored.
+TEST(ModelPreset, TemperatureOrderAloneAndM1WithoutRates)
+{
+	const auto m1 = parseModelPreset("M1:Ti2@3", kLayout);
+	EXPECT_EQ(m1.temp_order, 3);
+	EXPECT_EQ(m1.thermistors, (std::vector<std::string>{"Ti2"}));
+	EXPECT_EQ(presetFeatures(m1).termCount(), 4u);
+	EXPECT_EQ(parseModelPreset("M1@3/0", kLayout).temp_order, 3);
+	const auto mp = parseModelPreset("multipoint@2", kLayout);
+	EXPECT_EQ(mp.temp_order, 2);
+	EXPECT_EQ(mp.rate_order, 3);
+	try
+	{
+		parseModelPreset("M1:Ti1@3/1", kLayout);
+		ADD_FAILURE() << "M1 with a rate order accepted";
+	}
+	catch (const std::invalid_argument& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("no rate terms"), std::string::npos) << e.what();
+	}
+}
+
 TEST(ModelPreset, BadPresetsThrowWithReason)
 {
 	for (const std::string p : {"", "multi", "multipoint:Tx", "M1:Ti1,To1", "M3:Ti1", "M3:Ti1,Ti1", "points:0", "points:5",
-								"points:x", "points", "multipoint@6/3", "multipoint@5/4", "multipoint@5", "terms:",
+								"points:x", "points", "multipoint@6/3", "multipoint@5/4", "multipoint@", "multipoint@5/", "M1@3/1", "terms:",
 								"terms:T(Tx)^1", "multipoint:Ti1,Ti1"})
 		EXPECT_THROW(parseModelPreset(p, kLayout), std::invalid_argument) << p;
 	try

@@ -246,6 +246,31 @@ std::vector<double> crossValidatedRms(std::vector<StreamingQr>& folds, std::vect
 	return out;
 }
 
+std::vector<std::vector<double>> crossValidatedFoldSse(std::vector<StreamingQr>& folds, std::vector<StreamingQr>& train,
+													   const std::vector<int>& cols, const std::vector<double>& ridges,
+													   double rcond)
+{
+	if (train.size() != folds.size()) throw std::invalid_argument("crossValidatedFoldSse: one training set per fold needed");
+	const double nan = std::numeric_limits<double>::quiet_NaN();
+	std::vector<std::vector<double>> sse(ridges.size(), std::vector<double>(folds.size(), nan));
+	for (std::size_t f = 0; f < folds.size(); f++)
+	{
+		if (folds[f].count() == 0 || train[f].count() == 0) continue;
+		const CentredSystem s = centre(train[f], cols);
+		const bool deficient = rankOf(s, rcond) < cols.size() || s.zero_variance;
+		for (std::size_t r = 0; r < ridges.size(); r++)
+		{
+			if (ridges[r] == 0 && deficient)
+			{
+				sse[r][f] = std::numeric_limits<double>::infinity();
+				continue;
+			}
+			sse[r][f] = residualSumOfSquares(folds[f], cols, solveCentred(s, ridges[r], rcond, train[f].yRef()));
+		}
+	}
+	return sse;
+}
+
 std::vector<double> crossValidatedRms(std::vector<StreamingQr>& folds, const std::vector<int>& cols,
 									  const std::vector<double>& ridges, double rcond)
 {

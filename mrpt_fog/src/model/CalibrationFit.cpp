@@ -25,6 +25,65 @@ double BiasModel::evaluate(const double* values, bool clamp, int* clamped) const
 	return sum;
 }
 
+double BiasModel::evaluate(const double* values, ExtrapolationPolicy policy, int* outside) const
+{
+	const std::size_t ns = features.signals().size();
+	std::vector<double> f(features.termCount());
+	const int c = features.features(values, f.data(), policy != ExtrapolationPolicy::Polynomial);
+	if (outside)
+	{
+		int n = 0;
+		for (std::size_t s = 0; s < ns; s++)
+		{
+			const auto& nm = features.normalisation()[s];
+			n += values[s] < nm.min || values[s] > nm.max;
+		}
+		*outside = n;
+	}
+	double sum = 0;
+	for (std::size_t i = 0; i < f.size(); i++) sum += coef_dph[i] * f[i];
+	if (policy == ExtrapolationPolicy::Linear && c > 0)
+		for (std::size_t s = 0; s < ns; s++)
+		{
+			const auto& nm = features.normalisation()[s];
+			if (values[s] < nm.min) sum += edgeSlope(s, false) * (values[s] - nm.min);
+			else if (values[s] > nm.max) sum += edgeSlope(s, true) * (values[s] - nm.max);
+		}
+	return sum;
+}
+
+double BiasModel::edgeSlope(std::size_t s, bool upper) const
+{
+	const auto& nm = features.normalisation().at(s);
+	const double z = ((upper ? nm.max : nm.min) - nm.centre) / nm.scale;
+	double slope = 0;
+	for (std::size_t i = 0; i < features.termCount(); i++)
+	{
+		if (features.termSignal(i) != static_cast<int>(s)) continue;
+		const int k = features.terms()[i].power;
+		slope += coef_dph[i] * k * std::pow(z, k - 1);
+	}
+	return slope / nm.scale;
+}
+
+const char* toString(ExtrapolationPolicy p)
+{
+	switch (p)
+	{
+		case ExtrapolationPolicy::Clamp: return "clamp";
+		case ExtrapolationPolicy::Linear: return "linear";
+		default: return "polynomial";
+	}
+}
+
+ExtrapolationPolicy extrapolationPolicyFromString(const std::string& text)
+{
+	if (text == "clamp") return ExtrapolationPolicy::Clamp;
+	if (text == "linear") return ExtrapolationPolicy::Linear;
+	if (text == "polynomial") return ExtrapolationPolicy::Polynomial;
+	throw std::invalid_argument("extrapolation policy '" + text + "': use clamp, linear or polynomial");
+}
+
 const BiasModel* Calibration::fallbackFor(const std::string& thermistor) const
 {
 	for (const auto& f : fallbacks)
@@ -97,20 +156,23 @@ void rowSignals(const PreparedRun& r, const ThermalFeatureSet& fs, std::size_t k
 	fs.signalValues(temp.data(), rate.data(), values.data());
 }
 
-/** Columns (sorted, constant first) of the terms whose signal is in `groups`. */
-std::vector<int> columnsOf(const ThermalFeatureSet& fs, const std::vector<bool>& groups)
+/** Columns (sorted, constant first) of the terms with power <= order[signal]. */
+std::vector<int> columnsOf(const ThermalFeatureSet& fs, const std::vector<int>& order)
 {
 	std::vector<int> cols{0};
 	for (std::size_t i = 1; i < fs.termCount(); i++)
-		if (groups[static_cast<std::size_t>(fs.termSignal(i))]) cols.push_back(static_cast<int>(i));
+		if (fs.terms()[i].power <= order[static_cast<std::size_t>(fs.termSignal(i))]) cols.push_back(static_cast<int>(i));
 	return cols;
 }
 
+/** One candidate model: the order of each signal (0 = left out), its ridge and held-out error. */
 struct Choice
 {
-	std::vector<bool> groups;
+	std::vector<int> order;
 	double ridge = 0;
 	double cv_rms = std::numeric_limits<double>::infinity();
+	double cv_se_mse = 0;  // standard error of the cross-validated mean squared error
+	std::size_t terms = 1;  // including the constant
 	std::vector<std::string> pool;  // thermistors the choice was allowed to use
 };
 
@@ -120,63 +182,111 @@ struct FoldSet
 	std::vector<StreamingQr> held_out, training;
 };
 
-/** Best ridge for a group set; returns the choice with its CV RMS. */
-Choice scoreGroups(FoldSet& folds, const ThermalFeatureSet& fs, const std::vector<bool>& groups,
+/** Best ridge for an order vector; the choice with its CV RMS and the standard error of its CV
+ * MSE (spread of the per-fold MSEs / sqrt(folds)). */
+Choice scoreOrders(FoldSet& folds, const ThermalFeatureSet& fs, const std::vector<int>& order,
 				   const std::vector<double>& ridges)
 {
 	Choice c;
-	c.groups = groups;
-	const auto cv = crossValidatedRms(folds.held_out, folds.training, columnsOf(fs, groups), ridges);
+	c.order = order;
+	const auto cols = columnsOf(fs, order);
+	c.terms = cols.size();
+	const auto sse = crossValidatedFoldSse(folds.held_out, folds.training, cols, ridges);
 	for (std::size_t r = 0; r < ridges.size(); r++)
-		if (cv[r] < c.cv_rms * (1 - 1e-9))
+	{
+		double total = 0, rows = 0;
+		std::vector<double> mse;
+		bool bad = false;
+		for (std::size_t f = 0; f < sse[r].size(); f++)
 		{
-			c.cv_rms = cv[r];
-			c.ridge = ridges[r];
+			if (std::isnan(sse[r][f])) continue;
+			if (!std::isfinite(sse[r][f])) bad = true;
+			const double n = static_cast<double>(folds.held_out[f].count());
+			total += sse[r][f];
+			rows += n;
+			mse.push_back(sse[r][f] / n);
 		}
+		if (bad || rows <= 0) continue;
+		const double rms = std::sqrt(total / rows);
+		if (rms < c.cv_rms * (1 - 1e-9))
+		{
+			c.cv_rms = rms;
+			c.ridge = ridges[r];
+			double m = 0, v = 0;
+			for (double x : mse) m += x;
+			m /= static_cast<double>(mse.size());
+			for (double x : mse) v += (x - m) * (x - m);
+			c.cv_se_mse = mse.size() > 1 ? std::sqrt(v / static_cast<double>(mse.size() - 1) / static_cast<double>(mse.size())) : 0.0;
+		}
+	}
 	return c;
 }
 
-/** Greedy forward selection of signal groups among `allowed`, by CV error. */
-Choice selectForward(FoldSet& folds, const ThermalFeatureSet& fs, const std::vector<bool>& allowed, double min_gain)
+/** Forward stepwise selection by CV error, among `allowed` signals, each up to max_order: a step
+ * adds a signal at order 1 or raises an included signal's order by one (with orders off, a step
+ * adds a whole signal at its preset order). A step must lower the held-out RMS by min_gain.
+ * Returns the path (the empty model first). */
+std::vector<Choice> selectForward(FoldSet& folds, const ThermalFeatureSet& fs, const std::vector<bool>& allowed,
+								  const std::vector<int>& max_order, bool orders, double min_gain, bool linear_base)
 {
-	const std::size_t ng = fs.signals().size();
-	Choice best = scoreGroups(folds, fs, std::vector<bool>(ng, false), {0.0});
+	const std::size_t ns = fs.signals().size();
+	std::vector<int> start(ns, 0);
+	if (linear_base)  // every allowed thermistor's T and dT/dt at order 1 (Shupe is linear in the rates)
+		for (std::size_t g = 0; g < ns; g++)
+			if (allowed[g] && !fs.signals()[g].isDifference() && max_order[g] >= 1) start[g] = 1;
+	std::vector<Choice> path{scoreOrders(folds, fs, start, linear_base ? kRidgeGrid : std::vector<double>{0.0})};
 	while (true)
 	{
+		const Choice& cur = path.back();
 		Choice step;
-		for (std::size_t g = 0; g < ng; g++)
+		for (std::size_t g = 0; g < ns; g++)
 		{
-			if (!allowed[g] || best.groups[g]) continue;
-			auto groups = best.groups;
-			groups[g] = true;
-			Choice c = scoreGroups(folds, fs, groups, kRidgeGrid);
-			if (c.cv_rms < step.cv_rms) step = c;
+			if (!allowed[g] || cur.order[g] >= max_order[g]) continue;
+			if (!orders && cur.order[g] > 0) continue;
+			// any higher order of the signal (a cubic can help where a quadratic alone does not)
+			for (int k = orders ? cur.order[g] + 1 : max_order[g]; k <= max_order[g]; k++)
+			{
+				auto order = cur.order;
+				order[g] = k;
+				Choice c = scoreOrders(folds, fs, order, kRidgeGrid);
+				if (c.cv_rms < step.cv_rms) step = c;
+			}
 		}
-		// A group must lower the held-out error by a meaningful amount to be added.
-		if (!(step.cv_rms < best.cv_rms * (1.0 - min_gain))) break;
-		best = step;
+		if (!(step.cv_rms < cur.cv_rms * (1.0 - min_gain))) break;
+		path.push_back(step);
 	}
-	return best;
+	return path;
 }
 
-Choice selectAll(FoldSet& folds, const ThermalFeatureSet& fs, const std::vector<bool>& allowed, double ridge)
+/** Parsimony: among the candidates, the one with the fewest terms whose CV MSE is within one
+ * standard error of the best (ties: lower CV error). */
+Choice oneStandardError(const std::vector<const Choice*>& cands)
 {
-	return scoreGroups(folds, fs, allowed, {ridge});
+	const Choice* best = nullptr;
+	for (const Choice* c : cands)
+		if (!best || c->cv_rms < best->cv_rms) best = c;
+	const double limit = best->cv_rms * best->cv_rms + best->cv_se_mse;
+	const Choice* pick = best;
+	for (const Choice* c : cands)
+		if (c->cv_rms * c->cv_rms <= limit &&
+			(c->terms < pick->terms || (c->terms == pick->terms && c->cv_rms < pick->cv_rms)))
+			pick = c;
+	return *pick;
 }
 
 /** Nested search over thermistor subsets (selection "auto" of multipoint / points:K): the
- * choice for a set S is the best (lowest cross-validated RMS) of the greedy selection from S
- * itself and of the choices for every S minus one thermistor, recursively. A subset's choice is
- * therefore always a candidate for every superset: with the same folds, the K-thermistor choice
- * has a cross-validated RMS <= that of any (K-1)-thermistor subset's choice, by construction.
- * Memoised over subset masks (2^n - 1 greedy runs for n thermistors). */
+ * forward path of every subset of the preset's thermistors (memoised over subset masks, 2^n - 1
+ * paths for n thermistors). best(mask) is the lowest-CV candidate of mask and all its subsets,
+ * so with the same folds more thermistors never give a larger cross-validated error; with
+ * parsimony the final pick is the simplest candidate within one standard error of that best,
+ * among mask and its subsets. */
 class NestedSelection
 {
    public:
 	static constexpr std::size_t kMaxThermistors = 8;
 	NestedSelection(const std::vector<std::string>& thermistors,
-					std::function<Choice(const std::vector<std::string>&)> greedy)
-		: names_(thermistors), greedy_(std::move(greedy))
+					std::function<std::vector<Choice>(const std::vector<std::string>&)> forward)
+		: names_(thermistors), forward_(std::move(forward))
 	{
 		if (names_.size() > kMaxThermistors)
 			throw std::invalid_argument("fit: selection auto searches every thermistor subset and supports up to " +
@@ -191,30 +301,111 @@ class NestedSelection
 			if (names_[i] == name) return std::size_t{1} << i;
 		return 0;
 	}
-	const Choice& best(std::size_t mask)
+	const std::vector<Choice>& path(std::size_t mask)
 	{
 		auto it = memo_.find(mask);
 		if (it != memo_.end()) return it->second;
 		std::vector<std::string> pool;
 		for (std::size_t i = 0; i < names_.size(); i++)
 			if (mask & (std::size_t{1} << i)) pool.push_back(names_[i]);
-		Choice c = greedy_(pool);
-		c.pool = pool;
-		if (pool.size() > 1)
-			for (std::size_t i = 0; i < names_.size(); i++)
-				if (mask & (std::size_t{1} << i))
-				{
-					const Choice& sub = best(mask & ~(std::size_t{1} << i));
-					if (sub.cv_rms < c.cv_rms) c = sub;
-				}
-		return memo_.emplace(mask, c).first->second;
+		auto p = forward_(pool);
+		for (auto& c : p) c.pool = pool;
+		return memo_.emplace(mask, std::move(p)).first->second;
+	}
+	/** Every candidate of `mask` and its non-empty subsets. */
+	std::vector<const Choice*> candidates(std::size_t mask)
+	{
+		std::vector<const Choice*> out;
+		for (std::size_t sub = mask; sub > 0; sub = (sub - 1) & mask)
+			for (const Choice& c : path(sub)) out.push_back(&c);
+		return out;
+	}
+	Choice best(std::size_t mask, bool parsimony)
+	{
+		const auto c = candidates(mask);
+		if (parsimony) return oneStandardError(c);
+		const Choice* b = c.front();
+		for (const Choice* x : c)
+			if (x->cv_rms < b->cv_rms) b = x;
+		return *b;
 	}
 
    private:
 	std::vector<std::string> names_;
-	std::function<Choice(const std::vector<std::string>&)> greedy_;
-	std::map<std::size_t, Choice> memo_;
+	std::function<std::vector<Choice>(const std::vector<std::string>&)> forward_;
+	std::map<std::size_t, std::vector<Choice>> memo_;
 };
+
+/** Regime folds of one run: each sample's regime (cooling, soak, heating by the mean rate of the
+ * thermistors against regime_rate_C_per_min), contiguous runs shorter than min_regime_s merged
+ * into the previous one; regime segment j is fold j mod max_folds. Returns one fold per sample
+ * (-1 for unusable samples) and the segment count through *segments. */
+std::vector<int> regimeFolds(const PreparedRun& r, double threshold_C_per_min, double min_regime_s,
+							 std::size_t max_folds, double window_s, std::size_t* segments)
+{
+	// The regime is a property of the run, not of the model: the rate of the mean of ALL the
+	// run's thermistors (finite readings), whatever thermistors the preset uses.
+	const std::size_t n = r.s->size();
+	std::vector<double> mean_C(n, std::numeric_limits<double>::quiet_NaN());
+	for (std::size_t k = 0; k < n; k++)
+	{
+		double sum = 0;
+		int cnt = 0;
+		for (const auto& col : r.s->temp_C)
+			if (std::isfinite(col[k]))
+			{
+				sum += col[k];
+				cnt++;
+			}
+		if (cnt == static_cast<int>(r.s->temp_C.size()) && cnt > 0) mean_C[k] = sum / cnt;
+	}
+	const std::vector<double> mean_rate = CausalRateEstimator(window_s).estimate(r.s->time_s, mean_C);
+	std::vector<int> cls(n, -1);
+	const double thr = threshold_C_per_min / 60.0;
+	for (std::size_t k = 0; k < n; k++)
+	{
+		if (!r.ok[k] || !std::isfinite(mean_rate[k])) continue;
+		const double m = mean_rate[k];
+		cls[k] = m > thr ? 2 : (m < -thr ? 0 : 1);
+	}
+	// Segments: [start time, class]; short ones take the class of the one before.
+	struct Seg
+	{
+		double t0, t1;
+		int cls;
+	};
+	std::vector<Seg> segs;
+	for (std::size_t k = 0; k < n; k++)
+	{
+		if (cls[k] < 0) continue;
+		const double t = r.s->time_s[k];
+		if (segs.empty() || segs.back().cls != cls[k]) segs.push_back({t, t, cls[k]});
+		segs.back().t1 = t;
+	}
+	std::vector<Seg> merged;
+	for (const Seg& s : segs)
+	{
+		if (!merged.empty() && (s.t1 - s.t0 < min_regime_s || merged.back().cls == s.cls))
+			merged.back().t1 = s.t1;
+		else if (merged.empty() || s.t1 - s.t0 >= min_regime_s)
+			merged.push_back(s);
+	}
+	if (merged.size() >= 2 && merged.front().t1 - merged.front().t0 < min_regime_s)
+	{
+		merged[1].t0 = merged.front().t0;
+		merged.erase(merged.begin());
+	}
+	*segments = merged.size();
+	std::vector<int> fold(n, -1);
+	std::size_t j = 0;
+	for (std::size_t k = 0; k < n; k++)
+	{
+		if (!r.ok[k]) continue;
+		while (j + 1 < merged.size() && r.s->time_s[k] > merged[j].t1) j++;
+		fold[k] = static_cast<int>(j % max_folds);
+	}
+	return fold;
+}
 
 std::string runName(const std::vector<std::string>& labels, std::size_t i)
 {
@@ -224,7 +415,7 @@ std::string runName(const std::vector<std::string>& labels, std::size_t i)
 BiasModel makeModel(StreamingQr& total, const ThermalFeatureSet& fs, const Choice& c, const std::string& dropped,
 					const FitOptions& opt)
 {
-	const auto cols = columnsOf(fs, c.groups);
+	const auto cols = columnsOf(fs, c.order);
 	const double need = opt.min_samples_per_term * static_cast<double>(cols.size());
 	if (static_cast<double>(total.count()) < need)
 		throw std::invalid_argument("too few samples: " + std::to_string(total.count()) + " usable for " +
@@ -238,7 +429,7 @@ BiasModel makeModel(StreamingQr& total, const ThermalFeatureSet& fs, const Choic
 									"); use fewer terms, --selection auto, or a ridge");
 	BiasModel m;
 	m.dropped = dropped;
-	m.features = fs.selectSignals(c.groups);
+	m.features = fs.selectOrders(c.order);
 	m.coef_dph.assign(fit.coef_dph.data(), fit.coef_dph.data() + fit.coef_dph.size());
 	m.covariance = fit.covariance;
 	m.ridge = c.ridge;
@@ -318,6 +509,26 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	const GyroAxis axis = first.primaryAxis();
 	const ModelPreset preset = parseModelPreset(preset_text, first.thermistors);
 	ThermalFeatureSet fs = presetFeatures(preset);
+	const bool candidates_added =
+		opt.selection == "auto" && opt.physics_candidates && (preset.kind == "multipoint" || preset.kind == "points");
+	if (candidates_added)
+	{
+		std::vector<ThermalTerm> terms(fs.terms().begin() + 1, fs.terms().end());
+		for (const auto& in : first.thermistors)
+		{
+			if (in.side != CoilSide::Inner ||
+				std::find(preset.thermistors.begin(), preset.thermistors.end(), in.name) == preset.thermistors.end())
+				continue;
+			for (const auto& out : first.thermistors)
+				if (out.side == CoilSide::Outer && out.angle_deg == in.angle_deg &&
+					std::find(preset.thermistors.begin(), preset.thermistors.end(), out.name) != preset.thermistors.end())
+				{
+					terms.push_back(ThermalTerm::of(SignalKind::Diff, in.name, out.name, 1));
+					if (preset.rate_order > 0) terms.push_back(ThermalTerm::of(SignalKind::DiffRate, in.name, out.name, 1));
+				}
+		}
+		fs = ThermalFeatureSet(terms);
+	}
 
 	std::vector<PreparedRun> prep;
 	std::size_t usable = 0;
@@ -329,7 +540,8 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	if (usable == 0) throw std::invalid_argument("fit: no usable sample (every sample has a dropout or no rate yet)");
 
 	// Pass 1: signal ranges -> normalisation; mean bias as y reference.
-	const std::size_t ns = fs.signals().size(), nt = fs.thermistors().size();
+	std::size_t ns = fs.signals().size();
+	const std::size_t nt = fs.thermistors().size();
 	std::vector<double> lo(ns, std::numeric_limits<double>::infinity()), hi(ns, -std::numeric_limits<double>::infinity());
 	std::vector<double> temp(nt), rate(nt), values(ns), f(fs.termCount());
 	double ysum = 0;
@@ -347,6 +559,34 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 			ysum += r.y[k];
 		}
 	const double y_ref = ysum / static_cast<double>(usable);
+	if (candidates_added)  // a physics candidate without variation (e.g. two identical readings) is left out
+	{
+		std::vector<bool> keep(ns, true);
+		bool any = false;
+		for (std::size_t s = 0; s < ns; s++)
+			if (fs.signals()[s].isDifference() && !(hi[s] - lo[s] > 1e-9 * (1 + std::abs(hi[s]))))
+			{
+				keep[s] = false;
+				any = true;
+			}
+		if (any)
+		{
+			fs = fs.selectSignals(keep);
+			std::vector<double> lo2, hi2;
+			for (std::size_t s = 0; s < ns; s++)
+				if (keep[s])
+				{
+					lo2.push_back(lo[s]);
+					hi2.push_back(hi[s]);
+				}
+			lo = lo2;
+			hi = hi2;
+			ns = fs.signals().size();
+			values.resize(ns);
+			f.resize(fs.termCount());
+			fsum.assign(fs.termCount(), 0.0);
+		}
+	}
 	for (std::size_t s = 0; s < ns; s++)
 	{
 		const auto& sig = fs.signals()[s];
@@ -391,13 +631,25 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	std::vector<double> x_ref(fs.termCount());
 	for (std::size_t j = 0; j < x_ref.size(); j++) x_ref[j] = fsum[j] / static_cast<double>(usable);
 
-	// Pass 2: streaming QR factor per fold.
+	// Pass 2: streaming QR factor per fold. Folds: one per run when several runs are given;
+	// else whole thermal regimes of the run (FoldScheme::Regimes), or interleaved time blocks.
 	const bool by_run = runs.size() >= 2;
-	const std::size_t nfolds = by_run ? runs.size() : opt.folds;
+	std::vector<int> regime_fold;
+	std::size_t regime_segments = 0;
+	if (!by_run && opt.fold_scheme == FoldScheme::Regimes)
+	{
+		regime_fold = regimeFolds(prep[0], opt.regime_rate_C_per_min, opt.min_regime_s, opt.max_regime_folds,
+								  opt.rate_estimator.window_s, &regime_segments);
+		if (regime_segments < 3) regime_fold.clear();  // a single soak or ramp: blocks instead
+	}
+	const bool by_regime = !regime_fold.empty();
+	const std::size_t nfolds =
+		by_run ? runs.size() : (by_regime ? std::min(regime_segments, opt.max_regime_folds) : opt.folds);
 	FoldSet folds;
 	folds.held_out.assign(nfolds, StreamingQr(fs.termCount(), y_ref, x_ref));
-	const auto foldOf = [&](std::size_t run, std::size_t k) {
+	const auto foldOf = [&](std::size_t run, std::size_t k) -> std::size_t {
 		if (by_run) return run;
+		if (by_regime) return static_cast<std::size_t>(std::max(0, regime_fold[k]));
 		const auto& t = runs[0].time_s;
 		const double u = (t[k] - t.front()) / (t.back() - t.front() + 1e-300);
 		const std::size_t nblocks = nfolds * opt.blocks_per_fold;
@@ -418,6 +670,7 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	for (auto& fo : folds.held_out) total.merge(fo);
 	folds.training = trainingSets(folds.held_out);
 
+	const std::vector<int> max_order = fs.signalOrders();
 	const auto allowedFor = [&](const std::vector<std::string>& pool, const std::string& dropped) {
 		std::vector<bool> allowed(ns);
 		for (std::size_t s = 0; s < ns; s++)
@@ -428,20 +681,41 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 		}
 		return allowed;
 	};
+	const bool automatic = opt.selection == "auto";
+	const auto forward = [&](const std::vector<std::string>& pool, const std::string& dropped) {
+		return selectForward(folds, fs, allowedFor(pool, dropped), max_order, opt.select_orders, opt.min_relative_gain,
+							 opt.linear_base);
+	};
 	const auto choose = [&](const std::vector<std::string>& pool, const std::string& dropped) {
-		Choice c = opt.selection == "auto" ? selectForward(folds, fs, allowedFor(pool, dropped), opt.min_relative_gain)
-										   : selectAll(folds, fs, allowedFor(pool, dropped), opt.ridge);
+		Choice c;
+		if (automatic)
+		{
+			const auto path = forward(pool, dropped);
+			std::vector<const Choice*> cands;
+			for (const auto& x : path) cands.push_back(&x);
+			c = opt.parsimony ? oneStandardError(cands) : *std::min_element(path.begin(), path.end(), [](const Choice& a, const Choice& b) {
+				return a.cv_rms < b.cv_rms;
+			});
+		}
+		else
+		{
+			auto order = max_order;
+			const auto allowed = allowedFor(pool, dropped);
+			for (std::size_t s = 0; s < ns; s++)
+				if (!allowed[s]) order[s] = 0;
+			c = scoreOrders(folds, fs, order, {opt.ridge});
+		}
 		c.pool = pool;
 		return c;
 	};
 	// The subsets of thermistors to consider, as masks over fs.thermistors().
 	const auto& names = fs.thermistors();
-	const bool nested = opt.selection == "auto" && (preset.kind == "multipoint" || preset.kind == "points");
+	const bool nested = automatic && (preset.kind == "points" || (preset.kind == "multipoint" && !opt.linear_base));
 	Choice best;
 	std::vector<Choice> fallback_choices;  // for nested: the best choice without each thermistor
 	if (nested)
 	{
-		NestedSelection search(names, [&](const std::vector<std::string>& pool) { return choose(pool, ""); });
+		NestedSelection search(names, [&](const std::vector<std::string>& pool) { return forward(pool, ""); });
 		std::size_t base = search.fullMask();
 		if (preset.kind == "points")
 		{
@@ -451,7 +725,7 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 			for (std::size_t mask = 1; mask <= search.fullMask(); mask++)
 			{
 				if (static_cast<std::size_t>(__builtin_popcountll(mask)) != K) continue;
-				const Choice& c = search.best(mask);
+				const Choice c = search.best(mask, false);
 				if (first_set || c.cv_rms < best.cv_rms)
 				{
 					best = c;
@@ -460,15 +734,15 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 				}
 			}
 		}
-		else
-			best = search.best(base);
+		best = search.best(base, opt.parsimony);
 		if (opt.fallbacks)
 		{
-			const ThermalFeatureSet chosen = fs.selectSignals(best.groups);
+			const ThermalFeatureSet chosen = fs.selectOrders(best.order);
 			for (const auto& name : chosen.thermistors())
 			{
 				const std::size_t without = base & ~search.bit(name);
-				fallback_choices.push_back(without ? search.best(without) : scoreGroups(folds, fs, std::vector<bool>(ns, false), {0.0}));
+				fallback_choices.push_back(without ? search.best(without, opt.parsimony)
+												   : scoreOrders(folds, fs, std::vector<int>(ns, 0), {0.0}));
 			}
 		}
 	}
@@ -503,7 +777,7 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 		}
 		if (opt.fallbacks)
 		{
-			const ThermalFeatureSet chosen = fs.selectSignals(best.groups);
+			const ThermalFeatureSet chosen = fs.selectOrders(best.order);
 			for (const auto& name : chosen.thermistors()) fallback_choices.push_back(choose(best.pool, name));
 		}
 	}
@@ -515,6 +789,7 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	cal.preset = preset_text;
 	cal.selection = opt.selection;
 	cal.rate_estimator = opt.rate_estimator;
+	cal.extrapolation = opt.extrapolation;
 	cal.mean_bias_dph = y_ref;
 	for (std::size_t i = 0; i < runs.size(); i++) cal.runs.push_back(runName(labels, i));
 	cal.model = makeModel(total, fs, best, "", opt);
@@ -546,7 +821,7 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 						for (std::size_t s = 0; s < mv.size(); s++)
 							for (std::size_t q = 0; q < ns; q++)
 								if (fs.signals()[q] == cal.model.features.signals()[s]) mv[s] = values[q];
-						bias[k] = cal.model.evaluate(mv.data(), true);
+						bias[k] = cal.model.evaluate(mv.data(), cal.extrapolation);
 					}
 			for (std::size_t k = 0; k < r.s->size(); k++)
 			{
@@ -561,7 +836,7 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	}
 	// Held-out figures: every fold predicted by the chosen model fitted on the other folds.
 	{
-		const auto cols = columnsOf(fs, best.groups);
+		const auto cols = columnsOf(fs, best.order);
 		std::vector<Eigen::VectorXd> coef(nfolds);
 		std::vector<bool> has(nfolds, false);
 		for (std::size_t fo = 0; fo < nfolds; fo++)
@@ -595,8 +870,10 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 			}
 			offset = t.back() + opt.tau_s;
 		}
-		cal.held_out.label = by_run ? "held-out (leave-one-run-out, " + std::to_string(nfolds) + " runs)"
-									: "held-out (blocked " + std::to_string(nfolds) + "-fold)";
+		cal.held_out.label = by_run      ? "held-out (leave-one-run-out, " + std::to_string(nfolds) + " runs)"
+							 : by_regime ? "held-out (leave-regime-out, " + std::to_string(regime_segments) + " regimes in " +
+											   std::to_string(nfolds) + " folds)"
+										 : "held-out (blocked " + std::to_string(nfolds) + "-fold)";
 		statsInto(cal.held_out, t, raw, comp, opt.tau_s);
 	}
 	return cal;
@@ -615,6 +892,10 @@ FitFigures evaluateCalibration(const Calibration& cal, const FogSeries& series, 
 		comp[k] = (series.power.empty() || series.power[k] != 0.0) ? raw[k] - out.bias_dph[k]
 																	: std::numeric_limits<double>::quiet_NaN();
 	statsInto(f, out.time_s, raw, comp, tau_s);
+	f.temp_outside_samples = out.counters.temp_outside_samples;
+	f.rate_outside_samples = out.counters.rate_outside_samples;
+	f.max_temp_excursion_C = out.counters.max_temp_excursion_C;
+	f.max_rate_excursion_C_per_s = out.counters.max_rate_excursion_C_per_s;
 	return f;
 }
 

@@ -71,6 +71,24 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 		(t ? b.t_hi : b.r_hi)[j] = nm.max;
 		c.uses |= 1u << ch;
 	}
+	for (std::size_t s = 0; s < fs.signals().size(); s++)
+	{
+		const auto& sig = fs.signals()[s];
+		const auto& nm = fs.normalisation()[s];
+		EdgeSignal e;
+		e.kind = static_cast<int>(sig.kind);
+		e.a = chan(sig.a);
+		e.b = sig.isDifference() ? chan(sig.b) : 0;
+		e.lo = nm.min;
+		e.hi = nm.max;
+		e.slope_lo = m.edgeSlope(s, false);
+		e.slope_hi = m.edgeSlope(s, true);
+		e.centre = nm.centre;
+		e.scale = nm.scale;
+		for (std::size_t i = 0; i < fs.termCount(); i++)
+			if (fs.termSignal(i) == static_cast<int>(s)) e.coef[fs.terms()[i].power] += m.coef_dph.at(i);
+		c.edges.push_back(e);
+	}
 	std::vector<int> group_of(fs.signals().size()), index_in(fs.signals().size());
 	for (int kind = 2; kind < 4; kind++)
 	{
@@ -136,6 +154,7 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 	: window_s_(cal.rate_estimator.window_s),
 	  half_window_s_(0.5 * cal.rate_estimator.window_s),
 	  mean_bias_dph_(cal.mean_bias_dph),
+	  extrapolation_(cal.extrapolation),
 	  tracker_(1, cal.rate_estimator.window_s)
 {
 	if (build == KernelBuild::Avx2 && !kernel::cpuHasAvx2())
@@ -280,6 +299,61 @@ int countClamped(const KernelBlock* K, std::size_t blocks, const double* T, cons
 											g.centre.data(), g.inv_scale.data(), g.p.data(), g.a.size(), clamped);
 	}
 	return sum;
+}
+
+[[gnu::noinline]] double Compensator::outsideRange(const Compiled& m, const double* temp_C)
+{
+	double extra = 0;
+	bool temp_out = false, rate_out = false;
+	for (const EdgeSignal& e : m.edges)
+	{
+		double v = 0;
+		switch (e.kind)
+		{
+			case 0: v = temp_C[e.a]; break;
+			case 1: v = rate_[e.a]; break;
+			case 2: v = temp_C[e.a] - temp_C[e.b]; break;
+			default: v = rate_[e.a] - rate_[e.b]; break;
+		}
+		double beyond = 0, edge = 0;
+		if (v < e.lo)
+		{
+			beyond = e.lo - v;
+			edge = e.lo;
+			extra += extrapolation_ == ExtrapolationPolicy::Linear ? e.slope_lo * (v - e.lo) : 0.0;
+		}
+		else if (v > e.hi)
+		{
+			beyond = v - e.hi;
+			edge = e.hi;
+			extra += extrapolation_ == ExtrapolationPolicy::Linear ? e.slope_hi * (v - e.hi) : 0.0;
+		}
+		else
+			continue;
+		if (extrapolation_ == ExtrapolationPolicy::Polynomial)
+		{
+			const auto poly = [&](double x) {
+				const double z = (x - e.centre) / e.scale;
+				double h = 0;
+				for (int k = 5; k >= 1; k--) h = (h + e.coef[k]) * z;
+				return h;
+			};
+			extra += poly(v) - poly(edge);
+		}
+		if (e.kind == 1 || e.kind == 3)
+		{
+			rate_out = true;
+			counters_.max_rate_excursion_C_per_s = std::max(counters_.max_rate_excursion_C_per_s, beyond);
+		}
+		else
+		{
+			temp_out = true;
+			counters_.max_temp_excursion_C = std::max(counters_.max_temp_excursion_C, beyond);
+		}
+	}
+	counters_.temp_outside_samples += temp_out;
+	counters_.rate_outside_samples += rate_out;
+	return extra;
 }
 
 Compensator::Output Compensator::step(double time_s, double raw_dph, const double* temp_C)

@@ -51,6 +51,7 @@ ModelPreset parseModelPreset(const std::string& text, const std::vector<Thermist
 	const auto fail = [&](const std::string& why) { throw std::invalid_argument("model preset '" + text + "': " + why); };
 	if (text.empty()) fail("empty (use multipoint, M1..M4, points:K or terms:...)");
 	std::string body = text;
+	bool rate_given = false;
 	if (text.rfind("terms:", 0) == 0)
 	{
 		p.kind = "terms";
@@ -71,9 +72,11 @@ ModelPreset parseModelPreset(const std::string& text, const std::vector<Thermist
 	if (at != std::string::npos)
 	{
 		const auto orders = split(body.substr(at + 1), '/');
-		if (orders.size() != 2) fail("orders must be written @T/R, e.g. @5/3");
+		if (orders.empty() || orders.size() > 2 || body.back() == '/')
+			fail("orders must be written @T/R (e.g. @5/3) or @T (temperature order only)");
 		p.temp_order = parseInt(orders[0], "temperature order", text);
-		p.rate_order = parseInt(orders[1], "rate order", text);
+		rate_given = orders.size() == 2;
+		if (rate_given) p.rate_order = parseInt(orders[1], "rate order", text);
 		if (p.temp_order < 1 || p.temp_order > 5) fail("temperature order must be 1..5");
 		if (p.rate_order < 0 || p.rate_order > 3) fail("rate order must be 0..3");
 		body = body.substr(0, at);
@@ -115,6 +118,8 @@ ModelPreset parseModelPreset(const std::string& text, const std::vector<Thermist
 	}
 	else if (p.kind == "M1" || p.kind == "M2")
 	{
+		if (p.kind == "M1" && rate_given && p.rate_order != 0)
+			fail("M1 is poly(T) only and has no rate terms: write M1@T (e.g. M1@3), or use M2 for rates");
 		if (args.size() > 1) fail(p.kind + " takes one thermistor (" + p.kind + ":NAME)");
 		p.thermistors.push_back(args.empty() ? firstInner() : check(args[0]).name);
 	}

@@ -174,6 +174,27 @@ ThermalFeatureSet ThermalFeatureSet::selectSignals(const std::vector<bool>& keep
 	return out;
 }
 
+ThermalFeatureSet ThermalFeatureSet::selectOrders(const std::vector<int>& order) const
+{
+	std::vector<ThermalTerm> terms;
+	for (std::size_t i = 0; i < terms_.size(); i++)
+		if (term_signal_[i] >= 0 && terms_[i].power <= order.at(static_cast<std::size_t>(term_signal_[i])))
+			terms.push_back(terms_[i]);
+	ThermalFeatureSet out(terms);
+	for (std::size_t s = 0; s < out.signals_.size(); s++) out.norm_[s] = normalisationOf(out.signals_[s]);
+	return out;
+}
+
+std::vector<int> ThermalFeatureSet::signalOrders() const
+{
+	std::vector<int> order(signals_.size(), 0);
+	for (std::size_t i = 0; i < terms_.size(); i++)
+		if (term_signal_[i] >= 0)
+			order[static_cast<std::size_t>(term_signal_[i])] =
+				std::max(order[static_cast<std::size_t>(term_signal_[i])], terms_[i].power);
+	return order;
+}
+
 const SignalNormalisation& ThermalFeatureSet::normalisationOf(const ThermalSignal& s) const
 {
 	for (std::size_t i = 0; i < signals_.size(); i++)

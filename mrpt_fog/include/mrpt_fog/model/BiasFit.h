@@ -72,6 +72,12 @@ std::vector<StreamingQr> trainingSets(std::vector<StreamingQr>& folds);
 std::vector<double> crossValidatedRms(std::vector<StreamingQr>& folds, std::vector<StreamingQr>& training,
 									  const std::vector<int>& columns, const std::vector<double>& ridges,
 									  double rcond = 1e-10);
+/** Per-fold held-out residual sums of squares: sse[r][f] for ridge r and fold f (NaN for a
+ * fold with no rows or no training rows; +inf for ridge 0 on a rank-deficient training set),
+ * for the standard error of the cross-validated error. */
+std::vector<std::vector<double>> crossValidatedFoldSse(std::vector<StreamingQr>& folds, std::vector<StreamingQr>& training,
+													   const std::vector<int>& columns, const std::vector<double>& ridges,
+													   double rcond = 1e-10);
 /** The same, building the training sets itself. */
 std::vector<double> crossValidatedRms(std::vector<StreamingQr>& folds, const std::vector<int>& columns,
 									  const std::vector<double>& ridges, double rcond = 1e-10);

@@ -46,6 +46,35 @@
 
 namespace mrpt_fog
 {
+/** What a bias model does with a signal (a temperature, a rate, a difference) outside the range
+ * it was calibrated on. The model is a sum of one polynomial per signal, so each signal is
+ * extended on its own:
+ *  - Clamp: the signal is held at the edge of its range (PX4/ArduPilot practice). Beyond the
+ *    edge the estimated bias stops changing, so the compensated output follows the raw one.
+ *  - Linear: the signal's polynomial is continued along its tangent at the edge (value and
+ *    slope continuous). Physically the leading bias terms are linear (Shupe: linear in dT/dt;
+ *    thermal stress: linear in Tin - Tout), so a tangent keeps their trend where a clamp drops
+ *    it, and unlike the raw polynomial it cannot blow up with the 5th power. The default, chosen
+ *    on held-out data outside the range (docs/model.md, "Extrapolation").
+ *  - Polynomial: the raw polynomial (for studies only; a 5th order diverges quickly). */
+enum class ExtrapolationPolicy : unsigned char
+{
+	Clamp = 0,
+	Linear = 1,
+	Polynomial = 2
+};
+/** "clamp" / "linear" / "polynomial". */
+const char* toString(ExtrapolationPolicy p);
+/** Parses the names above; throws std::invalid_argument naming the known ones. */
+ExtrapolationPolicy extrapolationPolicyFromString(const std::string& text);
+
+/** How a single calibration run is cut into validation folds (several runs: one fold per run). */
+enum class FoldScheme : unsigned char
+{
+	Regimes = 0,  //!< whole thermal regimes (cooling ramp, soak, heating ramp) held out (>= 3 needed, else Blocks)
+	Blocks = 1  //!< folds x blocks_per_fold interleaved time blocks
+};
+
 struct FitOptions
 {
 	RateEstimatorSettings rate_estimator;  //!< default causal, 60 s window
@@ -58,10 +87,28 @@ struct FitOptions
 	std::size_t blocks_per_fold = 4;
 	/** "auto": a signal group is added only if it lowers the held-out RMS by this fraction. */
 	double min_relative_gain = 0.005;
+	FoldScheme fold_scheme = FoldScheme::Regimes;
+	double regime_rate_C_per_min = 0.2;  //!< |mean thermistor rate| below this: a soak
+	double min_regime_s = 600.0;  //!< shorter regime segments join the one before
+	std::size_t max_regime_folds = 8;  //!< regime segment j is fold j mod this
+	/** "auto": choose each signal's order (T 1..5, rates 1..3, up to the preset's) by held-out
+	 * error; false: a signal enters with all the preset's powers (the earlier method). */
+	bool select_orders = true;
+	/** "auto": the simplest candidate within one standard error of the best held-out error. */
+	bool parsimony = true;
+	/** "auto" with multipoint / points:K: add physics-shaped candidates for each inner/outer pair
+	 * at the same angle: dT(in-out)^1 (thermal stress) and d/dt dT(in-out)^1 (gradient rate). */
+	bool physics_candidates = true;
+	/** "auto": the search starts from T^1 and dT/dt^1 of every thermistor of the preset (the
+	 * linear multipoint model: the Shupe error is linear in the coil's temperature rates) and
+	 * adds orders and candidates by held-out error; multipoint then keeps all its thermistors
+	 * (points:K still searches subsets). false: from the constant, over thermistor subsets. */
+	bool linear_base = true;
 	double min_samples_per_term = 10.0;
 	double min_temp_span_per_order_C = 0.5;  //!< T(a) of order k needs a span >= k x this [degC]
 	double tau_s = 100.0;  //!< averaging time of the stability figures [s]
 	bool fallbacks = true;  //!< fit one fallback model per thermistor
+	ExtrapolationPolicy extrapolation = ExtrapolationPolicy::Linear;  //!< recorded in the calibration
 };
 
 /** Figures of one evaluation, labelled by how they were obtained. */
@@ -76,6 +123,10 @@ struct FitFigures
 	double raw_stability_dph = 0.0;  //!< the same for the uncompensated output
 	double raw_range_dph = 0.0;
 	double tau_s = 100.0;
+	/** Through the compensator (validation runs): samples with a temperature / a rate outside
+	 * the calibrated range, and the largest distance beyond it. */
+	std::size_t temp_outside_samples = 0, rate_outside_samples = 0;
+	double max_temp_excursion_C = 0.0, max_rate_excursion_C_per_s = 0.0;
 };
 
 /** One fitted bias model: bias_dph = sum_i coef_dph[i] * feature_i (features normalised). */
@@ -96,6 +147,12 @@ struct BiasModel
 	/** Bias [deg/h] from signal values (features.signals() order); with clamp, values are
 	 * clamped to the calibrated ranges and *clamped (if given) receives how many were. */
 	double evaluate(const double* signal_values, bool clamp, int* clamped = nullptr) const;
+	/** Bias [deg/h] with a signal outside its calibrated range handled by `policy`;
+	 * *outside (if given) receives how many signals were outside. */
+	double evaluate(const double* signal_values, ExtrapolationPolicy policy, int* outside = nullptr) const;
+	/** d(bias)/d(signal) of signal s at its lower (upper = false) or upper calibrated edge
+	 * [deg/h per unit of the signal]: the slope the Linear policy continues with. */
+	double edgeSlope(std::size_t signal, bool upper) const;
 };
 
 struct Calibration
@@ -106,6 +163,7 @@ struct Calibration
 	std::string preset;  //!< as given to the fit
 	std::string selection;  //!< "auto" or "none"
 	RateEstimatorSettings rate_estimator;
+	ExtrapolationPolicy extrapolation = ExtrapolationPolicy::Linear;  //!< outside the calibrated range
 	BiasModel model;
 	std::vector<BiasModel> fallbacks;  //!< one per thermistor of the model
 	double mean_bias_dph = 0.0;  //!< used when no model applies (>= 2 thermistors missing)

@@ -17,8 +17,10 @@
  *    other missing one (flag Fallback); else the mean calibration bias only (flag NoModel).
  *    When the thermistor returns (reading and rate available again: after a dropout longer
  *    than the window that is its second valid sample) the main model is used again.
- *  - signals outside the calibrated range are clamped to it (flag Clamped, counted): a
- *    polynomial is never extrapolated.
+ *  - a signal outside its calibrated range is handled by the calibration's extrapolation
+ *    policy (Calibration.h: clamp, or the default linear continuation along the edge tangent;
+ *    flag Clamped, counted with the largest excursion seen): a polynomial of order > 1 is never
+ *    extrapolated as such. The kernel clamps; the linear part is added on the rare path.
  *  - RateWarmup: some rate window covers less than half its length (start, after a gap).
  * Batch compensate() is exactly the streaming loop, so batch == streaming by construction; the
  * tests also check it against an independent evaluation of the fitted feature set.
@@ -52,6 +54,10 @@ struct CompensationCounters
 	std::size_t no_model_samples = 0;
 	std::size_t clamped_samples = 0;  //!< samples with at least one clamped signal
 	std::size_t clamped_signals = 0;  //!< total clamped signal values
+	std::size_t temp_outside_samples = 0;  //!< samples with a temperature or difference outside its range
+	std::size_t rate_outside_samples = 0;  //!< samples with a rate outside its range
+	double max_temp_excursion_C = 0;  //!< largest distance of a temperature/difference beyond its range [degC]
+	double max_rate_excursion_C_per_s = 0;  //!< largest distance of a rate beyond its range [degC/s]
 	std::size_t warmup_samples = 0;
 	std::size_t model_switches = 0;  //!< changes of the model in use
 };
@@ -100,6 +106,7 @@ class Compensator
 	/** One model compiled for the per-sample loop, and its signal groups: defined in
 	 * internal/mrpt_fog/model/CompensatorStep.h (an implementation detail, not installed). */
 	struct SignalGroup;
+	struct EdgeSignal;
 	struct Compiled;
 	/** step() for NC == tracked channels (NC = 0: any count), kernel W lanes wide; defined in
 	 * CompensatorStep.h, compiled once for baseline x86-64 (stepFixed, W = 2) and once for
@@ -118,10 +125,13 @@ class Compensator
 	template <std::size_t NB, int W>
 	double evaluate(const Compiled& m, const double* temp_C, int& clamped) const;
 	double addGroups(const Compiled& m, const double* temp_C, double sum, int& clamped) const;  // sum + the groups' terms
+	/** Rare path after a clamp: the extrapolation policy's correction [deg/h] and the range counters. */
+	double outsideRange(const Compiled& m, const double* temp_C);
 
 	double window_s_;
 	double half_window_s_;
 	double mean_bias_dph_;
+	ExtrapolationPolicy extrapolation_ = ExtrapolationPolicy::Linear;
 	bool use_avx2_ = false;
 	std::vector<int> channel_col_;  // layout column of each tracked channel
 	bool same_order_ = false;  // channel_col_[c] == c for every tracked channel

@@ -14,7 +14,9 @@
  *   terms:NAME;NAME;...   an explicit term list (see ThermalFeatureSet.h)
  *
  * Any preset but terms: may end in "@T/R" to set the temperature / rate orders (default 5/3;
- * T 1..5, R 0..3; differences use R for M3/M4 as in the seed), e.g. "multipoint:Ti1,To1@3/1".
+ * T 1..5, R 0..3; differences use R for M3/M4 as in the seed), e.g. "multipoint:Ti1,To1@3/1",
+ * or in "@T" to set the temperature order only (e.g. "M1:imu@3"). M1 has no rate terms: a rate
+ * order other than 0 is refused for it.
  */
 
 #include <mrpt_fog/model/ThermalFeatureSet.h>

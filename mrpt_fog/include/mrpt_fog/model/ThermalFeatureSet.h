@@ -98,6 +98,10 @@ class ThermalFeatureSet
 	ThermalFeatureSet without(const std::string& thermistor) const;
 	/** The subset of terms whose signal index is in `signal_keep` (true = kept; constant kept). */
 	ThermalFeatureSet selectSignals(const std::vector<bool>& signal_keep) const;
+	/** The subset of terms whose power is <= order[signal] (0 drops the signal; constant kept). */
+	ThermalFeatureSet selectOrders(const std::vector<int>& order) const;
+	/** Highest power of each signal in the set. */
+	std::vector<int> signalOrders() const;
 
 	std::vector<SignalNormalisation>& normalisation() { return norm_; }
 	const std::vector<SignalNormalisation>& normalisation() const { return norm_; }

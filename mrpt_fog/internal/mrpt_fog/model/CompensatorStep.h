@@ -31,9 +31,18 @@ struct Compensator::SignalGroup
 /** A compiled model. Per-channel kernel for the T(c) and dT/dt(c) terms (the multipoint shape),
  * in blocks of 4 tracked channels (the last block padded), normalisation folded into the
  * coefficients (CompensatorKernel.h); the other terms as signal groups. */
+/** One signal's calibrated range and the bias slope at its edges (extrapolation, the rare path). */
+struct Compensator::EdgeSignal
+{
+	int kind = 0, a = 0, b = 0;  // SignalKind, tracked channels
+	double lo = 0, hi = 0, slope_lo = 0, slope_hi = 0;  // [signal unit], [deg/h per unit]
+	double centre = 0, scale = 1, coef[6] = {0, 0, 0, 0, 0, 0};  // coef[k] of z^k (Polynomial policy)
+};
+
 struct Compensator::Compiled
 {
 	double c0 = 0;
+	std::vector<EdgeSignal> edges;
 	std::vector<kernel::KernelBlock> kernel;
 	std::vector<SignalGroup> groups;  // differences and their rates
 	std::uint32_t uses = 0;  // bit mask of the channels the model reads
@@ -126,6 +135,11 @@ template <std::size_t NC, int W>
 		last_model_ = model;
 	}
 	if (model == 0 && clamped == 0 && !warm) return out;  // the common case: no flag, no other counter
+	if (clamped)
+	{
+		out.bias_dph += outsideRange(models_[model], T);
+		out.compensated_dph = raw_dph - out.bias_dph;
+	}
 	if (model > 0) out.flags |= compflags::Fallback;
 	if (model < 0) out.flags |= compflags::NoModel;
 	if (clamped) out.flags |= compflags::Clamped;

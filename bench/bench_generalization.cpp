@@ -1,0 +1,112 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+/** bench_generalization: the generalization bench of issue 11 (tests/generalization/support).
+ * Every device of the ensemble is calibrated on the seed chamber profile and evaluated on
+ * profiles it never saw; per preset, the median and 90th percentile of held-out 100 s stability
+ * divided by the device's noise floor.
+ *
+ *   bench_generalization [--seeds tuning|heldout|all] [--lumped N] [--rate-cap HZ] [--cases]
+ *                        [--extrapolation clamp|linear|polynomial] [--preset TEXT] [--extra PRESET]...
+ *
+ * Seeds 1..16 are the tuning devices, 17..24 were kept out of every tuning decision.
+ * --lumped N adds lumped-coil devices 1..N (the independent generator). --cases prints every
+ * device x profile x preset line; --extrapolation overrides every preset's policy; --preset
+ * keeps the presets whose label contains TEXT; --extra adds a fixed preset
+ * (selection none), e.g. --extra M2@5/1. Not a Google Benchmark: a figure-of-merit table. */
+#include "DeviceEnsemble.h"
+#include "GeneralizationBench.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+int main(int argc, char** argv)
+{
+	std::string which = "all";
+	int lumped = 8;
+	double cap = 1e9;
+	bool cases = false;
+	std::string policy, only;
+	std::vector<std::string> extra;
+	for (int i = 1; i < argc; i++)
+	{
+		const std::string a = argv[i];
+		if (a == "--seeds" && i + 1 < argc) which = argv[++i];
+		else if (a == "--lumped" && i + 1 < argc) lumped = std::atoi(argv[++i]);
+		else if (a == "--rate-cap" && i + 1 < argc) cap = std::atof(argv[++i]);
+		else if (a == "--cases") cases = true;
+		else if (a == "--extrapolation" && i + 1 < argc) policy = argv[++i];
+		else if (a == "--preset" && i + 1 < argc) only = argv[++i];
+		else if (a == "--extra" && i + 1 < argc) extra.push_back(argv[++i]);
+		else
+		{
+			std::fprintf(stderr, "bench_generalization: unknown argument '%s' (see the file comment)\n", a.c_str());
+			return 2;
+		}
+	}
+	std::vector<fogtest::BenchCase> list;
+	std::vector<std::uint64_t> seeds;
+	if (which == "tuning" || which == "all") seeds = fogtest::tuningSeeds();
+	if (which == "heldout" || which == "all")
+		for (auto s : fogtest::heldOutSeeds()) seeds.push_back(s);
+	if (seeds.empty())
+	{
+		std::fprintf(stderr, "bench_generalization: --seeds must be tuning, heldout or all\n");
+		return 2;
+	}
+	for (auto s : seeds) list.push_back({fogtest::Generator::FogSim, s, cap});
+	for (int s = 1; s <= lumped; s++) list.push_back({fogtest::Generator::Lumped, static_cast<std::uint64_t>(s), cap});
+	auto presets = fogtest::benchPresets();
+	for (const auto& e : extra)
+	{
+		mrpt_fog::FitOptions none;
+		none.selection = "none";
+		presets.push_back({e + " none", e, none, true});
+	}
+	if (!policy.empty())
+		for (auto& p : presets) p.options.extrapolation = mrpt_fog::extrapolationPolicyFromString(policy);
+	if (!only.empty())
+	{
+		std::vector<fogtest::BenchPreset> keep;
+		for (const auto& p : presets)
+			if (p.label.find(only) != std::string::npos) keep.push_back(p);
+		presets = keep;
+	}
+	const auto profiles = fogtest::evaluationProfiles();
+	std::vector<fogtest::CaseResult> all;
+	for (const auto& c : list)
+	{
+		const auto r = fogtest::runBenchCase(c, presets, profiles);
+		all.insert(all.end(), r.begin(), r.end());
+		std::fprintf(stderr, "%s seed %llu done (%.1f Hz, %d thermistors)\n", fogtest::toString(c.generator),
+					 static_cast<unsigned long long>(c.seed), r.empty() ? 0.0 : r[0].rate_hz,
+					 r.empty() ? 0 : r[0].thermistors);
+	}
+	if (cases)
+		for (const auto& r : all)
+			std::printf("%-8s %3llu %6.1fHz %dT %-12s %-22s ratio %7.2f raw/comp %6.2f %s %s\n", fogtest::toString(r.generator),
+						static_cast<unsigned long long>(r.seed), r.rate_hz, r.thermistors, r.profile.c_str(),
+						r.preset.c_str(), r.ratio, r.raw_over_comp, r.model_terms.c_str(), r.error.c_str());
+	std::printf("seeds %s, %d lumped devices; ratio = held-out 100 s stability / noise floor\n", which.c_str(), lumped);
+	std::printf("%-24s %6s %5s %8s %8s %14s\n", "preset", "cases", "fail", "median", "p90", "oor raw/comp");
+	for (const auto& s : fogtest::summarise(all, presets))
+		std::printf("%-24s %6zu %5zu %8.2f %8.2f %14.2f\n", s.preset.c_str(), s.cases, s.failures, s.median_ratio,
+					s.p90_ratio, s.oor_median_raw_over_comp);
+	// Per profile: median ratio of each preset.
+	std::printf("\nmedian ratio per evaluation profile\n%-24s", "preset");
+	for (const auto& pr : profiles) std::printf(" %12s", pr.name.c_str());
+	std::printf("\n");
+	for (const auto& bp : presets)
+	{
+		std::printf("%-24s", bp.label.c_str());
+		for (const auto& pr : profiles)
+		{
+			std::vector<double> v;
+			for (const auto& r : all)
+				if (r.preset == bp.label && r.profile == pr.name) v.push_back(r.ok ? r.ratio : 1e9);
+			std::printf(" %12.2f", fogtest::quantile(v, 0.5));
+		}
+		std::printf("\n");
+	}
+	return 0;
+}

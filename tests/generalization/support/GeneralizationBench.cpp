@@ -1,0 +1,251 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include "GeneralizationBench.h"
+
+#include "DeviceEnsemble.h"
+#include "LumpedCoilGenerator.h"
+
+#include <mrpt/containers/yaml.h>
+#include <mrpt_fog/metrics/BiasMetrics.h>
+#include <mrpt_fog/model/Compensator.h>
+#include <mrpt_fog/sim/ChamberRun.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+namespace fogtest
+{
+using mrpt_fog::sim::ChamberProfile;
+
+namespace
+{
+ChamberProfile fromText(const std::string& name, const std::string& yaml)
+{
+	return ChamberProfile::fromYaml(mrpt::containers::yaml::FromText(yaml), name);
+}
+}  // namespace
+
+ChamberProfile calibrationProfile() { return ChamberProfile::preset("seed"); }
+
+std::vector<BenchProfile> evaluationProfiles()
+{
+	std::vector<BenchProfile> p;
+	p.push_back({"B", ChamberProfile::preset("B"), false});
+	p.push_back({"heat_first", fromText("heat_first", "name: heat_first\ninitial_temp_C: 25\npower_initially: true\n"
+													  "initial_state: steady\nsegments:\n"
+													  "  - {type: hold, duration_min: 20}\n"
+													  "  - {type: ramp, to_C: 55, rate_C_per_min: 0.5}\n"
+													  "  - {type: hold, duration_min: 60}\n"
+													  "  - {type: ramp, to_C: -35, rate_C_per_min: 2}\n"
+													  "  - {type: hold, duration_min: 60}\n"
+													  "  - {type: ramp, to_C: 25, rate_C_per_min: 1}\n"
+													  "  - {type: hold, duration_min: 30}\n"),
+				 false});
+	p.push_back({"sine_soaks", fromText("sine_soaks", "name: sine_soaks\ninitial_temp_C: 10\npower_initially: true\n"
+													  "initial_state: steady\nsegments:\n"
+													  "  - {type: hold, duration_min: 15}\n"
+													  "  - {type: sine, amplitude_C: 15, period_min: 40, cycles: 4}\n"
+													  "  - {type: ramp, to_C: -20, rate_C_per_min: 0.7}\n"
+													  "  - {type: hold, duration_min: 30}\n"
+													  "  - {type: ramp, to_C: 40, rate_C_per_min: 1.5}\n"
+													  "  - {type: hold, duration_min: 20}\n"),
+				 false});
+	p.push_back({"cold_start", ChamberProfile::preset("warmup"), false});
+	p.push_back({"out_of_range", fromText("out_of_range", "name: out_of_range\ninitial_temp_C: 25\npower_initially: true\n"
+														  "initial_state: steady\nsegments:\n"
+														  "  - {type: ramp, to_C: -55, rate_C_per_min: 1}\n"
+														  "  - {type: hold, duration_min: 60}\n"
+														  "  - {type: ramp, to_C: 75, rate_C_per_min: 1}\n"
+														  "  - {type: hold, duration_min: 60}\n"),
+				 true});
+	return p;
+}
+
+std::vector<BenchPreset> benchPresets()
+{
+	std::vector<BenchPreset> out;
+	mrpt_fog::FitOptions none;
+	none.selection = "none";
+	out.push_back({"default (multipoint)", "multipoint", mrpt_fog::FitOptions{}, false});
+	mrpt_fog::FitOptions previous;  // the selection before issue 11: blocked folds, whole groups, no parsimony
+	previous.fold_scheme = mrpt_fog::FoldScheme::Blocks;
+	previous.select_orders = false;
+	previous.parsimony = false;
+	previous.physics_candidates = false;
+	previous.linear_base = false;
+	out.push_back({"auto before issue 11", "multipoint", previous, false});
+	if (std::getenv("FOG_BENCH_VARIANTS"))
+	{
+		for (int v = 0; v < 8; v++)
+		{
+			mrpt_fog::FitOptions o;
+			o.fold_scheme = (v & 1) ? mrpt_fog::FoldScheme::Blocks : mrpt_fog::FoldScheme::Regimes;
+			o.parsimony = (v & 2) == 0;
+			o.linear_base = (v & 4) == 0;
+			out.push_back({std::string("auto ") + ((v & 1) ? "blk" : "reg") + ((v & 2) ? " min" : " 1se") +
+							   ((v & 4) ? " nobase" : " base"),
+						   "multipoint", o, false});
+		}
+	}
+	out.push_back({"multipoint none 5/3", "multipoint", none, true});
+	out.push_back({"multipoint@3/1 none", "multipoint@3/1", none, true});
+	out.push_back({"multipoint@1/1 none", "multipoint@1/1", none, true});
+	out.push_back({"M2@3/1 none", "M2@3/1", none, true});
+	out.push_back({"M1@3/0 none", "M1@3/0", none, true});
+	return out;
+}
+
+const char* toString(Generator g) { return g == Generator::FogSim ? "fog-sim" : "lumped"; }
+
+namespace
+{
+struct DeviceRuns
+{
+	double rate_hz = 0;
+	int thermistors = 0;
+	mrpt_fog::FogSeries cal;
+	std::vector<mrpt_fog::FogSeries> eval, floor;
+};
+
+DeviceRuns simulate(const BenchCase& c, const std::vector<BenchProfile>& profiles)
+{
+	DeviceRuns r;
+	if (c.generator == Generator::FogSim)
+	{
+		const DrawnDevice d = drawDevice(c.seed);
+		mrpt_fog::sim::SimSettings st;
+		st.rate_hz = std::min(d.rate_hz, c.rate_cap_hz);
+		r.rate_hz = st.rate_hz;
+		r.thermistors = static_cast<int>(d.device.thermistors.size());
+		st.seed = 1000 * c.seed + 1;
+		r.cal = mrpt_fog::sim::simulateChamber(calibrationProfile(), d.device, st);
+		for (std::size_t i = 0; i < profiles.size(); i++)
+		{
+			st.seed = 1000 * c.seed + 2 + i;
+			st.effects = mrpt_fog::sim::defaultEffects();
+			r.eval.push_back(mrpt_fog::sim::simulateChamber(profiles[i].profile, d.device, st));
+			st.effects = {};  // noise only: the device's noise floor on this profile
+			r.floor.push_back(mrpt_fog::sim::simulateChamber(profiles[i].profile, d.device, st));
+		}
+	}
+	else
+	{
+		LumpedCoilParams p = drawLumpedCoil(c.seed);
+		p.rate_hz = std::min(p.rate_hz, c.rate_cap_hz);
+		r.rate_hz = p.rate_hz;
+		r.thermistors = p.thermistors;
+		r.cal = simulateLumpedCoil(p, calibrationProfile(), 1000 * c.seed + 1);
+		for (std::size_t i = 0; i < profiles.size(); i++)
+		{
+			r.eval.push_back(simulateLumpedCoil(p, profiles[i].profile, 1000 * c.seed + 2 + i));
+			r.floor.push_back(simulateLumpedCoil(p, profiles[i].profile, 1000 * c.seed + 2 + i, true));
+		}
+	}
+	return r;
+}
+
+std::string describeTerms(const mrpt_fog::Calibration& cal)
+{
+	const auto names = cal.model.features.termNames();
+	std::string s = std::to_string(names.size()) + " terms:";
+	for (std::size_t i = 1; i < names.size(); i++) s += " " + names[i];
+	return s;
+}
+}  // namespace
+
+std::vector<CaseResult> runBenchCase(const BenchCase& c, const std::vector<BenchPreset>& presets,
+									 const std::vector<BenchProfile>& profiles)
+{
+	const DeviceRuns runs = simulate(c, profiles);
+	std::vector<double> floor_dph;
+	for (const auto& f : runs.floor)
+	{
+		const auto stats = mrpt_fog::biasStats(f.time_s, f.primaryRate_dph(), 100.0);
+		floor_dph.push_back(stats.stability_dph);
+	}
+	std::vector<CaseResult> out;
+	for (const auto& bp : presets)
+	{
+		mrpt_fog::Calibration cal;
+		std::string error;
+		try
+		{
+			cal = mrpt_fog::fitCalibration({runs.cal}, bp.preset, bp.options, {"calibration"});
+		}
+		catch (const std::exception& e)
+		{
+			error = e.what();
+		}
+		for (std::size_t i = 0; i < profiles.size(); i++)
+		{
+			CaseResult r;
+			r.generator = c.generator;
+			r.seed = c.seed;
+			r.rate_hz = runs.rate_hz;
+			r.thermistors = runs.thermistors;
+			r.profile = profiles[i].name;
+			r.preset = bp.label;
+			r.out_of_range = profiles[i].out_of_range;
+			r.noise_floor_dph = floor_dph[i];
+			r.error = error;
+			if (error.empty())
+			{
+				const auto f = mrpt_fog::evaluateCalibration(cal, runs.eval[i], profiles[i].name, 100.0);
+				r.ok = f.valid;
+				r.stability_dph = f.stability_dph;
+				r.raw_stability_dph = f.raw_stability_dph;
+				r.ratio = f.stability_dph / floor_dph[i];
+				r.raw_over_comp = f.raw_stability_dph / f.stability_dph;
+				r.model_terms = describeTerms(cal);
+				if (!f.valid) r.error = "evaluation run shorter than 2 windows";
+			}
+			out.push_back(r);
+		}
+	}
+	return out;
+}
+
+double quantile(std::vector<double> v, double q)
+{
+	if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+	std::sort(v.begin(), v.end());
+	const double pos = q * static_cast<double>(v.size() - 1);
+	const auto lo = static_cast<std::size_t>(std::floor(pos));
+	const std::size_t hi = std::min(lo + 1, v.size() - 1);
+	if (!std::isfinite(v[hi])) return v[hi];
+	return v[lo] + (pos - static_cast<double>(lo)) * (v[hi] - v[lo]);
+}
+
+std::vector<PresetSummary> summarise(const std::vector<CaseResult>& results, const std::vector<BenchPreset>& presets)
+{
+	std::vector<PresetSummary> out;
+	const double inf = std::numeric_limits<double>::infinity();
+	for (const auto& bp : presets)
+	{
+		PresetSummary s;
+		s.preset = bp.label;
+		std::vector<double> in_range, oor_gain, oor_ratio;
+		for (const auto& r : results)
+		{
+			if (r.preset != bp.label) continue;
+			if (r.out_of_range)
+			{
+				oor_gain.push_back(r.ok ? r.raw_over_comp : 0.0);
+				oor_ratio.push_back(r.ok ? r.ratio : inf);
+				continue;
+			}
+			s.cases++;
+			s.failures += !r.ok;
+			in_range.push_back(r.ok ? r.ratio : inf);
+		}
+		s.median_ratio = quantile(in_range, 0.5);
+		s.p90_ratio = quantile(in_range, 0.9);
+		s.oor_median_raw_over_comp = quantile(oor_gain, 0.5);
+		s.oor_median_ratio = quantile(oor_ratio, 0.5);
+		out.push_back(s);
+	}
+	return out;
+}
+
+}  // namespace fogtest

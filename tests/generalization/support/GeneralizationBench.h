@@ -1,0 +1,95 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file GeneralizationBench.h
+ * Test support: the generalization bench of issue 11. Each device of an ensemble (drawn with
+ * DeviceEnsemble.h from fog-sim's physics, or with the independent LumpedCoilGenerator.h) is
+ * calibrated on the seed's chamber profile and evaluated on other profiles it never saw
+ * (evaluationProfiles()); the figure is the held-out 100 s bias stability divided by that
+ * device's noise floor on the same profile (the 100 s stability of the same device and profile
+ * with every thermal error off). A ratio of 1 is the best any model can do.
+ */
+
+#include <mrpt_fog/model/Calibration.h>
+#include <mrpt_fog/sim/ChamberProfile.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fogtest
+{
+struct BenchProfile
+{
+	std::string name;
+	mrpt_fog::sim::ChamberProfile profile;
+	bool out_of_range = false;  //!< colder and hotter than the calibration profile
+};
+
+/** The seed profile (25 -> -40 -> 60 C at 1 C/min, 2 h soaks): what every device is fitted on. */
+mrpt_fog::sim::ChamberProfile calibrationProfile();
+/** B (other rates, a step, a swept sine), heat_first (heating before cooling, 0.5 and 2 C/min,
+ * 1 h soaks), sine_soaks (a 40 min sine, short soaks, 0.7 / 1.5 C/min), cold_start (unpowered
+ * equilibrium, power on, 3 h), and out_of_range (-55 .. 75 C, beyond the calibrated -40 .. 60). */
+std::vector<BenchProfile> evaluationProfiles();
+
+/** A model as the bench fits it. */
+struct BenchPreset
+{
+	std::string label;
+	std::string preset;
+	mrpt_fog::FitOptions options;
+	bool fixed = true;  //!< false for presets that select terms (the default)
+};
+/** The default (`multipoint`, default options) and fixed presets (selection none). */
+std::vector<BenchPreset> benchPresets();
+
+enum class Generator
+{
+	FogSim,
+	Lumped
+};
+const char* toString(Generator g);
+
+struct BenchCase
+{
+	Generator generator = Generator::FogSim;
+	std::uint64_t seed = 0;
+	double rate_cap_hz = 1e9;  //!< the drawn sample rate, at most this (the quick subset caps it)
+};
+
+struct CaseResult
+{
+	Generator generator = Generator::FogSim;
+	std::uint64_t seed = 0;
+	double rate_hz = 0;
+	int thermistors = 0;
+	std::string profile, preset;
+	bool out_of_range = false;
+	bool ok = false;
+	std::string error;  //!< why the fit or evaluation failed
+	double stability_dph = 0, raw_stability_dph = 0, noise_floor_dph = 0;
+	double ratio = 0;  //!< stability / noise floor
+	double raw_over_comp = 0;
+	std::string model_terms;  //!< chosen terms (count and names, for reports)
+};
+
+/** Runs one device through every preset and evaluation profile. */
+std::vector<CaseResult> runBenchCase(const BenchCase& c, const std::vector<BenchPreset>& presets,
+									 const std::vector<BenchProfile>& profiles);
+
+struct PresetSummary
+{
+	std::string preset;
+	std::size_t cases = 0, failures = 0;
+	double median_ratio = 0, p90_ratio = 0;  //!< in-range profiles
+	double oor_median_raw_over_comp = 0;  //!< out-of-range profile: raw / compensated stability
+	double oor_median_ratio = 0;
+};
+/** Median and 90th percentile per preset (failed fits count as +inf). */
+std::vector<PresetSummary> summarise(const std::vector<CaseResult>& results, const std::vector<BenchPreset>& presets);
+
+/** Quantile q in [0, 1] (linear interpolation), of a copy. */
+double quantile(std::vector<double> v, double q);
+
+}  // namespace fogtest
