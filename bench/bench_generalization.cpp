@@ -4,11 +4,11 @@
  * profiles it never saw; per preset, the median and 90th percentile of held-out 100 s stability
  * divided by the device's noise floor.
  *
- *   bench_generalization [--seeds tuning|heldout|all] [--lumped N] [--rate-cap HZ] [--cases]
+ *   bench_generalization [--seeds tuning|heldout|all] [--sector-coil N] [--rate-cap HZ] [--cases]
  *                        [--extrapolation clamp|linear|polynomial] [--preset TEXT] [--extra PRESET]...
  *
  * Seeds 1..16 are the tuning devices, 17..24 were kept out of every tuning decision.
- * --lumped N adds lumped-coil devices 1..N (the independent generator). --cases prints every
+ * --sector-coil N adds sector-coil devices 1..N (the independent generator). --cases prints every
  * device x profile x preset line; --extrapolation overrides every preset's policy; --preset
  * keeps the presets whose label contains TEXT; --extra adds a fixed preset
  * (selection none), e.g. --extra M2@5/1. Not a Google Benchmark: a figure-of-merit table. */
@@ -23,7 +23,7 @@
 int main(int argc, char** argv)
 {
 	std::string which = "all";
-	int lumped = 8;
+	int sector_coil = 8;
 	double cap = 1e9;
 	bool cases = false;
 	std::string policy, only;
@@ -32,7 +32,7 @@ int main(int argc, char** argv)
 	{
 		const std::string a = argv[i];
 		if (a == "--seeds" && i + 1 < argc) which = argv[++i];
-		else if (a == "--lumped" && i + 1 < argc) lumped = std::atoi(argv[++i]);
+		else if (a == "--sector-coil" && i + 1 < argc) sector_coil = std::atoi(argv[++i]);
 		else if (a == "--rate-cap" && i + 1 < argc) cap = std::atof(argv[++i]);
 		else if (a == "--cases") cases = true;
 		else if (a == "--extrapolation" && i + 1 < argc) policy = argv[++i];
@@ -55,7 +55,7 @@ int main(int argc, char** argv)
 		return 2;
 	}
 	for (auto s : seeds) list.push_back({fogtest::Generator::FogSim, s, cap});
-	for (int s = 1; s <= lumped; s++) list.push_back({fogtest::Generator::Lumped, static_cast<std::uint64_t>(s), cap});
+	for (int s = 1; s <= sector_coil; s++) list.push_back({fogtest::Generator::SectorCoil, static_cast<std::uint64_t>(s), cap});
 	auto presets = fogtest::benchPresets();
 	for (const auto& e : extra)
 	{
@@ -87,7 +87,7 @@ int main(int argc, char** argv)
 			std::printf("%-8s %3llu %6.1fHz %dT %-12s %-22s ratio %7.2f raw/comp %6.2f %s %s\n", fogtest::toString(r.generator),
 						static_cast<unsigned long long>(r.seed), r.rate_hz, r.thermistors, r.profile.c_str(),
 						r.preset.c_str(), r.ratio, r.raw_over_comp, r.model_terms.c_str(), r.error.c_str());
-	std::printf("seeds %s, %d lumped devices; ratio = held-out 100 s stability / noise floor\n", which.c_str(), lumped);
+	std::printf("seeds %s, %d sector-coil devices; ratio = held-out 100 s stability / noise floor\n", which.c_str(), sector_coil);
 	std::printf("%-24s %6s %5s %8s %8s %14s\n", "preset", "cases", "fail", "median", "p90", "oor raw/comp");
 	for (const auto& s : fogtest::summarise(all, presets))
 		std::printf("%-24s %6zu %5zu %8.2f %8.2f %14.2f\n", s.preset.c_str(), s.cases, s.failures, s.median_ratio,

@@ -177,7 +177,20 @@ int main(int argc, char** argv)
 		std::printf("  model: %zu terms (%zu thermistors), ridge %g, condition number %.3g, rank %zu, %zu samples\n",
 					m.features.termCount(), m.features.thermistors().size(), m.ridge, m.condition_number,
 					m.numerical_rank, m.samples);
-		std::printf("  fallbacks: %zu (one per thermistor of the model)\n", cal.fallbacks.size());
+		std::printf("  terms:");
+		for (std::size_t i = 1; i < m.features.termCount(); i++) std::printf(" %s", m.features.termNames()[i].c_str());
+		std::printf("\n  fallbacks: %zu (one per thermistor of the model)\n", cal.fallbacks.size());
+		const auto& st = cal.selection_stability;
+		if (st.resamples > 0)
+		{
+			std::printf("  selection stability: %.0f %% of %zu block-bootstrap refits chose this model%s\n",
+						100.0 * st.chosen_share, st.resamples,
+						st.stable ? " (stable)" : ": UNSTABLE, the data do not settle the choice; alternatives:");
+			if (!st.stable)
+				for (const auto& a : st.alternatives)
+					std::printf("    %.0f %%  held-out RMS %.4g deg/h  %s\n", 100.0 * a.share, a.held_out_rms_dph,
+								a.terms.c_str());
+		}
 		std::printf("  tau = %g s\n", opt.tau_s);
 		std::vector<const FitFigures*> figs{&cal.in_sample, &cal.held_out};
 		if (!arg_val.getValue().empty()) figs.push_back(&cal.validation);
@@ -212,6 +225,22 @@ int main(int argc, char** argv)
 				j["validation"]["out_of_range"] = app::outOfRangeJson(range, cal.extrapolation);
 			}
 			j["extrapolation"] = toString(cal.extrapolation);
+			const auto& st = cal.selection_stability;
+			JsonValue& sj = j["selection_stability"] = JsonValue::object();
+			sj["resamples"] = static_cast<unsigned long>(st.resamples);
+			sj["chosen_share"] = st.chosen_share;
+			sj["stable"] = st.stable;
+			JsonValue& alts = sj["alternatives"] = JsonValue::array();
+			for (const auto& a : st.alternatives)
+			{
+				JsonValue aj = JsonValue::object();
+				aj["terms"] = a.terms;
+				aj["share"] = a.share;
+				aj["held_out_rms_dph"] = a.held_out_rms_dph;
+				alts.push_back(aj);
+			}
+			JsonValue& ts = sj["term_share"] = JsonValue::object();
+			for (const auto& [t, v] : st.term_share) ts[t] = v;
 			j["calibration"] = arg_out.getValue();
 			writeTextFileAtomically(arg_json.getValue(), j.dump());
 		}

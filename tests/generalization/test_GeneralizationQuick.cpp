@@ -1,7 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include "DeviceEnsemble.h"
 #include "GeneralizationBench.h"
-#include "LumpedCoilGenerator.h"
+#include "SectorCoilGenerator.h"
 
 #include <gtest/gtest.h>
 
@@ -12,12 +12,12 @@
 
 using namespace fogtest;
 
-TEST(LumpedCoilGenerator, NoiseOnlyRunHasTheNoiseOfItsArw)
+TEST(SectorCoilGenerator, NoiseOnlyRunHasTheNoiseOfItsArw)
 {
-	LumpedCoilParams p = drawLumpedCoil(3);
+	SectorCoilParams p = drawSectorCoil(3);
 	p.rate_hz = 2.0;
 	const auto prof = mrpt_fog::sim::ChamberProfile::preset("warmup");
-	const auto s = simulateLumpedCoil(p, prof, 5, true);
+	const auto s = simulateSectorCoil(p, prof, 5, true);
 	ASSERT_GT(s.size(), 1000u);
 	// White part: sigma = 60 N sqrt(fs) deg/h (PHYSICS.md); first differences remove the slow part.
 	double sum2 = 0;
@@ -33,7 +33,7 @@ TEST(LumpedCoilGenerator, NoiseOnlyRunHasTheNoiseOfItsArw)
 namespace
 {
 /** The quick subset (fixed before any result was seen): fog-sim devices 1..4 of the tuning
- * seeds and lumped device 1, sample rate capped at 2 Hz; presets: the default, the fixed
+ * seeds and sector-coil device 1, sample rate capped at 2 Hz; presets: the default, the fixed
  * multipoint@3/1 and @1/1 (selection none), and the default with clamping. */
 struct QuickBench
 {
@@ -52,7 +52,7 @@ struct QuickBench
 		const auto profiles = evaluationProfiles();
 		std::vector<BenchCase> cases;
 		for (std::uint64_t s = 1; s <= 4; s++) cases.push_back({Generator::FogSim, s, 2.0});
-		cases.push_back({Generator::Lumped, 1, 2.0});
+		cases.push_back({Generator::SectorCoil, 1, 2.0});
 		for (const auto& c : cases)
 		{
 			const auto r = runBenchCase(c, presets, profiles);

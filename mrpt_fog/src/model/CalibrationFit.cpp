@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <random>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -655,15 +656,31 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 		const std::size_t nblocks = nfolds * opt.blocks_per_fold;
 		return std::min(nblocks - 1, static_cast<std::size_t>(u * static_cast<double>(nblocks))) % nfolds;
 	};
+	// Resampling units for the stability of the choice: kStabilityBlocks contiguous time blocks per
+	// run, split by fold (a block is never in two folds).
+	const bool resample = opt.selection == "auto" && opt.stability_resamples > 0;
+	constexpr std::size_t kStabilityBlocks = 40;
+	std::map<std::pair<std::size_t, std::size_t>, StreamingQr> units;  // (fold, run block) -> rows
 	for (std::size_t ri = 0; ri < prep.size(); ri++)
 	{
 		const auto& r = prep[ri];
+		const auto& t = r.s->time_s;
 		for (std::size_t k = 0; k < r.s->size(); k++)
 		{
 			if (!r.ok[k]) continue;
 			rowSignals(r, fs, k, temp, rate, values);
 			fs.features(values.data(), f.data(), false);
-			folds.held_out[foldOf(ri, k)].add(f.data(), r.y[k]);
+			const std::size_t fold = foldOf(ri, k);
+			folds.held_out[fold].add(f.data(), r.y[k]);
+			if (resample)
+			{
+				const double u = (t[k] - t.front()) / (t.back() - t.front() + 1e-300);
+				const std::size_t b = ri * kStabilityBlocks +
+									  std::min(kStabilityBlocks - 1, static_cast<std::size_t>(u * kStabilityBlocks));
+				auto it = units.find({fold, b});
+				if (it == units.end()) it = units.emplace(std::make_pair(fold, b), StreamingQr(fs.termCount(), y_ref, x_ref)).first;
+				it->second.add(f.data(), r.y[k]);
+			}
 		}
 	}
 	StreamingQr total(fs.termCount(), y_ref, x_ref);
@@ -682,15 +699,15 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 		return allowed;
 	};
 	const bool automatic = opt.selection == "auto";
-	const auto forward = [&](const std::vector<std::string>& pool, const std::string& dropped) {
-		return selectForward(folds, fs, allowedFor(pool, dropped), max_order, opt.select_orders, opt.min_relative_gain,
+	const auto forward = [&](FoldSet& fset, const std::vector<std::string>& pool, const std::string& dropped) {
+		return selectForward(fset, fs, allowedFor(pool, dropped), max_order, opt.select_orders, opt.min_relative_gain,
 							 opt.linear_base);
 	};
-	const auto choose = [&](const std::vector<std::string>& pool, const std::string& dropped) {
+	const auto choose = [&](FoldSet& fset, const std::vector<std::string>& pool, const std::string& dropped) {
 		Choice c;
 		if (automatic)
 		{
-			const auto path = forward(pool, dropped);
+			const auto path = forward(fset, pool, dropped);
 			std::vector<const Choice*> cands;
 			for (const auto& x : path) cands.push_back(&x);
 			c = opt.parsimony ? oneStandardError(cands) : *std::min_element(path.begin(), path.end(), [](const Choice& a, const Choice& b) {
@@ -703,7 +720,7 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 			const auto allowed = allowedFor(pool, dropped);
 			for (std::size_t s = 0; s < ns; s++)
 				if (!allowed[s]) order[s] = 0;
-			c = scoreOrders(folds, fs, order, {opt.ridge});
+			c = scoreOrders(fset, fs, order, {opt.ridge});
 		}
 		c.pool = pool;
 		return c;
@@ -715,7 +732,7 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	std::vector<Choice> fallback_choices;  // for nested: the best choice without each thermistor
 	if (nested)
 	{
-		NestedSelection search(names, [&](const std::vector<std::string>& pool) { return forward(pool, ""); });
+		NestedSelection search(names, [&](const std::vector<std::string>& pool) { return forward(folds, pool, ""); });
 		std::size_t base = search.fullMask();
 		if (preset.kind == "points")
 		{
@@ -768,7 +785,7 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 		bool first_pool = true;
 		for (const auto& pool : pools)
 		{
-			const Choice c = choose(pool, "");
+			const Choice c = choose(folds, pool, "");
 			if (first_pool || c.cv_rms < best.cv_rms)
 			{
 				best = c;
@@ -778,11 +795,94 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 		if (opt.fallbacks)
 		{
 			const ThermalFeatureSet chosen = fs.selectOrders(best.order);
-			for (const auto& name : chosen.thermistors()) fallback_choices.push_back(choose(best.pool, name));
+			for (const auto& name : chosen.thermistors()) fallback_choices.push_back(choose(folds, best.pool, name));
 		}
 	}
 
+	// Stability of the choice: the main-model selection rerun on block-bootstrap resamples of the
+	// calibration data (units drawn with replacement, each keeping its fold).
+	SelectionStability stability;
+	if (resample && !units.empty())
+	{
+		const auto termsOf = [&](const Choice& c) {
+			std::string s;
+			for (const auto& n : fs.selectOrders(c.order).termNames())
+				if (n != "1") s += (s.empty() ? "" : " + ") + n;
+			return s.empty() ? std::string("1") : s;
+		};
+		const auto selectMain = [&](FoldSet& fset) -> Choice {
+			if (nested)
+			{
+				NestedSelection search(names, [&](const std::vector<std::string>& pool) { return forward(fset, pool, ""); });
+				std::size_t base = search.fullMask();
+				if (preset.kind == "points")
+				{
+					double lowest = std::numeric_limits<double>::infinity();
+					for (std::size_t mask = 1; mask <= search.fullMask(); mask++)
+					{
+						if (static_cast<std::size_t>(__builtin_popcountll(mask)) != static_cast<std::size_t>(preset.points_k))
+							continue;
+						const Choice c = search.best(mask, false);
+						if (c.cv_rms < lowest)
+						{
+							lowest = c.cv_rms;
+							base = mask;
+						}
+					}
+				}
+				return search.best(base, opt.parsimony);
+			}
+			return choose(fset, best.pool, "");
+		};
+		std::vector<const StreamingQr*> unit_list;
+		std::vector<std::size_t> unit_fold;
+		for (const auto& [key, acc] : units)
+		{
+			unit_list.push_back(&acc);
+			unit_fold.push_back(key.first);
+		}
+		std::mt19937_64 rng(opt.stability_seed);
+		std::uniform_int_distribution<std::size_t> pick(0, unit_list.size() - 1);
+		std::map<std::string, std::size_t> model_count, term_count;
+		std::map<std::string, std::vector<int>> model_order;
+		for (std::size_t b = 0; b < opt.stability_resamples; b++)
+		{
+			FoldSet fr;
+			fr.held_out.assign(nfolds, StreamingQr(fs.termCount(), y_ref, x_ref));
+			for (std::size_t i = 0; i < unit_list.size(); i++)
+			{
+				const std::size_t u = pick(rng);
+				fr.held_out[unit_fold[u]].merge(*unit_list[u]);
+			}
+			fr.training = trainingSets(fr.held_out);
+			const Choice c = selectMain(fr);
+			const std::string key = termsOf(c);
+			model_count[key]++;
+			model_order[key] = c.order;
+			for (const auto& n : fs.selectOrders(c.order).termNames())
+				if (n != "1") term_count[n]++;
+		}
+		const double nb = static_cast<double>(opt.stability_resamples);
+		stability.resamples = opt.stability_resamples;
+		const std::string chosen = termsOf(best);
+		stability.chosen_share = model_count.count(chosen) ? static_cast<double>(model_count[chosen]) / nb : 0.0;
+		stability.stable = stability.chosen_share >= opt.stable_share;
+		for (const auto& [key, n] : model_count)
+		{
+			if (key == chosen) continue;
+			SelectionStability::Alternative a;
+			a.terms = key;
+			a.share = static_cast<double>(n) / nb;
+			a.held_out_rms_dph = scoreOrders(folds, fs, model_order[key], kRidgeGrid).cv_rms;  // on the real folds
+			stability.alternatives.push_back(a);
+		}
+		std::sort(stability.alternatives.begin(), stability.alternatives.end(),
+				  [](const auto& a, const auto& b) { return a.share > b.share; });
+		for (const auto& [term, n] : term_count) stability.term_share.push_back({term, static_cast<double>(n) / nb});
+	}
+
 	Calibration cal;
+	cal.selection_stability = stability;
 	cal.sensor_label = first.sensor_label;
 	cal.axis = axis;
 	cal.layout = first.thermistors;

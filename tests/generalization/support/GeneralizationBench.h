@@ -3,7 +3,7 @@
 
 /** \file GeneralizationBench.h
  * Test support: the generalization bench of issue 11. Each device of an ensemble (drawn with
- * DeviceEnsemble.h from fog-sim's physics, or with the independent LumpedCoilGenerator.h) is
+ * DeviceEnsemble.h from fog-sim's physics, or with the independent SectorCoilGenerator.h) is
  * calibrated on the seed's chamber profile and evaluated on other profiles it never saw
  * (evaluationProfiles()); the figure is the held-out 100 s bias stability divided by that
  * device's noise floor on the same profile (the 100 s stability of the same device and profile
@@ -47,7 +47,7 @@ std::vector<BenchPreset> benchPresets();
 enum class Generator
 {
 	FogSim,
-	Lumped
+	SectorCoil
 };
 const char* toString(Generator g);
 

@@ -41,6 +41,7 @@
 #include <mrpt_fog/obs/FogSeries.h>
 
 #include <Eigen/Dense>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -104,6 +105,12 @@ struct FitOptions
 	 * adds orders and candidates by held-out error; multipoint then keeps all its thermistors
 	 * (points:K still searches subsets). false: from the constant, over thermistor subsets. */
 	bool linear_base = true;
+	/** "auto": refits on block-bootstrap resamples of the calibration data (40 time blocks per
+	 * run, drawn with replacement, each in its own fold) to measure how stable the choice is;
+	 * 0 = not measured. */
+	std::size_t stability_resamples = 10;
+	std::uint64_t stability_seed = 1;  //!< fixed: the same data give the same report
+	double stable_share = 0.6;  //!< the choice is called stable when at least this share of refits repeat it
 	double min_samples_per_term = 10.0;
 	double min_temp_span_per_order_C = 0.5;  //!< T(a) of order k needs a span >= k x this [degC]
 	double tau_s = 100.0;  //!< averaging time of the stability figures [s]
@@ -155,6 +162,22 @@ struct BiasModel
 	double edgeSlope(std::size_t signal, bool upper) const;
 };
 
+/** How stable the selected model is under resampling of the calibration data (FitOptions). */
+struct SelectionStability
+{
+	std::size_t resamples = 0;  //!< 0: not measured (selection none, or switched off)
+	double chosen_share = 0.0;  //!< share of refits that chose exactly the calibrated model
+	bool stable = true;  //!< chosen_share >= FitOptions::stable_share
+	struct Alternative
+	{
+		std::string terms;  //!< "T(Ti1)^1 + dT/dt(Ti1)^1 + ..."
+		double share = 0.0;  //!< share of refits that chose it
+		double held_out_rms_dph = 0.0;  //!< its cross-validated RMS on the calibration's folds [deg/h]
+	};
+	std::vector<Alternative> alternatives;  //!< the other models refits chose, most frequent first
+	std::vector<std::pair<std::string, double>> term_share;  //!< each term: share of refits that include it
+};
+
 struct Calibration
 {
 	std::string sensor_label;
@@ -169,6 +192,7 @@ struct Calibration
 	double mean_bias_dph = 0.0;  //!< used when no model applies (>= 2 thermistors missing)
 	std::vector<std::string> runs;  //!< labels of the calibration runs
 	FitFigures in_sample, held_out, validation;
+	SelectionStability selection_stability;  //!< see SelectionStability (not stored in v1 files)
 
 	/** Fallback model for a missing thermistor, or nullptr. */
 	const BiasModel* fallbackFor(const std::string& thermistor) const;

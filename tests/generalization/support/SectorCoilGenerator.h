@@ -1,7 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #pragma once
 
-/** \file LumpedCoilGenerator.h
+/** \file SectorCoilGenerator.h
  * Test support: a second chamber-run generator written apart from fog-sim (issue 11), so the
  * bench does not only judge the fit on the physics it was developed with. Structure: 8 nodes
  * (housing, hub, 3 outer + 3 inner coil sectors at 0/120/240 deg), explicit Euler at 0.5 s
@@ -24,7 +24,7 @@
 
 namespace fogtest
 {
-struct LumpedCoilParams
+struct SectorCoilParams
 {
 	double cap_scale = 1.0;
 	double g_radial_W_K = 0.5, g_housing_air_W_K = 0.5, g_outer_housing_W_K = 0.1;
@@ -38,12 +38,12 @@ struct LumpedCoilParams
 	double rate_hz = 1.0;
 };
 
-/** Parameters of lumped device `seed` (ranges in the file comment). */
-LumpedCoilParams drawLumpedCoil(std::uint64_t seed);
+/** Parameters of sector-coil device `seed` (ranges in the file comment). */
+SectorCoilParams drawSectorCoil(std::uint64_t seed);
 
 /** Simulates a chamber run; `noise_only` gives the same device's output with no thermal error
  * (same noise realisation): its 100 s stability is the device's noise floor. */
-mrpt_fog::FogSeries simulateLumpedCoil(const LumpedCoilParams& p, const mrpt_fog::sim::ChamberProfile& profile,
+mrpt_fog::FogSeries simulateSectorCoil(const SectorCoilParams& p, const mrpt_fog::sim::ChamberProfile& profile,
 									   std::uint64_t run_seed, bool noise_only = false);
 
 }  // namespace fogtest

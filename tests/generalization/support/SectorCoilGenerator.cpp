@@ -1,5 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
-#include "LumpedCoilGenerator.h"
+#include "SectorCoilGenerator.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -9,11 +9,11 @@
 
 namespace fogtest
 {
-LumpedCoilParams drawLumpedCoil(std::uint64_t seed)
+SectorCoilParams drawSectorCoil(std::uint64_t seed)
 {
 	std::mt19937_64 rng(0x51ed2701ull + seed * 7919ull);
 	const auto uni = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
-	LumpedCoilParams p;
+	SectorCoilParams p;
 	p.cap_scale = std::exp(uni(std::log(0.5), std::log(2.0)));
 	p.g_radial_W_K = uni(0.2, 0.8);
 	p.g_housing_air_W_K = uni(0.3, 1.0);
@@ -33,7 +33,7 @@ LumpedCoilParams drawLumpedCoil(std::uint64_t seed)
 	return p;
 }
 
-mrpt_fog::FogSeries simulateLumpedCoil(const LumpedCoilParams& p, const mrpt_fog::sim::ChamberProfile& profile,
+mrpt_fog::FogSeries simulateSectorCoil(const SectorCoilParams& p, const mrpt_fog::sim::ChamberProfile& profile,
 									   std::uint64_t run_seed, bool noise_only)
 {
 	using mrpt_fog::CoilSide;
