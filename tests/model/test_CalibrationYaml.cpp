@@ -62,6 +62,23 @@ TEST(CalibrationYaml, RoundTripIsExact)
 	std::remove(path.c_str());
 }
 
+// The extrapolation policy round-trips; a file without it (written before issue 11) reads as the
+// default (linear); an unknown policy is a field error.
+TEST(CalibrationYaml, ExtrapolationPolicyIsStored)
+{
+	Calibration clamp = cal();
+	clamp.extrapolation = ExtrapolationPolicy::Clamp;
+	const std::string text = calibrationToYaml(clamp);
+	EXPECT_EQ(calibrationFromYaml(text, "cal.yaml").extrapolation, ExtrapolationPolicy::Clamp);
+	const auto p = text.find("extrapolation: ");
+	ASSERT_NE(p, std::string::npos);
+	std::string old = text;
+	old.erase(p, text.find('\n', p) - p + 1);
+	EXPECT_EQ(calibrationFromYaml(old, "cal.yaml").extrapolation, ExtrapolationPolicy::Linear);
+	const std::string e = errorOf(replaced(text, "extrapolation: \"clamp\"", "extrapolation: \"cubic\""));
+	EXPECT_NE(e.find("cal.yaml: extrapolation:"), std::string::npos) << e;
+}
+
 // Every broken field gives "<file>: <field>: <reason>".
 TEST(CalibrationYaml, BadFilesGiveFieldErrors)
 {

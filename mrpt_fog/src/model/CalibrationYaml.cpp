@@ -295,6 +295,7 @@ std::string calibrationToYaml(const Calibration& cal)
 		  << "\n      angle_deg: " << num(t.angle_deg) << "\n";
 	o << "preset: " << str(cal.preset) << "\n";
 	o << "selection: " << str(cal.selection) << "\n";
+	o << "extrapolation: " << str(toString(cal.extrapolation)) << "  # outside the calibrated range: linear | clamp | polynomial\n";
 	o << "rate_estimator:\n";
 	o << "  kind: " << str(cal.rate_estimator.kind) << "\n";
 	o << "  window_s: " << num(cal.rate_estimator.window_s) << "\n";
@@ -373,6 +374,17 @@ Calibration parseCalibrationYaml(const std::string& text, const std::string& sou
 	}
 	cal.preset = rd.text(root, "preset", "");
 	cal.selection = rd.text(root, "selection", "");
+	if (root.has("extrapolation"))  // optional (issue 11); absent: the default, linear
+	{
+		try
+		{
+			cal.extrapolation = extrapolationPolicyFromString(rd.text(root, "extrapolation", ""));
+		}
+		catch (const std::invalid_argument& e)
+		{
+			rd.fail("extrapolation", e.what());
+		}
+	}
 	const yaml est = rd.child(root, "rate_estimator", "");
 	cal.rate_estimator.kind = rd.text(est, "kind", "rate_estimator");
 	cal.rate_estimator.window_s = rd.finite(est, "window_s", "rate_estimator");
