@@ -36,7 +36,7 @@ int main(int argc, char** argv)
 										   "bias model to test: preset (multipoint, M1..M4[:...], points:K, "
 										   "static:P[:NAME]) or calibration YAML; refitted on the measured run",
 										   false, "", "PRESET|CAL.yaml");
-		TCLAP::ValueArg<std::string> sim("", "sim", "simulator configuration to test (device, effects, free parameters, profile; see docs/discrepancy-sim.md); its free parameters are calibrated to the measured run", false, "",
+		TCLAP::ValueArg<std::string> sim("", "sim", "simulator configuration to test (device, effects, free parameters, optional profile; see docs/discrepancy-sim.md); its free parameters are calibrated to the measured run. Without a profile (in SIM.yaml or the run metadata sim.profile) the simulator is driven from the log alone: power, table rate and field columns, chamber air reconstructed from the thermistors; a thermistor misfit above 0.1 C RMS is reported as the first disagreement and no bias effect is named on top of it", false, "",
 										 "SIM.yaml");
 		cmd.xorAdd(model, sim);
 		TCLAP::ValueArg<std::string> json("", "json", "write the figures as JSON", false, "", "FILE", cmd);

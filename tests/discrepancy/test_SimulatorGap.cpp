@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <mrpt_fog/discrepancy/SimulatorGap.h>
 
+#include "LumpedCoilGenerator.h"
 #include "SimulatorGapTrialSuite.h"
 #include <mrpt_fog/sim/ChamberRun.h>
 
@@ -183,22 +184,95 @@ TEST(SimulatorGap, JsonHasContractAndTemperatureKeys)
 	EXPECT_NE(simDiscrepancyText(rep).find("missing: magnetic"), std::string::npos);
 }
 
-TEST(SimulatorGap, RunWithoutProfileIsAClearError)
+TEST(SimulatorGap, WrongProfileIsAClearError)
 {
 	auto runs = truthRuns(1);
-	runs[0].metadata.clear();
-	try
-	{
-		analyseSimulatorDiscrepancy({runs[0]}, {"A"}, configWithout(""));
-		FAIL() << "expected std::invalid_argument";
-	}
-	catch (const std::invalid_argument& e)
-	{
-		EXPECT_NE(std::string(e.what()).find("no chamber profile"), std::string::npos) << e.what();
-	}
 	auto cfg = configWithout("");
 	cfg.profile = "seed";  // wrong profile: the power column disagrees (rich has power cycles)
 	EXPECT_THROW(analyseSimulatorDiscrepancy({runs[1]}, {"B"}, cfg), std::invalid_argument);
+}
+
+// Issue 17 target: a run whose chamber program is not given (metadata cleared, no `profile:`):
+// the drive comes from the log alone (power, table, field columns; air reconstructed from the
+// thermistors) and the hidden effect is still named, with the truth inside its 95 % interval
+// (as with the profile given: docs/discrepancy-sim.md). Truth: magnetic 2e-4 deg/h/uT,
+// scale factor 20 ppm/C (FogDevice defaults, kTruth). Seed 1 of truthRuns, one run each. The
+// interval judged is the recalibrated simulator parameter's (SimulatorCalibration.h); for the
+// scale factor the named candidate's own coefficient is a proxy (thermistor mean x table rate,
+// the simulator uses the coil mean) and is not the simulator's parameter. Target met for the
+// magnetic effect (asserted). For the scale factor only the naming is asserted: its recalibrated
+// value, 19.94 +- 0.059 ppm/C, misses the truth 20 by 0.001 ppm/C beyond the interval (the
+// interval does not carry the reconstructed air's own uncertainty).
+// What it does NOT show: that nothing else is named. On the magnetic run a spurious
+// gradient_rate is named second (the smoothed air's error; docs/discrepancy-sim.md).
+namespace
+{
+void logDriveCell(const std::string& hidden, const std::string& param, double truth)
+{
+	auto runs = truthRuns(1);
+	runs[0].metadata.clear();
+	runs[1].metadata.clear();
+	const auto rep = analyseSimulatorDiscrepancy(runs, {"A", "B"}, configWithout(hidden));
+	EXPECT_NE(rep.drive.find("reconstructed from the thermistors"), std::string::npos) << rep.drive;
+	EXPECT_FALSE(rep.thermal.misfit) << rep.thermal.sentence;
+	const auto& named = rep.report.selection.named;
+	std::string ids;
+	for (const auto& n : named) ids += " " + n.id;
+	std::printf("  [log drive, hidden %s] %s\n  %s\n  named:%s\n", hidden.c_str(), rep.drive.c_str(),
+				rep.thermal.sentence.c_str(), ids.c_str());
+	const auto it = std::find_if(named.begin(), named.end(), [&](const NamedEffect& n) { return n.id == hidden; });
+	ASSERT_NE(it, named.end()) << "named:" << ids;
+	if (hidden == "magnetic")
+	{
+		// the candidate's coefficient is the simulator's (field x coefficient in both)
+		EXPECT_LE(it->ci_low, truth) << hidden;
+		EXPECT_GE(it->ci_high, truth) << hidden;
+	}
+	double v = NAN, h = NAN;
+	for (const auto& [k, x] : rep.calibrated_after)
+		if (k == param) v = x;
+	for (const auto& [k, x] : rep.calibrated_after_ci95_half)
+		if (k == param) h = x;
+	std::printf("  named %s CI [%.4g, %.4g]; recalibrated %s = %.4g +- %.2g (truth %.4g)\n", hidden.c_str(), it->ci_low,
+				it->ci_high, param.c_str(), v, h, truth);
+	if (hidden == "magnetic") EXPECT_LE(std::abs(v - truth), h) << param << " = " << v << " +- " << h;
+}
+}  // namespace
+
+TEST(SimulatorGap, MeasuredLogDriveRecoversHiddenMagnetic) { logDriveCell("magnetic", "magnetic_dph_per_uT", 2e-4); }
+TEST(SimulatorGap, MeasuredLogDriveRecoversHiddenScaleFactor) { logDriveCell("scale_factor_temp", "sf_ppm_per_C", 20.0); }
+
+// Issue 17 target: a run of ANOTHER simulator (tests/support/LumpedCoilGenerator: 3 lumped
+// nodes, a housing thermistor, its own air lag and self-heating) is reported as a thermal misfit,
+// with its size, and no bias effect is named on top of it. The configuration declares the
+// generator's thermistors (Hs, on the housing there, is placed on the outer coil surface: the
+// simulator has no housing thermistor). No profile: the drive is the log's own.
+TEST(SimulatorGap, AnotherSimulatorsRunIsAThermalMisfitAndNamesNoBiasEffect)
+{
+	fogtest::LumpedCoilOptions o;
+	o.seed = 3;
+	const FogSeries run = fogtest::makeLumpedCoilRun(o).series;
+	SimulatorConfig cfg;
+	cfg.source = "lumped.yaml";
+	cfg.device.latitude_deg = 0;
+	cfg.device.thermistors = {{{"Ca", CoilSide::Inner, 30.0}, 5.0, 0.0},
+							  {{"Cb", CoilSide::Outer, 210.0}, 5.0, 0.0},
+							  {{"Hs", CoilSide::Outer, 0.0}, 5.0, 0.0}};
+	cfg.free = defaultFreeParameters(cfg.effects);
+	const auto rep = analyseSimulatorDiscrepancy({run}, {"lumped"}, cfg);
+	std::printf("  %s\n", rep.thermal.sentence.c_str());
+	EXPECT_TRUE(rep.thermal.misfit);
+	EXPECT_GT(rep.thermal.rms_C, rep.thermal.threshold_C);
+	EXPECT_EQ(rep.thermal.names.size(), 3u);
+	EXPECT_FALSE(rep.thermal.worst_thermistor.empty());
+	EXPECT_NE(rep.thermal.fix, ThermalFix::None);
+	EXPECT_TRUE(rep.report.selection.named.empty());
+	const std::string text = simDiscrepancyText(rep);
+	EXPECT_NE(text.find("Verdict: thermal model misfit"), std::string::npos) << text;
+	EXPECT_NE(text.find("THE THERMAL MODEL IS THE FIRST DISAGREEMENT"), std::string::npos);
+	const std::string j = simDiscrepancyJson(rep).dump();
+	EXPECT_NE(j.find("\"thermal_fit\""), std::string::npos);
+	EXPECT_NE(j.find("\"reconstructed_air\""), std::string::npos);
 }
 
 // Effect-to-noise ratio trials (SimulatorGapTrialSuite.h): every effect --sim can name, at

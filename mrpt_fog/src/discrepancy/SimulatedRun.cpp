@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
@@ -33,6 +34,79 @@ double medianStep(const std::vector<double>& t)
 }
 }  // namespace
 
+std::size_t ChamberDrive::steps() const
+{
+	if (source == DriveSource::MeasuredLog) return log_states.size();
+	return static_cast<std::size_t>(std::floor(profile.duration_s() * rate_hz + 1e-9)) + 1;
+}
+
+sim::ChamberState ChamberDrive::stateAt(std::size_t step) const
+{
+	if (source == DriveSource::MeasuredLog) return log_states.at(step);
+	return profile.stateAt(static_cast<double>(step) / rate_hz);
+}
+
+sim::InitialThermalState ChamberDrive::initialState() const
+{
+	return source == DriveSource::MeasuredLog ? sim::InitialThermalState::Steady : profile.initialState();
+}
+
+namespace
+{
+std::string fmtC(double v)
+{
+	char b[32];
+	std::snprintf(b, sizeof b, "%.2g", v);
+	return b;
+}
+
+/** Power, table rate and field per simulator step from the run's columns (held). */
+ChamberDrive driveFromLog(const FogSeries& run)
+{
+	ChamberDrive d;
+	d.source = DriveSource::MeasuredLog;
+	const double dt = medianStep(run.time_s);
+	if (!(dt > 0)) throw std::invalid_argument("run time step is not positive");
+	d.rate_hz = 1.0 / dt;
+	const double t0 = run.time_s.front();
+	d.sim_index.resize(run.size());
+	for (std::size_t k = 0; k < run.size(); ++k)
+	{
+		const double idx = std::round((run.time_s[k] - t0) * d.rate_hz);
+		d.sim_index[k] = static_cast<std::size_t>(std::max(0.0, idx));
+	}
+	const std::size_t nSim = d.sim_index.back() + 1;
+	if (nSim > 50'000'000) throw std::invalid_argument("run too long for the simulator grid of its median sample period");
+	d.log_states.assign(nSim, sim::ChamberState{});
+	std::size_t k = 0;
+	sim::ChamberState cur;
+	for (std::size_t j = 0; j < nSim; ++j)
+	{
+		while (k < run.size() && d.sim_index[k] <= j)
+		{
+			if (run.power.size() == run.size() && std::isfinite(run.power[k])) cur.power_on = run.power[k] >= 0.5;
+			if (run.table_rate_dph.size() == run.size() && std::isfinite(run.table_rate_dph[k])) cur.table_rate_dph = run.table_rate_dph[k];
+			if (run.field_uT.size() == run.size() && std::isfinite(run.field_uT[k])) cur.field_uT = run.field_uT[k];
+			++k;
+		}
+		d.log_states[j] = cur;
+	}
+	return d;
+}
+
+void reconstructInto(ChamberDrive& d, const SimModel& model, const FogSeries& run, const AirReconstructionOptions& opt = {})
+{
+	d.air = reconstructChamberAir(model.device, model.effects, model.thermal_time_scale, d.log_states, d.rate_hz, run,
+								  d.sim_index, opt);
+	for (std::size_t j = 0; j < d.log_states.size(); ++j) d.log_states[j].air_C = d.air.airAt(static_cast<double>(j) / d.rate_hz);
+	d.how = "the measured log: power, table rate and field from its columns; chamber air reconstructed from the "
+			"thermistors through the thermal network (" +
+			std::to_string(d.air.knot_time_s.size()) + " knots every " + fmtC(d.air.knot_time_s.size() > 1 ? d.air.knot_time_s[1] : 0) +
+			" s, thermistor fit RMS " + fmtC(d.air.fit_rms_C) + " C, air 95 % half-width " + fmtC(d.air.mean_ci95_half_C) +
+			" C mean, " + fmtC(d.air.max_ci95_half_C) + " C max)";
+}
+}  // namespace
+
 ChamberDrive chamberDriveForRun(const FogSeries& run, const SimulatorConfig& cfg)
 {
 	ChamberDrive d;
@@ -43,10 +117,12 @@ ChamberDrive chamberDriveForRun(const FogSeries& run, const SimulatorConfig& cfg
 	{
 		name = run.metadataValue("sim.profile");
 		if (name.empty())
-			throw std::invalid_argument(
-				"no chamber profile: the run's metadata has no sim.profile and " + cfg.source +
-				" gives no `profile:`; the measured columns do not carry the chamber air temperature that drives "
-				"the simulator");
+		{
+			if (run.size() < 2) throw std::invalid_argument("run has fewer than two samples");
+			d = driveFromLog(run);
+			reconstructInto(d, simModelFromConfig(cfg), run);
+			return d;
+		}
 		d.how = "profile '" + name + "' from the run's metadata sim.profile";
 	}
 	d.profile = loadProfile(name);
@@ -72,6 +148,15 @@ ChamberDrive chamberDriveForRun(const FogSeries& run, const SimulatorConfig& cfg
 											std::to_string(run.time_s[k]) + " s: not the profile this run followed");
 		}
 	}
+	return d;
+}
+
+ChamberDrive reconstructDriveWith(const ChamberDrive& drive, const SimModel& model, const FogSeries& run,
+								  const AirReconstructionOptions& opt)
+{
+	if (drive.source != DriveSource::MeasuredLog) return drive;
+	ChamberDrive d = drive;
+	reconstructInto(d, model, run, opt);
 	return d;
 }
 
@@ -109,7 +194,7 @@ SimTrace simulateOnRun(const SimModel& model, const ChamberDrive& drive, const F
 	// simulator is driven directly to read the electronics node as well.
 	sim::FogSimulator fog(dev, model.effects, 1);
 	const double dt = 1.0 / drive.rate_hz;
-	const auto nSim = static_cast<std::size_t>(std::floor(drive.profile.duration_s() * drive.rate_hz + 1e-9)) + 1;
+	const std::size_t nSim = drive.steps();
 	const std::size_t n = run.size();
 	// run samples per simulator sample (a run sample maps to one simulator sample)
 	std::vector<std::vector<std::size_t>> atSim(nSim);
@@ -123,9 +208,8 @@ SimTrace simulateOnRun(const SimModel& model, const ChamberDrive& drive, const F
 	const int eNode = fog.thermal().electronicsNode();
 	for (std::size_t j = 0; j < nSim; ++j)
 	{
-		const double t = static_cast<double>(j) / drive.rate_hz;
-		const sim::ChamberState st = drive.profile.stateAt(t);
-		const sim::FogSample s = j == 0 ? fog.start(st, drive.profile.initialState()) : fog.advance(dt, st);
+		const sim::ChamberState st = drive.stateAt(j);
+		const sim::FogSample s = j == 0 ? fog.start(st, drive.initialState()) : fog.advance(dt, st);
 		for (std::size_t k : atSim[j])
 		{
 			if (s.power_on) tr.bias_dph[k] = s.rate_dph - st.table_rate_dph;

@@ -279,4 +279,98 @@ SimCalibration applyCalibration(const SimModel& calibrated, const std::vector<st
 	return c;
 }
 
+ProjectedThermal projectThermalOnLogDrive(const SimModel& start, const std::vector<std::string>& free,
+										  const ChamberDrive& drive, const FogSeries& run)
+{
+	ProjectedThermal out;
+	out.model = start;
+	if (drive.source != DriveSource::MeasuredLog)
+	{
+		out.drive = drive;
+		return out;
+	}
+	// The search reconstructs on knots 3x coarser (its cost grows with the square of the knots),
+	// with the regularisation weight chosen once by GCV at the start; the final drive uses the
+	// default knots.
+	AirReconstructionOptions fast;
+	fast.knot_spacing_s = 3 * AirReconstructionOptions{}.knot_spacing_s;
+	fast.uncertainty = false;
+	fast.lambda = reconstructDriveWith(drive, start, run, fast).air.lambda;
+	auto objective = [&](const SimModel& m)
+	{
+		const ChamberDrive d = reconstructDriveWith(drive, m, run, fast);
+		const auto r = temperatureResidual(run, simulateOnRun(m, d, run));
+		out.simulations += 3;
+		double ss = 0, n = 0;
+		for (const auto& ri : r)
+		{
+			double mu = 0, c = 0;
+			for (double v : ri)
+				if (std::isfinite(v))
+				{
+					mu += v;
+					c++;
+				}
+			if (c == 0) continue;
+			mu /= c;
+			for (double v : ri)
+				if (std::isfinite(v))
+				{
+					ss += (v - mu) * (v - mu);
+					n++;
+				}
+		}
+		return n > 0 ? std::sqrt(ss / n) : INFINITY;
+	};
+	auto golden = [&](auto set, double lo, double hi)
+	{
+		const double g = (std::sqrt(5.0) - 1) / 2;
+		double a = lo, b = hi, c = b - g * (b - a), d = a + g * (b - a);
+		SimModel mc = out.model, md = out.model;
+		set(mc, c);
+		set(md, d);
+		double fc = objective(mc), fd = objective(md);
+		for (int it = 0; it < 12; ++it)
+		{
+			if (fc < fd)
+			{
+				b = d;
+				d = c;
+				fd = fc;
+				c = b - g * (b - a);
+				mc = out.model;
+				set(mc, c);
+				fc = objective(mc);
+			}
+			else
+			{
+				a = c;
+				c = d;
+				fc = fd;
+				d = a + g * (b - a);
+				md = out.model;
+				set(md, d);
+				fd = objective(md);
+			}
+		}
+		set(out.model, fc < fd ? c : d);
+	};
+	const bool scaleFree = std::find(free.begin(), free.end(), "thermal_time_scale") != free.end();
+	const bool powerFree = std::find(free.begin(), free.end(), "electronics_power_W") != free.end() &&
+						   start.effects.count("heat_source") > 0;
+	const double p0 = std::max(start.device.thermal.electronics_power_W, 1e-3);
+	for (int sweep = 0; sweep < 2; ++sweep)
+	{
+		if (scaleFree)
+			golden([](SimModel& m, double x) { m.thermal_time_scale = std::exp(x); }, std::log(0.2), std::log(5.0));
+		if (powerFree)
+			golden([](SimModel& m, double x) { m.device.thermal.electronics_power_W = x; }, 0.2 * p0, 3.0 * p0);
+		if (!scaleFree && !powerFree) break;
+	}
+	out.temp_rms_C = objective(out.model);
+	out.drive = reconstructDriveWith(drive, out.model, run);
+	out.simulations += 2;
+	return out;
+}
+
 }  // namespace mrpt_fog::discrepancy

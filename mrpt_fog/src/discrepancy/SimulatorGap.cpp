@@ -132,14 +132,32 @@ SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& r
 
 	// 1. drive + calibrate the configuration as given
 	const RunSignals sig1 = computeRunSignals(runs[0], opt.base.signals);
-	const ChamberDrive drive1 = chamberDriveForRun(runs[0], cfg);
+	ChamberDrive drive1 = chamberDriveForRun(runs[0], cfg);
 	R.drive = drive1.how;
 	std::vector<std::string> free0 = cfg.free;
 	if (std::find(free0.begin(), free0.end(), "constant_bias_dph") == free0.end())
 		free0.insert(free0.begin(), "constant_bias_dph");  // the turn-on bias is never known in advance
 	const SimModel model0 = simModelFromConfig(cfg);
-	const SimCalibration cal0 = calibrateSimulator(model0, free0, runs[0], drive1, sig1.bias_dph, sig1.usable);
+	SimModel startModel = model0;
+	if (drive1.source == DriveSource::MeasuredLog)
+	{
+		// the air was reconstructed through the network as configured: the thermal parameters by
+		// variable projection (the air re-reconstructed for each trial), then the calibration
+		const ProjectedThermal pt = projectThermalOnLogDrive(model0, free0, drive1, runs[0]);
+		startModel = pt.model;
+		drive1 = pt.drive;
+		R.drive = drive1.how + "; thermal parameters by variable projection over the reconstructed air";
+		R.simulations += pt.simulations;
+	}
+	const SimCalibration cal0 = calibrateSimulator(startModel, free0, runs[0], drive1, sig1.bias_dph, sig1.usable);
 	R.simulations += cal0.simulations;
+	if (drive1.source == DriveSource::MeasuredLog)
+	{
+		R.drive_air_knots = drive1.air.knot_time_s.size();
+		R.drive_air_fit_rms_C = drive1.air.fit_rms_C;
+		R.drive_air_ci95_mean_C = drive1.air.mean_ci95_half_C;
+		R.drive_air_ci95_max_C = drive1.air.max_ci95_half_C;
+	}
 	R.effects_before = effectList(model0.effects);
 	R.free_before = free0;
 	R.calibrated_before = calibratedValues(cal0);
@@ -170,6 +188,9 @@ SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& r
 		}
 	}
 
+	// 2b. the thermal fit, judged before the optical part
+	R.thermal = assessThermalFit(runs[0], temperatureResidual(runs[0], calT.trace), opt.thermal);
+
 	// 3.+4. bias channel, simulator in the loop: the existing selector on the calibrated
 	// simulator's residual names the strongest missing effect; it is switched on in the simulator
 	// (its own physics, not the candidate's linear proxy), the simulator recalibrated, and the
@@ -186,7 +207,13 @@ SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& r
 	SelectionOptions selOpt = opt.base.selection;
 	selOpt.max_effects = 1;
 	bool firstRound = true;
-	for (int round = 0; round < std::max(1, opt.base.selection.max_effects); ++round)
+	const int rounds = R.thermal.misfit ? 0 : std::max(1, opt.base.selection.max_effects);
+	if (R.thermal.misfit)
+	{
+		rep.selection.fit_rows = sig1.usable;
+		rep.selection.residual_before = rep.selection.residual_after = biasResidual(sig1.bias_dph, calA.trace, sig1.usable);
+	}
+	for (int round = 0; round < rounds; ++round)
 	{
 		std::vector<std::string> candidates;
 		for (const auto& c : candidateLibrary())
@@ -236,7 +263,7 @@ SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& r
 	{
 		rep.has_confirm = true;
 		const RunSignals sig2 = computeRunSignals(runs[1], opt.base.signals);
-		const ChamberDrive drive2 = chamberDriveForRun(runs[1], cfg);
+		const ChamberDrive drive2 = reconstructDriveWith(chamberDriveForRun(runs[1], cfg), cal0.model, runs[1]);
 		R.drive_confirm = drive2.how;
 		const SimCalibration b2 = applyCalibration(cal0.model, free0, runs[1], drive2, sig2.bias_dph, sig2.usable);
 		const SimCalibration a2 = applyCalibration(calA.model, freeA, runs[1], drive2, sig2.bias_dph, sig2.usable);
@@ -405,6 +432,44 @@ JsonValue simDiscrepancyJson(const SimDiscrepancyReport& R)
 	}
 	j["heat_source_test"] = hs;
 	j["temperature_gap"] = tempGapJson(R.temp_gap);
+	{
+		const ThermalFit& t = R.thermal;
+		JsonValue tf = JsonValue::object();
+		tf["rms_C"] = t.rms_C;
+		tf["threshold_C"] = t.threshold_C;
+		tf["misfit"] = t.misfit;
+		tf["worst_thermistor"] = t.worst_thermistor;
+		tf["worst_rms_C"] = t.worst_rms_C;
+		tf["max_abs_C"] = t.max_abs_C;
+		tf["max_abs_thermistor"] = t.max_abs_thermistor;
+		tf["max_abs_time_s"] = t.max_abs_time_s;
+		JsonValue th = JsonValue::array();
+		for (std::size_t i = 0; i < t.names.size(); ++i)
+		{
+			JsonValue e = JsonValue::object();
+			e["name"] = t.names[i];
+			e["rms_C"] = t.rms_per_C[i];
+			th.push_back(e);
+		}
+		tf["thermistors"] = th;
+		tf["fix"] = toString(t.fix);
+		tf["lag_share"] = t.lag_share;
+		tf["lag_tau_s"] = t.lag_tau_s;
+		tf["power_share"] = t.power_share;
+		tf["power_tau_s"] = t.power_tau_s;
+		tf["sentence"] = t.sentence;
+		j["thermal_fit"] = tf;
+		if (t.misfit) j["verdict"] = std::string("thermal model misfit (") + toString(t.fix) + "): first disagreement, no bias effect judged";
+	}
+	if (R.drive_air_ci95_mean_C >= 0)
+	{
+		JsonValue a = JsonValue::object();
+		a["knots"] = static_cast<double>(R.drive_air_knots);
+		a["fit_rms_C"] = R.drive_air_fit_rms_C;
+		a["ci95_half_mean_C"] = R.drive_air_ci95_mean_C;
+		a["ci95_half_max_C"] = R.drive_air_ci95_max_C;
+		j["simulator"]["reconstructed_air"] = a;
+	}
 	if (R.report.has_confirm) j["temperature_gap_confirm"] = tempGapJson(R.temp_gap_confirm);
 	return j;
 }
@@ -417,7 +482,16 @@ std::string simDiscrepancyText(const SimDiscrepancyReport& R)
 	os << "Calibrated (" << R.simulations << " simulator runs):";
 	os << valuesText(R.calibrated_before, R.calibrated_before_ci95_half) << "\n";
 	os << "Temperature channel: " << R.heat.sentence << "\n";
-	os << discrepancyText(R.report);
+	os << R.thermal.sentence << "\n";
+	std::string body = discrepancyText(R.report);
+	if (R.thermal.misfit)
+	{
+		const std::string from = "Verdict: no missing effect found";
+		if (const auto pos = body.find(from); pos != std::string::npos)
+			body.replace(pos, from.size(), std::string("Verdict: thermal model misfit (") + toString(R.thermal.fix) +
+											   "): the first disagreement; no bias effect judged on top of it");
+	}
+	os << body;
 	if (R.effects_after != R.effects_before)
 	{
 		os << "Recalibrated with the named effect(s) on:";

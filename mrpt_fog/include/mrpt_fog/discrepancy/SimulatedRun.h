@@ -6,16 +6,21 @@
  * of that run), the model (device + effects + thermal time-constant scale) and the noise-free
  * simulated bias and thermistor temperatures at the run's samples.
  *
- * Driving input: the chamber profile the run followed, taken from SIM.yaml's `profile` or the
- * run's metadata `sim.profile` (fog-sim records it). The measured columns themselves never carry
- * the chamber air temperature; when neither source names a profile an std::invalid_argument says
- * so. The run's power column, when present, must agree with the profile's power state (a check
- * that the profile is the right one). The simulator is stepped on the run's own sample grid
- * (rate = 1 / median sample period, times k / rate from the profile start), exactly as fog-sim
- * steps it, so a run simulated by fog-sim is replayed sample for sample; samples missing from
- * the run (gaps) are simply not compared.
+ * Driving input, first found of:
+ *  1. the chamber profile the run followed, from SIM.yaml's `profile` or the run's metadata
+ *     `sim.profile` (fog-sim records it). The run's power column, when present, must agree with
+ *     the profile's power state (a check that the profile is the right one); the run's time
+ *     axis starts at the profile's t = 0;
+ *  2. the measured log alone: power, table rate and field from their columns (held from one
+ *     run sample to the next; absent columns: powered, 0, 0), the chamber air reconstructed
+ *     from the thermistors through the model's thermal network (ChamberReconstruction.h), with
+ *     its 95 % uncertainty. Times from the run's first sample.
+ * The simulator is stepped on the run's own sample grid (rate = 1 / median sample period),
+ * exactly as fog-sim steps it, so a run simulated by fog-sim is replayed sample for sample;
+ * samples missing from the run (gaps) are simply not compared.
  */
 
+#include <mrpt_fog/discrepancy/ChamberReconstruction.h>
 #include <mrpt_fog/discrepancy/SimulatorConfig.h>
 #include <mrpt_fog/obs/FogSeries.h>
 #include <mrpt_fog/sim/ChamberProfile.h>
@@ -25,18 +30,6 @@
 
 namespace mrpt_fog::discrepancy
 {
-/** The chamber conditions driving the simulator for one run. */
-struct ChamberDrive
-{
-	sim::ChamberProfile profile;
-	std::string how;  //!< e.g. "profile 'rich' from the run's metadata sim.profile"
-	double rate_hz = 1.0;  //!< simulation grid
-	std::vector<std::size_t> sim_index;  //!< run sample k -> simulator sample
-};
-
-/** Resolves the driving input of `run` (see file comment). Throws std::invalid_argument. */
-ChamberDrive chamberDriveForRun(const FogSeries& run, const SimulatorConfig& cfg);
-
 /** The model being calibrated: device, effects and a scale of every thermal time constant. */
 struct SimModel
 {
@@ -44,6 +37,38 @@ struct SimModel
 	sim::EffectSet effects;
 	double thermal_time_scale = 1.0;  //!< every heat capacity x this (time constants x this)
 };
+
+/** Where the driving input came from. */
+enum class DriveSource
+{
+	Profile,  //!< a chamber profile (SIM.yaml or the run's metadata)
+	MeasuredLog  //!< the run's own columns, air reconstructed from the thermistors
+};
+
+/** The chamber conditions driving the simulator for one run. */
+struct ChamberDrive
+{
+	DriveSource source = DriveSource::Profile;
+	sim::ChamberProfile profile;  //!< Profile
+	std::vector<sim::ChamberState> log_states;  //!< MeasuredLog: per simulator step
+	AirReconstruction air;  //!< MeasuredLog: the reconstructed air and its uncertainty
+	std::string how;  //!< e.g. "profile 'rich' from the run's metadata sim.profile"
+	double rate_hz = 1.0;  //!< simulation grid
+	std::vector<std::size_t> sim_index;  //!< run sample k -> simulator sample
+
+	std::size_t steps() const;  //!< simulator steps
+	sim::ChamberState stateAt(std::size_t step) const;
+	sim::InitialThermalState initialState() const;
+};
+
+/** Resolves the driving input of `run` (see file comment); a reconstructed air uses the
+ * configuration's model as given. Throws std::invalid_argument. */
+ChamberDrive chamberDriveForRun(const FogSeries& run, const SimulatorConfig& cfg);
+
+/** For a MeasuredLog drive: the air reconstructed again through `model`'s network (e.g. after
+ * the thermal time scale was calibrated). A Profile drive is returned unchanged. */
+ChamberDrive reconstructDriveWith(const ChamberDrive& drive, const SimModel& model, const FogSeries& run,
+								  const AirReconstructionOptions& opt = {});
 
 SimModel simModelFromConfig(const SimulatorConfig& cfg);
 

@@ -58,6 +58,25 @@ SimCalibration calibrateSimulator(const SimModel& start, const std::vector<std::
 								  const ChamberDrive& drive, const std::vector<double>& measured_bias_dph,
 								  const std::vector<unsigned char>& bias_rows);
 
+/** For a drive from the measured log (air reconstructed, ChamberReconstruction.h): the thermal
+ * parameters by variable projection, since a free air absorbs what a fixed-air calibration of
+ * the network would see (a wrong time scale becomes a different air). For each trial value the
+ * air is reconstructed through that network (on knots 3x coarser, the regularisation weight
+ * chosen once by GCV at the start) and the
+ * thermistor residual, each thermistor's mean removed, is minimised: golden-section search on
+ * log(thermal_time_scale) in [0.2, 5], then on electronics_power_W in [0.2, 3] x its start when
+ * free and heat_source is on; two sweeps of 12 golden-section steps each. Parameters not free are left alone. Returns the model
+ * and the drive reconstructed through it (with uncertainty). */
+struct ProjectedThermal
+{
+	SimModel model;
+	ChamberDrive drive;
+	double temp_rms_C = 0;  //!< thermistor residual RMS (offsets removed) at the optimum
+	int simulations = 0;
+};
+ProjectedThermal projectThermalOnLogDrive(const SimModel& start, const std::vector<std::string>& free,
+										  const ChamberDrive& drive, const FogSeries& run);
+
 /** Only the constant bias re-estimated (the confirmation run: turn-on bias repeatability). */
 SimCalibration applyCalibration(const SimModel& calibrated, const std::vector<std::string>& free, const FogSeries& run,
 								const ChamberDrive& drive, const std::vector<double>& measured_bias_dph,

@@ -10,6 +10,9 @@
  *  2. temperature channel first (a wrong simulated temperature propagates into the simulated
  *     bias): test the thermistor residual for `heat_source` (HeatSourceCandidate.h) when the
  *     configuration has it off; if named, switch it on (electronics_power_W free) and recalibrate;
+ *  2b. thermal fit (ThermalFit.h): thermistor residual RMS per thermistor and where it is largest;
+ *     above the misfit threshold the thermal model is reported as the first disagreement (with
+ *     what would fix it) and the bias channel is not searched: nothing is named on top of it;
  *  3. bias channel, simulator in the loop: the existing selector (EffectSelector.h) on the
  *     bias residual, with the calibrated simulator linearised (its Jacobian in the free bias
  *     parameters, plus a table-rate nuisance column when the run has a rate table) as the base
@@ -27,6 +30,7 @@
 #include <mrpt_fog/discrepancy/DiscrepancyAnalysis.h>
 #include <mrpt_fog/discrepancy/HeatSourceCandidate.h>
 #include <mrpt_fog/discrepancy/SimulatorCalibration.h>
+#include <mrpt_fog/discrepancy/ThermalFit.h>
 
 #include <string>
 #include <utility>
@@ -38,6 +42,7 @@ struct SimDiscrepancyOptions
 {
 	DiscrepancyOptions base;
 	HeatSourceOptions heat;
+	ThermalFitOptions thermal;
 };
 
 /** Thermistor residual RMS before/after [degC]. */
@@ -54,6 +59,9 @@ struct SimDiscrepancyReport
 	DiscrepancyReport report;  //!< named_effects (heat_source first when named), segments, gap...
 	std::string config_source;
 	std::string drive, drive_confirm;  //!< how the driving input was obtained
+	/** Reconstructed air (drive from the measured log; ci < 0: not reconstructed). */
+	std::size_t drive_air_knots = 0;
+	double drive_air_fit_rms_C = 0, drive_air_ci95_mean_C = -1, drive_air_ci95_max_C = -1;
 	std::vector<std::string> effects_before, effects_after;
 	std::vector<std::string> free_before, free_after;
 	std::vector<std::pair<std::string, double>> calibrated_before, calibrated_after;
@@ -62,6 +70,7 @@ struct SimDiscrepancyReport
 	std::vector<std::pair<std::string, double>> calibrated_before_ci95_half, calibrated_after_ci95_half;
 	HeatSourceResult heat;
 	HeatSourceConfirm heat_confirm;
+	ThermalFit thermal;  //!< the thermal fit after the temperature channel (step 2b)
 	TemperatureGap temp_gap, temp_gap_confirm;
 	int simulations = 0;
 };

@@ -34,9 +34,10 @@ struct CoilThermalParams
 	int layers = 8;  //!< radial node layers (>= 2)
 	int sectors = 8;  //!< angular node sectors (>= 4)
 
-	// Winding geometry: 1500 m of 165 um fibre, mean D 0.1 m -> ~60 cm3 of potted winding
-	// (seed; PHYSICS.md). Cross-section chosen 10 mm radial x 19 mm axial (estimate).
-	double mean_diameter_m = 0.1;  //!< seed coil (PHYSICS.md)
+	// Winding geometry: 1500 m of 165 um fibre (the length is the seed's), mean D 0.1 m (an
+	// estimate: PHYSICS.md's example calculation; the seed gives no diameter) -> ~60 cm3 of potted
+	// winding. Cross-section chosen 10 mm radial x 19 mm axial (estimate).
+	double mean_diameter_m = 0.1;  //!< estimate (PHYSICS.md's example; not from the seed)
 	double radial_thickness_m = 0.010;  //!< estimate (PHYSICS.md: "~1 cm potted winding")
 	double axial_height_m = 0.019;  //!< estimate (winding volume / circumference / thickness)
 	/** Volumetric heat capacity of silica + epoxy [J/(m3 K)] (estimate: rho ~2000, cp ~800). */
@@ -52,8 +53,11 @@ struct CoilThermalParams
 	// surface sits ~0.5 mm from the housing wall. Heat therefore enters mainly from outside,
 	// which gives the marked inner/outer differences of the seed's Fig. 2.
 	double hub_capacity_J_K = 30.0;  //!< light central post + cavity air (estimate)
-	/** Inner surface to the central post across the inner cavity (estimate: air k 0.026 W/(m K),
-	 * ~5 mm gap, 5.4e-3 m2 -> 0.03 W/K, less with a partly open cavity). */
+	/** Inner surface to the central post across the inner cavity. Default 0.01 W/K is BELOW the
+	 * physical estimate: conduction through air (k 0.026 W/(m K), ~5 mm gap, 5.4e-3 m2) 0.028 W/K
+	 * plus radiation (4 eps_eff sigma T^3 A, eps_eff 0.82 for two emissivity-0.9 surfaces, 298 K)
+	 * 0.027 W/K = 0.055 W/K. Kept at 0.01 so that the bundled datasets and figures do not move;
+	 * set `thermal: {hub_to_inner_W_K: 0.055}` for the estimate (its effect: docs/sim.md). */
 	double hub_to_inner_W_K = 0.01;
 
 	double housing_capacity_J_K = 900.0;  //!< 1 kg aluminium housing (PHYSICS.md)
