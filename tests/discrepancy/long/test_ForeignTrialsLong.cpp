@@ -4,6 +4,7 @@
  * (default 20) at effect/noise 3 and 1; nulls: 5 x that many. Targets (issue 13): named in
  * >= 95 % at 3 and >= 80 % at 1; false naming on nulls <= 2 % (Clopper-Pearson upper bound
  * printed); gap share >= 0.5. Regenerate: test_discrepancy_long --gtest_filter='ForeignTrialsLong*' | grep -A3 FOREIGN */
+#include <algorithm>
 #include <cstdlib>
 
 #include "../ForeignTrials.h"
@@ -39,4 +40,30 @@ TEST(ForeignTrialsLong, NullFalseNamingOnHeldOutSeeds)
 				t.false_naming, t.trials, 100.0 * t.false_naming / t.trials,
 				100.0 * clopperPearsonUpper(t.false_naming, t.trials));
 	EXPECT_LE(t.false_naming, static_cast<int>(std::floor(0.02 * n)));
+}
+
+TEST(ForeignTrialsLong, GapThroughTheCompensatorOnHeldOutSeeds)
+{
+	// the effects the compensator can run (thermal terms): share of the hidden gap removed on
+	// the confirmation run by the calibration --write-cal writes (target >= 0.5)
+	const int n = seedsPerCell();
+	for (const char* id : {"temp_poly_order", "radial_gradient", "gradient_rate"})
+		for (double ratio : {3.0, 1.0})
+		{
+			int ok = 0;
+			std::vector<double> shares;
+			for (int i = 0; i < n; ++i)
+			{
+				std::string line;
+				const double sh = compensatorGapShare(id, ratio, fogtest::kHeldOutSeedFirst + i, &line);
+				shares.push_back(sh);
+				ok += sh >= 0.5;
+				std::printf("  %s\n", line.c_str());
+			}
+			std::sort(shares.begin(), shares.end());
+			std::printf("FOREIGN dt %gs compensator gap %s x%g: share >= 0.5 in %d/%d (median %.2f)\n",
+						trialSamplePeriod_s(), id, ratio, ok, n, shares[shares.size() / 2]);
+			std::fflush(stdout);
+			EXPECT_GE(ok, static_cast<int>(std::ceil(0.8 * n))) << id << " x" << ratio;
+		}
 }
