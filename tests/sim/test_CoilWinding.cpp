@@ -109,3 +109,32 @@ TEST(CoilWinding, RejectsBadParameters)
 	EXPECT_THROW(CoilWinding(p, 8, 8), std::invalid_argument);
 	EXPECT_THROW(windingPatternFromString("spiral"), std::invalid_argument);
 }
+
+// Layer-length mismatch e (issue 17: residual Shupe from winding imperfections other than the
+// midpoint offset). Hand-derived weights for a quadrupolar (ABBA) coil of 4 fibre layers, one per
+// node layer, one sector, midpoint at L/2, layer length l = L/4: with w = integral of (2z - L)
+// dz and s the distance from the midpoint along a half (A: z = L/2 - s, B: z = L/2 + s),
+// a stretch s0..s1 gives -(s1^2 - s0^2) in half A and +(s1^2 - s0^2) in half B:
+//   layer 0 (A, 0 .. l(1+e)):            -l^2 (1+e)^2
+//   layer 1 (B, 0 .. l(1-e)):            +l^2 (1-e)^2
+//   layer 2 (B, l(1-e) .. 2l(1-e)):      +3 l^2 (1-e)^2
+//   layer 3 (last: A's remaining l(1-e), s = l(1+e) .. 2l, then B's remaining 2le,
+//            s = 2l(1-e) .. 2l):         -(4 l^2 - l^2 (1+e)^2) + (4 l^2 - 4 l^2 (1-e)^2)
+TEST(CoilWinding, LayerLengthMismatchMatchesHandDerivedWeights)
+{
+	for (double e : {0.0, 0.01, 0.03})  // e >= 0: half B never runs out before the last layer
+	{
+		WindingParams p;
+		p.fiber_layers = 4;
+		p.layer_length_mismatch = e;
+		CoilWinding w(p, 4, 1);
+		const double l = p.fiber_length_m / 4, l2 = l * l;
+		const double a = (1 + e) * (1 + e), b = (1 - e) * (1 - e);
+		const double expect[4] = {-l2 * a, l2 * b, 3 * l2 * b, -(4 * l2 - l2 * a) + (4 * l2 - 4 * l2 * b)};
+		for (int k = 0; k < 4; k++) EXPECT_NEAR(w.nodeWeights_m2()(k), expect[k], 1e-9 * 4 * l2) << "e " << e << " layer " << k;
+		EXPECT_NEAR(w.nodeFiberLength_m()(0), l * (1 + e), 1e-9 * l);
+	}
+	WindingParams bad;
+	bad.layer_length_mismatch = 0.5;
+	EXPECT_THROW(bad.validate(), std::invalid_argument);
+}

@@ -34,6 +34,7 @@ void WindingParams::validate() const
 	if (fiber_layers < 1) throw std::invalid_argument("coil.fiber_layers: must be >= 1");
 	if (!(std::abs(midpoint_offset_m) < 0.5 * fiber_length_m))
 		throw std::invalid_argument("coil.midpoint_offset_m: must be within +-L/2");
+	if (!(std::abs(layer_length_mismatch) < 0.5)) throw std::invalid_argument("coil.layer_length_mismatch: must be within +-0.5");
 	if (!(refractive_index > 0)) throw std::invalid_argument("coil.refractive_index: must be > 0");
 	if (!std::isfinite(dn_dT_per_K) || !std::isfinite(expansion_per_K))
 		throw std::invalid_argument("coil.dn_dT_per_K / expansion_per_K: must be finite");
@@ -86,7 +87,7 @@ CoilWinding::CoilWinding(const WindingParams& params, int node_layers, int secto
 		const int node_layer = static_cast<int>(static_cast<long long>(l) * node_layers / p_.fiber_layers);
 		int h = layerFromHalfA(p_.pattern, l) ? 0 : 1;
 		double pos = 0;  // position along this layer [m]
-		double fill = layer_len;
+		double fill = helical ? layer_len : layer_len * (h == 0 ? 1.0 + p_.layer_length_mismatch : 1.0 - p_.layer_length_mismatch);
 		if (l == p_.fiber_layers - 1) fill = left[0] + left[1];  // absorb rounding
 		while (fill > 1e-12)
 		{

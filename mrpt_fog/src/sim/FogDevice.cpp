@@ -139,8 +139,11 @@ FogDevice FogDevice::fromYaml(const mrpt::containers::yaml& doc, const std::stri
 	{
 		const auto node = doc["coil"];
 		const std::string w = source + ": coil";
-		checkKeys(node, keysOf(coilFields(d.winding), {"pattern", "fiber_layers"}), w);
+		checkKeys(node, keysOf(coilFields(d.winding), {"pattern", "fiber_layers", "layer_length_mismatch"}), w);
 		readFields(node, coilFields(d.winding), w);
+		// not in coilFields: describe() lists it only when set, so that the metadata (and the
+		// bundled datasets' bytes) of devices without it do not change
+		d.winding.layer_length_mismatch = readNumber(node, "layer_length_mismatch", w, d.winding.layer_length_mismatch);
 		d.winding.fiber_layers = readInt(node, "fiber_layers", w, d.winding.fiber_layers);
 		if (node.has("pattern"))
 		{
@@ -271,6 +274,8 @@ std::vector<std::pair<std::string, std::string>> FogDevice::describe() const
 	out.emplace_back("device.coil.pattern", toString(winding.pattern));
 	out.emplace_back("device.coil.fiber_layers", std::to_string(winding.fiber_layers));
 	for (const auto& f : coilFields(c.winding)) out.emplace_back(std::string("device.coil.") + f.key, num(*f.value));
+	if (winding.layer_length_mismatch != 0.0)
+		out.emplace_back("device.coil.layer_length_mismatch", num(winding.layer_length_mismatch));
 	out.emplace_back("device.thermal.layers", std::to_string(thermal.layers));
 	out.emplace_back("device.thermal.sectors", std::to_string(thermal.sectors));
 	for (const auto& f : thermalFields(c.thermal))

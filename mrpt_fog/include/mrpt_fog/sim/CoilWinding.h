@@ -19,7 +19,11 @@
  * octupolar ABBABAAB); when a half runs out, the other fills the remaining layers. The
  * midpoint offset (a length asymmetry between the halves, in metres) is the imperfection that
  * sets the residual Shupe error of a symmetric winding: with 0 the residual comes only from the
- * pattern's own imperfect pairing. Helical: layer after layer from z = 0. */
+ * pattern's own imperfect pairing. A second imperfection, `layer_length_mismatch` = e (default
+ * 0): every layer of half A holds L / fiber_layers x (1 + e) of fibre and every layer of half B
+ * x (1 - e) (the two supply spools wound at different tension or pitch: a turn-count asymmetry
+ * between paired layers), so the pairing drifts layer after layer; the last layer takes what is
+ * left. Helical: layer after layer from z = 0 (e unused). */
 
 #include <Eigen/Dense>
 
@@ -48,6 +52,8 @@ struct WindingParams
 	double mean_diameter_m = 0.1;  //!< seed-class coil (PHYSICS.md)
 	int fiber_layers = 48;  //!< physical layers (estimate: 10 mm / ~0.2 mm pitch)
 	double midpoint_offset_m = 0.0;  //!< length asymmetry of the two halves [m]
+	/** Relative fibre-length difference of the two halves' layers (see the file comment); |e| < 0.5. */
+	double layer_length_mismatch = 0.0;
 	double refractive_index = 1.46;  //!< n (PHYSICS.md)
 	double dn_dT_per_K = 1.0e-5;  //!< thermo-optic coefficient (PHYSICS.md)
 	double expansion_per_K = 5.5e-7;  //!< silica expansion alpha (PHYSICS.md)

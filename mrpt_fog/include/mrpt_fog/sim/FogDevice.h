@@ -11,7 +11,7 @@
  *
  *   latitude_deg: 40
  *   coil:    {pattern: quadrupolar, fiber_length_m: 1500, mean_diameter_m: 0.1, fiber_layers: 48,
- *             midpoint_offset_m: 1.0, refractive_index: 1.46, dn_dT_per_K: 1e-5, expansion_per_K: 5.5e-7}
+ *             midpoint_offset_m: 1.0, layer_length_mismatch: 0, refractive_index: 1.46, dn_dT_per_K: 1e-5, expansion_per_K: 5.5e-7}
  *   thermal: {layers: 8, sectors: 8, <any CoilThermalParams field>}
  *   errors:  {constant_bias_dph, radial_gradient_dph_per_C, gradient_rate_dph_per_C_per_min,
  *             hysteresis_dph, hysteresis_span_C, warmup_dph, warmup_tau_s, sf_ppm_per_C,
