@@ -3,8 +3,12 @@
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/Compensator.h>
 
+#include <mrpt_fog/io/FogLogIO.h>
+
+#include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 
 #include "SyntheticCoil.h"
 
@@ -23,6 +27,18 @@ std::string replaced(std::string s, const std::string& from, const std::string& 
 	EXPECT_NE(p, std::string::npos) << from;
 	if (p != std::string::npos) s.replace(p, from.size(), to);
 	return s;
+}
+std::string errorOf2(const std::string& text)
+{
+	try
+	{
+		calibrationSetFromYaml(text, "cal.yaml");
+	}
+	catch (const std::invalid_argument& e)
+	{
+		return e.what();
+	}
+	return "";
 }
 std::string errorOf(const std::string& text)
 {
@@ -73,10 +89,11 @@ TEST(CalibrationYaml, ExtrapolationPolicyIsStored)
 	const auto p = text.find("extrapolation: ");
 	ASSERT_NE(p, std::string::npos);
 	std::string old = text;
-	old.erase(p, text.find('\n', p) - p + 1);
+	const auto line = text.rfind('\n', p) + 1;  // the whole line (version 2: indented in bias)
+	old.erase(line, text.find('\n', p) - line + 1);
 	EXPECT_EQ(calibrationFromYaml(old, "cal.yaml").extrapolation, ExtrapolationPolicy::Linear);
 	const std::string e = errorOf(replaced(text, "extrapolation: \"clamp\"", "extrapolation: \"cubic\""));
-	EXPECT_NE(e.find("cal.yaml: extrapolation:"), std::string::npos) << e;
+	EXPECT_NE(e.find("cal.yaml: axes[0].bias.extrapolation:"), std::string::npos) << e;
 }
 
 // Every broken field gives "<file>: <field>: <reason>".
@@ -85,12 +102,15 @@ TEST(CalibrationYaml, BadFilesGiveFieldErrors)
 	const std::string good = calibrationToYaml(cal());
 	ASSERT_EQ(errorOf(good), "");
 	EXPECT_NE(errorOf(replaced(good, "format: \"mrpt_fog_calibration\"", "format: \"other\"")).find("cal.yaml: format"), std::string::npos);
-	EXPECT_NE(errorOf(replaced(good, "version: 1", "version: 7")).find("version"), std::string::npos);
+	EXPECT_NE(errorOf(replaced(good, "version: 2", "version: 7")).find("version"), std::string::npos);
 	EXPECT_NE(errorOf(replaced(good, "window_s: 60", "window_s: abc")).find("rate_estimator.window_s: not a number"), std::string::npos);
 	EXPECT_NE(errorOf(replaced(good, "kind: \"causal\"", "kind: \"kalman\"")).find("rate_estimator"), std::string::npos);
 	EXPECT_NE(errorOf(replaced(good, "    - name: \"T(Ti1)^2\"", "    - name: \"T(Ti1)^9\"")).find("model.terms"), std::string::npos);
 	EXPECT_NE(errorOf(replaced(good, "side: \"inner\"", "side: \"middle\"")).find("sensor.thermistors[0].side"), std::string::npos);
-	EXPECT_NE(errorOf(replaced(good, "  axis: \"z\"", "  axis: \"q\"")).find("sensor.axis"), std::string::npos);
+	EXPECT_NE(errorOf(replaced(good, "  - axis: \"z\"", "  - axis: \"q\"")).find("axes[0].axis"), std::string::npos);
+	EXPECT_NE(errorOf(replaced(good, "latitude_deg: .nan", "latitude_deg: 91")).find("cal.yaml: latitude_deg"), std::string::npos);
+	EXPECT_NE(errorOf(replaced(good, "handling: \"in_bias\"", "handling: \"ignored\"")).find("earth_rate.handling"), std::string::npos);
+	EXPECT_NE(errorOf(replaced(good, "axes:\n", "axes: []\nother:\n")).find("axes"), std::string::npos);
 	EXPECT_NE(errorOf(replaced(good, "    - name: \"To2\"\n", "    - name: \"Tq\"\n")).find("not in sensor.thermistors"), std::string::npos);
 	EXPECT_NE(errorOf(replaced(good, "mean_bias_dph:", "mean_bias:")).find("mean_bias_dph: missing"), std::string::npos);
 	EXPECT_NE(errorOf(replaced(good, "      scale: ", "      scale: -")).find(".scale"), std::string::npos);
@@ -129,4 +149,179 @@ TEST(CalibrationYaml, OneThermistorCalibrationWithConstantFallbackRoundTrips)
 	EXPECT_EQ(back.fallbacks[0].coef_dph, one.fallbacks[0].coef_dph);
 	EXPECT_EQ(back.model.coef_dph, one.model.coef_dph);
 	std::remove(path.c_str());
+}
+
+namespace
+{
+std::string dataPath(const std::string& name) { return std::string(FOG_SOURCE_DIR) + "/tests/data/model/" + name; }
+ScaleFactorModel someScaleFactor()
+{
+	ScaleFactorModel m;
+	m.thermistor = "Ti1";
+	m.centre_C = 10.0;
+	m.scale_C = 50.0;
+	m.min_C = -40.0;
+	m.max_C = 60.0;
+	m.coef_ppm = {-300.0, 1000.0, 3.5};
+	m.covariance_ppm2 = Eigen::MatrixXd::Identity(3, 3) * 0.25;
+	m.slope_ppm_per_C = 20.0;
+	m.slope_ci95_lo_ppm_per_C = 19.9;
+	m.slope_ci95_hi_ppm_per_C = 20.1;
+	m.table_rate_min_abs_dph = 3600;
+	m.table_rate_max_abs_dph = 36000;
+	m.segments = 24;
+	m.samples = 12345;
+	m.rms_in_sample_ppm = 0.4;
+	m.rms_held_out_ppm = 0.5;
+	m.held_out_label = "leave-one-temperature-out";
+	return m;
+}
+}  // namespace
+
+// A version 1 file (written by fog-calibrate before version 2, tests/data/model/cal_v1_coil_A.yaml)
+// still loads, as a single-axis bias-only calibration with latitude unknown, and compensates
+// exactly as that program did (its fog-compensate output on coil_B is stored beside it).
+TEST(CalibrationYaml, Version1FileLoadsAndCompensatesAsBefore)
+{
+	const Calibration v1 = loadCalibrationYaml(dataPath("cal_v1_coil_A.yaml"));
+	EXPECT_EQ(v1.axis, GyroAxis::Z);
+	EXPECT_TRUE(std::isnan(v1.latitude_deg));
+	EXPECT_EQ(v1.earth_rate, EarthRateHandling::InBias);
+	EXPECT_FALSE(v1.scale_factor.has_value());
+	EXPECT_FALSE(v1.warmup.has_value());
+	// the old program's output: time_s, raw, bias, compensated, flags, temperatures
+	std::ifstream in(dataPath("comp_v1_coil_B.csv"));
+	ASSERT_TRUE(in.good());
+	std::vector<double> time_old, bias_old, comp_old;
+	std::string line;
+	while (std::getline(in, line))
+	{
+		if (line.empty() || line[0] == '#' || line[0] == 't') continue;
+		std::stringstream ss(line);
+		std::string cell;
+		std::vector<std::string> cells;
+		while (std::getline(ss, cell, ',')) cells.push_back(cell);
+		ASSERT_GE(cells.size(), 4u);
+		time_old.push_back(std::stod(cells[0]));
+		bias_old.push_back(std::stod(cells[2]));
+		comp_old.push_back(std::stod(cells[3]));
+	}
+	const FogSeries b = readFogLog(dataPath("coil_B.csv"));
+	const CompensatedSeries now = compensate(v1, b);
+	ASSERT_GT(bias_old.size(), 600u);
+	std::size_t k = 0;
+	for (std::size_t i = 0; i < bias_old.size(); i++)
+	{
+		while (k < now.time_s.size() && now.time_s[k] < time_old[i]) k++;
+		ASSERT_LT(k, now.time_s.size());
+		ASSERT_EQ(now.time_s[k], time_old[i]);
+		// the CSV holds 17 significant digits: the same double
+		ASSERT_EQ(now.bias_dph[k], bias_old[i]) << k;
+		ASSERT_EQ(now.compensated_dph[k], comp_old[i]) << k;
+	}
+	// ... and so does the same calibration written as version 2 and read back.
+	const std::string v2 = calibrationToYaml(v1);
+	EXPECT_NE(v2.find("version: 2"), std::string::npos);
+	const Calibration back = calibrationFromYaml(v2, "v2.yaml");
+	EXPECT_EQ(compensate(back, b).compensated_dph, now.compensated_dph);
+}
+
+// The optional sections round-trip exactly; absent they stay absent.
+TEST(CalibrationYaml, ScaleFactorAndWarmupRoundTrip)
+{
+	Calibration c = cal();
+	c.latitude_deg = 40.0;
+	c.earth_rate = EarthRateHandling::InTableRate;
+	c.scale_factor = someScaleFactor();
+	WarmupModel w;
+	w.amplitude_dph = 0.1;
+	w.tau_s = 600;
+	w.amplitude_std_dph = 0.001;
+	w.tau_std_s = 12;
+	w.fitted_span_s = 5400;
+	w.turn_ons = 1;
+	w.samples = 54000;
+	w.rms_before_dph = 0.03;
+	w.rms_after_dph = 0.006;
+	c.warmup = w;
+	const Calibration back = calibrationFromYaml(calibrationToYaml(c), "c.yaml");
+	EXPECT_EQ(back.latitude_deg, 40.0);
+	EXPECT_EQ(back.earth_rate, EarthRateHandling::InTableRate);
+	ASSERT_TRUE(back.scale_factor && back.warmup);
+	const auto& s = *back.scale_factor;
+	EXPECT_EQ(s.thermistor, "Ti1");
+	EXPECT_EQ(s.coef_ppm, c.scale_factor->coef_ppm);
+	EXPECT_EQ(s.covariance_ppm2, c.scale_factor->covariance_ppm2);
+	EXPECT_EQ(s.min_C, -40.0);
+	EXPECT_EQ(s.slope_ci95_hi_ppm_per_C, 20.1);
+	EXPECT_EQ(s.table_rate_max_abs_dph, 36000.0);
+	EXPECT_EQ(s.held_out_label, "leave-one-temperature-out");
+	EXPECT_EQ(back.warmup->tau_s, 600.0);
+	EXPECT_EQ(back.warmup->amplitude_dph, 0.1);
+	EXPECT_EQ(back.warmup->turn_ons, 1u);
+	EXPECT_EQ(calibrationToYaml(back), calibrationToYaml(c));
+	const Calibration plain = calibrationFromYaml(calibrationToYaml(cal()), "p.yaml");
+	EXPECT_FALSE(plain.scale_factor || plain.warmup);
+	EXPECT_EQ(calibrationToYaml(cal()).find("scale_factor:"), std::string::npos);
+	// broken optional sections give field errors
+	const std::string good = calibrationToYaml(c);
+	EXPECT_NE(errorOf(replaced(good, "scale_C: 50", "scale_C: 0")).find("axes[0].scale_factor.scale_C"), std::string::npos);
+	EXPECT_NE(errorOf(replaced(good, "thermistor: \"Ti1\"", "thermistor: \"Tx\"")).find("scale_factor.thermistor"), std::string::npos);
+	EXPECT_NE(errorOf(replaced(good, "tau_s: 600", "tau_s: -1")).find("axes[0].warmup.tau_s"), std::string::npos);
+	EXPECT_NE(errorOf(replaced(good, "coef_ppm: [-300, 1000, 3.5]", "coef_ppm: [-300, x]")).find("coef_ppm[1]: not a number"), std::string::npos);
+}
+
+// Several axes in one file: single-axis loading says which axes there are; by axis it works.
+TEST(CalibrationYaml, SeveralAxesInOneFile)
+{
+	Calibration x = cal(), z = cal();
+	x.axis = GyroAxis::X;
+	x.scale_factor = someScaleFactor();
+	const CalibrationSet set{{x, z}};
+	const std::string text = calibrationSetToYaml(set);
+	const CalibrationSet back = calibrationSetFromYaml(text, "xz.yaml");
+	ASSERT_EQ(back.axes.size(), 2u);
+	ASSERT_NE(back.forAxis(GyroAxis::X), nullptr);
+	EXPECT_TRUE(back.forAxis(GyroAxis::X)->scale_factor.has_value());
+	EXPECT_FALSE(back.forAxis(GyroAxis::Z)->scale_factor.has_value());
+	EXPECT_EQ(back.forAxis(GyroAxis::Y), nullptr);
+	EXPECT_EQ(calibrationFromYaml(text, "xz.yaml", GyroAxis::Z).model.coef_dph, z.model.coef_dph);
+	try
+	{
+		calibrationFromYaml(text, "xz.yaml");
+		ADD_FAILURE() << "no error for a two-axis file read as one axis";
+	}
+	catch (const std::invalid_argument& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("xz.yaml: axes: holds 2 axes (x, z)"), std::string::npos) << e.what();
+	}
+	EXPECT_THROW(calibrationFromYaml(text, "xz.yaml", GyroAxis::Y), std::invalid_argument);
+	// the same axis twice, or axes that disagree on the sensor, are refused
+	EXPECT_THROW(calibrationSetToYaml(CalibrationSet{{z, z}}), std::invalid_argument);
+	Calibration other = x;
+	other.latitude_deg = 10;
+	EXPECT_THROW(calibrationSetToYaml(CalibrationSet{{other, z}}), std::invalid_argument);
+	std::string twice = text;
+	const std::string x_entry = "  - axis: \"x\"";
+	const auto p = twice.find(x_entry);
+	ASSERT_NE(p, std::string::npos);
+	twice.replace(p, x_entry.size(), "  - axis: \"z\"");
+	EXPECT_NE(errorOf2(twice).find("axes[1].axis"), std::string::npos);
+}
+
+// The fit records the runs' common latitude (unknown when they disagree or do not say).
+TEST(CalibrationYaml, LatitudeFromTheRuns)
+{
+	FogSeries a = fogtest::makeCoilRun("A", 61), b = fogtest::makeCoilRun("B", 62);
+	EXPECT_TRUE(std::isnan(commonLatitude_deg({a})));
+	a.setMetadata("latitude_deg", "45.5");
+	EXPECT_EQ(commonLatitude_deg({a}), 45.5);
+	b.setMetadata("latitude_deg", "45.5");
+	EXPECT_EQ(commonLatitude_deg({a, b}), 45.5);
+	b.setMetadata("latitude_deg", "30");
+	EXPECT_TRUE(std::isnan(commonLatitude_deg({a, b})));
+	a.resize(8000);
+	const Calibration c = fitCalibration({a}, "M2:Ti1");
+	EXPECT_EQ(c.latitude_deg, 45.5);
+	EXPECT_EQ(calibrationFromYaml(calibrationToYaml(c), "c.yaml").latitude_deg, 45.5);
 }

@@ -107,7 +107,8 @@ struct PreparedRun
 	std::size_t usable = 0;
 };
 
-PreparedRun prepare(const FogSeries& s, const ThermalFeatureSet& fs, const RateEstimatorSettings& est, GyroAxis axis)
+PreparedRun prepare(const FogSeries& s, const ThermalFeatureSet& fs, const RateEstimatorSettings& est, GyroAxis axis,
+					TableSamples table)
 {
 	PreparedRun r;
 	r.s = &s;
@@ -138,7 +139,8 @@ PreparedRun prepare(const FogSeries& s, const ThermalFeatureSet& fs, const RateE
 	r.ok.assign(n, true);
 	for (std::size_t k = 0; k < n; k++)
 	{
-		bool ok = std::isfinite(r.y[k]) && (s.power.empty() || s.power[k] != 0.0);
+		bool ok = std::isfinite(r.y[k]) && (s.power.empty() || s.power[k] != 0.0) &&
+				  !(table == TableSamples::Exclude && !s.table_rate_dph.empty() && s.table_rate_dph[k] != 0.0);
 		for (std::size_t i = 0; i < nt && ok; i++) ok = std::isfinite(s.temp_C[r.col[i]][k]) && std::isfinite(r.rate[i][k]);
 		r.ok[k] = ok;
 		r.usable += ok;
@@ -507,7 +509,9 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 										runName(labels, 0));
 	}
 	const FogSeries& first = runs[0];
-	const GyroAxis axis = first.primaryAxis();
+	const GyroAxis axis = opt.axis ? *opt.axis : first.primaryAxis();
+	if (!first.has_axis[static_cast<int>(axis)])
+		throw std::invalid_argument(runName(labels, 0) + " has no " + axisLetter(axis) + " axis to calibrate");
 	const ModelPreset preset = parseModelPreset(preset_text, first.thermistors);
 	ThermalFeatureSet fs = presetFeatures(preset);
 	const bool candidates_added =
@@ -535,7 +539,7 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	std::size_t usable = 0;
 	for (const auto& r : runs)
 	{
-		prep.push_back(prepare(r, fs, opt.rate_estimator, axis));
+		prep.push_back(prepare(r, fs, opt.rate_estimator, axis, opt.table_samples));
 		usable += prep.back().usable;
 	}
 	if (usable == 0) throw std::invalid_argument("fit: no usable sample (every sample has a dropout or no rate yet)");
@@ -886,6 +890,7 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	cal.sensor_label = first.sensor_label;
 	cal.axis = axis;
 	cal.layout = first.thermistors;
+	cal.latitude_deg = commonLatitude_deg(runs);
 	cal.preset = preset_text;
 	cal.selection = opt.selection;
 	cal.rate_estimator = opt.rate_estimator;

@@ -18,7 +18,7 @@ namespace mrpt_fog
 namespace
 {
 constexpr const char* kFormat = "mrpt_fog_calibration";
-constexpr int kVersion = 1;
+constexpr int kVersion = 2;  //!< written; version 1 (single axis, bias only) is still read
 // Plausibility limits of loaded values (issue 14: a coef_dph of 1e308 compensated to -2e307
 // deg/h). Every term is z^k with |z| <= 1 after clamping, so a coefficient bounds its term's
 // contribution to the bias: 1e6 deg/h (278 deg/s) is beyond any gyro's bias.
@@ -26,6 +26,11 @@ constexpr double kMaxCoef_dph = 1e6;
 constexpr const char* kCoefWhy = "a bias term of more than 1e6 deg/h is no gyro's";
 constexpr double kMaxSignal_C = 1000.0;  // temperatures and differences [degC]
 constexpr double kMaxSignalRate_Cps = 100.0;  // temperature rates [degC/s]
+// Scale factor: a term of more than 1e5 ppm (10 %) and warm-up amplitudes beyond 1e6 deg/h
+// are no FOG's; a warm-up time constant beyond 10 days is not a warm-up.
+constexpr double kMaxCoef_ppm = 1e5;
+constexpr const char* kPpmWhy = "a scale-factor term of more than 1e5 ppm is no FOG's";
+constexpr double kMaxWarmupTau_s = 864000.0;
 
 std::string num(double v)
 {
@@ -48,18 +53,68 @@ std::string str(const std::string& s)
 	return o + "\"";
 }
 
-void writeFigures(std::ostringstream& o, const std::string& key, const FitFigures& f)
+void writeFigures(std::ostringstream& o, const std::string& key, const FitFigures& f, const std::string& ind)
 {
-	o << "  " << key << ":\n";
-	o << "    label: " << str(f.label) << "\n";
-	o << "    valid: " << (f.valid ? "true" : "false") << "\n";
-	o << "    samples: " << f.samples << "\n";
-	o << "    tau_s: " << num(f.tau_s) << "\n";
-	o << "    rms_dph: " << num(f.rms_dph) << "  # compensated, about its mean [deg/h]\n";
-	o << "    stability_dph: " << num(f.stability_dph) << "  # std of tau-s averages, compensated [deg/h]\n";
-	o << "    range_dph: " << num(f.range_dph) << "  # max - min of tau-s averages, compensated [deg/h]\n";
-	o << "    raw_stability_dph: " << num(f.raw_stability_dph) << "\n";
-	o << "    raw_range_dph: " << num(f.raw_range_dph) << "\n";
+	o << ind << key << ":\n";
+	o << ind << "  label: " << str(f.label) << "\n";
+	o << ind << "  valid: " << (f.valid ? "true" : "false") << "\n";
+	o << ind << "  samples: " << f.samples << "\n";
+	o << ind << "  tau_s: " << num(f.tau_s) << "\n";
+	o << ind << "  rms_dph: " << num(f.rms_dph) << "  # compensated, about its mean [deg/h]\n";
+	o << ind << "  stability_dph: " << num(f.stability_dph) << "  # std of tau-s averages, compensated [deg/h]\n";
+	o << ind << "  range_dph: " << num(f.range_dph) << "  # max - min of tau-s averages, compensated [deg/h]\n";
+	o << ind << "  raw_stability_dph: " << num(f.raw_stability_dph) << "\n";
+	o << ind << "  raw_range_dph: " << num(f.raw_range_dph) << "\n";
+}
+
+void writeMatrix(std::ostringstream& o, const Eigen::MatrixXd& m, const std::string& ind)
+{
+	for (Eigen::Index r = 0; r < m.rows(); r++)
+	{
+		o << ind << "- [";
+		for (Eigen::Index c = 0; c < m.cols(); c++) o << (c ? ", " : "") << num(m(r, c));
+		o << "]\n";
+	}
+}
+
+void writeScaleFactor(std::ostringstream& o, const ScaleFactorModel& m, const std::string& ind)
+{
+	o << ind << "scale_factor:  # omega = (raw - bias) / (1 + 1e-6 s_ppm), s_ppm = sum coef_ppm[k] z^k\n";
+	o << ind << "  thermistor: " << str(m.thermistor) << "\n";
+	o << ind << "  centre_C: " << num(m.centre_C) << "  # z = (clamp(T, min_C, max_C) - centre_C) / scale_C\n";
+	o << ind << "  scale_C: " << num(m.scale_C) << "\n";
+	o << ind << "  min_C: " << num(m.min_C) << "  # calibrated range: T is clamped to [min_C, max_C]\n";
+	o << ind << "  max_C: " << num(m.max_C) << "\n";
+	o << ind << "  coef_ppm: [";
+	for (std::size_t k = 0; k < m.coef_ppm.size(); k++) o << (k ? ", " : "") << num(m.coef_ppm[k]);
+	o << "]  # of z^0, z^1, ... [ppm]\n";
+	o << ind << "  covariance_ppm2:" << (m.covariance_ppm2.rows() == 0 ? " []" : "") << "\n";
+	writeMatrix(o, m.covariance_ppm2, ind + "    ");
+	o << ind << "  slope_ppm_per_C: " << num(m.slope_ppm_per_C)
+	  << "  # (s(max_C) - s(min_C)) / (max_C - min_C) [ppm/degC]\n";
+	o << ind << "  slope_ci95_ppm_per_C: [" << num(m.slope_ci95_lo_ppm_per_C) << ", " << num(m.slope_ci95_hi_ppm_per_C)
+	  << "]  # 95 % interval\n";
+	o << ind << "  table_rate_abs_dph: [" << num(m.table_rate_min_abs_dph) << ", " << num(m.table_rate_max_abs_dph)
+	  << "]  # |applied rate| range of the segments used [deg/h]\n";
+	o << ind << "  segments: " << m.segments << "\n";
+	o << ind << "  samples: " << m.samples << "\n";
+	o << ind << "  rms_in_sample_ppm: " << num(m.rms_in_sample_ppm) << "\n";
+	o << ind << "  rms_held_out_ppm: " << num(m.rms_held_out_ppm) << "\n";
+	o << ind << "  held_out_label: " << str(m.held_out_label) << "\n";
+}
+
+void writeWarmup(std::ostringstream& o, const WarmupModel& w, const std::string& ind)
+{
+	o << ind << "warmup:  # bias += amplitude_dph * exp(-(t - t_on) / tau_s) after each turn-on t_on\n";
+	o << ind << "  amplitude_dph: " << num(w.amplitude_dph) << "\n";
+	o << ind << "  tau_s: " << num(w.tau_s) << "\n";
+	o << ind << "  amplitude_std_dph: " << num(w.amplitude_std_dph) << "\n";
+	o << ind << "  tau_std_s: " << num(w.tau_std_s) << "\n";
+	o << ind << "  fitted_span_s: " << num(w.fitted_span_s) << "  # time after the turn-on covered by the fit [s]\n";
+	o << ind << "  turn_ons: " << w.turn_ons << "\n";
+	o << ind << "  samples: " << w.samples << "\n";
+	o << ind << "  rms_before_dph: " << num(w.rms_before_dph) << "  # bias model alone, fitted span [deg/h]\n";
+	o << ind << "  rms_after_dph: " << num(w.rms_after_dph) << "  # with the warm-up term [deg/h]\n";
 }
 
 void writeModel(std::ostringstream& o, const BiasModel& m, const std::string& ind)
@@ -92,12 +147,7 @@ void writeModel(std::ostringstream& o, const BiasModel& m, const std::string& in
 		o << ind << "    std_dph: " << num(std::sqrt(std::max(var, 0.0))) << "\n";
 	}
 	o << ind << "covariance_dph2:\n";
-	for (Eigen::Index r = 0; r < m.covariance.rows(); r++)
-	{
-		o << ind << "  - [";
-		for (Eigen::Index c = 0; c < m.covariance.cols(); c++) o << (c ? ", " : "") << num(m.covariance(r, c));
-		o << "]\n";
-	}
+	writeMatrix(o, m.covariance, ind + "  ");
 	o << ind << "fit:\n";
 	o << ind << "  samples: " << m.samples << "\n";
 	o << ind << "  ridge: " << num(m.ridge) << "  # relative to the unit-diagonal (equilibrated) system\n";
@@ -277,80 +327,176 @@ FitFigures readFigures(const Reader& rd, const yaml& n, const std::string& path)
 	f.raw_range_dph = rd.number(n, "raw_range_dph", path);
 	return f;
 }
+
+/** A list of numbers (flow or block sequence) with "<path>[i]: not a number" errors. */
+std::vector<double> readNumbers(const Reader& rd, const yaml& n, const std::string& key, const std::string& path)
+{
+	std::vector<double> v;
+	const auto sq = rd.seq(n, key, path);
+	for (std::size_t i = 0; i < sq.size(); i++)
+	{
+		try
+		{
+			const std::string t = yaml(sq[i]).as<std::string>();
+			std::size_t used = 0;
+			v.push_back(std::stod(t, &used));
+			if (used != t.size()) throw std::invalid_argument("trailing text");
+		}
+		catch (const std::exception&)
+		{
+			rd.fail(path + "." + key + "[" + std::to_string(i) + "]", "not a number");
+		}
+		if (!std::isfinite(v.back())) rd.fail(path + "." + key + "[" + std::to_string(i) + "]", "must be a finite number");
+	}
+	return v;
+}
+
+Eigen::MatrixXd readSquare(const Reader& rd, const yaml& n, const std::string& key, const std::string& path, std::size_t size)
+{
+	Eigen::MatrixXd m(static_cast<Eigen::Index>(size), static_cast<Eigen::Index>(size));
+	const auto rows = rd.seq(n, key, path);
+	if (rows.size() != size) rd.fail(path + "." + key, "expected " + std::to_string(size) + " rows");
+	for (std::size_t r = 0; r < size; r++)
+	{
+		const std::string p = path + "." + key + "[" + std::to_string(r) + "]";
+		const yaml row(rows[r]);
+		if (!row.isSequence() || row.asSequence().size() != size) rd.fail(p, "expected " + std::to_string(size) + " numbers");
+		yaml holder = yaml::Map();
+		holder["v"] = row;
+		const std::vector<double> v = readNumbers(rd, holder, "v", p);
+		for (std::size_t c = 0; c < size; c++) m(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = v[c];
+	}
+	return m;
+}
+
+ScaleFactorModel readScaleFactor(const Reader& rd, const yaml& n, const std::string& path)
+{
+	ScaleFactorModel m;
+	m.thermistor = rd.text(n, "thermistor", path);
+	const char* why = "a temperature [degC] no coil reaches";
+	m.centre_C = rd.bounded(n, "centre_C", path, -kMaxSignal_C, kMaxSignal_C, why);
+	m.scale_C = rd.bounded(n, "scale_C", path, -kMaxSignal_C, kMaxSignal_C, why);
+	m.min_C = rd.bounded(n, "min_C", path, -kMaxSignal_C, kMaxSignal_C, why);
+	m.max_C = rd.bounded(n, "max_C", path, -kMaxSignal_C, kMaxSignal_C, why);
+	if (!(m.scale_C > 0)) rd.fail(path + ".scale_C", "must be > 0");
+	if (m.min_C > m.max_C) rd.fail(path + ".min_C", "min_C > max_C");
+	m.coef_ppm = readNumbers(rd, n, "coef_ppm", path);
+	if (m.coef_ppm.empty() || m.coef_ppm.size() > 6) rd.fail(path + ".coef_ppm", "expected 1 to 6 coefficients");
+	for (std::size_t k = 0; k < m.coef_ppm.size(); k++)
+		if (std::abs(m.coef_ppm[k]) > kMaxCoef_ppm)
+			rd.fail(path + ".coef_ppm[" + std::to_string(k) + "]", num(m.coef_ppm[k]) + " is outside [-1e5, 1e5] (" + kPpmWhy + ")");
+	m.covariance_ppm2 = readSquare(rd, n, "covariance_ppm2", path, m.coef_ppm.size());
+	m.slope_ppm_per_C = rd.number(n, "slope_ppm_per_C", path);
+	const auto ci = readNumbers(rd, n, "slope_ci95_ppm_per_C", path);
+	if (ci.size() != 2) rd.fail(path + ".slope_ci95_ppm_per_C", "expected [lo, hi]");
+	m.slope_ci95_lo_ppm_per_C = ci[0];
+	m.slope_ci95_hi_ppm_per_C = ci[1];
+	const auto tr = readNumbers(rd, n, "table_rate_abs_dph", path);
+	if (tr.size() != 2) rd.fail(path + ".table_rate_abs_dph", "expected [min, max]");
+	m.table_rate_min_abs_dph = tr[0];
+	m.table_rate_max_abs_dph = tr[1];
+	m.segments = static_cast<std::size_t>(rd.finite(n, "segments", path));
+	m.samples = static_cast<std::size_t>(rd.finite(n, "samples", path));
+	m.rms_in_sample_ppm = rd.number(n, "rms_in_sample_ppm", path);
+	m.rms_held_out_ppm = rd.number(n, "rms_held_out_ppm", path);
+	m.held_out_label = rd.text(n, "held_out_label", path);
+	return m;
+}
+
+WarmupModel readWarmup(const Reader& rd, const yaml& n, const std::string& path)
+{
+	WarmupModel w;
+	w.amplitude_dph = rd.bounded(n, "amplitude_dph", path, -kMaxCoef_dph, kMaxCoef_dph, kCoefWhy);
+	w.tau_s = rd.bounded(n, "tau_s", path, -kMaxWarmupTau_s, kMaxWarmupTau_s, "a warm-up of more than 10 days is none");
+	if (!(w.tau_s > 0)) rd.fail(path + ".tau_s", "must be > 0");
+	w.amplitude_std_dph = rd.number(n, "amplitude_std_dph", path);
+	w.tau_std_s = rd.number(n, "tau_std_s", path);
+	w.fitted_span_s = rd.number(n, "fitted_span_s", path);
+	w.turn_ons = static_cast<std::size_t>(rd.finite(n, "turn_ons", path));
+	w.samples = static_cast<std::size_t>(rd.finite(n, "samples", path));
+	w.rms_before_dph = rd.number(n, "rms_before_dph", path);
+	w.rms_after_dph = rd.number(n, "rms_after_dph", path);
+	return w;
+}
 }  // namespace
 
-std::string calibrationToYaml(const Calibration& cal)
+namespace
 {
-	std::ostringstream o;
-	o << "# mrpt_fog thermal-bias calibration (fog-calibrate). bias_dph = sum coef_dph * z^k;\n";
-	o << "# compensated rate = raw rate - bias. Units: temperatures degC, rates degC/s, bias deg/h.\n";
-	o << "format: " << str(kFormat) << "\n";
-	o << "version: " << kVersion << "\n";
-	o << "sensor:\n";
-	o << "  label: " << str(cal.sensor_label) << "\n";
-	o << "  axis: \"" << axisLetter(cal.axis) << "\"\n";
-	o << "  thermistors:\n";
-	for (const auto& t : cal.layout)
-		o << "    - name: " << str(t.name) << "\n      side: " << str(toString(t.side))
-		  << "\n      angle_deg: " << num(t.angle_deg) << "\n";
-	o << "preset: " << str(cal.preset) << "\n";
-	o << "selection: " << str(cal.selection) << "\n";
-	o << "extrapolation: " << str(toString(cal.extrapolation)) << "  # outside the calibrated range: linear | clamp | polynomial\n";
-	o << "rate_estimator:\n";
-	o << "  kind: " << str(cal.rate_estimator.kind) << "\n";
-	o << "  window_s: " << num(cal.rate_estimator.window_s) << "\n";
-	o << "  poly_order: " << cal.rate_estimator.poly_order << "\n";
-	o << "  delay_s: " << num(cal.rate_estimator.kind == "causal" ? cal.rate_estimator.window_s / 2 : 0.0)
+void writeAxis(std::ostringstream& o, const Calibration& cal)
+{
+	const std::string ind = "    ";
+	o << "  - axis: \"" << axisLetter(cal.axis) << "\"\n";
+	o << ind << "preset: " << str(cal.preset) << "\n";
+	o << ind << "selection: " << str(cal.selection) << "\n";
+	o << ind << "rate_estimator:\n";
+	o << ind << "  kind: " << str(cal.rate_estimator.kind) << "\n";
+	o << ind << "  window_s: " << num(cal.rate_estimator.window_s) << "\n";
+	o << ind << "  poly_order: " << cal.rate_estimator.poly_order << "\n";
+	o << ind << "  delay_s: " << num(cal.rate_estimator.kind == "causal" ? cal.rate_estimator.window_s / 2 : 0.0)
 	  << "  # informational: the causal estimate lags by about window_s / 2\n";
-	o << "mean_bias_dph: " << num(cal.mean_bias_dph) << "  # used when no model applies (>= 2 thermistors missing)\n";
-	o << "calibration_runs: [";
+	o << ind << "calibration_runs: [";
 	for (std::size_t i = 0; i < cal.runs.size(); i++) o << (i ? ", " : "") << str(cal.runs[i]);
 	o << "]\n";
-	o << "model:\n";
-	writeModel(o, cal.model, "  ");
-	o << "fallbacks:";
-	if (cal.fallbacks.empty()) o << " []";
-	o << "\n";
+	o << ind << "bias:  # bias_dph = sum coef_dph * z^k; compensated = raw - bias\n";
+	o << ind << "  mean_bias_dph: " << num(cal.mean_bias_dph)
+	  << "  # used when no model applies (>= 2 thermistors missing)\n";
+	o << ind << "  extrapolation: " << str(toString(cal.extrapolation))
+	  << "  # outside the calibrated range: linear | clamp | polynomial\n";
+	o << ind << "  model:\n";
+	writeModel(o, cal.model, ind + "    ");
+	o << ind << "  fallbacks:" << (cal.fallbacks.empty() ? " []" : "") << "\n";
 	for (const auto& f : cal.fallbacks)
 	{
 		std::ostringstream m;
-		writeModel(m, f, "    ");
+		writeModel(m, f, ind + "    ");
 		std::string s = m.str();
-		s.replace(0, 4, "  - ");
+		s.replace(ind.size() + 2, 2, "- ");
 		o << s;
 	}
-	o << "statistics:\n";
-	writeFigures(o, "in_sample", cal.in_sample);
-	writeFigures(o, "held_out", cal.held_out);
-	writeFigures(o, "validation", cal.validation);
+	if (cal.scale_factor) writeScaleFactor(o, *cal.scale_factor, ind);
+	if (cal.warmup) writeWarmup(o, *cal.warmup, ind);
+	o << ind << "statistics:  # of the bias compensation\n";
+	writeFigures(o, "in_sample", cal.in_sample, ind + "  ");
+	writeFigures(o, "held_out", cal.held_out, ind + "  ");
+	writeFigures(o, "validation", cal.validation, ind + "  ");
+}
+}  // namespace
+
+std::string calibrationSetToYaml(const CalibrationSet& set)
+{
+	set.validate();
+	const Calibration& a = set.axes.front();
+	std::ostringstream o;
+	o << "# mrpt_fog calibration (fog-calibrate): per gyro axis a thermal bias model, optionally a\n";
+	o << "# scale factor vs temperature and a warm-up term. Units: temperatures degC, rates degC/s,\n";
+	o << "# bias deg/h, scale factor ppm. Layout: docs/model.md (calibration file, version 2).\n";
+	o << "format: " << str(kFormat) << "\n";
+	o << "version: " << kVersion << "\n";
+	o << "sensor:\n";
+	o << "  label: " << str(a.sensor_label) << "\n";
+	o << "  thermistors:" << (a.layout.empty() ? " []" : "") << "\n";
+	for (const auto& t : a.layout)
+		o << "    - name: " << str(t.name) << "\n      side: " << str(toString(t.side))
+		  << "\n      angle_deg: " << num(t.angle_deg) << "\n";
+	o << "latitude_deg: " << num(a.latitude_deg) << "  # of the calibration runs [deg]; .nan = unknown\n";
+	o << "earth_rate:\n";
+	o << "  handling: " << str(toString(a.earth_rate))
+	  << "  # in_bias: the bias holds the axis' Earth-rate projection at latitude_deg; in_table_rate: it does not\n";
+	o << "axes:\n";
+	for (const auto& c : set.axes) writeAxis(o, c);
 	return o.str();
+}
+
+std::string calibrationToYaml(const Calibration& cal)
+{
+	return calibrationSetToYaml(CalibrationSet{{cal}});
 }
 
 namespace
 {
-Calibration parseCalibrationYaml(const std::string& text, const std::string& source)
+void readLayout(const Reader& rd, const yaml& sensor, Calibration& cal)
 {
-	Reader rd{source};
-	requireSafeYamlText(text, source);  // size, nesting depth, aliases, UTF-8: before MRPT's parser
-	yaml root;
-	try
-	{
-		root = yaml::FromText(text);
-	}
-	catch (const std::exception& e)
-	{
-		throw std::invalid_argument(source + ": not valid YAML: " + oneLineErrorMessage(e.what()));
-	}
-	if (!root.isMap()) rd.fail("(top)", "expected a YAML map");
-	if (rd.text(root, "format", "") != kFormat) rd.fail("format", std::string("expected ") + kFormat);
-	const double version = rd.finite(root, "version", "");
-	if (version != kVersion) rd.fail("version", "unsupported version " + num(version));
-	Calibration cal;
-	const yaml sensor = rd.child(root, "sensor", "");
 	cal.sensor_label = rd.text(sensor, "label", "sensor");
-	const std::string axis = rd.text(sensor, "axis", "sensor");
-	if (axis != "x" && axis != "y" && axis != "z") rd.fail("sensor.axis", "must be x, y or z");
-	cal.axis = static_cast<GyroAxis>(axis[0] - 'x');
 	const auto therm = rd.seq(sensor, "thermistors", "sensor");
 	for (std::size_t i = 0; i < therm.size(); i++)
 	{
@@ -372,68 +518,158 @@ Calibration parseCalibrationYaml(const std::string& text, const std::string& sou
 		info.angle_deg = rd.finite(t, "angle_deg", p);
 		cal.layout.push_back(info);
 	}
-	cal.preset = rd.text(root, "preset", "");
-	cal.selection = rd.text(root, "selection", "");
-	if (root.has("extrapolation"))  // optional (issue 11); absent: the default, linear
-	{
-		try
-		{
-			cal.extrapolation = extrapolationPolicyFromString(rd.text(root, "extrapolation", ""));
-		}
-		catch (const std::invalid_argument& e)
-		{
-			rd.fail("extrapolation", e.what());
-		}
-	}
-	const yaml est = rd.child(root, "rate_estimator", "");
-	cal.rate_estimator.kind = rd.text(est, "kind", "rate_estimator");
-	cal.rate_estimator.window_s = rd.finite(est, "window_s", "rate_estimator");
-	cal.rate_estimator.poly_order = static_cast<int>(rd.finite(est, "poly_order", "rate_estimator"));
+}
+
+GyroAxis readAxisLetter(const Reader& rd, const yaml& n, const std::string& path)
+{
+	const std::string axis = rd.text(n, "axis", path);
+	if (axis != "x" && axis != "y" && axis != "z") rd.fail((path.empty() ? "" : path + ".") + "axis", "must be x, y or z");
+	return static_cast<GyroAxis>(axis[0] - 'x');
+}
+
+/** The per-axis fields: `n` holds preset, selection, rate_estimator and calibration_runs;
+ * `bias` holds mean_bias_dph, model and fallbacks; `stats` the statistics (version 1: all three
+ * are the top level). Paths in errors are prefixed with `p` / `bp`. */
+void readAxisFields(const Reader& rd, const yaml& n, const std::string& p, const yaml& bias, const std::string& bp,
+					const yaml& stats, const std::string& sp, Calibration& cal)
+{
+	const auto at = [](const std::string& base, const std::string& key) { return base.empty() ? key : base + "." + key; };
+	cal.preset = rd.text(n, "preset", p);
+	cal.selection = rd.text(n, "selection", p);
+	const yaml est = rd.child(n, "rate_estimator", p);
+	const std::string ep = at(p, "rate_estimator");
+	cal.rate_estimator.kind = rd.text(est, "kind", ep);
+	cal.rate_estimator.window_s = rd.finite(est, "window_s", ep);
+	cal.rate_estimator.poly_order = static_cast<int>(rd.finite(est, "poly_order", ep));
 	try
 	{
 		cal.rate_estimator.validate();
 	}
 	catch (const std::invalid_argument& e)
 	{
-		rd.fail("rate_estimator", e.what());
+		rd.fail(ep, e.what());
 	}
-	cal.mean_bias_dph = rd.bounded(root, "mean_bias_dph", "", -kMaxCoef_dph, kMaxCoef_dph, kCoefWhy);
-	for (const auto& r : rd.seq(root, "calibration_runs", "")) cal.runs.push_back(yaml(r).as<std::string>());
+	cal.mean_bias_dph = rd.bounded(bias, "mean_bias_dph", bp, -kMaxCoef_dph, kMaxCoef_dph, kCoefWhy);
+	// Extrapolation policy (issue 11): in the bias section (version 2) or at the top (version 1
+	// files written after it was added); a version 1 file without it was made for clamping.
+	if (bias.has("extrapolation"))
+	{
+		try
+		{
+			cal.extrapolation = extrapolationPolicyFromString(rd.text(bias, "extrapolation", bp));
+		}
+		catch (const std::invalid_argument& e)
+		{
+			rd.fail(at(bp, "extrapolation"), e.what());
+		}
+	}
+	else if (bp.empty())
+		cal.extrapolation = ExtrapolationPolicy::Clamp;
+	for (const auto& r : rd.seq(n, "calibration_runs", p)) cal.runs.push_back(yaml(r).as<std::string>());
 	const auto checkLayout = [&](const BiasModel& m, const std::string& path) {
-		for (const auto& n : m.features.thermistors())
+		for (const auto& name : m.features.thermistors())
 		{
 			bool found = false;
-			for (const auto& t : cal.layout) found |= t.name == n;
-			if (!found) rd.fail(path, "uses thermistor '" + n + "', which is not in sensor.thermistors");
+			for (const auto& t : cal.layout) found |= t.name == name;
+			if (!found) rd.fail(path, "uses thermistor '" + name + "', which is not in sensor.thermistors");
 		}
 	};
-	cal.model = readModel(rd, rd.child(root, "model", ""), "model");
-	checkLayout(cal.model, "model");
-	if (!cal.model.dropped.empty()) rd.fail("model.dropped", "must be empty for the main model");
-	const auto fbs = rd.seq(root, "fallbacks", "");
+	const std::string mp = at(bp, "model");
+	cal.model = readModel(rd, rd.child(bias, "model", bp), mp);
+	checkLayout(cal.model, mp);
+	if (!cal.model.dropped.empty()) rd.fail(mp + ".dropped", "must be empty for the main model");
+	const auto fbs = rd.seq(bias, "fallbacks", bp);
 	for (std::size_t i = 0; i < fbs.size(); i++)
 	{
-		const std::string p = "fallbacks[" + std::to_string(i) + "]";
-		BiasModel m = readModel(rd, yaml(fbs[i]), p);
-		checkLayout(m, p);
+		const std::string fp = at(bp, "fallbacks[" + std::to_string(i) + "]");
+		BiasModel m = readModel(rd, yaml(fbs[i]), fp);
+		checkLayout(m, fp);
 		if (m.dropped.empty() || !cal.model.features.references(m.dropped))
-			rd.fail(p + ".dropped", "must name a thermistor of the main model");
-		if (m.features.references(m.dropped)) rd.fail(p, "uses its own dropped thermistor '" + m.dropped + "'");
+			rd.fail(fp + ".dropped", "must name a thermistor of the main model");
+		if (m.features.references(m.dropped)) rd.fail(fp, "uses its own dropped thermistor '" + m.dropped + "'");
 		cal.fallbacks.push_back(std::move(m));
 	}
-	const yaml st = rd.child(root, "statistics", "");
-	cal.in_sample = readFigures(rd, rd.child(st, "in_sample", "statistics"), "statistics.in_sample");
-	cal.held_out = readFigures(rd, rd.child(st, "held_out", "statistics"), "statistics.held_out");
-	cal.validation = readFigures(rd, rd.child(st, "validation", "statistics"), "statistics.validation");
-	return cal;
+	const std::string stp = at(sp, "statistics");
+	const yaml st = rd.child(stats, "statistics", sp);
+	cal.in_sample = readFigures(rd, rd.child(st, "in_sample", stp), stp + ".in_sample");
+	cal.held_out = readFigures(rd, rd.child(st, "held_out", stp), stp + ".held_out");
+	cal.validation = readFigures(rd, rd.child(st, "validation", stp), stp + ".validation");
 }
-}  // namespace
 
-Calibration calibrationFromYaml(const std::string& text, const std::string& source)
+CalibrationSet parseCalibrationYaml(const std::string& text, const std::string& source)
+{
+	Reader rd{source};
+	requireSafeYamlText(text, source);  // size, nesting depth, aliases, UTF-8: before MRPT's parser
+	yaml root;
+	try
+	{
+		root = yaml::FromText(text);
+	}
+	catch (const std::exception& e)
+	{
+		throw std::invalid_argument(source + ": not valid YAML: " + oneLineErrorMessage(e.what()));
+	}
+	if (!root.isMap()) rd.fail("(top)", "expected a YAML map");
+	if (rd.text(root, "format", "") != kFormat) rd.fail("format", std::string("expected ") + kFormat);
+	const double version = rd.finite(root, "version", "");
+	if (version != 1 && version != kVersion) rd.fail("version", "unsupported version " + num(version) + " (this build reads 1 and 2)");
+	const yaml sensor = rd.child(root, "sensor", "");
+	Calibration common;
+	readLayout(rd, sensor, common);
+	CalibrationSet set;
+	if (version == 1)
+	{
+		// Single axis, bias only, latitude unknown: the bias holds whatever Earth rate the runs saw.
+		Calibration cal = common;
+		cal.axis = readAxisLetter(rd, sensor, "sensor");
+		readAxisFields(rd, root, "", root, "", root, "", cal);
+		set.axes.push_back(std::move(cal));
+		return set;
+	}
+	common.latitude_deg = rd.number(root, "latitude_deg", "");
+	if (!std::isnan(common.latitude_deg) && !(std::abs(common.latitude_deg) <= 90))
+		rd.fail("latitude_deg", "must be within [-90, 90] or .nan (unknown)");
+	try
+	{
+		common.earth_rate = earthRateHandlingFromString(rd.text(rd.child(root, "earth_rate", ""), "handling", "earth_rate"));
+	}
+	catch (const std::invalid_argument& e)
+	{
+		if (std::string(e.what()).rfind(source, 0) == 0) throw;
+		rd.fail("earth_rate.handling", e.what());
+	}
+	const auto axes = rd.seq(root, "axes", "");
+	if (axes.empty() || axes.size() > 3) rd.fail("axes", "expected 1 to 3 axis entries");
+	for (std::size_t i = 0; i < axes.size(); i++)
+	{
+		const std::string p = "axes[" + std::to_string(i) + "]";
+		const yaml a(axes[i]);
+		Calibration cal = common;
+		cal.axis = readAxisLetter(rd, a, p);
+		for (const auto& other : set.axes)
+			if (other.axis == cal.axis) rd.fail(p + ".axis", std::string("axis ") + axisLetter(cal.axis) + " is listed twice");
+		readAxisFields(rd, a, p, rd.child(a, "bias", p), p + ".bias", a, p, cal);
+		if (a.has("scale_factor"))
+		{
+			cal.scale_factor = readScaleFactor(rd, a["scale_factor"], p + ".scale_factor");
+			bool found = false;
+			for (const auto& t : cal.layout) found |= t.name == cal.scale_factor->thermistor;
+			if (!found)
+				rd.fail(p + ".scale_factor.thermistor",
+						"'" + cal.scale_factor->thermistor + "' is not in sensor.thermistors");
+		}
+		if (a.has("warmup")) cal.warmup = readWarmup(rd, a["warmup"], p + ".warmup");
+		set.axes.push_back(std::move(cal));
+	}
+	return set;
+}
+
+template <typename F>
+auto withFieldErrors(const std::string& source, F&& f) -> decltype(f())
 {
 	try
 	{
-		return parseCalibrationYaml(text, source);
+		return f();
 	}
 	catch (const std::invalid_argument&)
 	{
@@ -448,14 +684,65 @@ Calibration calibrationFromYaml(const std::string& text, const std::string& sour
 	}
 }
 
+std::string axesText(const CalibrationSet& set)
+{
+	std::string s;
+	for (const auto& c : set.axes) s += (s.empty() ? "" : ", ") + std::string(1, axisLetter(c.axis));
+	return s;
+}
+
+std::string readWholeFile(const std::string& path)
+{
+	return readYamlTextLimited(path);
+}
+}  // namespace
+
+CalibrationSet calibrationSetFromYaml(const std::string& text, const std::string& source)
+{
+	return withFieldErrors(source, [&] { return parseCalibrationYaml(text, source); });
+}
+
+Calibration calibrationFromYaml(const std::string& text, const std::string& source)
+{
+	CalibrationSet set = calibrationSetFromYaml(text, source);
+	if (set.axes.size() != 1)
+		throw std::invalid_argument(source + ": axes: holds " + std::to_string(set.axes.size()) + " axes (" +
+									axesText(set) + "); choose one");
+	return std::move(set.axes.front());
+}
+
+Calibration calibrationFromYaml(const std::string& text, const std::string& source, GyroAxis axis)
+{
+	CalibrationSet set = calibrationSetFromYaml(text, source);
+	for (auto& c : set.axes)
+		if (c.axis == axis) return std::move(c);
+	throw std::invalid_argument(source + ": axes: no calibration for axis " + std::string(1, axisLetter(axis)) +
+								" (the file has " + axesText(set) + ")");
+}
+
 void saveCalibrationYaml(const Calibration& cal, const std::string& path)
 {
 	writeTextFileAtomically(path, calibrationToYaml(cal));
 }
 
+void saveCalibrationSet(const CalibrationSet& set, const std::string& path)
+{
+	writeTextFileAtomically(path, calibrationSetToYaml(set));
+}
+
 Calibration loadCalibrationYaml(const std::string& path)
 {
-	return calibrationFromYaml(readYamlTextLimited(path), path);
+	return calibrationFromYaml(readWholeFile(path), path);
+}
+
+Calibration loadCalibrationYaml(const std::string& path, GyroAxis axis)
+{
+	return calibrationFromYaml(readWholeFile(path), path, axis);
+}
+
+CalibrationSet loadCalibrationSet(const std::string& path)
+{
+	return calibrationSetFromYaml(readWholeFile(path), path);
 }
 
 }  // namespace mrpt_fog

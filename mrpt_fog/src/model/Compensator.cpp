@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <limits>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <sstream>
 #include <stdexcept>
@@ -198,6 +199,18 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 		has_fallback_.push_back(fb != nullptr);
 		models_.push_back(fb ? compile(*fb, names) : Compiled{});
 	}
+	if (cal.scale_factor)
+	{
+		sf_ = cal.scale_factor;
+		for (std::size_t i = 0; i < layout.size(); i++)
+			if (layout[i].name == sf_->thermistor) sf_col_ = static_cast<int>(i);
+		if (sf_col_ < 0)
+			throw std::invalid_argument("calibration's scale-factor model reads thermistor " + sf_->thermistor +
+										", which the data layout lacks; data layout: " + describeLayout(layout));
+		sf_initial_ppm_ = sf_ppm_ = sf_->evaluate_ppm(sf_->centre_C);
+	}
+	warmup_ = cal.warmup;
+	extras_ = sf_.has_value() || warmup_.has_value();
 	use_avx2_ = avx2 && !names.empty() && names.size() <= 4;  // stepAvx2 covers 1..4 channels
 	const std::size_t padded = 4 * ((names.size() + 3) / 4);
 	temp_.assign(padded, 0.0);  // padding lanes stay 0: finite, never clamped, zero coefficients
@@ -209,6 +222,23 @@ void Compensator::reset()
 	tracker_.reset();
 	counters_ = {};
 	last_model_ = kNoSampleYet;
+	sf_ppm_ = sf_initial_ppm_;
+	power_on_s_ = std::numeric_limits<double>::quiet_NaN();
+}
+
+void Compensator::notePowerOn(double time_s) { power_on_s_ = time_s; }
+
+[[gnu::noinline]] void Compensator::applyExtras(Output& out, double time_s, double raw_dph, const double* temp_C)
+{
+	if (warmup_ && time_s >= power_on_s_) out.bias_dph += warmup_->bias_dph(time_s - power_on_s_);
+	double r = raw_dph - out.bias_dph;
+	if (sf_)
+	{
+		const double T = temp_C[sf_col_];
+		if (!std::isnan(T)) sf_ppm_ = sf_->evaluate_ppm(T);
+		r /= 1.0 + 1e-6 * sf_ppm_;
+	}
+	out.compensated_dph = r;
 }
 
 namespace
@@ -401,6 +431,22 @@ CompensatedSeries compensate(const Calibration& cal, const FogSeries& series)
 	Compensator comp(cal, series.thermistors);
 	CompensatedSeries out;
 	const std::size_t n = series.size();
+	// Turn-ons (only the warm-up term needs them): before the log, and 0 -> 1 power steps.
+	std::vector<std::size_t> turn_on;  // sample indices, ascending
+	if (cal.warmup)
+	{
+		const std::string meta = series.metadataValue("power_on_time_s");
+		if (!meta.empty())
+		{
+			char* end = nullptr;
+			const double t_on = std::strtod(meta.c_str(), &end);
+			if (!std::isfinite(t_on) || *end != '\0')
+				throw std::invalid_argument("metadata power_on_time_s: '" + meta + "' is not a time [s]");
+			comp.notePowerOn(t_on);
+		}
+		turn_on = series.turnOnSamples();
+	}
+	std::size_t next_on = 0;
 	out.time_s = series.time_s;
 	out.raw_dph = series.rate_dph[axis];
 	out.bias_dph.resize(n);
@@ -410,9 +456,11 @@ CompensatedSeries compensate(const Calibration& cal, const FogSeries& series)
 	const std::size_t nt = series.thermistorCount(), stride = std::max<std::size_t>(nt, 1), chunk = 4096;
 	std::vector<double> rows(chunk * stride);
 	std::vector<Compensator::Output> res(chunk);
-	for (std::size_t k0 = 0; k0 < n; k0 += chunk)
+	for (std::size_t k0 = 0, m = 0; k0 < n; k0 += m)
 	{
-		const std::size_t m = std::min(chunk, n - k0);
+		if (next_on < turn_on.size() && turn_on[next_on] == k0) comp.notePowerOn(series.time_s[turn_on[next_on++]]);
+		m = std::min(chunk, n - k0);
+		if (next_on < turn_on.size()) m = std::min(m, turn_on[next_on] - k0);  // stop at the next turn-on
 		for (std::size_t j = 0; j < m; j++)
 			for (std::size_t i = 0; i < nt; i++) rows[j * stride + i] = series.temp_C[i][k0 + j];
 		comp.stepBatch(m, series.time_s.data() + k0, out.raw_dph.data() + k0, rows.data(), stride, res.data());

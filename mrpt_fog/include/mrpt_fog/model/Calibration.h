@@ -37,11 +37,15 @@
  */
 
 #include <mrpt_fog/model/RateEstimator.h>
+#include <mrpt_fog/model/ScaleFactorModel.h>
 #include <mrpt_fog/model/ThermalFeatureSet.h>
+#include <mrpt_fog/model/WarmupModel.h>
 #include <mrpt_fog/obs/FogSeries.h>
 
 #include <Eigen/Dense>
 #include <cstdint>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,6 +78,13 @@ enum class FoldScheme : unsigned char
 {
 	Regimes = 0,  //!< whole thermal regimes (cooling ramp, soak, heating ramp) held out (>= 3 needed, else Blocks)
 	Blocks = 1  //!< folds x blocks_per_fold interleaved time blocks
+};
+
+/** What the bias fit does with samples taken while the table applied a rate (a closed set). */
+enum class TableSamples : unsigned char
+{
+	SubtractRate = 0,  //!< bias = gyro - applied rate (the nominal scale factor assumed)
+	Exclude = 1  //!< left out of the bias fit (they serve the scale-factor fit, ScaleFactorFit.h)
 };
 
 struct FitOptions
@@ -116,6 +127,8 @@ struct FitOptions
 	double tau_s = 100.0;  //!< averaging time of the stability figures [s]
 	bool fallbacks = true;  //!< fit one fallback model per thermistor
 	ExtrapolationPolicy extrapolation = ExtrapolationPolicy::Linear;  //!< recorded in the calibration
+	TableSamples table_samples = TableSamples::SubtractRate;
+	std::optional<GyroAxis> axis;  //!< the gyro axis to calibrate (default: the runs' first axis)
 };
 
 /** Figures of one evaluation, labelled by how they were obtained. */
@@ -178,11 +191,33 @@ struct SelectionStability
 	std::vector<std::pair<std::string, double>> term_share;  //!< each term: share of refits that include it
 };
 
+/** How the Earth rate entered a calibration's bias (a closed set). */
+enum class EarthRateHandling : unsigned char
+{
+	/** Static runs: the fitted bias holds the axis' projection of the Earth rate at the
+	 * calibration latitude (the compensator removes it with the bias). */
+	InBias = 0,
+	/** The runs' applied (table) rate already included the Earth rate: the bias is free of it. */
+	InTableRate = 1
+};
+/** "in_bias" / "in_table_rate". */
+const char* toString(EarthRateHandling h);
+/** Parses the above; throws std::invalid_argument naming the allowed values. */
+EarthRateHandling earthRateHandlingFromString(const std::string& text);
+
+/** The calibration of one gyro axis: the thermal bias model (always), and the optional
+ * scale-factor and warm-up models (absent = not fitted: the compensator then does exactly the
+ * bias-only compensation). A calibration file holds one or more of these (CalibrationSet). */
 struct Calibration
 {
 	std::string sensor_label;
 	GyroAxis axis = GyroAxis::Z;
 	std::vector<ThermistorInfo> layout;  //!< the layout the calibration was made for
+	/** Latitude of the calibration runs [deg] (NaN = unknown, e.g. a version 1 file or runs
+	 * without latitude metadata) and how the Earth rate entered the bias. File-level in the
+	 * YAML: every axis of a CalibrationSet carries the same values. */
+	double latitude_deg = std::numeric_limits<double>::quiet_NaN();
+	EarthRateHandling earth_rate = EarthRateHandling::InBias;
 	std::string preset;  //!< as given to the fit
 	std::string selection;  //!< "auto" or "none"
 	RateEstimatorSettings rate_estimator;
@@ -193,9 +228,22 @@ struct Calibration
 	std::vector<std::string> runs;  //!< labels of the calibration runs
 	FitFigures in_sample, held_out, validation;
 	SelectionStability selection_stability;  //!< see SelectionStability (not stored in v1 files)
+	std::optional<ScaleFactorModel> scale_factor;  //!< absent: nominal scale factor (s = 0)
+	std::optional<WarmupModel> warmup;  //!< absent: no turn-on term
 
 	/** Fallback model for a missing thermistor, or nullptr. */
 	const BiasModel* fallbackFor(const std::string& thermistor) const;
+};
+
+/** A calibration file's content: one Calibration per calibrated axis (1 to 3, distinct axes,
+ * same sensor label, thermistor layout, latitude and Earth-rate handling). */
+struct CalibrationSet
+{
+	std::vector<Calibration> axes;
+	/** The calibration of an axis, or nullptr. */
+	const Calibration* forAxis(GyroAxis axis) const;
+	/** Throws std::invalid_argument naming the first violation of the invariants above. */
+	void validate() const;
 };
 
 /** Fits a calibration (see the file comment). run_labels (optional) names the runs in the file
@@ -203,6 +251,10 @@ struct Calibration
  * model. */
 Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string& preset, const FitOptions& options = {},
 						   const std::vector<std::string>& run_labels = {});
+
+/** The latitude [deg] in the runs' `latitude_deg` metadata when every run states the same one,
+ * else NaN (unknown). */
+double commonLatitude_deg(const std::vector<FogSeries>& runs);
 
 /** Runs the compensator over a series (e.g. a validation run) and returns labelled figures. */
 FitFigures evaluateCalibration(const Calibration& cal, const FogSeries& series, const std::string& label,

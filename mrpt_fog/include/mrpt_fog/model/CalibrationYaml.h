@@ -2,9 +2,12 @@
 #pragma once
 
 /** \file CalibrationYaml.h
- * Calibration files (YAML, read with mrpt::containers::yaml). Human-readable: the sensor layout
- * the calibration is for, the preset and selection, the rate-estimator settings, and for the
- * main model and each fallback model: the signals with their normalisation (centre, scale) and
+ * Calibration files (YAML, read with mrpt::containers::yaml), version 2 (layout: docs/model.md;
+ * version 1 files, single axis and bias only, are still read). Human-readable: the sensor
+ * layout the calibration is for, the latitude of the calibration runs and how the Earth rate
+ * entered the bias; then per gyro axis the preset and selection, the rate-estimator settings,
+ * the bias model (main model and fallbacks), the optional scale_factor and warmup sections, and
+ * the statistics. For the main bias model and each fallback model: the signals with their normalisation (centre, scale) and
  * calibrated range [min, max] with units, the terms by name with coefficient [deg/h] and its
  * standard deviation, the coefficient covariance, and the fit statistics; then the in-sample,
  * held-out and validation figures, each labelled. Numbers are written with 17 significant
@@ -23,14 +26,23 @@
 
 namespace mrpt_fog
 {
-/** YAML text of a calibration. */
+/** YAML text (version 2) of a one-axis calibration / of a set of axes (validated first). */
 std::string calibrationToYaml(const Calibration& cal);
-/** Parses and validates YAML text; `source` names the file in error messages. */
+std::string calibrationSetToYaml(const CalibrationSet& set);
+/** Parses and validates YAML text (version 1 or 2); `source` names the file in error messages. */
+CalibrationSet calibrationSetFromYaml(const std::string& text, const std::string& source = "calibration");
+/** The file's only axis (throws std::invalid_argument when it holds several, naming them). */
 Calibration calibrationFromYaml(const std::string& text, const std::string& source = "calibration");
+/** The calibration of `axis` (throws std::invalid_argument when the file has none for it). */
+Calibration calibrationFromYaml(const std::string& text, const std::string& source, GyroAxis axis);
 
-/** Writes atomically (throws std::runtime_error naming the path on failure). */
+/** Write atomically (throw std::runtime_error naming the path on failure). */
 void saveCalibrationYaml(const Calibration& cal, const std::string& path);
-/** Reads and validates (throws std::invalid_argument naming the file and field). */
+void saveCalibrationSet(const CalibrationSet& set, const std::string& path);
+/** Read and validate (throw std::invalid_argument naming the file and field): the file's only
+ * axis, a given axis, or all axes. */
 Calibration loadCalibrationYaml(const std::string& path);
+Calibration loadCalibrationYaml(const std::string& path, GyroAxis axis);
+CalibrationSet loadCalibrationSet(const std::string& path);
 
 }  // namespace mrpt_fog

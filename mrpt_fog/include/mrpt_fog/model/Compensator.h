@@ -3,7 +3,14 @@
 
 /** \file Compensator.h
  * Real-time thermal-bias compensation, sample by sample, causal, O(1) per sample:
- *   compensated_dph = raw_dph - bias_dph(temperatures, causal rates).
+ *   compensated_dph = raw_dph - bias_dph(temperatures, causal rates)
+ * and, when the calibration has them (CalibrationYaml.h, version 2), a warm-up term in the bias
+ * and the scale factor versus temperature:
+ *   bias_dph += warmup(t - t_on)   (from a known turn-on t_on on: notePowerOn)
+ *   compensated_dph = (raw_dph - bias_dph) / (1 + 1e-6 s_ppm(T))
+ * with T the scale-factor thermistor's current reading (clamped to its calibrated range; while
+ * it is missing the last valid s is held, before any valid reading s at the range centre).
+ * Without those sections the per-sample work is one extra predictable branch.
  *
  * Rates come from the causal estimator recorded in the calibration (a calibration fitted with
  * the non-causal "savgol" estimator is refused: it cannot run in real time). Each model is
@@ -34,6 +41,8 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -98,6 +107,10 @@ class Compensator
 	void stepBatch(std::size_t n, const double* time_s, const double* raw_dph, const double* temp_C,
 				   std::size_t temp_stride, Output* out);
 	const CompensationCounters& counters() const { return counters_; }
+	/** A turn-on of the gyro at time_s [s]: the warm-up term (if the calibration has one) runs
+	 * from there. Without any call no warm-up term is added (the turn-on time is unknown). */
+	void notePowerOn(double time_s);
+	/** Forgets the state (rates, counters, the turn-on, the held scale factor). */
 	void reset();
 	/** The build of the per-sample code in use: "avx2" or "portable". */
 	const char* kernelBuild() const { return use_avx2_ ? "avx2" : "portable"; }
@@ -127,6 +140,8 @@ class Compensator
 	double addGroups(const Compiled& m, const double* temp_C, double sum, int& clamped) const;  // sum + the groups' terms
 	/** Rare path after a clamp: the extrapolation policy's correction [deg/h] and the range counters. */
 	double outsideRange(const Compiled& m, const double* temp_C);
+	/** Warm-up and scale factor (only when the calibration has one of them): out of line. */
+	void applyExtras(Output& out, double time_s, double raw_dph, const double* temp_C);
 
 	double window_s_;
 	double half_window_s_;
@@ -142,6 +157,12 @@ class Compensator
 	CompensationCounters counters_;
 	static constexpr int kNoSampleYet = -2;  //!< last_model_ before the first sample
 	int last_model_ = kNoSampleYet;
+	bool extras_ = false;  // a scale-factor or warm-up model is present
+	std::optional<ScaleFactorModel> sf_;
+	int sf_col_ = -1;  // layout column of the scale-factor thermistor
+	double sf_ppm_ = 0, sf_initial_ppm_ = 0;  // held value; value before any valid reading
+	std::optional<WarmupModel> warmup_;
+	double power_on_s_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 /** Output of compensate(): columns of the same length as the input. */
@@ -156,7 +177,9 @@ struct CompensatedSeries
 };
 
 /** Compensates the calibrated axis of a series (validated first; throws std::invalid_argument
- * on a layout mismatch or a missing axis). */
+ * on a layout mismatch or a missing axis). Turn-ons for the warm-up term: the series' metadata
+ * `power_on_time_s` (time_s of the turn-on that precedes or starts the log) and every 0 -> 1
+ * step of its power column. */
 CompensatedSeries compensate(const Calibration& cal, const FogSeries& series);
 
 }  // namespace mrpt_fog

@@ -134,7 +134,12 @@ template <std::size_t NC, int W>
 		counters_.model_switches += last_model_ != kNoSampleYet;
 		last_model_ = model;
 	}
-	if (model == 0 && clamped == 0 && !warm) return out;  // the common case: no flag, no other counter
+	if (model == 0 && clamped == 0 && !warm)  // the common case: no flag, no other counter
+	{
+		// warm-up term and scale factor, only when the calibration has one (out of line)
+		if (__builtin_expect(extras_, 0)) applyExtras(out, time_s, raw_dph, temp_C);
+		return out;
+	}
 	if (clamped)
 	{
 		out.bias_dph += outsideRange(models_[model], T);
@@ -149,6 +154,7 @@ template <std::size_t NC, int W>
 	counters_.clamped_samples += clamped > 0;
 	counters_.clamped_signals += static_cast<std::size_t>(clamped);
 	counters_.warmup_samples += warm;
+	if (extras_) applyExtras(out, time_s, raw_dph, temp_C);
 	return out;
 }
 
