@@ -185,12 +185,16 @@ int main(int argc, char** argv)
 		{
 			std::printf("  selection stability: %.0f %% of %zu block-bootstrap refits chose this model%s\n",
 						100.0 * st.chosen_share, st.resamples,
-						st.stable ? " (stable)" : ": UNSTABLE, the data do not settle the choice; alternatives:");
+						st.stable ? " (stable)" : ": UNSTABLE (< 90 %), the data do not settle the choice; alternatives:");
 			if (!st.stable)
 				for (const auto& a : st.alternatives)
 					std::printf("    %.0f %%  held-out RMS %.4g deg/h  %s\n", 100.0 * a.share, a.held_out_rms_dph,
 								a.terms.c_str());
 		}
+		if (cal.rate_gaps)
+			std::printf("  note: %zu gap(s) longer than the %g s rate window (a burst log?): temperature rates cannot "
+						"be estimated across a gap, so the samples before each restart has a rate are left out of the fit\n",
+						cal.rate_gaps, cal.rate_estimator.window_s);
 		std::printf("  tau = %g s\n", opt.tau_s);
 		std::vector<const FitFigures*> figs{&cal.in_sample, &cal.held_out};
 		if (!arg_val.getValue().empty()) figs.push_back(&cal.validation);
@@ -225,6 +229,7 @@ int main(int argc, char** argv)
 				j["validation"]["out_of_range"] = app::outOfRangeJson(range, cal.extrapolation);
 			}
 			j["extrapolation"] = toString(cal.extrapolation);
+			j["rate_gaps"] = static_cast<unsigned long>(cal.rate_gaps);
 			const auto& st = cal.selection_stability;
 			JsonValue& sj = j["selection_stability"] = JsonValue::object();
 			sj["resamples"] = static_cast<unsigned long>(st.resamples);

@@ -306,3 +306,26 @@ TEST(Calibration, RefusesDataThatCannotSupportTheModel)
 	for (auto& v : allNaN.temp_C[0]) v = std::nan("");
 	EXPECT_THROW(fitCalibration({allNaN}, "M1:Ti1"), std::invalid_argument);
 }
+
+// Burst logs: gaps longer than the rate window are counted (fog-calibrate says that rates cannot
+// be estimated across them); the samples without a rate after each restart are left out of the fit.
+TEST(Calibration, GapsLongerThanTheRateWindowAreCounted)
+{
+	const FogSeries A = fogtest::makeCoilRun("A", 91);
+	FogSeries bursts;
+	bursts.thermistors = A.thermistors;
+	bursts.has_axis = A.has_axis;
+	bursts.temp_C.assign(A.thermistorCount(), {});
+	std::size_t gaps = 0;
+	for (std::size_t k = 0; k < A.size(); k++)
+	{
+		const bool keep = (k / 100) % 3 != 2;  // 100 samples of every 300 dropped: gaps of 1000 s at 10 s sampling
+		if (!keep) continue;
+		if (!bursts.empty() && A.time_s[k] - bursts.time_s.back() > 60.0) gaps++;
+		bursts.appendSampleFrom(A, k);
+	}
+	ASSERT_GT(gaps, 10u);
+	const Calibration cal = fitCalibration({bursts}, "multipoint:Ti1,To1");
+	EXPECT_EQ(cal.rate_gaps, gaps);
+	EXPECT_EQ(fitCalibration({A}, "multipoint:Ti1,To1").rate_gaps, 0u);
+}

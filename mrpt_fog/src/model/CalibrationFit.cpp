@@ -887,6 +887,8 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 
 	Calibration cal;
 	cal.selection_stability = stability;
+	for (const auto& r : runs)
+		for (std::size_t k = 1; k < r.size(); k++) cal.rate_gaps += r.time_s[k] - r.time_s[k - 1] > opt.rate_estimator.window_s;
 	cal.sensor_label = first.sensor_label;
 	cal.axis = axis;
 	cal.layout = first.thermistors;

@@ -66,7 +66,7 @@ TEST(GeneralizationBenchFull, FogSimTuningSeeds)
 	checkTargets(runSet(cases, "fog-sim devices, tuning seeds 1..16"));
 }
 
-TEST(GeneralizationBenchFull, SectorCoilCoilIndependentGenerator)
+TEST(GeneralizationBenchFull, SectorCoilIndependentGenerator)
 {
 	std::vector<BenchCase> cases;
 	for (std::uint64_t s = 1; s <= 8; s++) cases.push_back({Generator::SectorCoil, s});
