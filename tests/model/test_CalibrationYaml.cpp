@@ -96,6 +96,24 @@ TEST(CalibrationYaml, ExtrapolationPolicyIsStored)
 	EXPECT_NE(e.find("cal.yaml: axes[0].bias.extrapolation:"), std::string::npos) << e;
 }
 
+// The stability of the term choice (issue 11) is stored in the bias section and read back.
+TEST(CalibrationYaml, SelectionStabilityRoundTrips)
+{
+	Calibration c = cal();
+	c.selection_stability.resamples = 10;
+	c.selection_stability.chosen_share = 0.4;
+	c.selection_stability.stable = false;
+	c.selection_stability.alternatives = {{"T(Ti1)^1 + dT/dt(Ti1)^1", 0.6, 0.0123}};
+	const Calibration back = calibrationFromYaml(calibrationToYaml(c), "cal.yaml");
+	EXPECT_EQ(back.selection_stability.resamples, 10u);
+	EXPECT_EQ(back.selection_stability.chosen_share, 0.4);
+	EXPECT_FALSE(back.selection_stability.stable);
+	ASSERT_EQ(back.selection_stability.alternatives.size(), 1u);
+	EXPECT_EQ(back.selection_stability.alternatives[0].terms, "T(Ti1)^1 + dT/dt(Ti1)^1");
+	EXPECT_EQ(back.selection_stability.alternatives[0].share, 0.6);
+	EXPECT_EQ(back.selection_stability.alternatives[0].held_out_rms_dph, 0.0123);
+}
+
 // Every broken field gives "<file>: <field>: <reason>".
 TEST(CalibrationYaml, BadFilesGiveFieldErrors)
 {

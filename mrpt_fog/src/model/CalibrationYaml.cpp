@@ -453,6 +453,18 @@ void writeAxis(std::ostringstream& o, const Calibration& cal)
 		s.replace(ind.size() + 2, 2, "- ");
 		o << s;
 	}
+	if (cal.selection_stability.resamples > 0)  // optional (issue 11): how stable the term choice is
+	{
+		const auto& st = cal.selection_stability;
+		o << ind << "  selection_stability:  # refits on block-bootstrap resamples of the calibration data\n";
+		o << ind << "    resamples: " << st.resamples << "\n";
+		o << ind << "    chosen_share: " << num(st.chosen_share) << "  # share of refits that chose this model\n";
+		o << ind << "    stable: " << (st.stable ? "true" : "false") << "\n";
+		o << ind << "    alternatives:" << (st.alternatives.empty() ? " []" : "") << "\n";
+		for (const auto& a : st.alternatives)
+			o << ind << "      - {terms: " << str(a.terms) << ", share: " << num(a.share)
+			  << ", held_out_rms_dph: " << num(a.held_out_rms_dph) << "}\n";
+	}
 	if (cal.scale_factor) writeScaleFactor(o, *cal.scale_factor, ind);
 	if (cal.warmup) writeWarmup(o, *cal.warmup, ind);
 	o << ind << "statistics:  # of the bias compensation\n";
@@ -588,6 +600,29 @@ void readAxisFields(const Reader& rd, const yaml& n, const std::string& p, const
 			rd.fail(fp + ".dropped", "must name a thermistor of the main model");
 		if (m.features.references(m.dropped)) rd.fail(fp, "uses its own dropped thermistor '" + m.dropped + "'");
 		cal.fallbacks.push_back(std::move(m));
+	}
+	if (bias.has("selection_stability"))  // optional (issue 11)
+	{
+		const std::string ssp = at(bp, "selection_stability");
+		const yaml ss = rd.child(bias, "selection_stability", bp);
+		auto& st = cal.selection_stability;
+		const double n = rd.bounded(ss, "resamples", ssp, 0, 1e6, "a count of refits");
+		st.resamples = static_cast<std::size_t>(n);
+		st.chosen_share = rd.bounded(ss, "chosen_share", ssp, 0, 1, "a share");
+		const std::string stable = rd.text(ss, "stable", ssp);
+		if (stable != "true" && stable != "false") rd.fail(ssp + ".stable", "must be true or false");
+		st.stable = stable == "true";
+		const auto alts = rd.seq(ss, "alternatives", ssp);
+		for (std::size_t i = 0; i < alts.size(); i++)
+		{
+			const std::string ap = ssp + ".alternatives[" + std::to_string(i) + "]";
+			const yaml a(alts[i]);
+			SelectionStability::Alternative alt;
+			alt.terms = rd.text(a, "terms", ap);
+			alt.share = rd.bounded(a, "share", ap, 0, 1, "a share");
+			alt.held_out_rms_dph = rd.bounded(a, "held_out_rms_dph", ap, 0, kMaxCoef_dph, kCoefWhy);
+			st.alternatives.push_back(alt);
+		}
 	}
 	const std::string stp = at(sp, "statistics");
 	const yaml st = rd.child(stats, "statistics", sp);

@@ -230,7 +230,7 @@ struct Calibration
 	double mean_bias_dph = 0.0;  //!< used when no model applies (>= 2 thermistors missing)
 	std::vector<std::string> runs;  //!< labels of the calibration runs
 	FitFigures in_sample, held_out, validation;
-	SelectionStability selection_stability;  //!< see SelectionStability (not stored in v1 files)
+	SelectionStability selection_stability;  //!< see SelectionStability (stored in the bias section of version 2 files)
 	std::optional<ScaleFactorModel> scale_factor;  //!< absent: nominal scale factor (s = 0)
 	std::optional<WarmupModel> warmup;  //!< absent: no turn-on term
 	/** Gaps in the calibration runs longer than the rate window (burst logs): dT/dt cannot be
