@@ -363,6 +363,41 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 				for (const auto& ne : sel.named)
 					if (ne.id == term.id && ne.ci_low <= 0 && ne.ci_high >= 0)
 						reason = "its 95 % interval includes zero";
+			if (reason.empty() && sig2)
+			{
+				// held out: with the coefficients fitted on the analysed run, the effect must shrink
+				// the OTHER run's residual (a slowly varying regressor fitted to slow bias wander
+				// can pass both significance tests and still not generalise)
+				AugmentedModel without = sel.model;
+				without.effects.erase(std::remove_if(without.effects.begin(), without.effects.end(),
+													 [&](const EffectTerm& t) { return t.id == term.id; }),
+									  without.effects.end());
+				const Eigen::MatrixXd X1m = without.design(base1, sig1);
+				std::vector<Eigen::Index> rows;
+				for (std::size_t k = 0; k < sig1.size(); ++k)
+					if (sel.fit_rows[k]) rows.push_back(static_cast<Eigen::Index>(k));
+				Eigen::MatrixXd A(static_cast<Eigen::Index>(rows.size()), X1m.cols());
+				Eigen::VectorXd yv(static_cast<Eigen::Index>(rows.size()));
+				for (std::size_t i = 0; i < rows.size(); ++i)
+				{
+					A.row(static_cast<Eigen::Index>(i)) = X1m.row(rows[i]);
+					yv(static_cast<Eigen::Index>(i)) = sig1.bias_dph[static_cast<std::size_t>(rows[i])];
+				}
+				const Eigen::VectorXd coefWithout = A.colPivHouseholderQr().solve(yv);
+				const auto rWith = residualWithCoefficients(sel.model.design(*base2, *sig2), *sig2, sel.coef_after);
+				const auto rWithout = residualWithCoefficients(without.design(*base2, *sig2), *sig2, coefWithout);
+				const double with2 = rWith.squaredNorm(), without2 = rWithout.squaredNorm();
+				if (!(with2 < without2))
+				{
+					const double nu = static_cast<double>(std::max<std::size_t>(sig2->usableCount(), 1));
+					char buf[200];
+					std::snprintf(buf, sizeof buf,
+								  "held out: with its coefficient from the analysed run it does not shrink the other "
+								  "run's residual (RMS %.4g without, %.4g with, deg/h)",
+								  std::sqrt(without2 / nu), std::sqrt(with2 / nu));
+					reason = buf;
+				}
+			}
 			if (!reason.empty()) reasons.emplace_back(term.id, reason);
 		}
 		if (!reasons.empty())
