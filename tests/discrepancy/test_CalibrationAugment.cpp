@@ -20,13 +20,21 @@ TEST(CalibrationAugment, TempPolyOrderBecomesCompensatorTermsAndClosesTheGap)
 	const auto r1 = fogtest::makeLumpedCoilRun(o1), r2 = fogtest::makeLumpedCoilRun(o2);
 	NamedEffect poly, warm;
 	poly.id = "temp_poly_order";
-	warm.id = "warmup";
-	const auto aug = augmentCalibration("M2:Ca@3/1", {poly, warm}, r1.series, &r2.series, "run2");
-	EXPECT_EQ(aug.added_terms, (std::vector<std::string>{"T(Ca)^4", "T(Ca)^5"}));
+	warm.id = "warmup";  // named with its amplitude and tau: written as the v2 warm-up term
+	warm.coefficient = 0.02;
+	warm.theta = 400;
+	NamedEffect sf;
+	sf.id = "scale_factor_temp";
+	const auto aug = augmentCalibration("M2:Ca@3/1", {poly, warm, sf}, r1.series, &r2.series, "run2");
+	EXPECT_EQ(aug.added_terms, (std::vector<std::string>{"T(Ca)^4", "T(Ca)^5", "warmup(amplitude_dph, tau_s)"}));
+	ASSERT_TRUE(aug.augmented.warmup.has_value());
+	EXPECT_EQ(aug.augmented.warmup->amplitude_dph, 0.02);
+	EXPECT_EQ(aug.augmented.warmup->tau_s, 400);
 	ASSERT_EQ(aug.not_written.size(), 1u);
-	EXPECT_EQ(aug.not_written[0].first, "warmup");
+	EXPECT_EQ(aug.not_written[0].first, "scale_factor_temp");
 	const auto names = aug.augmented.model.features.termNames();
-	for (const auto& t : aug.added_terms) EXPECT_NE(std::find(names.begin(), names.end(), t), names.end()) << t;
+	for (const auto& t : aug.added_terms)
+		if (t.rfind("warmup", 0) != 0) EXPECT_NE(std::find(names.begin(), names.end(), t), names.end()) << t;
 	ASSERT_TRUE(aug.has_confirm);
 	// the hidden part not absorbed by the base is 3 x the noise RMS (0.0141 deg/h): adding the
 	// terms must remove most of it on the other run, through the compensator

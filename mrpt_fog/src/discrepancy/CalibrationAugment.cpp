@@ -3,6 +3,7 @@
 #include <mrpt_fog/model/CalibrationYaml.h>
 
 #include <algorithm>
+#include <optional>
 #include <cstdio>
 #include <stdexcept>
 
@@ -34,6 +35,7 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 {
 	AugmentedCalibration out;
 	out.base = calibrationUnderTest(text, run);
+	std::optional<WarmupModel> warmup;
 	std::vector<std::string> terms;
 	for (const auto& n : out.base.model.features.termNames())
 		if (n != "1") terms.push_back(n);
@@ -67,24 +69,54 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 		}
 		else if (ne.id == "temp_poly_order" && p < 5)
 			for (int k = p + 1; k <= std::min(p + 2, 5); ++k) add("T(" + S + ")^" + std::to_string(k));
+		else if (ne.id == "warmup" && ne.theta > 0 && !run.power.empty() && run.power.front() == 0.0)
+		{
+			// calibration v2 warm-up term (the compensator adds it after each turn-on); only when
+			// the run starts with the gyro off: then the candidate had one column, its coefficient
+			// is the amplitude at the turn-on
+			WarmupModel w;
+			w.amplitude_dph = ne.coefficient;
+			w.amplitude_std_dph = (ne.ci_high - ne.ci_low) / (2 * 1.959964);
+			w.tau_s = ne.theta;
+			w.turn_ons = run.turnOnSamples().size();
+			warmup = w;
+			out.added_terms.push_back("warmup(amplitude_dph, tau_s)");
+		}
 		else
 			out.not_written.emplace_back(
 				ne.id, ne.id == "radial_gradient" || ne.id == "gradient_rate"
 						   ? "needs an inner and an outer thermistor"
 						   : ne.id == "temp_poly_order" ? "the temperature polynomial is already of order 5"
-														: "no compensator term for it in this calibration schema");
+						   : ne.id == "warmup"
+							   ? "the analysed run starts powered: the warm-up amplitude is not separated from the "
+								 "unknown earlier turn-on"
+						   : ne.id == "scale_factor_temp"
+							   ? "the candidate uses the mean of all thermistors, the calibration's scale-factor model "
+								 "one thermistor: fit it with fog-calibrate from rate-table runs"
+							   : "no compensator term for it in this calibration schema");
 	}
-	if (out.added_terms.empty())
+	std::size_t thermal_added = 0;
+	for (const auto& t : out.added_terms) thermal_added += t.rfind("warmup", 0) == 0 ? 0 : 1;
+	if (thermal_added == 0)
 		out.augmented = out.base;
 	else
 	{
 		std::string preset = "terms:";
-		for (std::size_t i = 0; i < terms.size(); ++i) preset += (i ? ";" : "") + terms[i];
+		bool first = true;
+		for (const auto& t : terms)
+			if (t.rfind("warmup", 0) != 0)
+			{
+				preset += (first ? "" : ";") + t;
+				first = false;
+			}
 		FitOptions fo;
 		fo.selection = "none";
 		fo.rate_estimator = out.base.rate_estimator;
 		out.augmented = fitCalibration({run}, preset, fo);
+		out.augmented.scale_factor = out.base.scale_factor;
+		out.augmented.warmup = out.base.warmup;
 	}
+	if (warmup) out.augmented.warmup = *warmup;
 	if (confirm)
 	{
 		out.has_confirm = true;

@@ -13,8 +13,11 @@
  *   radial_gradient  dT(IN-OUT)^1          gradient_rate  d/dt dT(IN-OUT)^1
  *   shupe_rate       dT/dt(IN)^1 and d/dt dT(IN-OUT)^1 (without an OUT: dT/dt(S)^1)
  *   temp_poly_order  T(S)^(p+1), T(S)^(p+2) (at most 5)
- * Effects without a compensator term in this calibration schema (warmup, scale_factor_temp,
- * magnetic, hysteresis, thermistor_lag) are listed in `not_written` with the reason.
+ *   warmup           the calibration's (v2) warm-up term: amplitude and tau as named, when the
+ *                    analysed run starts with the gyro off (else the amplitude is not separable)
+ * Effects without a compensator term (scale_factor_temp: the candidate's temperature is the
+ * mean of all thermistors, the calibration's scale-factor model reads one; magnetic,
+ * hysteresis, thermistor_lag) are listed in `not_written` with the reason.
  * The base calibration: the YAML given, or fitCalibration(run, preset) with default options
  * (what fog-calibrate writes). The augmented one: the base's selected terms plus the added
  * ones, fitted by plain least squares on the same run (selection "none": the named terms are
