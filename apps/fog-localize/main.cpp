@@ -154,7 +154,18 @@ int main(int argc, char** argv)
 		if (!drive.latitude_deg) throw std::runtime_error(drive_path + ": no latitude_deg in the FOG metadata");
 		drift::HeadingOptions hopt;
 		hopt.latitude_deg = *drive.latitude_deg;
-		const double cal_earth_dph = units::kEarthRate_dph * std::sin(hopt.latitude_deg * units::kDegToRad);
+		// The Earth rate the calibration's bias absorbed, at the latitude the file records (a file
+		// without one is taken as made at the drive's latitude).
+		const Calibration cal_file = loadCalibrationYaml(cal_path);
+		double cal_earth_dph = 0.0;
+		if (cal_file.earth_rate == EarthRateHandling::InBias)
+		{
+			const double cal_lat_deg = std::isfinite(cal_file.latitude_deg) ? cal_file.latitude_deg : hopt.latitude_deg;
+			if (!std::isfinite(cal_file.latitude_deg))
+				std::printf("fog-localize: %s records no latitude: assuming the drive's %.4f deg\n", cal_path.c_str(),
+							hopt.latitude_deg);
+			cal_earth_dph = units::kEarthRate_dph * std::sin(cal_lat_deg * units::kDegToRad);
+		}
 		std::vector<double> comp = drift::compensatedRate_dph(drive.fog, cal_path, true);
 		for (double& r : comp) r += cal_earth_dph;  // the static calibration absorbed it: removed once, by the strapdown
 		const std::vector<double> t_fog = drift::absoluteTimes(drive.fog);

@@ -7,13 +7,15 @@
  *    CObservationRobotPose "GROUND_TRUTH") with the library's checked reader;
  * 2. compensate the gyro's thermal bias with the calibration (causal Compensator);
  * 3. integrate heading with StrapdownAttitude: FOG samples are interval averages, the Earth
- *    rate the static calibration absorbed is added back once, and the Earth rate at the drive's
- *    latitude is removed by the attitude update;
+ *    rate the static calibration absorbed (at the latitude the calibration file records) is
+ *    added back once, and the Earth rate at the drive's latitude is removed by the attitude
+ *    update;
  * 4. dead-reckon with the wheel distances and write CObservationOdometry for pf-localization.
  * Prints the final heading and position error when the drive has a ground truth. */
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CObservationRobotPose.h>
 #include <mrpt_fog/io/FogLogIO.h>
+#include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/Compensator.h>
 #include <mrpt_fog/obs/Units.h>
@@ -72,11 +74,24 @@ try
 	if (lat_text.empty()) throw std::runtime_error(drive_path + ": no latitude_deg in the FOG metadata");
 	const double lat_deg = std::stod(lat_text);
 
-	// 2. Compensation (z gyro). The calibration was static at the drive's latitude, so its bias
-	// holds the vertical Earth rate there: add it back once.
+	// 2. Compensation (z gyro). A static calibration's bias holds the vertical Earth rate at the
+	// calibration site; the file (version 2) records that site's latitude and how the Earth rate
+	// was handled, so it is added back exactly once. A file without a latitude (version 1, or
+	// runs without latitude_deg) is taken as made at the drive's latitude, and says so.
 	const Calibration cal = loadCalibrationYaml(cal_path);
 	const CompensatedSeries comp = compensate(cal, drive.fog);
-	const double cal_earth_dph = units::kEarthRate_dph * std::sin(lat_deg * units::kDegToRad);
+	double cal_earth_dph = 0.0;
+	if (cal.earth_rate == EarthRateHandling::InBias)
+	{
+		double cal_lat_deg = cal.latitude_deg;
+		if (!std::isfinite(cal_lat_deg))
+		{
+			cal_lat_deg = lat_deg;
+			std::printf("fog_heading_odometry: %s records no latitude: assuming the drive's %.4f deg\n", cal_path.c_str(),
+						lat_deg);
+		}
+		cal_earth_dph = units::kEarthRate_dph * std::sin(cal_lat_deg * units::kDegToRad);
+	}
 
 	// 3. Heading: start from the truth (an aligned vehicle) or zero.
 	nav::StrapdownOptions so;

@@ -91,3 +91,23 @@ message(STATUS "${out}")
 if(NOT out MATCHES "^([0-9]+) objects, ([0-9]+) of class" OR NOT CMAKE_MATCH_2 GREATER 1000)
   message(FATAL_ERROR "reader-only program did not read the FOG objects:\n${out}")
 endif()
+
+# The example takes the Earth rate the calibration absorbed from the latitude the file records:
+# the same calibration stating latitude 0 instead of the drive's 40 deg must leave exactly the
+# vertical Earth rate at 40 deg in the heading: 15.041067 deg/h * sin(40 deg) * 1200 s = 3.2227 deg.
+file(READ ${CAL} cal_text)
+string(REGEX REPLACE "latitude_deg:[^\n#]*" "latitude_deg: 0 " cal_lat0 "${cal_text}")
+if(cal_lat0 STREQUAL cal_text)
+  message(FATAL_ERROR "the calibration file has no latitude_deg key")
+endif()
+file(WRITE ${WORK}/cal_lat0.yaml "${cal_lat0}")
+step("run example, calibration at latitude 0" ${WORK}/example/fog_heading_odometry ${DRIVE} ${WORK}/cal_lat0.yaml ${WORK}/odometry_lat0.rawlog)
+message(STATUS "${out}")
+if(NOT out MATCHES "heading error ([-+0-9.eE]+) deg")
+  message(FATAL_ERROR "example printed no error line:\n${out}")
+endif()
+set(h0 "${CMAKE_MATCH_1}")
+string(REGEX REPLACE "^-" "" h0_abs "${h0}")
+if(h0_abs LESS 3.2217 OR h0_abs GREATER 3.2237)
+  message(FATAL_ERROR "example with the calibration at latitude 0: heading error ${h0} deg, expected 3.2227 +- 0.001 deg")
+endif()
