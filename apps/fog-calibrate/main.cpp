@@ -8,6 +8,7 @@
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
+#include <mrpt_fog/model/ScaleFactorFit.h>
 
 #include <cstdio>
 #include <iostream>
@@ -69,8 +70,20 @@ RATES
   centred Savitzky-Golay window instead (studies only: such a calibration cannot compensate in
   real time).
 
+SCALE FACTOR VS TEMPERATURE (--scale-factor auto|off)
+  A run with a table_rate_dph column turning at non-zero rates (a rate-table run: IEEE Std 952,
+  both signs, several rates, at soaked temperatures) holds the scale factor. With auto (the
+  default) its table segments are left out of the bias fit and fit s(T) [ppm] instead: per
+  segment s = (mean(raw - bias - applied) / applied), then a polynomial in one thermistor
+  temperature, thermistor and order (0..3) chosen by leave-one-temperature-out error; the
+  compensator then applies omega = (raw - bias) / (1 + 1e-6 s). If the runs cannot support that
+  fit (one rate sign only, one temperature, segments too short) fog-calibrate stops with the
+  reason rather than return a bias-only model. --scale-factor off: table samples are treated
+  as bias samples with the nominal scale factor (the behaviour before version 2 files).
+
 EXAMPLES
   fog-calibrate -i datasets/chamber_A.rawlog --model multipoint -o cal.yaml --validate datasets/chamber_B.rawlog
+  fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable.rawlog -o cal_sf.yaml
   fog-calibrate -i runA.csv -i runB.csv --model points:2 -o cal2.yaml --json fit.json
   fog-calibrate -i runA.csv --model M3:Ti1,To1 --selection none -o m3.yaml
 )";
@@ -139,6 +152,10 @@ int main(int argc, char** argv)
 											   false, "linear", "POLICY", cmd);
 		TCLAP::ValueArg<std::string> arg_foldby("", "folds-by", "Validation folds of a single run: regimes (default) or blocks",
 												false, "regimes", "SCHEME", cmd);
+		TCLAP::ValueArg<std::string> arg_sf("", "scale-factor",
+											"auto (default): fit the scale factor vs temperature from table-rate "
+											"segments when a run has them; off: bias only",
+											false, "auto", "auto|off", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-calibrate", kHelp)) return *rc;
 
 		std::vector<FileArg> inputs{{"--validate", arg_val.getValue()}};
@@ -159,9 +176,27 @@ int main(int argc, char** argv)
 			throw std::invalid_argument("--folds-by must be regimes or blocks, got '" + arg_foldby.getValue() + "'");
 		opt.fold_scheme = arg_foldby.getValue() == "regimes" ? FoldScheme::Regimes : FoldScheme::Blocks;
 
+		if (arg_sf.getValue() != "auto" && arg_sf.getValue() != "off")
+			throw std::invalid_argument("--scale-factor: '" + arg_sf.getValue() + "' is not auto or off");
 		std::vector<FogSeries> runs;
 		for (const auto& path : arg_in.getValue()) runs.push_back(readFogLog(path, arg_label.getValue()));
+		const bool fit_sf = arg_sf.getValue() == "auto" && hasTableRates(runs);
+		if (fit_sf) opt.table_samples = TableSamples::Exclude;
 		Calibration cal = fitCalibration(runs, arg_model.getValue(), opt, arg_in.getValue());
+		ScaleFactorFitReport sf_report;
+		if (fit_sf)
+		{
+			try
+			{
+				cal.scale_factor = fitScaleFactor(runs, cal, {}, &sf_report, arg_in.getValue());
+			}
+			catch (const ScaleFactorFitError& e)
+			{
+				throw std::runtime_error(std::string(e.what()) +
+										 "; the runs apply table rates, so a bias-only calibration would be wrong "
+										 "there (give --scale-factor off to fit the bias alone anyway)");
+			}
+		}
 		if (!arg_val.getValue().empty())
 		{
 			const FogSeries val = readFogLog(arg_val.getValue(), arg_label.getValue());
@@ -206,6 +241,31 @@ int main(int argc, char** argv)
 		range.max_temp_excursion_C = cal.validation.max_temp_excursion_C;
 		range.max_rate_excursion_C_per_s = cal.validation.max_rate_excursion_C_per_s;
 		if (!arg_val.getValue().empty()) std::fputs(app::outOfRangeWarning(range, cal.extrapolation).c_str(), stdout);
+		if (cal.scale_factor)
+		{
+			const auto& sf = *cal.scale_factor;
+			std::printf("  scale factor vs temperature: s(T(%s)) of order %zu from %zu table segments (|rate| %g..%g "
+						"deg/h, %zu soaks, %.2f..%.2f degC)\n",
+						sf.thermistor.c_str(), sf.order(), sf.segments, sf.table_rate_min_abs_dph,
+						sf.table_rate_max_abs_dph, sf_report.groups, sf.min_C, sf.max_C);
+			std::printf("    mean slope %.4g ppm/degC, 95 %% interval [%.4g, %.4g]; segment RMS in-sample %.3g ppm, "
+						"held-out (%s) %.3g ppm\n",
+						sf.slope_ppm_per_C, sf.slope_ci95_lo_ppm_per_C, sf.slope_ci95_hi_ppm_per_C, sf.rms_in_sample_ppm,
+						sf.held_out_label.c_str(), sf.rms_held_out_ppm);
+			std::printf("    candidates (held-out RMS [ppm]):");
+			for (const auto& c : sf_report.candidates) std::printf(" %s/%d:%.3g", c.thermistor.c_str(), c.order, c.rms_held_out_ppm);
+			std::printf("\n");
+		}
+		if (cal.warmup)
+		{
+			const auto& w = *cal.warmup;
+			std::printf("  warm-up: %.4g +- %.2g deg/h x exp(-t / (%.4g +- %.2g s)) from %zu turn-on(s) over %.0f s; "
+						"residual RMS %.4g -> %.4g deg/h\n",
+						w.amplitude_dph, w.amplitude_std_dph, w.tau_s, w.tau_std_s, w.turn_ons, w.fitted_span_s,
+						w.rms_before_dph, w.rms_after_dph);
+		}
+		if (!cal.scale_factor && hasTableRates(runs))
+			std::printf("  scale factor: not fitted (--scale-factor off): table samples used as bias samples\n");
 		std::printf("  wrote %s\n", arg_out.getValue().c_str());
 
 		if (!arg_json.getValue().empty())
@@ -246,6 +306,48 @@ int main(int argc, char** argv)
 			}
 			JsonValue& ts = sj["term_share"] = JsonValue::object();
 			for (const auto& [t, v] : st.term_share) ts[t] = v;
+			if (cal.scale_factor)
+			{
+				const auto& sf = *cal.scale_factor;
+				JsonValue& js = j["scale_factor"];
+				js["thermistor"] = sf.thermistor;
+				js["order"] = static_cast<unsigned long>(sf.order());
+				js["slope_ppm_per_C"] = sf.slope_ppm_per_C;
+				js["slope_ci95_ppm_per_C"] = JsonValue::array();
+				js["slope_ci95_ppm_per_C"].push_back(sf.slope_ci95_lo_ppm_per_C);
+				js["slope_ci95_ppm_per_C"].push_back(sf.slope_ci95_hi_ppm_per_C);
+				js["min_C"] = sf.min_C;
+				js["max_C"] = sf.max_C;
+				js["table_rate_min_abs_dph"] = sf.table_rate_min_abs_dph;
+				js["table_rate_max_abs_dph"] = sf.table_rate_max_abs_dph;
+				js["segments"] = static_cast<unsigned long>(sf.segments);
+				js["soaks"] = static_cast<unsigned long>(sf_report.groups);
+				js["rms_in_sample_ppm"] = sf.rms_in_sample_ppm;
+				js["rms_held_out_ppm"] = sf.rms_held_out_ppm;
+				js["held_out_label"] = sf.held_out_label;
+				JsonValue& cands = js["candidates"] = JsonValue::array();
+				for (const auto& c : sf_report.candidates)
+				{
+					JsonValue o = JsonValue::object();
+					o["thermistor"] = c.thermistor;
+					o["order"] = static_cast<long>(c.order);
+					o["rms_held_out_ppm"] = c.rms_held_out_ppm;
+					cands.push_back(o);
+				}
+			}
+			if (cal.warmup)
+			{
+				const auto& w = *cal.warmup;
+				JsonValue& jw = j["warmup"];
+				jw["amplitude_dph"] = w.amplitude_dph;
+				jw["amplitude_std_dph"] = w.amplitude_std_dph;
+				jw["tau_s"] = w.tau_s;
+				jw["tau_std_s"] = w.tau_std_s;
+				jw["turn_ons"] = static_cast<unsigned long>(w.turn_ons);
+				jw["fitted_span_s"] = w.fitted_span_s;
+				jw["rms_before_dph"] = w.rms_before_dph;
+				jw["rms_after_dph"] = w.rms_after_dph;
+			}
 			j["calibration"] = arg_out.getValue();
 			writeTextFileAtomically(arg_json.getValue(), j.dump());
 		}

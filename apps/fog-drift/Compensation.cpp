@@ -12,9 +12,9 @@
 
 namespace mrpt_fog::drift
 {
-std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string& cal_path, bool screen_thermistors)
+std::vector<double> compensatedRate_dph(const FogSeries& fog, const Calibration& cal, const std::string& cal_path,
+										bool screen_thermistors)
 {
-	const Calibration cal = loadCalibrationYaml(cal_path);
 	if (cal.axis != GyroAxis::Z)
 		throw std::runtime_error(cal_path + ": calibration is for axis " + std::string(1, axisLetter(cal.axis)) +
 								 "; fog-drift compensates the vertical (z) gyro");
@@ -38,6 +38,11 @@ std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string&
 					c.samples, c.fallback_samples, c.no_model_samples, c.clamped_samples);
 	std::fputs(app::outOfRangeWarning(c, cal.extrapolation).c_str(), stdout);
 	return out.compensated_dph;
+}
+
+std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string& cal_path, bool screen_thermistors)
+{
+	return compensatedRate_dph(fog, loadCalibrationYaml(cal_path, GyroAxis::Z), cal_path, screen_thermistors);
 }
 
 }  // namespace mrpt_fog::drift

@@ -6,6 +6,7 @@
  * Compensator (mrpt_fog/model/Compensator.h), sample by sample as in real time, after the
  * thermistor screening that a real-time implementation would run. */
 
+#include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/obs/FogSeries.h>
 
 #include <string>
@@ -13,10 +14,14 @@
 
 namespace mrpt_fog::drift
 {
-/** Compensated z-axis rate [deg/h], one value per sample of fog. With `screen_thermistors` the
- * thermistor readings are screened first (stuck / spike / out of range -> dropout, see
- * ThermistorHealth.h; a summary is printed). Throws on an unreadable calibration, a
- * calibration for another axis or a layout mismatch (message names the file). */
+/** Compensated z-axis rate [deg/h], one value per sample of fog, with the z-axis calibration
+ * `cal` read from `cal_path` (named in messages). With `screen_thermistors` the thermistor
+ * readings are screened first (stuck / spike / out of range -> dropout, see
+ * ThermistorHealth.h; a summary is printed). Throws on a calibration for another axis or a
+ * layout mismatch (message names the file). */
+std::vector<double> compensatedRate_dph(const FogSeries& fog, const Calibration& cal, const std::string& cal_path,
+										bool screen_thermistors);
+/** The same with the file's z-axis calibration loaded from cal_path. */
 std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string& cal_path, bool screen_thermistors);
 
 }  // namespace mrpt_fog::drift

@@ -10,12 +10,16 @@
 #include <mrpt_fog_nav/OdometryRawlog.h>
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace mrpt_fog::drift
 {
-void writeDriftJson(const std::string& path, const nav::DriftReport& report, const DriftContext& ctx)
+namespace
 {
+JsonValue driveJson(const DriveEvaluation& e, const DriftContext& ctx)
+{
+	const nav::DriftReport& report = e.report;
 	JsonValue j = JsonValue::object();
 	const char* names[] = {"raw", "compensated", "ideal"};
 	auto table = [&](const char* key, double nav::DriftSeries::*field) {
@@ -33,12 +37,37 @@ void writeDriftJson(const std::string& path, const nav::DriftReport& report, con
 			if (!found) t[n] = JsonValue();  // null: variant not available
 		}
 	};
+	auto figTable = [&](const char* key, double nav::HeadingFigures::*field) {
+		JsonValue& t = j[key];
+		t = JsonValue::object();
+		for (const char* n : names)
+		{
+			const auto it = e.figures.find(n);
+			t[n] = it == e.figures.end() || !std::isfinite(it->second.*field) ? JsonValue() : JsonValue(it->second.*field);
+		}
+	};
 	table("heading_error_final_deg", &nav::DriftSeries::heading_error_final_deg);
 	table("heading_error_max_deg", &nav::DriftSeries::heading_error_max_deg);
 	table("heading_error_final_signed_deg", &nav::DriftSeries::heading_error_final_signed_deg);
 	table("position_error_final_m", &nav::DriftSeries::position_error_final_m);
 	table("position_error_max_m", &nav::DriftSeries::position_error_max_m);
 	table("position_error_final_pct", &nav::DriftSeries::position_error_final_pct);
+	figTable("heading_error_rms_deg", &nav::HeadingFigures::heading_error_rms_deg);
+	figTable("heading_drift_between_turns_dph", &nav::HeadingFigures::heading_drift_between_turns_dph);
+	figTable("turn_scale_factor_ppm", &nav::HeadingFigures::turn_scale_factor_ppm);
+	const auto tab = driveFigureTable(e);
+	JsonValue& r = j["ratios"] = JsonValue::object();
+	for (const auto& kv : tab)
+		if (kv.first.rfind("ratio.", 0) == 0) r[kv.first.substr(6)] = std::isfinite(kv.second) ? JsonValue(kv.second) : JsonValue();
+	if (!e.figures.empty())
+	{
+		const auto& f = e.figures.begin()->second;
+		JsonValue& sg = j["segments"] = JsonValue::object();
+		sg["turns"] = static_cast<unsigned long>(f.turns);
+		sg["turned_deg"] = f.turned_deg;
+		sg["straights"] = static_cast<unsigned long>(f.straights);
+		sg["straight_time_s"] = f.straight_time_s;
+	}
 	j["distance_m"] = report.distance_m;
 	j["duration_s"] = report.duration_s;
 	j["latitude_deg"] = ctx.latitude_deg;
@@ -48,7 +77,71 @@ void writeDriftJson(const std::string& path, const nav::DriftReport& report, con
 	j["input"] = ctx.input;
 	j["calibration"] = ctx.calibration.empty() ? JsonValue() : JsonValue(ctx.calibration);
 	j["calibration_earth_rate_dph"] = ctx.calibration_earth_rate_dph;
+	j["calibration_latitude_source"] =
+		ctx.calibration_latitude_source.empty() ? JsonValue() : JsonValue(ctx.calibration_latitude_source);
+	return j;
+}
+}  // namespace
+
+void writeDriftJson(const std::string& path, const std::vector<DriveEvaluation>& drives,
+					const std::vector<DriftContext>& ctxs, const std::map<std::string, Spread>& over)
+{
+	if (drives.size() == 1)
+	{
+		writeTextFileAtomically(path, driveJson(drives.front(), ctxs.front()).dump());
+		return;
+	}
+	JsonValue j = JsonValue::object();
+	JsonValue& d = j["drives"] = JsonValue::array();
+	for (std::size_t i = 0; i < drives.size(); i++) d.push_back(driveJson(drives[i], ctxs[i]));
+	JsonValue& o = j["over_drives"] = JsonValue::object();
+	o["drives"] = static_cast<unsigned long>(drives.size());
+	for (const auto& kv : over)
+	{
+		JsonValue s = JsonValue::object();
+		s["n"] = static_cast<unsigned long>(kv.second.n);
+		const auto num = [](double v) { return std::isfinite(v) ? JsonValue(v) : JsonValue(); };
+		s["median"] = num(kv.second.median);
+		s["q1"] = num(kv.second.q1);
+		s["q3"] = num(kv.second.q3);
+		s["min"] = num(kv.second.min);
+		s["max"] = num(kv.second.max);
+		o[kv.first] = s;
+	}
 	writeTextFileAtomically(path, j.dump());
+}
+
+void writeDriftCsv(const std::string& path, const nav::Trajectory& truth, const nav::DriftReport& report)
+{
+	std::ostringstream o;
+	o.precision(10);
+	o << "time_s,truth_yaw_deg";
+	for (const auto& v : report.variants) o << ",heading_error_" << v.name << "_deg,position_error_" << v.name << "_m";
+	o << "\n";
+	const double t0 = truth.front().t_s;
+	// every variant is evaluated at the truth times inside its span: index by time
+	std::vector<std::size_t> idx(report.variants.size(), 0);
+	for (const auto& gt : truth)
+	{
+		bool any = false;
+		std::ostringstream row;
+		row.precision(10);
+		row << gt.t_s - t0 << "," << gt.yaw_rad * 180.0 / M_PI;
+		for (std::size_t i = 0; i < report.variants.size(); i++)
+		{
+			const auto& v = report.variants[i];
+			while (idx[i] < v.t_s.size() && v.t_s[idx[i]] < gt.t_s) idx[i]++;
+			if (idx[i] < v.t_s.size() && v.t_s[idx[i]] == gt.t_s)
+			{
+				row << "," << v.heading_error_deg[idx[i]] << "," << v.position_error_m[idx[i]];
+				any = true;
+			}
+			else
+				row << ",,";
+		}
+		if (any) o << row.str() << "\n";
+	}
+	writeTextFileAtomically(path, o.str());
 }
 
 void writeDriftPlots(const std::string& dir, const nav::Trajectory& truth, const std::vector<nav::NamedTrajectory>& variants,

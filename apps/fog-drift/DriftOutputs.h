@@ -6,6 +6,8 @@
  * (trajectories over the truth; heading error vs time) and the odometry rawlog for MRPT's
  * localization apps. Every file is written atomically. */
 
+#include "DriveEvaluation.h"
+
 #include <mrpt_fog_nav/DriftReport.h>
 
 #include <map>
@@ -24,9 +26,17 @@ struct DriftContext
 	bool transport_rate = false;
 	std::string rate_sampling;
 	double calibration_earth_rate_dph = 0.0;  //!< vertical Earth rate the calibration's bias held
+	std::string calibration_latitude_source;  //!< "option", "calibration", "drive" ("" without calibration)
 };
 
-void writeDriftJson(const std::string& path, const nav::DriftReport& report, const DriftContext& ctx);
+/** One drive: the report's tables at the top level (as before) plus the navigation figures.
+ * Several drives: {"drives": [one object per drive], "over_drives": {figure: spread}}. */
+void writeDriftJson(const std::string& path, const std::vector<DriveEvaluation>& drives,
+					const std::vector<DriftContext>& ctxs, const std::map<std::string, Spread>& over);
+
+/** Per-sample CSV at the truth times: time_s (from the start), truth_yaw_deg, and per gyro
+ * heading_error_<name>_deg and position_error_<name>_m. */
+void writeDriftCsv(const std::string& path, const nav::Trajectory& truth, const nav::DriftReport& report);
 
 /** trajectories.png and heading_error.png in dir (created if missing). */
 void writeDriftPlots(const std::string& dir, const nav::Trajectory& truth, const std::vector<nav::NamedTrajectory>& variants,

@@ -11,6 +11,7 @@
 #include "Compensation.h"
 #include "DriftOutputs.h"
 #include "DriveData.h"
+#include "DriveEvaluation.h"
 #include "HeadingDeadReckoning.h"
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -27,6 +28,32 @@ using namespace mrpt_fog;
 
 namespace
 {
+const char* const kHelp = R"(
+WHAT IT SHOWS
+  Each gyro (raw, compensated with --cal, ideal = the same noise without thermal error) is
+  integrated to a heading (Earth rate at the drive's latitude removed) and dead-reckoned with
+  the wheel odometry; the heading and position errors against the truth give, per gyro:
+    heading_error_rms_deg            RMS of the heading error over the drive (the headline)
+    heading_error_max_deg / final    largest and last |error| (a drive ending in a turn reads
+                                     the gyro's lag in the final value: do not judge by it alone)
+    heading_drift_between_turns_dph  common slope of the error on the straights (each straight
+                                     keeps its own offset): the residual bias
+    turn_scale_factor_ppm            error each turn adds per degree turned (drift removed):
+                                     the scale-factor error the turns expose
+  Turns and straights are found on the truth's yaw rate (> 1 deg/s turn, < 0.2 deg/s for
+  >= 30 s straight).
+
+SEVERAL DRIVES
+  Repeat -i: every drive's figures, then the median, quartiles and range of each figure and of
+  the ratios compensated/raw (heading RMS, drift between turns) and compensated/ideal (heading
+  RMS). Drives to try: fog-sim --profile drive --seed N [--cabin PRESET|FILE.yaml]
+  (scripts/drift_over_drives.sh makes a set and runs this).
+
+EXAMPLES
+  fog-drift -i datasets/drive.rawlog --cal cal.yaml --json drift.json --csv drift.csv --plots plots/
+  fog-drift -i d1.rawlog -i d2.rawlog -i d3.rawlog --cal cal.yaml --json drives.json
+)";
+
 /** Linear interpolation of (t, y) at the times tq (clamped at the ends). */
 std::vector<double> interpAt(const std::vector<double>& t, const std::vector<double>& y, const nav::Trajectory& tq)
 {
@@ -53,119 +80,155 @@ int main(int argc, char** argv)
 	return app::runApp("fog-drift", [&] {
 		TCLAP::CmdLine cmd("fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive", ' ',
 						   "0.1");
-		TCLAP::ValueArg<std::string> in("i", "input", "drive rawlog (FOG, FOG_IDEAL, ODOMETRY, GROUND_TRUTH)", true, "",
-										"DRIVE.rawlog", cmd);
+		TCLAP::MultiArg<std::string> in("i", "input",
+										"drive rawlog (FOG, FOG_IDEAL, ODOMETRY, GROUND_TRUTH); repeat for several "
+										"drives: then each drive's figures and their median, quartiles and range",
+										true, "DRIVE.rawlog", cmd);
 		TCLAP::ValueArg<std::string> cal("", "cal", "calibration YAML for the FOG (fog-calibrate); without it the "
 														"compensated variant is left out",
 										 false, "", "CAL.yaml", cmd);
 		TCLAP::ValueArg<std::string> json("", "json", "write the drift figures as JSON", false, "", "F.json", cmd);
-		TCLAP::ValueArg<std::string> plots("", "plots", "write trajectories.png and heading_error.png here", false, "",
-										   "DIR", cmd);
+		TCLAP::ValueArg<std::string> csv("", "csv",
+										 "write the per-sample heading and position errors of each gyro (one drive)",
+										 false, "", "F.csv", cmd);
+		TCLAP::ValueArg<std::string> plots("", "plots", "write trajectories.png and heading_error.png here (one drive)",
+										   false, "", "DIR", cmd);
 		TCLAP::ValueArg<std::string> odo_out("", "odometry-out",
 											 "write the compensated (else raw) dead-reckoned trajectory as a rawlog of "
-											 "CObservationOdometry + CObservationIMU for pf-localization",
+											 "CObservationOdometry + CObservationIMU for pf-localization (one drive)",
 											 false, "", "F.rawlog", cmd);
 		TCLAP::ValueArg<double> lat("", "latitude-deg", "latitude [deg] (default: from the drive's metadata)", false,
 									NAN, "DEG", cmd);
 		TCLAP::ValueArg<double> cal_lat("", "cal-latitude-deg",
-										"latitude [deg] of the calibration runs (default: the drive's): a static "
-										"calibration's bias absorbs the vertical Earth rate there, which the "
-										"compensator then removes; fog-drift adds it back before its own "
-										"Earth-rate removal so that it is not removed twice",
+										"latitude [deg] of the calibration runs (default: the calibration file's "
+										"latitude_deg, else the drive's): a static calibration's bias absorbs the "
+										"vertical Earth rate there, which the compensator then removes; fog-drift adds "
+										"it back before its own Earth-rate removal so that it is not removed twice",
 										false, NAN, "DEG", cmd);
 		TCLAP::SwitchArg cal_no_earth("", "cal-no-earth-rate",
 									  "the calibration runs' table rate already included the Earth rate (their bias "
-									  "does not contain it)",
+									  "does not contain it; a version 2 file says so itself: earth_rate.handling)",
 									  cmd);
 		TCLAP::SwitchArg transport("", "transport-rate",
 								   "also remove the vertical transport rate (for real drives over the curved Earth; "
 								   "the simulator's drive is flat-Earth)",
 								   cmd);
 		TCLAP::ValueArg<std::string> sampling("", "rate-sampling",
-											  "gyro samples are the mean rate over the preceding interval ('average', digital FOGs and fog-sim) or 'instantaneous' (trapezoid rule) "
-											  "preceding interval",
+											  "gyro samples are the mean rate over the preceding interval ('average', "
+											  "digital FOGs and fog-sim) or 'instantaneous' (trapezoid rule)",
 											  false, "average", "KIND", cmd);
 		TCLAP::SwitchArg no_screen("", "no-screening",
 								   "do not screen the FOG's thermistor readings (stuck / spike / out of range -> "
 								   "dropout, fallback model) before compensating",
 								   cmd);
-		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-drift")) return *rc;
+		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-drift", kHelp)) return *rc;
 
-		drift::HeadingOptions hopt;
-		if (sampling.getValue() == "instantaneous") hopt.sampling = nav::RateSampling::Instantaneous;
-		else if (sampling.getValue() == "average") hopt.sampling = nav::RateSampling::IntervalAverage;
+		drift::DriveSettings st;
+		if (sampling.getValue() == "instantaneous") st.heading.sampling = nav::RateSampling::Instantaneous;
+		else if (sampling.getValue() == "average") st.heading.sampling = nav::RateSampling::IntervalAverage;
 		else throw std::runtime_error("--rate-sampling: '" + sampling.getValue() + "' is not instantaneous|average");
-		hopt.transport_rate = transport.getValue();
+		st.heading.transport_rate = transport.getValue();
+		st.cal_path = cal.getValue();
+		if (std::isfinite(lat.getValue())) st.latitude_deg = lat.getValue();
+		if (std::isfinite(cal_lat.getValue())) st.cal_latitude_deg = cal_lat.getValue();
+		st.cal_no_earth_rate = cal_no_earth.getValue();
+		st.screen_thermistors = !no_screen.getValue();
+		const auto& inputs = in.getValue();
+		if (inputs.size() > 1 && (!plots.getValue().empty() || !odo_out.getValue().empty() || !csv.getValue().empty()))
+			throw std::runtime_error("--plots, --csv and --odometry-out take one drive (-i given " +
+									 std::to_string(inputs.size()) + " times)");
 
-		requireSafeOutputs({{"-i", in.getValue()}, {"--cal", cal.getValue()}},
-						   {{"--json", json.getValue()}, {"--odometry-out", odo_out.getValue()}});
-		const drift::DriveData drive = drift::readDrive(in.getValue());
-		if (std::isfinite(lat.getValue())) hopt.latitude_deg = lat.getValue();
-		else if (drive.latitude_deg) hopt.latitude_deg = *drive.latitude_deg;
-		else
-			throw std::runtime_error(in.getValue() + ": no latitude_deg in the metadata; give --latitude-deg");
-		if (!(std::abs(hopt.latitude_deg) <= 90)) throw std::runtime_error("--latitude-deg: must be within [-90, 90]");
-
-		std::vector<nav::NamedTrajectory> variants;
-		std::vector<drift::VariantResult> results;
-		auto run = [&](const std::string& name, const std::vector<double>& t, const std::vector<double>& rate) {
-			results.push_back(drift::deadReckonVariant(t, rate, drive, hopt));
-			variants.emplace_back(name, results.back().trajectory);
-		};
-		// The heading gyro is the vertical (z) axis; x/y axes of a triad are not used (planar drive).
-		auto verticalRate = [&](const FogSeries& s) -> const std::vector<double>& {
-			if (!s.has_axis[2])
-				throw std::runtime_error(in.getValue() + ": FOG '" + s.sensor_label +
-										 "' has no z (vertical) axis; fog-drift integrates the vertical gyro");
-			return s.rate_dph[2];
-		};
-		const std::vector<double> t_fog = drift::absoluteTimes(drive.fog);
-		run("raw", t_fog, verticalRate(drive.fog));
-		double cal_earth_dph = 0.0;  // vertical Earth rate inside the calibration's bias
-		if (!cal.getValue().empty())
 		{
-			const double cal_lat_deg = std::isfinite(cal_lat.getValue()) ? cal_lat.getValue() : hopt.latitude_deg;
-			if (!(std::abs(cal_lat_deg) <= 90)) throw std::runtime_error("--cal-latitude-deg: must be within [-90, 90]");
-			if (!cal_no_earth.getValue()) cal_earth_dph = units::kEarthRate_dph * std::sin(cal_lat_deg * units::kDegToRad);
-			std::vector<double> comp = drift::compensatedRate_dph(drive.fog, cal.getValue(), !no_screen.getValue());
-			for (double& r : comp) r += cal_earth_dph;
-			run("compensated", t_fog, comp);
+			std::vector<FileArg> ins{{"--cal", cal.getValue()}};
+			for (const auto& p : inputs) ins.push_back({"-i", p});
+			requireSafeOutputs(ins, {{"--json", json.getValue()}, {"--odometry-out", odo_out.getValue()}, {"--csv", csv.getValue()}});
 		}
-		if (drive.fog_ideal) run("ideal", drift::absoluteTimes(*drive.fog_ideal), verticalRate(*drive.fog_ideal));
-
-		const nav::DriftReport rep = nav::computeDriftReport(drive.truth, variants);
-
-		std::printf("fog-drift: %s: %.0f s, %.1f m driven, latitude %.4f deg (Earth rate %.4f deg/h removed)\n",
-					in.getValue().c_str(), rep.duration_s, rep.distance_m, hopt.latitude_deg,
-					units::kEarthRate_dph * std::sin(hopt.latitude_deg * units::kDegToRad));
-		std::printf("  %-12s %18s %16s %18s %14s\n", "gyro", "heading final [deg]", "heading max [deg]",
-					"position final [m]", "[% distance]");
-		for (const auto& v : rep.variants)
-			std::printf("  %-12s %18.4f %16.4f %18.2f %14.3f\n", v.name.c_str(), v.heading_error_final_deg,
-						v.heading_error_max_deg, v.position_error_final_m, v.position_error_final_pct);
+		std::vector<drift::DriveEvaluation> evals;
+		std::vector<std::map<std::string, double>> tables;
+		for (const auto& path : inputs)
+		{
+			drift::DriveEvaluation e = drift::evaluateDrive(path, st);
+			const nav::DriftReport& rep = e.report;
+			std::printf("fog-drift: %s: %.0f s, %.1f m driven, latitude %.4f deg (Earth rate %.4f deg/h removed)\n",
+						path.c_str(), rep.duration_s, rep.distance_m, e.latitude_deg,
+						units::kEarthRate_dph * std::sin(e.latitude_deg * units::kDegToRad));
+			std::printf("  %zu turns (%.0f deg turned), %zu straights (%.0f s) found on the truth\n", e.segments.turns.size(),
+						e.figures.begin()->second.turned_deg, e.segments.straights.size(),
+						e.figures.begin()->second.straight_time_s);
+			std::printf("  %-12s %10s %10s %10s %14s %12s %12s\n", "gyro", "hdg RMS", "hdg max", "hdg final",
+						"drift betw.", "turn SF", "pos final");
+			std::printf("  %-12s %10s %10s %10s %14s %12s %12s\n", "", "[deg]", "[deg]", "[deg]", "turns [deg/h]", "[ppm]",
+						"[m]");
+			for (const auto& v : rep.variants)
+			{
+				const auto& f = e.figures.at(v.name);
+				std::printf("  %-12s %10.4f %10.4f %10.4f %14.4f %12.1f %12.2f\n", v.name.c_str(), f.heading_error_rms_deg,
+							f.heading_error_max_deg, f.heading_error_final_deg, f.heading_drift_between_turns_dph,
+							f.turn_scale_factor_ppm, v.position_error_final_m);
+			}
+			tables.push_back(drift::driveFigureTable(e));
+			if (!cal.getValue().empty())
+			{
+				const auto& t = tables.back();
+				std::printf("  compensated / raw: heading RMS %.3f, drift between turns %.3f; compensated / ideal heading "
+							"RMS %.2f\n",
+							t.at("ratio.heading_rms_compensated_over_raw"),
+							t.at("ratio.drift_between_turns_compensated_over_raw"),
+							t.at("ratio.heading_rms_compensated_over_ideal"));
+			}
+			evals.push_back(std::move(e));
+		}
+		std::map<std::string, drift::Spread> over;
+		if (evals.size() > 1)
+		{
+			for (const auto& kv : tables.front())
+			{
+				std::vector<double> v;
+				for (const auto& t : tables) v.push_back(t.at(kv.first));
+				over[kv.first] = drift::spreadOf(v);
+			}
+			std::printf("fog-drift: over %zu drives: median [quartiles] (min .. max)\n", evals.size());
+			for (const auto& kv : over)
+			{
+				if (kv.second.n == 0) continue;
+				std::printf("  %-52s %10.4g [%.4g, %.4g] (%.4g .. %.4g)\n", kv.first.c_str(), kv.second.median,
+							kv.second.q1, kv.second.q3, kv.second.min, kv.second.max);
+			}
+		}
 
 		if (!json.getValue().empty())
 		{
-			drift::DriftContext ctx;
-			ctx.input = in.getValue();
-			ctx.calibration = cal.getValue();
-			ctx.latitude_deg = hopt.latitude_deg;
-			ctx.earth_rate_removed_dph = units::kEarthRate_dph * std::sin(hopt.latitude_deg * units::kDegToRad);
-			ctx.transport_rate = hopt.transport_rate;
-			ctx.rate_sampling = sampling.getValue();
-			ctx.calibration_earth_rate_dph = cal_earth_dph;
-			drift::writeDriftJson(json.getValue(), rep, ctx);
+			std::vector<drift::DriftContext> ctxs;
+			for (const auto& e : evals)
+			{
+				drift::DriftContext ctx;
+				ctx.input = e.input;
+				ctx.calibration = cal.getValue();
+				ctx.latitude_deg = e.latitude_deg;
+				ctx.earth_rate_removed_dph = units::kEarthRate_dph * std::sin(e.latitude_deg * units::kDegToRad);
+				ctx.transport_rate = st.heading.transport_rate;
+				ctx.rate_sampling = sampling.getValue();
+				ctx.calibration_earth_rate_dph = e.calibration_earth_rate_dph;
+				ctx.calibration_latitude_source = e.calibration_latitude_source;
+				ctxs.push_back(ctx);
+			}
+			drift::writeDriftJson(json.getValue(), evals, ctxs, over);
 		}
-		if (!plots.getValue().empty()) drift::writeDriftPlots(plots.getValue(), drive.truth, variants, rep);
-		if (!odo_out.getValue().empty())
+		if (evals.size() == 1)
 		{
-			const std::size_t i = cal.getValue().empty() ? 0 : 1;  // compensated when available
-			const auto& r = results[i];
-			drift::writeOdometryRawlog(odo_out.getValue(), r.trajectory, interpAt(r.t_s, r.yaw_rate_rad_s, r.trajectory));
-			const auto& p0 = r.trajectory.front();
-			std::printf("  odometry rawlog (%s): %s; pf-localization: initial_odo_x=%.6f initial_odo_y=%.6f "
-						"initial_odo_phi=%.9f\n",
-						variants[i].first.c_str(), odo_out.getValue().c_str(), p0.x_m, p0.y_m, p0.yaw_rad);
+			const drift::DriveEvaluation& e = evals.front();
+			if (!csv.getValue().empty()) drift::writeDriftCsv(csv.getValue(), e.drive.truth, e.report);
+			if (!plots.getValue().empty()) drift::writeDriftPlots(plots.getValue(), e.drive.truth, e.variants, e.report);
+			if (!odo_out.getValue().empty())
+			{
+				const std::size_t i = cal.getValue().empty() ? 0 : 1;  // compensated when available
+				const auto& r = e.results[i];
+				drift::writeOdometryRawlog(odo_out.getValue(), r.trajectory, interpAt(r.t_s, r.yaw_rate_rad_s, r.trajectory));
+				const auto& p0 = r.trajectory.front();
+				std::printf("  odometry rawlog (%s): %s; pf-localization: initial_odo_x=%.6f initial_odo_y=%.6f "
+							"initial_odo_phi=%.9f\n",
+							e.variants[i].first.c_str(), odo_out.getValue().c_str(), p0.x_m, p0.y_m, p0.yaw_rad);
+			}
 		}
 		return 0;
 	});

@@ -59,7 +59,8 @@ int main(int argc, char** argv)
 	return mrpt_fog::app::runApp("fog-sim", [&]() -> int {
 		TCLAP::CmdLine cmd(
 			"fog-sim: physics simulation of a fiber-optic gyro with coil thermistors (thermal chamber or vehicle drive). "
-			"Built-in profiles: seed, B, warmup, rich, drive_cabin, and drive (vehicle scenario).",
+			"Built-in profiles: seed, B, warmup, rich, ratetable, drive_cabin(_mild, _hot), and drive (vehicle scenario, "
+			"cabin chosen by --cabin).",
 			' ', "1.0");
 		TCLAP::ValueArg<std::string> profile("p", "profile", "built-in profile name or a profile YAML file", true, "",
 											 "NAME|FILE.yaml", cmd);
@@ -76,6 +77,11 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<double> rate("", "rate-hz", "output sample rate [Hz] (default 10)", false, 10.0, "F", cmd);
 		TCLAP::ValueArg<double> duration("", "duration-s", "keep only the first F seconds of the run", false, -1.0, "F",
 										 cmd);
+		TCLAP::ValueArg<std::string> cabin("", "cabin",
+										   "cabin profile of the vehicle scenario (--profile drive): a preset "
+										   "(drive_cabin: winter cold start, the default; drive_cabin_mild; "
+										   "drive_cabin_hot) or a profile YAML file",
+										   false, "drive_cabin", "NAME|FILE.yaml", cmd);
 		TCLAP::ValueArg<std::string> json("", "json", "write figures as JSON", false, "", "F", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-sim")) return *rc;
 
@@ -89,10 +95,12 @@ int main(int argc, char** argv)
 		settings.rate_hz = rate.getValue();
 		settings.effects = effectsFromSelection(effect.getValue());
 		settings.profile_source = profile.getValue();
+		if (cabin.isSet()) settings.profile_source += " (cabin " + cabin.getValue() + ")";
 		settings.validate();
 		const FogDevice dev = device.isSet() ? FogDevice::fromFile(device.getValue()) : FogDevice::defaultDevice();
 		const bool vehicle = profile.getValue() == "drive";
-		const ChamberProfile prof = vehicle ? ChamberProfile::preset("drive_cabin") : loadProfile(profile.getValue());
+		if (cabin.isSet() && !vehicle) throw std::invalid_argument("--cabin: only with --profile drive");
+		const ChamberProfile prof = vehicle ? loadProfile(cabin.getValue()) : loadProfile(profile.getValue());
 
 		const auto t0 = std::chrono::steady_clock::now();
 		FogSeries fog;

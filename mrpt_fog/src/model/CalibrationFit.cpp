@@ -139,8 +139,9 @@ PreparedRun prepare(const FogSeries& s, const ThermalFeatureSet& fs, const RateE
 	r.ok.assign(n, true);
 	for (std::size_t k = 0; k < n; k++)
 	{
-		bool ok = std::isfinite(r.y[k]) && (s.power.empty() || s.power[k] != 0.0) &&
-				  !(table == TableSamples::Exclude && !s.table_rate_dph.empty() && s.table_rate_dph[k] != 0.0);
+		if (table == TableSamples::Exclude && !s.table_rate_dph.empty() && s.table_rate_dph[k] != 0.0)
+			r.y[k] = std::numeric_limits<double>::quiet_NaN();  // not a bias sample (nor in the raw figures)
+		bool ok = std::isfinite(r.y[k]) && (s.power.empty() || s.power[k] != 0.0);
 		for (std::size_t i = 0; i < nt && ok; i++) ok = std::isfinite(s.temp_C[r.col[i]][k]) && std::isfinite(r.rate[i][k]);
 		r.ok[k] = ok;
 		r.usable += ok;

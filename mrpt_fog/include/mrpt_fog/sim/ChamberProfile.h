@@ -83,7 +83,7 @@ class ChamberProfile
 	static ChamberProfile fromFile(const std::string& path);
 	/** Built-in profile by name (see presetNames()); throws std::invalid_argument otherwise. */
 	static ChamberProfile preset(const std::string& name);
-	/** Names of the built-in chamber presets: seed, B, warmup, rich, drive_cabin. */
+	/** Names of the built-in chamber presets: seed, B, warmup, rich, ratetable, drive_cabin. */
 	static std::vector<std::string> presetNames();
 	/** YAML text of a preset (what preset(name) parses). */
 	static std::string presetYaml(const std::string& name);

@@ -1,0 +1,64 @@
+/* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
+#pragma once
+
+/** \file DriveEvaluation.h
+ * One drive through fog-drift: read it, compensate its FOG with the calibration (if any), dead
+ * reckon each gyro variant (raw, compensated, ideal), compare with the truth (DriftReport) and
+ * compute the navigation figures of each variant (HeadingFigures: RMS, max, final heading
+ * error, drift between turns, turn scale factor). And the summary over several drives
+ * (median, quartiles, min, max of each figure and ratio). */
+
+#include "DriveData.h"
+#include "HeadingDeadReckoning.h"
+
+#include <mrpt_fog_nav/DriftReport.h>
+#include <mrpt_fog_nav/HeadingFigures.h>
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mrpt_fog::drift
+{
+struct DriveSettings
+{
+	std::string cal_path;  //!< "" = no compensated variant
+	std::optional<double> latitude_deg;  //!< override of the drive's metadata
+	std::optional<double> cal_latitude_deg;  //!< override of the calibration's latitude
+	bool cal_no_earth_rate = false;  //!< the calibration's bias holds no Earth rate
+	bool screen_thermistors = true;
+	HeadingOptions heading;  //!< latitude_deg filled per drive
+	nav::HeadingFigureOptions figures;
+};
+
+struct DriveEvaluation
+{
+	std::string input;
+	DriveData drive;
+	double latitude_deg = 0.0;
+	double calibration_earth_rate_dph = 0.0;  //!< vertical Earth rate the calibration's bias held
+	std::string calibration_latitude_source;  //!< "option", "calibration" or "drive"
+	std::vector<nav::NamedTrajectory> variants;
+	std::vector<VariantResult> results;  //!< same order as variants
+	nav::DriftReport report;
+	nav::DriveSegments segments;
+	std::map<std::string, nav::HeadingFigures> figures;  //!< by variant name
+};
+
+/** Throws std::runtime_error naming the file on any problem. */
+DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& settings);
+
+/** Median, quartiles (linear interpolation between order statistics) and extremes. */
+struct Spread
+{
+	std::size_t n = 0;
+	double median = 0, q1 = 0, q3 = 0, min = 0, max = 0;
+};
+/** Over the finite values; n = 0 when there is none. */
+Spread spreadOf(std::vector<double> values);
+
+/** The figure names and ratios summarised over drives, per drive (NaN when a variant is absent). */
+std::map<std::string, double> driveFigureTable(const DriveEvaluation& e);
+
+}  // namespace mrpt_fog::drift
