@@ -9,6 +9,7 @@ find_package(mrpt-system REQUIRED)
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs)
 find_package(Threads REQUIRED)
+find_package(ZLIB REQUIRED)              # crc32 of the gzip trailer check
 
 # MRPT ships TCLAP (command-line parsing) as headers without a CMake package.
 find_path(MRPT_TCLAP_INCLUDE_DIR mrpt/3rdparty/tclap/CmdLine.h

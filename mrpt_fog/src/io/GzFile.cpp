@@ -5,6 +5,9 @@
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/io/GzFile.h>
 
+#include <zlib.h>
+
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstring>
@@ -15,18 +18,6 @@ namespace mrpt_fog::io
 {
 namespace
 {
-std::array<uint32_t, 256> makeCrcTable()
-{
-	std::array<uint32_t, 256> t{};
-	for (uint32_t n = 0; n < 256; n++)
-	{
-		uint32_t c = n;
-		for (int k = 0; k < 8; k++) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-		t[n] = c;
-	}
-	return t;
-}
-
 /** Last 8 bytes of a gzip file: CRC-32 and uncompressed length mod 2^32 (little endian). */
 void readGzipTrailer(const std::string& path, uint32_t& crc, uint32_t& isize, std::uint64_t& file_size)
 {
@@ -45,11 +36,17 @@ void readGzipTrailer(const std::string& path, uint32_t& crc, uint32_t& isize, st
 
 uint32_t crc32Ieee(const void* data, std::size_t len, uint32_t crc)
 {
-	static const auto table = makeCrcTable();
-	const auto* p = static_cast<const unsigned char*>(data);
-	crc = ~crc;
-	for (std::size_t i = 0; i < len; i++) crc = table[(crc ^ p[i]) & 0xFFu] ^ (crc >> 8);
-	return ~crc;
+	// zlib's CRC-32 (the gzip one), fed in chunks its uInt length can hold.
+	const auto* p = static_cast<const Bytef*>(data);
+	uLong c = crc;
+	while (len > 0)
+	{
+		const uInt n = static_cast<uInt>(std::min<std::size_t>(len, 1u << 30));
+		c = ::crc32(c, p, n);
+		p += n;
+		len -= n;
+	}
+	return static_cast<uint32_t>(c);
 }
 
 bool isGzipFile(const std::string& path)
