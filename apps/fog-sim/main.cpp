@@ -16,6 +16,7 @@
 #include <mrpt_fog/metrics/BiasMetrics.h>
 #include <mrpt_fog/sim/ChamberRun.h>
 #include <mrpt_fog/sim/DriveRun.h>
+#include <mrpt_fog/sim/EffectRegistry.h>
 #include <mrpt_fog/sim/SimRandom.h>
 
 #include <algorithm>
@@ -66,12 +67,10 @@ int main(int argc, char** argv)
 											 "NAME|FILE.yaml", cmd);
 		TCLAP::ValueArg<std::string> out("o", "output", "output file: .rawlog, .csv or .csv.gz", true, "", "OUT", cmd);
 		TCLAP::ValueArg<unsigned long long> seed("", "seed", "run seed (default 20240501)", false, kDefaultSeed, "N", cmd);
-		TCLAP::MultiArg<std::string> effect("", "effect",
-											"error source selection (repeatable): ID = only the listed ids, -ID removes, "
-											"+ID adds, all, none. Ids: shupe_rate radial_gradient gradient_rate "
-											"thermistor_lag hysteresis warmup scale_factor_temp magnetic temp_poly_order "
-											"heat_source earth_rate",
-											false, "ID", cmd);
+		std::string effect_help =
+			"error source selection (repeatable): ID = only the listed ids, -ID removes, +ID adds, all, none. Ids:";
+		for (const auto& d : sim::effectDescriptors()) effect_help += std::string(" ") + d.id;
+		TCLAP::MultiArg<std::string> effect("", "effect", effect_help, false, "ID", cmd);
 		TCLAP::ValueArg<std::string> device("", "device", "device YAML (overlay on the default device)", false, "",
 											"FILE.yaml", cmd);
 		TCLAP::ValueArg<double> rate("", "rate-hz", "output sample rate [Hz] (default 10)", false, 10.0, "F", cmd);

@@ -2,6 +2,7 @@
 #include "support/SimEffectTrial.h"
 #include <mrpt_fog/sim/ChamberProfile.h>
 #include <mrpt_fog/sim/ChamberRun.h>
+#include <mrpt_fog/sim/EffectRegistry.h>
 #include <mrpt_fog/sim/FogSimulator.h>
 
 #include <cmath>
@@ -96,27 +97,13 @@ void applyScale(DeviceSetup& d, const std::string& id, double scale, SimTrialDev
 {
 	auto& e = d.device.errors;
 	info.scale = scale;
-	// effects with one scalar coefficient in errors: (id, member, YAML name)
-	struct ScalarEffect
-	{
-		const char* id;
-		double sim::ErrorCoefficients::*coef;
-		const char* name;
-	};
-	static const ScalarEffect kScalar[] = {
-		{"radial_gradient", &sim::ErrorCoefficients::radial_gradient_dph_per_C, "errors.radial_gradient_dph_per_C"},
-		{"gradient_rate", &sim::ErrorCoefficients::gradient_rate_dph_per_C_per_min,
-		 "errors.gradient_rate_dph_per_C_per_min"},
-		{"hysteresis", &sim::ErrorCoefficients::hysteresis_dph, "errors.hysteresis_dph"},
-		{"warmup", &sim::ErrorCoefficients::warmup_dph, "errors.warmup_dph"},
-		{"scale_factor_temp", &sim::ErrorCoefficients::sf_ppm_per_C, "errors.sf_ppm_per_C"},
-		{"magnetic", &sim::ErrorCoefficients::magnetic_dph_per_uT, "errors.magnetic_dph_per_uT"}};
-	for (const auto& se : kScalar)
-		if (id == se.id)
+	// effects with one scalar coefficient in errors (the registry's descriptor names it)
+	for (const auto& de : sim::effectDescriptors())
+		if (id == de.id && de.coefficient && de.identified_in == sim::IdentifiedIn::Bias)
 		{
-			e.*se.coef *= scale;
-			info.parameter = se.name;
-			info.parameter_value = e.*se.coef;
+			e.*de.coefficient *= scale;
+			info.parameter = de.coefficient_key;
+			info.parameter_value = e.*de.coefficient;
 			return;
 		}
 	if (id == "shupe_rate")
@@ -193,9 +180,13 @@ SimTrialRun finish(RawRun with, const RawRun& without, const std::string& id, co
 
 const std::vector<std::string>& simTrialEffects()
 {
-	static const std::vector<std::string> ids{"shupe_rate", "radial_gradient", "gradient_rate", "thermistor_lag",
-											  "hysteresis", "warmup", "scale_factor_temp", "magnetic",
-											  "temp_poly_order"};
+	static const std::vector<std::string> ids = []
+	{
+		std::vector<std::string> v;  // every bias-channel effect the registry says is trialled
+		for (const auto& d : sim::effectDescriptors())
+			if (d.identified_in == sim::IdentifiedIn::Bias && *d.trial_scaling) v.push_back(d.id);
+		return v;
+	}();
 	return ids;
 }
 

@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/SimulatorConfig.h>
+#include <mrpt_fog/sim/EffectRegistry.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -46,18 +47,8 @@ const std::vector<std::string>& freeParameterIds()
 
 std::string coefficientParameterOf(const std::string& effect_id)
 {
-	static const std::pair<const char*, const char*> map[] = {
-		{"shupe_rate", "winding_asymmetry_m"},
-		{"radial_gradient", "radial_gradient_dph_per_C"},
-		{"gradient_rate", "gradient_rate_dph_per_C_per_min"},
-		{"hysteresis", "hysteresis_dph"},
-		{"warmup", "warmup_dph"},
-		{"scale_factor_temp", "sf_ppm_per_C"},
-		{"magnetic", "magnetic_dph_per_uT"},
-		{"temp_poly_order", "temp_poly_dph"},
-		{"heat_source", "electronics_power_W"}};
-	for (const auto& [e, p] : map)
-		if (effect_id == e) return p;
+	for (const auto& d : sim::effectDescriptors())
+		if (effect_id == d.id) return d.calibration_parameter;
 	return "";
 }
 

@@ -91,14 +91,14 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 		c.edges.push_back(e);
 	}
 	std::vector<int> group_of(fs.signals().size()), index_in(fs.signals().size());
-	for (int kind = 2; kind < 4; kind++)
+	for (const SignalKind kind : {SignalKind::Diff, SignalKind::DiffRate})  // T and dT/dt: the kernel
 	{
 		SignalGroup g;
 		g.kind = kind;
 		for (std::size_t s = 0; s < fs.signals().size(); s++)
 		{
 			const auto& sig = fs.signals()[s];
-			if (static_cast<int>(sig.kind) != kind) continue;
+			if (sig.kind != kind) continue;
 			const auto& nm = fs.normalisation()[s];
 			group_of[s] = static_cast<int>(c.groups.size());
 			index_in[s] = static_cast<int>(g.a.size());
@@ -320,8 +320,9 @@ int countClamped(const KernelBlock* K, std::size_t blocks, const double* T, cons
 {
 	for (const SignalGroup& g : m.groups)
 	{
-		const double* src = (g.kind == 0 || g.kind == 2) ? temp_C : rate_.data();
-		if (g.kind >= 2)
+		const bool of_temperature = g.kind == SignalKind::Temp || g.kind == SignalKind::Diff;
+		const double* src = of_temperature ? temp_C : rate_.data();
+		if (g.kind == SignalKind::Diff || g.kind == SignalKind::DiffRate)
 			sum += groupSumAnyDegree<true>(g.degree, g.a.data(), g.b.data(), src, g.lo.data(), g.hi.data(),
 										   g.centre.data(), g.inv_scale.data(), g.p.data(), g.a.size(), clamped);
 		else

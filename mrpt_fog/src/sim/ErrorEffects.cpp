@@ -1,4 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/sim/EffectRegistry.h>
 #include <mrpt_fog/sim/ErrorEffects.h>
 
 #include <algorithm>
@@ -8,10 +9,12 @@ namespace mrpt_fog::sim
 {
 const std::vector<std::string>& allEffectIds()
 {
-	static const std::vector<std::string> ids = {"shupe_rate",	"radial_gradient",	 "gradient_rate",
-												 "thermistor_lag", "hysteresis",	"warmup",
-												 "scale_factor_temp", "magnetic", "temp_poly_order",
-												 "heat_source", "earth_rate"};
+	static const std::vector<std::string> ids = []
+	{
+		std::vector<std::string> v;
+		for (const auto& d : effectDescriptors()) v.push_back(d.id);
+		return v;
+	}();
 	return ids;
 }
 
@@ -21,14 +24,7 @@ EffectSet defaultEffects()
 	return EffectSet(ids.begin(), ids.end());
 }
 
-void checkEffectId(const std::string& id)
-{
-	const auto& ids = allEffectIds();
-	if (std::find(ids.begin(), ids.end(), id) != ids.end()) return;
-	std::string list;
-	for (const auto& s : ids) list += (list.empty() ? "" : ", ") + s;
-	throw std::invalid_argument("unknown effect '" + id + "' (known: " + list + ")");
-}
+void checkEffectId(const std::string& id) { effectFromId(id); }
 
 EffectSet effectsFromSelection(const std::vector<std::string>& selection)
 {

@@ -31,12 +31,12 @@ FogSimulator::FogSimulator(const FogDevice& device, const EffectSet& effects, st
 	  rng_gyro_(seed, RandomStream::GyroNoise),
 	  rng_therm_(seed, RandomStream::Thermistors)
 {
-	for (const auto& id : effects_) checkEffectId(id);
+	for (const auto& id : effects_) on_[static_cast<std::size_t>(effectFromId(id))] = true;
 }
 
 double FogSimulator::powerW(const ChamberState& s) const
 {
-	return (s.power_on && enabled("heat_source")) ? dev_.thermal.electronics_power_W : 0.0;
+	return (s.power_on && enabled(Effect::HeatSource)) ? dev_.thermal.electronics_power_W : 0.0;
 }
 
 double FogSimulator::nodeAt(const Eigen::VectorXd& T, CoilSide side, double angle_deg) const
@@ -90,7 +90,7 @@ FogSample FogSimulator::makeSample(double dt_s, const Eigen::VectorXd& Tprev, co
 	out.outer_C = thermal_.layerMean_C(T_, L - 1);
 
 	// --- thermistors (lag with inputs linear over the step, exact first-order response)
-	const bool lag = enabled("thermistor_lag");
+	const bool lag = enabled(Effect::ThermistorLag);
 	for (std::size_t i = 0; i < dev_.thermistors.size(); i++)
 	{
 		const auto& t = dev_.thermistors[i];
@@ -126,14 +126,14 @@ FogSample FogSimulator::makeSample(double dt_s, const Eigen::VectorXd& Tprev, co
 	if (!first)
 	{
 		const Eigen::VectorXd Tdot = (T_ - Tprev) / dt_s;
-		if (enabled("shupe_rate")) out.shupe_dph = winding_.shupeRate_rad_s(Tdot) * units::kRadPerSecToDegPerHour;
+		if (enabled(Effect::ShupeRate)) out.shupe_dph = winding_.shupeRate_rad_s(Tdot) * units::kRadPerSecToDegPerHour;
 		thermal += out.shupe_dph;
-		if (enabled("gradient_rate"))
+		if (enabled(Effect::GradientRate))
 		{
 			const double prev = thermal_.layerMean_C(Tprev, 0) - thermal_.layerMean_C(Tprev, L - 1);
 			thermal += e.gradient_rate_dph_per_C_per_min * (dTin_out - prev) / dt_s * kSecondsPerMinute;
 		}
-		if (enabled("hysteresis"))
+		if (enabled(Effect::Hysteresis))
 		{
 			const double dT = out.coil_mean_C - Tprev.head(thermal_.coilNodeCount()).mean();
 			if (dT != 0)
@@ -143,23 +143,17 @@ FogSample FogSimulator::makeSample(double dt_s, const Eigen::VectorXd& Tprev, co
 			}
 		}
 	}
-	if (enabled("hysteresis")) thermal += hysteresis_dph_;
-	if (enabled("radial_gradient")) thermal += e.radial_gradient_dph_per_C * dTin_out;
-	if (enabled("warmup") && std::isfinite(time_since_power_on_s_))
-		thermal += e.warmup_dph * std::exp(-time_since_power_on_s_ / e.warmup_tau_s);
-	if (enabled("magnetic")) thermal += e.magnetic_dph_per_uT * s.field_uT;
-	if (enabled("temp_poly_order"))
-	{
-		const double x = T_(thermal_.electronicsNode()) - e.temp_poly_ref_C;
-		double xp = 1;
-		for (double c : e.temp_poly_dph) thermal += c * (xp *= x);
-	}
+	if (enabled(Effect::Hysteresis)) thermal += hysteresis_dph_;
+	// the additive terms of the registry (EffectRegistry.cpp), in its order
+	const EffectTermInputs in{dTin_out, time_since_power_on_s_, s.field_uT, T_(thermal_.electronicsNode())};
+	for (const auto& d : effectDescriptors())
+		if (d.add_bias_term_dph && enabled(d.effect)) d.add_bias_term_dph(in, e, thermal);
 
 	// --- applied rate and scale factor
 	double applied_dph = s.table_rate_dph;
-	if (enabled("earth_rate")) applied_dph += units::kEarthRate_dph * std::sin(dev_.latitude_deg * units::kDegToRad);
+	if (enabled(Effect::EarthRate)) applied_dph += units::kEarthRate_dph * std::sin(dev_.latitude_deg * units::kDegToRad);
 	double sf_error = 0;
-	if (enabled("scale_factor_temp")) sf_error = e.sf_ppm_per_C * 1e-6 * (out.coil_mean_C - e.sf_ref_C);
+	if (enabled(Effect::ScaleFactorTemp)) sf_error = e.sf_ppm_per_C * 1e-6 * (out.coil_mean_C - e.sf_ref_C);
 	thermal += sf_error * applied_dph;
 	out.thermal_error_dph = thermal;
 

@@ -3,7 +3,8 @@
 
 /** \file ErrorEffects.h
  * Stable ids of the simulator's switchable error sources (the model-gap workflow refers to
- * them by these names; never rename one):
+ * them by these names; never rename one). Each one's descriptor (EffectRegistry.h) is the
+ * single source of what is known about it:
  *   shupe_rate         Shupe term from the node temperature rates (CoilWinding)
  *   radial_gradient    elasto-optic bias proportional to Tin - Tout (coil layer means)
  *   gradient_rate      bias proportional to d(Tin - Tout)/dt

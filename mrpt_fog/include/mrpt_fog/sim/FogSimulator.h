@@ -16,12 +16,14 @@
 #include <mrpt_fog/sim/ChamberProfile.h>
 #include <mrpt_fog/sim/CoilThermalModel.h>
 #include <mrpt_fog/sim/CoilWinding.h>
+#include <mrpt_fog/sim/EffectRegistry.h>
 #include <mrpt_fog/sim/ErrorEffects.h>
 #include <mrpt_fog/sim/FogDevice.h>
 #include <mrpt_fog/sim/SimRandom.h>
 
 #include <Eigen/Dense>
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -62,7 +64,7 @@ class FogSimulator
 	const CoilWinding& winding() const { return winding_; }
 	const Eigen::VectorXd& nodeTemperatures_C() const { return T_; }
 	const FogDevice& device() const { return dev_; }
-	bool enabled(const char* id) const { return effects_.count(id) > 0; }
+	bool enabled(Effect effect) const { return on_[static_cast<std::size_t>(effect)]; }
 
    private:
 	double powerW(const ChamberState& s) const;
@@ -71,6 +73,7 @@ class FogSimulator
 
 	FogDevice dev_;
 	EffectSet effects_;
+	std::array<bool, kEffectCount> on_{};  //!< effects_ by enumerator (no set search per sample)
 	CoilThermalModel thermal_;
 	CoilWinding winding_;
 	SimRandom rng_gyro_, rng_therm_;

@@ -22,7 +22,8 @@ namespace mrpt_fog
  * Horner then run as fixed-length, branch-free loops over the signals. */
 struct Compensator::SignalGroup
 {
-	int kind = 0, degree = 0;
+	SignalKind kind = SignalKind::Temp;
+	int degree = 0;
 	std::vector<int> a, b;  // tracked-channel indices
 	std::vector<double> centre, inv_scale, lo, hi;
 	std::vector<double> p;  // coefficient of z^k of signal i at p[k * n + i], k = 1..degree

@@ -1,0 +1,97 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file EffectRegistry.h
+ * One descriptor per switchable error source of the simulator: what every other part of the
+ * project (the simulator's terms, fog-sim's --help, the simulator configuration of the
+ * model-gap workflow, the proof trials, the completeness tests) reads about an effect. The ids
+ * are stable (files and command lines refer to them; never rename one) and the table's order is
+ * the order of ErrorEffects.h's allEffectIds() and of the "sim.effects" metadata.
+ *
+ * Adding an effect: one enumerator, one descriptor in EffectRegistry.cpp (with its simulator
+ * term when it is an additive bias), its coefficient in ErrorCoefficients (FogDevice.h) and
+ * YAML field list (FogDevice.cpp), and its candidate column builder in the discrepancy
+ * room's CandidateEffect.cpp; tests/sim/test_EffectRegistry.cpp and
+ * tests/discrepancy/test_CandidateEffect.cpp fail until every part is there.
+ */
+
+#include <mrpt_fog/sim/FogDevice.h>
+
+#include <array>
+#include <cstddef>
+#include <string>
+
+namespace mrpt_fog::sim
+{
+enum class Effect : unsigned char
+{
+	ShupeRate,
+	RadialGradient,
+	GradientRate,
+	ThermistorLag,
+	Hysteresis,
+	Warmup,
+	ScaleFactorTemp,
+	Magnetic,
+	TempPolyOrder,
+	HeatSource,
+	EarthRate
+};
+constexpr std::size_t kEffectCount = 11;
+
+/** Which residual of a measured run can identify the effect in the model-gap workflow. */
+enum class IdentifiedIn
+{
+	Bias,  //!< the gyro-bias residual (a column of the bias model)
+	Temperature,  //!< the thermistor residual
+	NotIdentified  //!< not a missing-effect candidate (e.g. Earth rate: known, a constant)
+};
+
+/** Inputs of the additive bias terms at one simulator step. */
+struct EffectTermInputs
+{
+	double gradient_C = 0;  //!< inner minus outer layer mean temperature [degC]
+	double time_since_power_on_s = 0;  //!< +inf while never powered
+	double field_uT = 0;  //!< applied axial magnetic field
+	double electronics_C = 0;  //!< electronics (source) node temperature
+};
+
+struct EffectDescriptor
+{
+	Effect effect;
+	const char* id;  //!< stable id
+	const char* summary;  //!< the physics in one line (fog-sim --help, docs)
+	/** Device YAML key of the effect's strength ("errors.magnetic_dph_per_uT"); for effects
+	 * whose strength is not one scalar of `errors`, the parameter(s) that set it. */
+	const char* coefficient_key;
+	const char* coefficient_unit;
+	/** The scalar coefficient in ErrorCoefficients, or nullptr (strength set elsewhere). */
+	double ErrorCoefficients::*coefficient;
+	/** Free parameter of a simulator configuration that calibrates it (SimulatorConfig.h), ""
+	 * when none. */
+	const char* calibration_parameter;
+	IdentifiedIn identified_in;
+	const char* identified_by;  //!< the data (test-profile segments) that excite and separate it
+	/** Proof-trial scaling (tests/support/SimEffectTrial): the parameter multiplied to reach an
+	 * effect-to-noise ratio ("" = not trialled on the simulator). */
+	const char* trial_scaling;
+	/** Its additive bias term [deg/h], added to the sum in place (the simulator's summation
+	 * order is the table's); nullptr when the term needs the simulator's state (Shupe,
+	 * gradient rate, hysteresis), acts elsewhere (lag, heat source, scale factor on the
+	 * applied rate, Earth rate) and is written in FogSimulator.cpp. */
+	void (*add_bias_term_dph)(const EffectTermInputs& in, const ErrorCoefficients& e, double& sum_dph);
+};
+
+/** Every effect, in enumerator order. */
+const std::array<EffectDescriptor, kEffectCount>& effectDescriptors();
+
+/** The descriptor of an effect. */
+const EffectDescriptor& descriptorOf(Effect effect);
+
+/** Effect by id; throws std::invalid_argument "unknown effect 'x' (known: ...)". */
+Effect effectFromId(const std::string& id);
+
+/** Its stable id. */
+inline const char* toString(Effect effect) { return descriptorOf(effect).id; }
+
+}  // namespace mrpt_fog::sim

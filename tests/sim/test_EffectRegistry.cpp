@@ -1,0 +1,100 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+/* Completeness of the effect registry: every effect has every part of its descriptor, its
+ * coefficient key names the device field the descriptor points at, and its additive simulator
+ * term is linear in that coefficient. */
+#include <gtest/gtest.h>
+#include <mrpt_fog/sim/EffectRegistry.h>
+#include <mrpt_fog/sim/ErrorEffects.h>
+#include <mrpt_fog/sim/FogDevice.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+
+using namespace mrpt_fog::sim;
+
+TEST(EffectRegistry, StableIdsInTheirDocumentedOrder)
+{
+	// The ids files and command lines use (ErrorEffects.h): never renamed or reordered.
+	const std::vector<std::string> documented = {"shupe_rate", "radial_gradient", "gradient_rate", "thermistor_lag",
+												 "hysteresis", "warmup", "scale_factor_temp", "magnetic",
+												 "temp_poly_order", "heat_source", "earth_rate"};
+	EXPECT_EQ(allEffectIds(), documented);
+	ASSERT_EQ(effectDescriptors().size(), documented.size());
+	for (std::size_t i = 0; i < kEffectCount; ++i)
+	{
+		const auto& d = effectDescriptors()[i];
+		EXPECT_EQ(static_cast<std::size_t>(d.effect), i) << d.id;
+		EXPECT_EQ(effectFromId(d.id), d.effect);
+		EXPECT_STREQ(toString(d.effect), d.id);
+	}
+	EXPECT_THROW(effectFromId("no_such_effect"), std::invalid_argument);
+}
+
+TEST(EffectRegistry, EveryDescriptorIsComplete)
+{
+	std::map<std::string, std::string> device;  // "device.<section>.<field>" -> value
+	for (const auto& [k, v] : FogDevice::defaultDevice().describe()) device[k] = v;
+	std::set<std::string> ids;
+	for (const auto& d : effectDescriptors())
+	{
+		SCOPED_TRACE(d.id);
+		EXPECT_TRUE(ids.insert(d.id).second) << "duplicate id";
+		EXPECT_GT(std::string(d.summary).size(), 10u);
+		EXPECT_FALSE(std::string(d.coefficient_key).empty());
+		EXPECT_FALSE(std::string(d.coefficient_unit).empty());
+		if (d.identified_in != IdentifiedIn::NotIdentified)
+			EXPECT_FALSE(std::string(d.identified_by).empty()) << "what data identifies it?";
+		if (d.identified_in == IdentifiedIn::Bias)
+			EXPECT_FALSE(std::string(d.trial_scaling).empty()) << "how do the proof trials scale it?";
+		if (d.coefficient)
+		{
+			// the key is the device field the member pointer designates
+			const auto it = device.find(std::string("device.") + d.coefficient_key);
+			ASSERT_NE(it, device.end()) << d.coefficient_key << " is not a device field";
+			const double member = FogDevice::defaultDevice().errors.*d.coefficient;
+			EXPECT_NEAR(std::stod(it->second), member, 1e-9 * std::max(1.0, std::abs(member)));
+		}
+	}
+}
+
+TEST(EffectRegistry, AdditiveTermsAreLinearInTheirCoefficientAndZeroWithoutIt)
+{
+	EffectTermInputs in;
+	in.gradient_C = 1.7;
+	in.time_since_power_on_s = 300.0;
+	in.field_uT = 45.0;
+	in.electronics_C = 41.0;
+	int terms = 0;
+	for (const auto& d : effectDescriptors())
+	{
+		if (!d.add_bias_term_dph) continue;
+		SCOPED_TRACE(d.id);
+		++terms;
+		ErrorCoefficients e;
+		double one = 0, two = 0, none = 0;
+		d.add_bias_term_dph(in, e, one);
+		if (d.coefficient)
+		{
+			e.*d.coefficient *= 2;
+			d.add_bias_term_dph(in, e, two);
+			EXPECT_NEAR(two, 2 * one, 1e-12 * std::abs(one));
+			e.*d.coefficient = 0;
+		}
+		else
+			e.temp_poly_dph.assign(e.temp_poly_dph.size(), 0.0);
+		d.add_bias_term_dph(in, e, none);
+		EXPECT_NE(one, 0.0);
+		EXPECT_EQ(none, 0.0);
+	}
+	EXPECT_EQ(terms, 4);  // radial_gradient, warmup, magnetic, temp_poly_order
+	// closed forms of two of them
+	ErrorCoefficients e;
+	double w = 0;
+	descriptorOf(Effect::Warmup).add_bias_term_dph(in, e, w);
+	EXPECT_DOUBLE_EQ(w, e.warmup_dph * std::exp(-300.0 / e.warmup_tau_s));
+	double p = 0;
+	descriptorOf(Effect::TempPolyOrder).add_bias_term_dph(in, e, p);
+	EXPECT_NEAR(p, 1e-3 * 16.0 + 1e-5 * 256.0, 1e-15);  // default {1e-3, 1e-5}, x = 41 - 25
+}
