@@ -7,28 +7,14 @@
 #include <fstream>
 #include <sstream>
 
+#include "YamlText.h"
+
 using namespace mrpt_fog::sim;
 
 namespace
 {
-ChamberProfile parse(const std::string& text)
-{
-	std::istringstream ss(text);
-	return ChamberProfile::fromYaml(mrpt::containers::yaml::FromStream(ss), "test.yaml");
-}
-
-std::string errorOf(const std::string& text)
-{
-	try
-	{
-		parse(text);
-	}
-	catch (const std::invalid_argument& e)
-	{
-		return e.what();
-	}
-	return "";
-}
+ChamberProfile parse(const std::string& text) { return fogtest::fromYamlText<ChamberProfile>(text, "test.yaml"); }
+std::string errorOf(const std::string& text) { return fogtest::fromYamlTextError<ChamberProfile>(text, "test.yaml"); }
 }  // namespace
 
 TEST(ChamberProfile, SeedPresetIsThePapersRun)

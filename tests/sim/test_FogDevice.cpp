@@ -5,28 +5,15 @@
 
 #include <sstream>
 
+#include "YamlText.h"
+
 using namespace mrpt_fog;
 using namespace mrpt_fog::sim;
 
 namespace
 {
-FogDevice parse(const std::string& text)
-{
-	std::istringstream ss(text);
-	return FogDevice::fromYaml(mrpt::containers::yaml::FromStream(ss), "dev.yaml");
-}
-std::string errorOf(const std::string& text)
-{
-	try
-	{
-		parse(text);
-	}
-	catch (const std::invalid_argument& e)
-	{
-		return e.what();
-	}
-	return "";
-}
+FogDevice parse(const std::string& text) { return fogtest::fromYamlText<FogDevice>(text, "dev.yaml"); }
+std::string errorOf(const std::string& text) { return fogtest::fromYamlTextError<FogDevice>(text, "dev.yaml"); }
 }  // namespace
 
 TEST(FogDevice, DefaultHasTheSeedsFourThermistors)
