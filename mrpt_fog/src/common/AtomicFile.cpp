@@ -136,19 +136,6 @@ std::string resolveOutput(const std::string& path)
 	return buf;
 }
 
-/** Removes a temporary file on scope exit unless released. */
-struct TempFile
-{
-	std::string path;
-	int fd = -1;
-	int slot = -1;
-	~TempFile()
-	{
-		if (fd >= 0) ::close(fd);
-		if (!path.empty()) ::unlink(path.c_str());
-		unregisterTemporary(slot);
-	}
-};
 }  // namespace
 
 int liveTemporaryFileCount()
@@ -158,78 +145,94 @@ int liveTemporaryFileCount()
 	return n;
 }
 
-void writeFileAtomically(const std::string& path, const std::function<void(const std::string&)>& write)
+AtomicOutput::AtomicOutput(const std::string& path) : path_(path)
 {
 	if (path.empty()) throw std::runtime_error("cannot write: empty output file name");
-	const std::string target = resolveOutput(path);
-	const std::string named = target == path ? "'" + path + "'" : "'" + path + "' (symlink to '" + target + "')";
+	target_ = resolveOutput(path);
+	named_ = target_ == path ? "'" + path + "'" : "'" + path + "' (symlink to '" + target_ + "')";
 	struct stat st{};
-	const bool exists = ::stat(target.c_str(), &st) == 0;
-	if (exists && S_ISDIR(st.st_mode)) throw std::runtime_error("cannot write " + named + ": it is a directory");
+	const bool exists = ::stat(target_.c_str(), &st) == 0;
+	if (exists && S_ISDIR(st.st_mode)) throw std::runtime_error("cannot write " + named_ + ": it is a directory");
 	if (exists && !S_ISREG(st.st_mode))
 	{
 		// A device, FIFO or socket: write straight into it, never replace it.
-		write(target);
+		direct_ = true;
+		write_path_ = target_;
 		return;
 	}
-
-	TempFile tmp;
+	std::string templ = target_ + ".tmp-XXXXXX";
 	{
-		std::string templ = target + ".tmp-XXXXXX";
 		// Block the cleanup signals while the name becomes visible and registered.
 		sigset_t block, old;
 		sigemptyset(&block);
 		for (int s : kSignals) sigaddset(&block, s);
 		installSignalCleanup();
 		::sigprocmask(SIG_BLOCK, &block, &old);
-		tmp.fd = ::mkostemp(templ.data(), O_CLOEXEC);
+		fd_ = ::mkostemp(templ.data(), O_CLOEXEC);
 		const int err = errno;
-		if (tmp.fd >= 0)
+		if (fd_ >= 0)
 		{
-			tmp.path = templ;
-			tmp.slot = registerTemporary(templ);
+			write_path_ = templ;
+			slot_ = registerTemporary(templ);
 		}
 		::sigprocmask(SIG_SETMASK, &old, nullptr);
-		if (tmp.fd < 0)
-			throw std::runtime_error("cannot write " + named + ": cannot create a temporary file in '" + dirOf(target) +
+		if (fd_ < 0)
+			throw std::runtime_error("cannot write " + named_ + ": cannot create a temporary file in '" + dirOf(target_) +
 									 "': " + errnoText(err));
 	}
 	// The mode (and owner, where permitted) the output has, or would have as a new file.
 	if (exists)
 	{
-		if (::fchown(tmp.fd, st.st_uid, st.st_gid) != 0)
+		if (::fchown(fd_, st.st_uid, st.st_gid) != 0)
 		{
 			// Not permitted (not root): keep our own owner; the group alone may still be settable.
-			(void)::fchown(tmp.fd, static_cast<uid_t>(-1), st.st_gid);
+			(void)::fchown(fd_, static_cast<uid_t>(-1), st.st_gid);
 		}
-		::fchmod(tmp.fd, st.st_mode & 07777);
+		::fchmod(fd_, st.st_mode & 07777);
 	}
 	else
-		::fchmod(tmp.fd, 0666 & ~processUmask());
+		::fchmod(fd_, 0666 & ~processUmask());
+}
 
+AtomicOutput::~AtomicOutput()
+{
+	if (fd_ >= 0) ::close(fd_);
+	if (!direct_ && !done_ && !write_path_.empty()) ::unlink(write_path_.c_str());
+	unregisterTemporary(slot_);
+}
+
+void AtomicOutput::commit()
+{
+	if (done_) return;
+	done_ = true;
+	if (direct_) return;
+	// The writer opened the temporary by name: check it is still the file we created.
+	struct stat fst{}, nst{};
+	if (::fstat(fd_, &fst) != 0 || ::lstat(write_path_.c_str(), &nst) != 0 || fst.st_dev != nst.st_dev ||
+		fst.st_ino != nst.st_ino)
+		throw std::runtime_error("cannot write " + named_ + ": the temporary file was replaced while being written");
+	done_ = false;  // from here on, a failure removes the temporary
+	if (::fsync(fd_) != 0)
+		throw std::runtime_error("cannot write " + named_ + ": " + errnoText(errno) + " (while syncing to disk)");
+	if (std::rename(write_path_.c_str(), target_.c_str()) != 0)
+		throw std::runtime_error("cannot write " + named_ + ": " + errnoText(errno));
+	done_ = true;
+}
+
+void writeFileAtomically(const std::string& path, const std::function<void(const std::string&)>& write)
+{
+	AtomicOutput out(path);
 	try
 	{
-		write(tmp.path);
+		write(out.writePath());
 	}
 	catch (const std::exception& e)
 	{
 		const std::string what = e.what();
 		if (what.find(path) != std::string::npos) throw;
-		throw std::runtime_error("cannot write " + named + ": " + what);
+		throw std::runtime_error("cannot write " + out.named() + ": " + what);
 	}
-	// The writer opened the temporary by name: check it is still the file we created.
-	struct stat fst{}, nst{};
-	if (::fstat(tmp.fd, &fst) != 0 || ::lstat(tmp.path.c_str(), &nst) != 0 || fst.st_dev != nst.st_dev ||
-		fst.st_ino != nst.st_ino)
-	{
-		tmp.path.clear();  // not ours any more: leave it alone
-		throw std::runtime_error("cannot write " + named + ": the temporary file was replaced while being written");
-	}
-	if (::fsync(tmp.fd) != 0)
-		throw std::runtime_error("cannot write " + named + ": " + errnoText(errno) + " (while syncing to disk)");
-	if (std::rename(tmp.path.c_str(), target.c_str()) != 0)
-		throw std::runtime_error("cannot write " + named + ": " + errnoText(errno));
-	tmp.path.clear();  // renamed: nothing to remove
+	out.commit();
 }
 
 void writeTextFileAtomically(const std::string& path, const std::string& text)

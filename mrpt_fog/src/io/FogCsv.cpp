@@ -3,9 +3,15 @@
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/io/FogRawlogMetadata.h>
 #include <mrpt_fog/io/GzFile.h>
+#include <mrpt_fog/io/FogLogWriter.h>
+#include <mrpt_fog/io/GzStream.h>
 #include <mrpt_fog/io/NumberText.h>
 
+#include "FogLogReaderImpl.h"
+
 #include <cmath>
+#include <cstring>
+#include <string_view>
 #include <limits>
 #include <map>
 #include <optional>
@@ -25,6 +31,14 @@ std::string trim(const std::string& s)
 	return s.substr(b, e - b + 1);
 }
 
+std::string_view trimView(std::string_view s)
+{
+	std::size_t b = 0, e = s.size();
+	while (b < e && (s[b] == ' ' || s[b] == '\t')) b++;
+	while (e > b && (s[e - 1] == ' ' || s[e - 1] == '\t')) e--;
+	return s.substr(b, e - b);
+}
+
 std::vector<std::string> splitCells(const std::string& line)
 {
 	std::vector<std::string> cells;
@@ -38,6 +52,9 @@ std::vector<std::string> splitCells(const std::string& line)
 	}
 	return cells;
 }
+
+/** A cell for an error message: cut to 40 bytes, binary bytes escaped. */
+std::string shown(std::string_view cell) { return io::detail::quoteForError(cell.data(), cell.size()); }
 
 /** What a header column holds. */
 struct Column
@@ -55,58 +72,73 @@ struct Column
 	std::string name;
 };
 
-/** Splits the text into lines (LF or CRLF), keeping 1-based line numbers. */
-std::vector<std::string> splitLines(const std::string& text)
-{
-	std::vector<std::string> lines;
-	std::string::size_type start = 0;
-	while (start < text.size())
-	{
-		auto nl = text.find('\n', start);
-		if (nl == std::string::npos) nl = text.size();
-		std::string line = text.substr(start, nl - start);
-		if (!line.empty() && line.back() == '\r') line.pop_back();
-		lines.push_back(std::move(line));
-		start = nl + 1;
-	}
-	return lines;
-}
-
-class CsvParser
+/** Streaming CSV reader: metadata and header at construction, then one row per next(). */
+class CsvReaderImpl : public FogLogReader::Impl
 {
    public:
-	explicit CsvParser(const std::string& path) : path_(path) {}
-
-	FogSeries parse(const std::string& text)
+	CsvReaderImpl(const std::string& path, const ReadLimits& limits) : path_(path), limits_(limits), in_(path)
 	{
-		lines_ = splitLines(text);
-		if (!lines_.empty() && lines_[0].rfind("\xEF\xBB\xBF", 0) == 0) lines_[0].erase(0, 3);  // UTF-8 BOM
-		bool any_content = false;
-		for (const auto& l : lines_)
-			if (!trim(l).empty()) any_content = true;
-		if (!any_content) throw FogIoError(path_ + ": empty file (no metadata, header or data)");
-
-		std::size_t i = 0;
-		for (; i < lines_.size(); i++)
+		std::string l;
+		bool any_content = false, first = true;
+		for (;;)
 		{
-			const std::string l = trim(lines_[i]);
-			if (l.empty()) continue;
-			if (l[0] != '#') break;
-			parseMetadataLine(l, i + 1);
+			if (!readLine(l))
+			{
+				if (!any_content) throw FogIoError(path_ + ": empty file (no metadata, header or data)");
+				throw FogIoError(path_ +
+								 ": no header row after the '#' metadata lines (expected e.g. 'time_s,rate_z_dph,temp_Ti1_C')");
+			}
+			if (first && l.rfind("\xEF\xBB\xBF", 0) == 0) l.erase(0, 3);  // UTF-8 BOM
+			first = false;
+			const std::string t = trim(l);
+			if (t.empty()) continue;
+			any_content = true;
+			if (t[0] != '#') break;
+			parseMetadataLine(t, in_.lineNumber());
 		}
-		if (i == lines_.size())
-			throw FogIoError(path_ + ": no header row after the '#' metadata lines (expected e.g. 'time_s,rate_z_dph,temp_Ti1_C')");
-		parseHeader(lines_[i], i + 1);
-		for (i++; i < lines_.size(); i++)
-		{
-			if (trim(lines_[i]).empty()) continue;
-			parseRow(lines_[i], i + 1);
-		}
-		if (s_.empty()) throw FogIoError(path_ + ": header but no data rows");
-		return std::move(s_);
+		parseHeader(l, in_.lineNumber());
+		header.has_axis = s_.has_axis;
+		header.sensor_label = s_.sensor_label;
+		header.epoch_s = s_.epoch_s;
+		header.thermistors = s_.thermistors;
+		header.metadata = s_.metadata;
+		header.temp_C.assign(s_.thermistors.size(), {});
+		if (has_table_) header.table_rate_dph.assign(1, kNaN);
+		if (has_field_) header.field_uT.assign(1, kNaN);
+		if (has_power_) header.power.assign(1, kNaN);
 	}
 
+	bool next(FogSample& x) override
+	{
+		for (;;)
+		{
+			if (!readLine(line_))
+			{
+				if (samples == 0) throw FogIoError(path_ + ": header but no data rows");
+				return false;
+			}
+			if (!trimView(line_).empty()) break;
+		}
+		parseRow(line_, in_.lineNumber(), x);
+		samples++;
+		return true;
+	}
+	bool isRawlog() const override { return false; }
+	std::uint64_t fileBytesRead() const override { return in_.fileBytesRead(); }
+	std::uint64_t fileBytes() const override { return in_.fileBytes(); }
+
    private:
+	bool readLine(std::string& l)
+	{
+		try
+		{
+			return in_.readLine(l, limits_.max_line_bytes);
+		}
+		catch (const FogIoError&)
+		{
+			throw;
+		}
+	}
 	[[noreturn]] void fail(std::size_t line, const std::string& what) const
 	{
 		throw FogIoError(path_ + ":" + std::to_string(line) + ": " + what);
@@ -137,7 +169,7 @@ class CsvParser
 		else if (key == "epoch_s")
 		{
 			const auto v = io::parseNumber(value);
-			if (!v || !std::isfinite(*v)) fail(line, "epoch_s: cannot parse '" + value + "' as a number of seconds");
+			if (!v || !std::isfinite(*v)) fail(line, "epoch_s: cannot parse '" + shown(value) + "' as a number of seconds");
 			s_.epoch_s = *v;
 		}
 		else
@@ -146,7 +178,7 @@ class CsvParser
 			{
 				const auto v = io::parseNumber(value);
 				if (!v || !std::isfinite(*v) || std::abs(*v) > 90)
-					fail(line, "latitude_deg: '" + value + "' is not a latitude in [-90, 90] deg");
+					fail(line, "latitude_deg: '" + shown(value) + "' is not a latitude in [-90, 90] deg");
 			}
 			s_.metadata.emplace_back(key, value);  // latitude_deg and unknown keys are kept
 		}
@@ -155,8 +187,10 @@ class CsvParser
 	void parseThermistor(const std::string& name, const std::string& value, std::size_t line)
 	{
 		if (!isValidThermistorName(name))
-			fail(line, "thermistor name '" + name + "' is not valid (letters, digits and '_' only)");
+			fail(line, "thermistor name '" + shown(name) + "' is not valid (letters, digits and '_' only)");
 		if (declared_.count(name)) fail(line, "thermistor '" + name + "' declared twice");
+		if (declared_.size() >= limits_.max_thermistors)
+			fail(line, "more than the limit of " + std::to_string(limits_.max_thermistors) + " thermistors declared");
 		ThermistorInfo info;
 		info.name = name;
 		std::istringstream tokens(value);
@@ -174,17 +208,18 @@ class CsvParser
 				}
 				catch (const std::exception&)
 				{
-					fail(line, "thermistor '" + name + "': side '" + v + "' is not inner, outer or other");
+					fail(line, "thermistor '" + name + "': side '" + shown(v) + "' is not inner, outer or other");
 				}
 			}
 			else if (k == "angle_deg")
 			{
 				const auto a = io::parseNumber(v);
-				if (!a || !std::isfinite(*a)) fail(line, "thermistor '" + name + "': cannot parse angle_deg '" + v + "'");
+				if (!a || !std::isfinite(*a)) fail(line, "thermistor '" + name + "': cannot parse angle_deg '" + shown(v) + "'");
 				info.angle_deg = *a;
 			}
 			else
-				fail(line, "thermistor '" + name + "': unknown attribute '" + tok + "' (expected side=inner|outer|other angle_deg=<deg>)");
+				fail(line, "thermistor '" + name + "': unknown attribute '" + shown(tok) +
+							   "' (expected side=inner|outer|other angle_deg=<deg>)");
 		}
 		declared_[name] = {info, line};
 	}
@@ -194,7 +229,7 @@ class CsvParser
 		header_line_ = line;
 		const auto cells = splitCells(l);
 		if (!cells.empty() && io::parseNumber(cells[0]))
-			fail(line, "header row missing: the first non-'#' line starts with a number ('" + cells[0] +
+			fail(line, "header row missing: the first non-'#' line starts with a number ('" + shown(cells[0]) +
 						   "'); expected column names such as time_s,rate_z_dph,temp_Ti1_C");
 		s_.has_axis = {false, false, false};
 		std::map<std::string, std::size_t> seen;
@@ -203,7 +238,7 @@ class CsvParser
 			const std::string& n = cells[c];
 			if (n.empty()) fail(line, "column " + std::to_string(c + 1) + " has an empty name");
 			if (seen.count(n))
-				fail(line, "column " + std::to_string(c + 1) + " '" + n + "' repeats column " + std::to_string(seen[n] + 1));
+				fail(line, "column " + std::to_string(c + 1) + " '" + shown(n) + "' repeats column " + std::to_string(seen[n] + 1));
 			seen[n] = c;
 			Column col{Column::Kind::Time, 0, n};
 			if (n == "time_s") col.kind = Column::Kind::Time;
@@ -220,7 +255,11 @@ class CsvParser
 			{
 				const std::string name = n.substr(5, n.size() - 7);
 				if (!isValidThermistorName(name))
-					fail(line, "column " + std::to_string(c + 1) + " '" + n + "': thermistor name '" + name + "' is not valid");
+					fail(line, "column " + std::to_string(c + 1) + " '" + shown(n) + "': thermistor name '" + shown(name) +
+								   "' is not valid");
+				if (s_.thermistors.size() >= limits_.max_thermistors)
+					fail(line, "column " + std::to_string(c + 1) + " '" + shown(n) + "': more than the limit of " +
+								   std::to_string(limits_.max_thermistors) + " thermistor columns");
 				col.kind = Column::Kind::Temp;
 				col.index = static_cast<int>(s_.thermistors.size());
 				ThermistorInfo info;
@@ -229,7 +268,7 @@ class CsvParser
 				s_.thermistors.push_back(info);
 			}
 			else
-				fail(line, "column " + std::to_string(c + 1) + " '" + n +
+				fail(line, "column " + std::to_string(c + 1) + " '" + shown(n) +
 							   "' is not a known column (time_s, rate_x|y|z_dph, temp_<name>_C, table_rate_dph, field_uT, power)");
 			columns_.push_back(col);
 		}
@@ -239,34 +278,50 @@ class CsvParser
 		for (const auto& [name, d] : declared_)
 			if (s_.thermistorIndex(name) < 0)
 				fail(d.second, "thermistor '" + name + "' is declared but the header has no column temp_" + name + "_C");
-		s_.temp_C.assign(s_.thermistors.size(), {});
 		if (seen.count("table_rate_dph")) has_table_ = true;
 		if (seen.count("field_uT")) has_field_ = true;
 		if (seen.count("power")) has_power_ = true;
+		cells_.resize(columns_.size());
 	}
 
-	double number(const std::string& cell, std::size_t line, std::size_t c) const
+	double number(std::string_view cell, std::size_t line, std::size_t c) const
 	{
 		const auto v = io::parseNumber(cell);
-		if (!v) failCell(line, c, "cannot parse '" + cell + "' as a number");
+		if (!v) failCell(line, c, "cannot parse '" + shown(cell) + "' as a number");
 		return *v;
 	}
 
-	void parseRow(const std::string& l, std::size_t line)
+	void parseRow(const std::string& l, std::size_t line, FogSample& x)
 	{
-		const auto cells = splitCells(l);
-		if (cells.size() != columns_.size())
-			fail(line, std::to_string(cells.size()) + " cells, but the header (line " + std::to_string(header_line_) +
+		// Split in place (no allocation per cell).
+		std::size_t ncells = 1;
+		for (const char* p = l.data(); (p = static_cast<const char*>(std::memchr(p, ',', l.data() + l.size() - p)));)
+		{
+			ncells++;
+			p++;
+		}
+		if (ncells != columns_.size())
+			fail(line, std::to_string(ncells) + " cells, but the header (line " + std::to_string(header_line_) +
 						   ") has " + std::to_string(columns_.size()) + " columns");
-		double table = kNaN, field = kNaN, power = kNaN;
-		std::array<double, 3> rate{kNaN, kNaN, kNaN};
+		{
+			std::size_t start = 0;
+			for (std::size_t c = 0; c < ncells; c++)
+			{
+				std::size_t comma = l.find(',', start);
+				if (comma == std::string::npos) comma = l.size();
+				cells_[c] = trimView(std::string_view(l).substr(start, comma - start));
+				start = comma + 1;
+			}
+		}
+		x.table_rate_dph = x.field_uT = x.power = kNaN;
+		x.rate_dph = {kNaN, kNaN, kNaN};
 		double t = kNaN;
 		int empty_rate_col = -1;  // first rate column with an empty cell (gyro off), -1 when none
-		std::vector<double> temps(s_.thermistors.size(), kNaN);
-		for (std::size_t c = 0; c < cells.size(); c++)
+		x.temp_C.assign(s_.thermistors.size(), kNaN);
+		for (std::size_t c = 0; c < ncells; c++)
 		{
 			const Column& col = columns_[c];
-			const std::string& cell = cells[c];
+			const std::string_view cell = cells_[c];
 			switch (col.kind)
 			{
 				case Column::Kind::Time:
@@ -279,8 +334,11 @@ class CsvParser
 					}
 					if (cell.empty()) failCell(line, c, "empty cell (only temperatures may be missing)");
 					const double v = number(cell, line, c);
-					if (!std::isfinite(v)) failCell(line, c, "value '" + cell + "' is not finite");
-					(col.kind == Column::Kind::Time ? t : rate[col.index]) = v;
+					if (!std::isfinite(v)) failCell(line, c, "value '" + shown(cell) + "' is not finite");
+					if (col.kind == Column::Kind::Rate && std::abs(v) > limits_.max_abs_rate_dph)
+						failCell(line, c, "rate " + shown(cell) + " deg/h is beyond the limit of " +
+											  io::formatNumber(limits_.max_abs_rate_dph) + " deg/h (no gyro measures that)");
+					(col.kind == Column::Kind::Time ? t : x.rate_dph[col.index]) = v;
 					break;
 				}
 				case Column::Kind::Temp:
@@ -291,97 +349,68 @@ class CsvParser
 					if (!cell.empty())
 					{
 						v = number(cell, line, c);
-						if (std::isinf(v)) failCell(line, c, "value '" + cell + "' is infinite");
+						if (std::isinf(v)) failCell(line, c, "value '" + shown(cell) + "' is infinite");
+						if (col.kind == Column::Kind::TableRate && std::abs(v) > limits_.max_abs_rate_dph)
+							failCell(line, c, "table rate " + shown(cell) + " deg/h is beyond the limit of " +
+												  io::formatNumber(limits_.max_abs_rate_dph) + " deg/h");
 					}
-					if (col.kind == Column::Kind::Temp) temps[col.index] = v;
-					else (col.kind == Column::Kind::TableRate ? table : field) = v;
+					if (col.kind == Column::Kind::Temp) x.temp_C[col.index] = v;
+					else (col.kind == Column::Kind::TableRate ? x.table_rate_dph : x.field_uT) = v;
 					break;
 				}
 				case Column::Kind::Power:
 				{
 					if (cell.empty()) failCell(line, c, "empty cell (power must be 1 or 0)");
 					const double v = number(cell, line, c);
-					if (v != 0.0 && v != 1.0) failCell(line, c, "power must be 1 (on) or 0 (off), not '" + cell + "'");
-					power = v;
+					if (v != 0.0 && v != 1.0) failCell(line, c, "power must be 1 (on) or 0 (off), not '" + shown(cell) + "'");
+					x.power = v;
 					break;
 				}
 			}
 		}
-		if (empty_rate_col >= 0 && power != 0.0)
+		if (empty_rate_col >= 0 && x.power != 0.0)
 			failCell(line, static_cast<std::size_t>(empty_rate_col),
 					 has_power_ ? "empty cell with the gyro powered (a rate may be empty only where power is 0)"
 								: "empty cell (only temperatures may be missing; a rate may be empty only on a "
 								  "power-off row, power 0)");
-		if (!s_.time_s.empty() && !(t > s_.time_s.back()))
+		if (samples > 0 && !(t > last_t_))
 		{
-			const std::string prev = io::formatNumber(s_.time_s.back());
+			const std::string prev = io::formatNumber(last_t_);
 			fail(line, "column 1 (time_s): time " + io::formatNumber(t) + " s " +
-						   (t == s_.time_s.back() ? "duplicates the previous sample's time" : "goes backwards from the previous sample's") +
+						   (t == last_t_ ? "duplicates the previous sample's time" : "goes backwards from the previous sample's") +
 						   " (" + prev + " s); time_s must be strictly increasing");
 		}
-		s_.time_s.push_back(t);
-		for (int a = 0; a < 3; a++)
-			if (s_.has_axis[a]) s_.rate_dph[a].push_back(rate[a]);
-		for (std::size_t i = 0; i < temps.size(); i++) s_.temp_C[i].push_back(temps[i]);
-		if (has_table_) s_.table_rate_dph.push_back(table);
-		if (has_field_) s_.field_uT.push_back(field);
-		if (has_power_) s_.power.push_back(power);
+		last_t_ = t;
+		x.time_s = t;
 	}
 
 	std::string path_;
-	std::vector<std::string> lines_;
+	ReadLimits limits_;
+	io::GzReader in_;
+	std::string line_;
 	std::map<std::string, std::pair<ThermistorInfo, std::size_t>> declared_;
 	std::vector<Column> columns_;
+	std::vector<std::string_view> cells_;
 	std::size_t header_line_ = 0;
 	bool has_table_ = false, has_field_ = false, has_power_ = false;
-	FogSeries s_;
+	double last_t_ = 0;
+	FogSeries s_;  // layout being built from the header
 };
-
-std::string csvText(const FogSeries& s)
-{
-	std::string out;
-	out += "# sensor: " + s.sensor_label + "\n";
-	out += "# epoch_s: " + io::formatNumber(s.epoch_s) + "\n";
-	for (const auto& t : s.thermistors)
-		out += "# thermistor " + t.name + ": side=" + toString(t.side) + " angle_deg=" + io::formatNumber(t.angle_deg) + "\n";
-	for (const auto& [k, v] : s.metadata)
-	{
-		if (k == "sensor" || k == "epoch_s" || k.rfind("thermistor ", 0) == 0) continue;  // written above
-		out += k.empty() ? "# " + v + "\n" : "# " + k + ": " + v + "\n";
-	}
-	out += "time_s";
-	const char* rates[3] = {"rate_x_dph", "rate_y_dph", "rate_z_dph"};
-	for (int a = 0; a < 3; a++)
-		if (s.has_axis[a]) out += std::string(",") + rates[a];
-	for (const auto& t : s.thermistors) out += ",temp_" + t.name + "_C";
-	if (!s.table_rate_dph.empty()) out += ",table_rate_dph";
-	if (!s.field_uT.empty()) out += ",field_uT";
-	if (!s.power.empty()) out += ",power";
-	out += "\n";
-	auto cell = [&](double v) {
-		out += ',';
-		if (!std::isnan(v)) out += io::formatNumber(v);  // NaN = missing reading: empty cell
-	};
-	for (std::size_t k = 0; k < s.size(); k++)
-	{
-		out += io::formatNumber(s.time_s[k]);
-		for (int a = 0; a < 3; a++)
-			if (s.has_axis[a]) cell(s.rate_dph[a][k]);
-		for (const auto& col : s.temp_C) cell(col[k]);
-		if (!s.table_rate_dph.empty()) cell(s.table_rate_dph[k]);
-		if (!s.field_uT.empty()) cell(s.field_uT[k]);
-		if (!s.power.empty()) cell(s.power[k]);
-		out += '\n';
-	}
-	return out;
-}
 
 }  // namespace
 
+std::unique_ptr<FogLogReader::Impl> makeCsvReaderImpl(const std::string& path, const ReadLimits& limits)
+{
+	return std::make_unique<CsvReaderImpl>(path, limits);
+}
+
 FogSeries readFogCsv(const std::string& path)
 {
-	const std::string text = io::readWholeFile(path);
-	return CsvParser(path).parse(text);
+	FogLogReader reader(path);
+	FogSeries s = emptySeriesLike(reader.header());
+	FogSample x;
+	while (reader.next(x)) appendSample(s, x, reader);
+	return s;
 }
 
 void writeFogCsv(const std::string& path, const FogSeries& series)
@@ -404,8 +433,10 @@ void writeFogCsv(const std::string& path, const FogSeries& series)
 	{
 		throw FogIoError(path + ": cannot write: " + e.what());
 	}
-	const std::string ext = fileExtension(path);
-	io::writeWholeFileAtomically(path, csvText(series), ext.size() >= 3 && ext.compare(ext.size() - 3, 3, ".gz") == 0);
+	FogLogWriter w(path, layoutOf(series));
+	FogSample x;
+	for (std::size_t k = 0; k < series.size(); k++) w.write(sampleOf(series, k, x));
+	w.close();
 }
 
 }  // namespace mrpt_fog

@@ -1,19 +1,20 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
-#include <mrpt/io/CMemoryStream.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CObservationComment.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/io/FogRawlogMetadata.h>
-#include <mrpt_fog/io/GzFile.h>
+#include <mrpt_fog/io/GzStream.h>
+#include <mrpt_fog/io/NumberText.h>
 #include <mrpt_fog/obs/FogSeriesConversion.h>
 #include <mrpt_fog/obs/registerAllClasses.h>
 
-#include <algorithm>
 #include <cmath>
+#include <deque>
 #include <map>
 
+#include "FogLogReaderImpl.h"
 #include "RawlogCommon.h"
 
 namespace mrpt_fog
@@ -33,7 +34,7 @@ std::string whyReadFailed(const std::string& what, bool at_end_of_data)
 	{
 		const auto b = p + 25;
 		const auto e = what.find('\'', b);
-		return "unknown class '" + what.substr(b, e - b) +
+		return "unknown class '" + io::detail::quoteForError(what.data() + b, e - b) +
 			   "' (not registered in MRPT's RTTI: a plugin library missing, or a corrupt class name)";
 	}
 	if (at_end_of_data)
@@ -48,153 +49,237 @@ std::string labelList(const std::map<std::string, std::size_t>& counts)
 	return s;
 }
 
-/** Builds one sensor's FogSeries sample by sample (times kept as ticks until the epoch is known). */
-class FogAccumulator
+/** Streaming rawlog reader: objects are deserialised one at a time from a GzReader. */
+class RawlogReaderImpl : public FogLogReader::Impl
 {
    public:
-	FogSeries series;
-	std::vector<int64_t> ticks;
-
-	std::size_t size() const { return ticks.size(); }
-
-	/** Appends an observation; throws std::invalid_argument if its layout differs from the first. */
-	void add(const CObservationFOG::Ptr& o)
+	RawlogReaderImpl(const std::string& path, const std::string& label, const ReadLimits& limits,
+					 FogLogReader::ObservationSink others)
+		: path_(path), label_(label), limits_(limits), sink_(std::move(others)), in_(path), arch_(in_)
 	{
-		if (!first_)
+		registerAllClasses_mrpt_fog();
+		if (in_.atEnd()) throw FogIoError(path_ + ": empty rawlog (0 objects)");
+		// Read up to the first sample of the sensor: its layout and metadata are the header.
+		while (queue_.empty())
+			if (!readObject()) break;
+		if (!first_) failNoSensor();
+		header = emptySeriesLike(seriesFromObservations({first_}));
+		header.epoch_s = std::floor(mrpt::Clock::toDouble(first_->timestamp));
+		if (auto m = metas_.find(chosen_); m != metas_.end())
 		{
-			first_ = o;
-			series = seriesFromObservations({o});
-			ticks.push_back(ticksOf(o->timestamp));
-			return;
+			header.epoch_s = m->second.epoch_s;
+			header.metadata = m->second.metadata;
 		}
-		const CObservationFOG& f = *first_;
-		if (o->thermistors != f.thermistors || o->hasAxis != f.hasAxis || o->hasTableRate != f.hasTableRate ||
-			o->hasField != f.hasField || o->hasPower != f.hasPower)
-			throw std::invalid_argument("FOG observation of sensor '" + o->sensorLabel +
-										"' has another layout (thermistors, axes or optional fields) than its first one");
-		ticks.push_back(ticksOf(o->timestamp));
-		series.time_s.push_back(0.0);  // set from the ticks at the end
-		for (int a = 0; a < 3; a++)
-			if (series.has_axis[a]) series.rate_dph[a].push_back(o->rate_dph[a]);
-		for (std::size_t i = 0; i < series.temp_C.size(); i++) series.temp_C[i].push_back(o->temperature_C(i));
-		if (f.hasTableRate) series.table_rate_dph.push_back(o->tableRate_dph);
-		if (f.hasField) series.field_uT.push_back(o->field_uT);
-		if (f.hasPower) series.power.push_back(o->powerOn ? 1.0 : 0.0);
+		if (first_->hasTableRate) header.table_rate_dph.assign(1, NAN);
+		if (first_->hasField) header.field_uT.assign(1, NAN);
+		if (first_->hasPower) header.power.assign(1, NAN);
+		epoch_ticks_ = ticksOf(mrpt::Clock::fromDouble(header.epoch_s));
+		if (header.thermistors.size() > limits_.max_thermistors)
+			throw FogIoError(path_ + ": sensor '" + chosen_ + "' has " + std::to_string(header.thermistors.size()) +
+							 " thermistors, more than the limit of " + std::to_string(limits_.max_thermistors));
 	}
 
+	bool next(FogSample& x) override
+	{
+		while (queue_.empty())
+			if (!readObject())
+			{
+				finish();
+				return false;
+			}
+		const CObservationFOG::Ptr o = std::move(queue_.front().first);
+		const std::size_t index = queue_.front().second;
+		queue_.pop_front();
+		const int64_t ticks = ticksOf(o->timestamp);
+		if (samples > 0 && ticks <= last_ticks_)
+			throw FogIoError(path_ + ": object #" + std::to_string(index) + ": sensor '" + chosen_ + "': time " +
+							 io::formatNumber(static_cast<double>(ticks - epoch_ticks_) / kTicksPerSecond) + " s " +
+							 (ticks == last_ticks_ ? "duplicates the previous sample's time" : "goes backwards") +
+							 "; times must be strictly increasing");
+		last_ticks_ = ticks;
+		x.time_s = static_cast<double>(ticks - epoch_ticks_) / kTicksPerSecond;
+		const bool off = o->hasPower && !o->powerOn;
+		for (int a = 0; a < 3; a++)
+		{
+			x.rate_dph[a] = o->hasAxis[a] ? o->rate_dph[a] : NAN;
+			if (!o->hasAxis[a]) continue;
+			const double r = x.rate_dph[a];
+			if (!(std::isfinite(r) || (std::isnan(r) && off)) || std::abs(r) > limits_.max_abs_rate_dph)
+				throw FogIoError(path_ + ": object #" + std::to_string(index) + ": sensor '" + chosen_ + "': rate_" +
+								 axisLetter(static_cast<GyroAxis>(a)) + "_dph " + io::formatNumber(r) +
+								 (std::isfinite(r) ? " deg/h is beyond the limit of " + io::formatNumber(limits_.max_abs_rate_dph) + " deg/h"
+												   : " is not finite (a missing rate is allowed only where power is 0)"));
+		}
+		x.temp_C.resize(header.thermistors.size());
+		for (std::size_t i = 0; i < x.temp_C.size(); i++)
+		{
+			x.temp_C[i] = o->temperature_C(i);
+			if (std::isinf(x.temp_C[i]))
+				throw FogIoError(path_ + ": object #" + std::to_string(index) + ": infinite temperature of thermistor '" +
+								 header.thermistors[i].name + "'");
+		}
+		x.table_rate_dph = o->hasTableRate ? o->tableRate_dph : NAN;
+		x.field_uT = o->hasField ? o->field_uT : NAN;
+		x.power = o->hasPower ? (o->powerOn ? 1.0 : 0.0) : NAN;
+		samples++;
+		return true;
+	}
+
+	std::size_t objectsRead() const override { return objects_; }
+	bool isRawlog() const override { return true; }
+	std::uint64_t fileBytesRead() const override { return in_.fileBytesRead(); }
+	std::uint64_t fileBytes() const override { return in_.fileBytes(); }
+
    private:
+	/** Reads one object; false at the end of the data. */
+	bool readObject()
+	{
+		if (in_.atEnd()) return false;
+		const uint64_t offset = in_.position();
+		mrpt::serialization::CSerializable::Ptr obj;
+		try
+		{
+			obj = arch_.ReadObject();
+		}
+		catch (const FogIoError&)
+		{
+			throw;  // corrupt or truncated gzip data: says so itself
+		}
+		catch (const std::exception& e)
+		{
+			const bool at_end = in_.atEnd();
+			throw FogIoError(path_ + ": read " + std::to_string(objects_) + " objects, then stopped at object #" +
+							 std::to_string(objects_) + " (byte offset " + std::to_string(offset) +
+							 " of the decompressed data, " + std::to_string(in_.position()) + " bytes in all" +
+							 (at_end ? "" : " read") + "): " + whyReadFailed(e.what(), at_end));
+		}
+		if (auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj)) take(o, objects_);
+		else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj))
+		{
+			for (const auto& so : *sf) take(so, objects_);
+		}
+		else if (std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(obj))
+			throw FogIoError(path_ + ": object #" + std::to_string(objects_) + " (byte offset " + std::to_string(offset) +
+							 ") is a CActionCollection: rawlogs with actions (sensory-frame format) are not supported; "
+							 "use the observations-only format");
+		else
+			throw FogIoError(path_ + ": object #" + std::to_string(objects_) + " (byte offset " + std::to_string(offset) +
+							 ") is a " + (obj ? obj->GetRuntimeClass()->className : "null object") + ", not an observation");
+		objects_++;
+		return true;
+	}
+
+	void take(const mrpt::obs::CObservation::Ptr& o, std::size_t index)
+	{
+		if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o))
+		{
+			if (chosen_.empty() && (label_.empty() || f->sensorLabel == label_))
+			{
+				chosen_ = f->sensorLabel;
+				// Metadata blocks met before: the sensor's own is consumed, the others go on.
+				for (auto& [l, c] : pending_meta_)
+					if (l != chosen_ && sink_) sink_(c);
+				pending_meta_.clear();
+			}
+			if (f->sensorLabel == chosen_)
+			{
+				if (!first_) first_ = f;
+				else if (f->thermistors != first_->thermistors || f->hasAxis != first_->hasAxis ||
+						 f->hasTableRate != first_->hasTableRate || f->hasField != first_->hasField ||
+						 f->hasPower != first_->hasPower)
+					throw FogIoError(path_ + ": object #" + std::to_string(index) + ": FOG observation of sensor '" +
+									 f->sensorLabel + "' has another layout (thermistors, axes or optional fields) than its first one");
+				queue_.emplace_back(f, index);
+				return;
+			}
+			other_fog_[f->sensorLabel]++;
+			if (label_.empty()) failSeveral();
+		}
+		else if (auto c = std::dynamic_pointer_cast<mrpt::obs::CObservationComment>(o))
+		{
+			if (auto m = io::parseFogRawlogMetadata(c->text); m && !metas_.count(m->sensor_label))
+			{
+				metas_[m->sensor_label] = *m;
+				if (!label_.empty() && m->sensor_label == label_) return;  // the chosen sensor's own block
+				if (label_.empty() && chosen_.empty())
+				{
+					pending_meta_.emplace_back(m->sensor_label, o);  // whose it is: known at the first FOG sample
+					return;
+				}
+			}
+		}
+		if (sink_) sink_(o);
+	}
+
+	/** Several FOG labels and none chosen: count them all (error path) and say so. */
+	[[noreturn]] void failSeveral()
+	{
+		std::map<std::string, std::size_t> counts = other_fog_;
+		counts[chosen_] += samples + queue_.size();
+		try
+		{
+			while (!in_.atEnd())
+			{
+				auto obj = arch_.ReadObject();
+				if (auto f = std::dynamic_pointer_cast<CObservationFOG>(obj)) counts[f->sensorLabel]++;
+			}
+		}
+		catch (const std::exception&)
+		{
+		}
+		throw FogIoError(path_ + ": several FOG sensors " + labelList(counts) +
+						 "; choose one by its label (fog-convert --label L)");
+	}
+
+	[[noreturn]] void failNoSensor() const
+	{
+		if (label_.empty())
+			throw FogIoError(path_ + ": no CObservationFOG in the file (" + std::to_string(objects_) + " objects read)");
+		throw FogIoError(path_ + ": no FOG sensor labelled '" + label_ + "'" +
+						 (other_fog_.empty() ? std::string(" (the file has no CObservationFOG)")
+											 : " (present: " + labelList(other_fog_) + ")"));
+	}
+
+	void finish() {}
+
+	std::string path_, label_;
+	ReadLimits limits_;
+	FogLogReader::ObservationSink sink_;
+	io::GzReader in_;
+	mrpt::serialization::CArchiveStreamBase<mrpt::io::CStream> arch_;
+	std::string chosen_;
 	CObservationFOG::Ptr first_;
+	std::deque<std::pair<CObservationFOG::Ptr, std::size_t>> queue_;
+	std::map<std::string, io::FogRawlogMetadata> metas_;
+	std::map<std::string, std::size_t> other_fog_;
+	std::vector<std::pair<std::string, mrpt::obs::CObservation::Ptr>> pending_meta_;
+	std::size_t objects_ = 0;
+	int64_t epoch_ticks_ = 0, last_ticks_ = 0;
 };
 }  // namespace
 
+std::unique_ptr<FogLogReader::Impl> makeRawlogReaderImpl(const std::string& path, const std::string& fog_label,
+														 const ReadLimits& limits, FogLogReader::ObservationSink others)
+{
+	return std::make_unique<RawlogReaderImpl>(path, fog_label, limits, std::move(others));
+}
+
 FogRawlogContents readFogRawlog(const std::string& path, const std::string& fog_label)
 {
-	registerAllClasses_mrpt_fog();
-
-	// FOG samples go straight into columns (a CObservationFOG object weighs ~1 kB, its columns
-	// ~50 B): all labels when none is chosen (several is then an error anyway), else the chosen
-	// one. Everything else is kept as objects, in file order.
-	std::map<std::string, FogAccumulator> fogs;
-	std::map<std::string, std::pair<io::FogRawlogMetadata, mrpt::obs::CObservation::Ptr>> metas;
 	FogRawlogContents out;
-	std::size_t objects = 0;
-	auto take = [&](const mrpt::obs::CObservation::Ptr& o, std::size_t index) {
-		if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o); f && (fog_label.empty() || f->sensorLabel == fog_label))
-		{
-			try
-			{
-				fogs[f->sensorLabel].add(f);
-			}
-			catch (const std::exception& e)
-			{
-				throw FogIoError(path + ": object #" + std::to_string(index) + ": " + e.what());
-			}
-			return;
-		}
-		if (auto c = std::dynamic_pointer_cast<mrpt::obs::CObservationComment>(o))
-			if (auto m = io::parseFogRawlogMetadata(c->text); m && !metas.count(m->sensor_label))
-				metas[m->sensor_label] = {*m, o};
-		out.others.push_back(o);
-	};
-	{
-		const std::string bytes = io::readWholeFile(path);
-		if (bytes.empty()) throw FogIoError(path + ": empty rawlog (0 objects)");
-		mrpt::io::CMemoryStream mem;
-		mem.assignMemoryNotOwn(bytes.data(), bytes.size());
-		auto arch = mrpt::serialization::archiveFrom(mem);
-		while (mem.getPosition() < bytes.size())
-		{
-			const uint64_t offset = mem.getPosition();
-			mrpt::serialization::CSerializable::Ptr obj;
-			try
-			{
-				obj = arch.ReadObject();
-			}
-			catch (const std::exception& e)
-			{
-				throw FogIoError(path + ": read " + std::to_string(objects) + " objects, then stopped at object #" +
-								 std::to_string(objects) + " (byte offset " + std::to_string(offset) +
-								 " of the decompressed data, " + std::to_string(bytes.size()) + " bytes in all): " +
-								 whyReadFailed(e.what(), mem.getPosition() >= bytes.size()));
-			}
-			if (auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj)) take(o, objects);
-			else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj))
-			{
-				for (const auto& so : *sf) take(so, objects);
-			}
-			else if (std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(obj))
-				throw FogIoError(path + ": object #" + std::to_string(objects) + " (byte offset " + std::to_string(offset) +
-								 ") is a CActionCollection: rawlogs with actions (sensory-frame format) are not supported; "
-								 "use the observations-only format");
-			else
-				throw FogIoError(path + ": object #" + std::to_string(objects) + " (byte offset " + std::to_string(offset) +
-								 ") is a " + (obj ? obj->GetRuntimeClass()->className : "null object") +
-								 ", not an observation");
-			objects++;
-		}
-	}
-	out.objects_read = objects;
-
-	// Which FOG sensor.
-	std::map<std::string, std::size_t> fog_counts;
-	for (const auto& [label, acc] : fogs) fog_counts[label] = acc.size();
-	for (const auto& o : out.others)
-		if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o)) fog_counts[f->sensorLabel]++;
-	if (fog_label.empty())
-	{
-		if (fog_counts.empty())
-			throw FogIoError(path + ": no CObservationFOG in the file (" + std::to_string(objects) + " objects read)");
-		if (fog_counts.size() > 1)
-			throw FogIoError(path + ": several FOG sensors " + labelList(fog_counts) +
-							 "; choose one by its label (fog-convert --label L)");
-	}
-	else if (!fogs.count(fog_label))
-		throw FogIoError(path + ": no FOG sensor labelled '" + fog_label + "'" +
-						 (fog_counts.empty() ? std::string(" (the file has no CObservationFOG)")
-											 : " (present: " + labelList(fog_counts) + ")"));
-	const std::string label = fogs.begin()->first;
-	FogAccumulator& acc = fogs.begin()->second;
-
-	// Its metadata block leaves `others`; exact times from the 100 ns ticks (a double of UNIX
-	// seconds resolves only ~0.2 us today).
-	out.fog = std::move(acc.series);
-	out.fog.epoch_s = std::floor(mrpt::Clock::toDouble(fromTicks(acc.ticks.front())));
-	if (auto m = metas.find(label); m != metas.end())
-	{
-		out.fog.epoch_s = m->second.first.epoch_s;
-		out.fog.metadata = m->second.first.metadata;
-		out.others.erase(std::find(out.others.begin(), out.others.end(), m->second.second));
-	}
-	const int64_t epoch_ticks = ticksOf(mrpt::Clock::fromDouble(out.fog.epoch_s));
-	for (std::size_t k = 0; k < acc.ticks.size(); k++)
-		out.fog.time_s[k] = static_cast<double>(acc.ticks[k] - epoch_ticks) / kTicksPerSecond;
+	FogLogReader reader(path, fog_label, ReadLimits{},
+						[&](const mrpt::obs::CObservation::Ptr& o) { out.others.push_back(o); });
+	out.fog = emptySeriesLike(reader.header());
+	FogSample x;
+	while (reader.next(x)) appendSample(out.fog, x, reader);
+	out.objects_read = reader.objectsRead();
 	try
 	{
 		out.fog.validate();
 	}
 	catch (const std::exception& e)
 	{
-		throw FogIoError(path + ": sensor '" + label + "': " + e.what());
+		throw FogIoError(path + ": sensor '" + out.fog.sensor_label + "': " + e.what());
 	}
 	return out;
 }

@@ -4,11 +4,14 @@
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/io/FogLogIO.h>
+#include <mrpt_fog/io/FogLogWriter.h>
+#include <mrpt_fog/io/GzStream.h>
 #include <mrpt_fog/io/FogRawlogMetadata.h>
 #include <mrpt_fog/obs/FogSeriesConversion.h>
 
 #include <cmath>
 
+#include "FogLogReaderImpl.h"
 #include "RawlogCommon.h"
 
 namespace mrpt_fog
@@ -41,14 +44,12 @@ void writeRawlogObservations(const std::string& path, const std::vector<mrpt::ob
 {
 	try
 	{
-		writeFileAtomically(path, [&](const std::string& tmp) {
-			mrpt::io::CFileGZOutputStream out;
-			std::string why;
-			if (!out.open(tmp, 1, why)) throw FogIoError(path + ": cannot create: " + why);
-			auto arch = mrpt::serialization::archiveFrom(out);
-			for (const auto& o : objs) arch << *o;
-			out.close();
-		});
+		AtomicOutput out(path);
+		io::GzWriter gz(out.writePath(), true, 1, path);
+		auto arch = mrpt::serialization::archiveFrom(static_cast<mrpt::io::CStream&>(gz));
+		for (const auto& o : objs) arch << *o;
+		gz.close();
+		out.commit();
 	}
 	catch (const FogIoError&)
 	{
@@ -74,6 +75,27 @@ std::vector<mrpt::obs::CObservation::Ptr> mergeByTimestamp(const std::vector<mrp
 	return out;
 }
 
+FogSeries layoutOf(const FogSeries& s)
+{
+	FogSeries h = emptySeriesLike(s);
+	if (!s.table_rate_dph.empty()) h.table_rate_dph.assign(1, NAN);
+	if (!s.field_uT.empty()) h.field_uT.assign(1, NAN);
+	if (!s.power.empty()) h.power.assign(1, NAN);
+	return h;
+}
+
+FogSample sampleOf(const FogSeries& s, std::size_t k, FogSample& x)
+{
+	x.time_s = s.time_s[k];
+	for (int a = 0; a < 3; a++) x.rate_dph[a] = s.has_axis[a] ? s.rate_dph[a][k] : NAN;
+	x.temp_C.resize(s.temp_C.size());
+	for (std::size_t i = 0; i < s.temp_C.size(); i++) x.temp_C[i] = s.temp_C[i][k];
+	x.table_rate_dph = s.table_rate_dph.empty() ? NAN : s.table_rate_dph[k];
+	x.field_uT = s.field_uT.empty() ? NAN : s.field_uT[k];
+	x.power = s.power.empty() ? NAN : s.power[k];
+	return x;
+}
+
 void writeFogRawlog(const std::string& path, const FogSeries& fog, const std::vector<mrpt::obs::CObservation::Ptr>& others)
 {
 	try
@@ -87,45 +109,21 @@ void writeFogRawlog(const std::string& path, const FogSeries& fog, const std::ve
 	}
 	for (std::size_t i = 0; i < others.size(); i++)
 		if (!others[i]) throw FogIoError(path + ": cannot write: other observation #" + std::to_string(i) + " is null");
-	// The metadata comment heads the file; then FOG samples (made one at a time: memory stays
-	// flat for long runs) and the others merged by time, FOG first on equal timestamps.
+	// The metadata comment heads the file; then FOG samples (one at a time: memory stays flat
+	// for long runs) and the others merged by time, FOG first on equal timestamps.
 	const int64_t epoch_ticks = ticksOf(mrpt::Clock::fromDouble(fog.epoch_s));
 	auto fogTime = [&](std::size_t k) { return fromTicks(epoch_ticks + std::llround(fog.time_s[k] * kTicksPerSecond)); };
-	auto comment = mrpt::obs::CObservationComment::Create();
-	comment->sensorLabel = fog.sensor_label + "_METADATA";
-	comment->text = io::formatFogRawlogMetadata(fog);
-	comment->timestamp = fog.empty() ? fromTicks(epoch_ticks) : fogTime(0);
-	try
+	FogLogWriter w(path, layoutOf(fog));
+	FogSample x;
+	std::size_t k = 0, j = 0;
+	while (k < fog.size() || j < others.size())
 	{
-		writeFileAtomically(path, [&](const std::string& tmp) {
-			mrpt::io::CFileGZOutputStream out;
-			std::string why;
-			if (!out.open(tmp, 1, why)) throw FogIoError(path + ": cannot create: " + why);
-			auto arch = mrpt::serialization::archiveFrom(out);
-			arch << *comment;
-			std::size_t k = 0, j = 0;
-			while (k < fog.size() || j < others.size())
-			{
-				if (j == others.size() || (k < fog.size() && !(others[j]->timestamp < fogTime(k))))
-				{
-					auto o = observationFromSeries(fog, k);
-					o->timestamp = fogTime(k++);
-					arch << *o;
-				}
-				else
-					arch << *others[j++];
-			}
-			out.close();
-		});
+		if (j == others.size() || (k < fog.size() && !(others[j]->timestamp < fogTime(k))))
+			w.write(sampleOf(fog, k++, x));
+		else
+			w.writeOther(*others[j++]);
 	}
-	catch (const FogIoError&)
-	{
-		throw;
-	}
-	catch (const std::exception& e)
-	{
-		throw FogIoError(path + ": cannot write: " + firstLine(e.what()));
-	}
+	w.close();
 }
 
 }  // namespace mrpt_fog

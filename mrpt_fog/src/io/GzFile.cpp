@@ -4,6 +4,7 @@
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/io/GzFile.h>
+#include <mrpt_fog/io/GzStream.h>
 
 #include <zlib.h>
 
@@ -18,20 +19,6 @@ namespace mrpt_fog::io
 {
 namespace
 {
-/** Last 8 bytes of a gzip file: CRC-32 and uncompressed length mod 2^32 (little endian). */
-void readGzipTrailer(const std::string& path, uint32_t& crc, uint32_t& isize, std::uint64_t& file_size)
-{
-	std::ifstream f(path, std::ios::binary | std::ios::ate);
-	if (!f) throw FogIoError(path + ": cannot open: " + std::strerror(errno));
-	file_size = static_cast<std::uint64_t>(f.tellg());
-	if (file_size < 18) throw FogIoError(path + ": truncated gzip file (" + std::to_string(file_size) + " bytes)");
-	unsigned char b[8];
-	f.seekg(-8, std::ios::end);
-	f.read(reinterpret_cast<char*>(b), 8);
-	if (!f) throw FogIoError(path + ": cannot read the gzip trailer");
-	crc = b[0] | (b[1] << 8) | (b[2] << 16) | (static_cast<uint32_t>(b[3]) << 24);
-	isize = b[4] | (b[5] << 8) | (b[6] << 16) | (static_cast<uint32_t>(b[7]) << 24);
-}
 }  // namespace
 
 uint32_t crc32Ieee(const void* data, std::size_t len, uint32_t crc)
@@ -60,37 +47,14 @@ bool isGzipFile(const std::string& path)
 
 std::string readWholeFile(const std::string& path)
 {
-	const bool gz = isGzipFile(path);
-	mrpt::io::CFileGZInputStream in;
-	std::string why;
-	if (!in.open(path, why)) throw FogIoError(path + ": cannot open: " + why);
+	GzReader in(path);  // multi-member gzip; every member's CRC-32 and length checked
 	std::string bytes;
 	std::vector<char> chunk(1 << 20);
 	for (;;)
 	{
-		std::size_t got = 0;
-		try
-		{
-			got = in.Read(chunk.data(), chunk.size());
-		}
-		catch (const std::exception& e)
-		{
-			throw FogIoError(path + ": corrupt or truncated gzip data after " + std::to_string(bytes.size()) +
-							 " decompressed bytes");
-		}
+		const std::size_t got = in.Read(chunk.data(), chunk.size());
 		if (got == 0) break;
 		bytes.append(chunk.data(), got);
-	}
-	if (gz)
-	{
-		uint32_t crc = 0, isize = 0;
-		std::uint64_t file_size = 0;
-		readGzipTrailer(path, crc, isize, file_size);
-		const uint32_t len32 = static_cast<uint32_t>(bytes.size() & 0xFFFFFFFFu);
-		if (len32 != isize || crc32Ieee(bytes.data(), bytes.size()) != crc)
-			throw FogIoError(path + ": truncated or corrupt gzip file (" + std::to_string(file_size) +
-							 " compressed bytes gave " + std::to_string(bytes.size()) +
-							 " bytes whose length/CRC-32 do not match the gzip trailer)");
 	}
 	return bytes;
 }
@@ -99,25 +63,11 @@ void writeWholeFileAtomically(const std::string& path, const std::string& bytes,
 {
 	try
 	{
-		writeFileAtomically(path, [&](const std::string& tmp) {
-			if (compress)
-			{
-				mrpt::io::CFileGZOutputStream out;
-				std::string why;
-				if (!out.open(tmp, 6, why)) throw FogIoError(path + ": cannot create: " + why);
-				if (!bytes.empty() && out.Write(bytes.data(), bytes.size()) != bytes.size())
-					throw FogIoError(path + ": write error (disk full?)");
-				out.close();
-			}
-			else
-			{
-				std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-				if (!f) throw FogIoError(path + ": cannot create " + tmp + ": " + std::strerror(errno));
-				f.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-				f.close();
-				if (!f) throw FogIoError(path + ": write error (disk full?)");
-			}
-		});
+		AtomicOutput out(path);
+		GzWriter w(out.writePath(), compress, 6, path);
+		w.write(bytes);
+		w.close();
+		out.commit();
 	}
 	catch (const FogIoError&)
 	{

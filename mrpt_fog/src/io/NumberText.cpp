@@ -19,11 +19,14 @@ std::string formatNumber(double v)
 	return std::string(buf, r.ptr);
 }
 
-std::optional<double> parseNumber(const std::string& text)
+std::optional<double> parseNumber(const std::string& text) { return parseNumber(std::string_view(text)); }
+
+std::optional<double> parseNumber(std::string_view text)
 {
-	std::string::size_type b = text.find_first_not_of(" \t");
-	if (b == std::string::npos) return std::nullopt;
-	const std::string::size_type e = text.find_last_not_of(" \t") + 1;
+	std::size_t b = 0, e = text.size();
+	while (b < e && (text[b] == ' ' || text[b] == '\t')) b++;
+	while (e > b && (text[e - 1] == ' ' || text[e - 1] == '\t')) e--;
+	if (b == e) return std::nullopt;
 	if (text[b] == '+')
 	{
 		b++;

@@ -162,6 +162,9 @@ mrpt::obs::CObservationRawDAQ::Ptr CObservationFOG::toRawDAQ() const
 	auto daq = mrpt::obs::CObservationRawDAQ::Create();
 	daq->timestamp = timestamp;
 	daq->sensorLabel = sensorLabel + "_THERMISTORS";
+	if (temp_C.size() > 65535)  // CObservationRawDAQ counts channels in 16 bits (issue 14: 66 000 wrapped to 464)
+		throw std::invalid_argument("sensor '" + sensorLabel + "': " + std::to_string(temp_C.size()) +
+									" thermistors exceed the 65535 channels of a CObservationRawDAQ");
 	daq->AIN_channel_count = static_cast<uint16_t>(temp_C.size());
 	daq->AIN_interleaved = true;
 	for (std::size_t i = 0; i < temp_C.size(); i++) daq->AIN_double.push_back(temperature_C(i));

@@ -22,6 +22,35 @@
 
 namespace mrpt_fog
 {
+/** The same safe output as a scoped object, for writers that stream (write as they go):
+ *
+ *   AtomicOutput out(path);            // temporary created (or the FIFO/device itself)
+ *   write everything to out.writePath();
+ *   out.commit();                      // renamed over path; without commit() the destructor
+ *                                      // removes the temporary (exception, early return)
+ */
+class AtomicOutput
+{
+   public:
+	explicit AtomicOutput(const std::string& path);
+	~AtomicOutput();
+	AtomicOutput(const AtomicOutput&) = delete;
+	AtomicOutput& operator=(const AtomicOutput&) = delete;
+
+	/** Where to write: the temporary, or the output itself when it is not a regular file. */
+	const std::string& writePath() const { return write_path_; }
+	/** The output as named in errors ("'out.csv'" or "'link' (symlink to 'target')"). */
+	const std::string& named() const { return named_; }
+	/** Checks, syncs and renames the temporary over the output. Throws std::runtime_error. */
+	void commit();
+
+   private:
+	std::string path_, target_, named_, write_path_;
+	int fd_ = -1;
+	int slot_ = -1;
+	bool direct_ = false, done_ = false;
+};
+
 /** Calls write(tmp_path) and then renames tmp_path to path (atomic on POSIX filesystems); see
  * the file comment for symlinks and non-regular outputs (write() then receives the output path
  * itself). If write throws, or the rename fails, tmp_path is deleted and a std::runtime_error

@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace mrpt_fog::io
 {
@@ -18,5 +19,7 @@ std::string formatNumber(double v);
 /** Parses the whole of `text` (surrounding blanks allowed, a leading '+' accepted, "nan" and
  * "inf" accepted); std::nullopt if it is not entirely a number. */
 std::optional<double> parseNumber(const std::string& text);
+std::optional<double> parseNumber(std::string_view text);
+inline std::optional<double> parseNumber(const char* text) { return parseNumber(std::string_view(text)); }
 
 }  // namespace mrpt_fog::io

@@ -16,9 +16,10 @@ namespace mrpt_fog::io
  * cannot be opened. */
 bool isGzipFile(const std::string& path);
 
-/** Entire decompressed content of `path` (plain files are read as they are). Throws FogIoError
- * naming the file when it cannot be opened, or when it is gzip-compressed and truncated or
- * corrupt (decompressed length or CRC-32 differ from the gzip trailer). */
+/** Entire decompressed content of `path` (plain files are read as they are; multi-member gzip
+ * as written by pigz/bgzip is read member after member). Throws FogIoError naming the file
+ * when it cannot be opened, or when it is gzip-compressed and truncated or corrupt (a member's
+ * decompressed length or CRC-32 differ from its trailer). Streaming readers: io/GzStream.h. */
 std::string readWholeFile(const std::string& path);
 
 /** Writes `bytes` to `path` atomically (temporary file + rename), gzip-compressed when

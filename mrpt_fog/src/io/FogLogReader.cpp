@@ -1,0 +1,86 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt_fog/io/FogLogIO.h>
+
+#include <cmath>
+
+#include "FogLogReaderImpl.h"
+
+namespace mrpt_fog
+{
+namespace io::detail
+{
+std::string quoteForError(const char* data, std::size_t size)
+{
+	constexpr std::size_t kShown = 40;
+	std::string out;
+	const std::size_t n = std::min(size, kShown);
+	for (std::size_t i = 0; i < n; i++)
+	{
+		const auto c = static_cast<unsigned char>(data[i]);
+		if (c >= 0x20 && c < 0x7f) out += static_cast<char>(c);
+		else
+		{
+			static const char* hex = "0123456789abcdef";
+			out += "\\x";
+			out += hex[c >> 4];
+			out += hex[c & 15];
+		}
+	}
+	if (size > kShown) out += "... (" + std::to_string(size) + " bytes)";
+	return out;
+}
+}  // namespace io::detail
+
+FogLogReader::FogLogReader(const std::string& path, const std::string& fog_label, const ReadLimits& limits,
+						   ObservationSink others)
+{
+	const std::string ext = fileExtension(path);
+	if (ext == ".rawlog") impl_ = makeRawlogReaderImpl(path, fog_label, limits, std::move(others));
+	else if (ext == ".csv" || ext == ".csv.gz")
+	{
+		impl_ = makeCsvReaderImpl(path, limits);
+		if (!fog_label.empty() && impl_->header.sensor_label != fog_label)
+			throw FogIoError(path + ": the CSV holds sensor '" + impl_->header.sensor_label + "', not '" + fog_label + "'");
+	}
+	else
+		throw FogIoError(path + ": unknown file type '" + ext + "' (expected .rawlog, .csv or .csv.gz)");
+}
+
+FogLogReader::~FogLogReader() = default;
+
+const FogSeries& FogLogReader::header() const { return impl_->header; }
+bool FogLogReader::hasTableRate() const { return !impl_->header.table_rate_dph.empty(); }
+bool FogLogReader::hasField() const { return !impl_->header.field_uT.empty(); }
+bool FogLogReader::hasPower() const { return !impl_->header.power.empty(); }
+bool FogLogReader::next(FogSample& s) { return impl_->next(s); }
+std::size_t FogLogReader::samplesRead() const { return impl_->samples; }
+std::size_t FogLogReader::objectsRead() const { return impl_->objectsRead(); }
+bool FogLogReader::isRawlog() const { return impl_->isRawlog(); }
+std::uint64_t FogLogReader::fileBytesRead() const { return impl_->fileBytesRead(); }
+std::uint64_t FogLogReader::fileBytes() const { return impl_->fileBytes(); }
+
+FogSeries emptySeriesLike(const FogSeries& h)
+{
+	FogSeries s;
+	s.sensor_label = h.sensor_label;
+	s.epoch_s = h.epoch_s;
+	s.thermistors = h.thermistors;
+	s.has_axis = h.has_axis;
+	s.metadata = h.metadata;
+	s.temp_C.assign(h.thermistors.size(), {});
+	return s;
+}
+
+void appendSample(FogSeries& s, const FogSample& x, const FogLogReader& r)
+{
+	s.time_s.push_back(x.time_s);
+	for (int a = 0; a < 3; a++)
+		if (s.has_axis[a]) s.rate_dph[a].push_back(x.rate_dph[a]);
+	for (std::size_t i = 0; i < s.temp_C.size(); i++) s.temp_C[i].push_back(x.temp_C[i]);
+	if (r.hasTableRate()) s.table_rate_dph.push_back(x.table_rate_dph);
+	if (r.hasField()) s.field_uT.push_back(x.field_uT);
+	if (r.hasPower()) s.power.push_back(x.power);
+}
+
+}  // namespace mrpt_fog
