@@ -6,6 +6,9 @@
 #include <mrpt_fog/common/OutputSafety.h>
 #include <mrpt_fog/common/JsonWriter.h>
 #include <mrpt_fog/io/FogLogIO.h>
+#include <mrpt_fog/io/FogLogReader.h>
+#include <mrpt_fog/io/FogLogWriter.h>
+#include <mrpt_fog/io/GzStream.h>
 #include <mrpt_fog/io/NumberText.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/Compensator.h>
@@ -18,6 +21,7 @@
 #include "AppMain.h"
 #include "RangeWarning.h"
 #include "CommandLine.h"
+#include "Progress.h"
 #include "ThermistorScreeningReport.h"
 
 using namespace mrpt_fog;
@@ -57,24 +61,49 @@ EXAMPLES
   fog-compensate -i run.csv --cal cal.yaml -o run_comp.csv --json summary.json
 )";
 
-std::string csvText(const FogSeries& s, const CompensatedSeries& c, char axis, const std::string& cal_path)
+/** fog-compensate's CSV: time_s, raw, bias, compensated (calibrated axis), flags, temperatures,
+ * one row at a time. */
+class CompensatedCsvWriter
 {
-	std::ostringstream o;
-	o << "# sensor: " << s.sensor_label << "\n# compensated_by: fog-compensate\n# calibration: " << cal_path << "\n";
-	o << "time_s,raw_rate_" << axis << "_dph,bias_" << axis << "_dph,compensated_rate_" << axis << "_dph,flags";
-	for (const auto& t : s.thermistors) o << ",temp_" << t.name << "_C";
-	o << "\n";
-	for (std::size_t k = 0; k < c.time_s.size(); k++)
+   public:
+	CompensatedCsvWriter(const std::string& path, const FogSeries& layout, char axis, const std::string& cal_path)
+		: out_(path), gz_(out_.writePath(), false, 6, path)
+	{
+		std::ostringstream o;
+		o << "# sensor: " << layout.sensor_label << "\n# compensated_by: fog-compensate\n# calibration: " << cal_path << "\n";
+		o << "time_s,raw_rate_" << axis << "_dph,bias_" << axis << "_dph,compensated_rate_" << axis << "_dph,flags";
+		for (const auto& t : layout.thermistors) o << ",temp_" << t.name << "_C";
+		o << "\n";
+		gz_.write(o.str());
+	}
+	void write(double t, double raw, const Compensator::Output& r, const std::vector<double>& temps)
 	{
 		// gyro off (power 0, no rate sample): raw and compensated cells empty, the bias kept
-		auto cell = [](double v) { return std::isnan(v) ? std::string() : io::formatNumber(v); };
-		o << io::formatNumber(c.time_s[k]) << ',' << cell(c.raw_dph[k]) << ',' << io::formatNumber(c.bias_dph[k])
-		  << ',' << cell(c.compensated_dph[k]) << ',' << static_cast<int>(c.flags[k]);
-		for (const auto& col : s.temp_C) o << ',' << (std::isnan(col[k]) ? std::string() : io::formatNumber(col[k]));
-		o << "\n";
+		auto cell = [&](double v, bool comma = true) {
+			if (comma) row_ += ',';
+			if (!std::isnan(v)) row_ += io::formatNumber(v);
+		};
+		row_.clear();
+		cell(t, false);
+		cell(raw);
+		row_ += ',' + io::formatNumber(r.bias_dph);
+		cell(r.compensated_dph);
+		row_ += ',' + std::to_string(static_cast<int>(r.flags));
+		for (double v : temps) cell(v);
+		row_ += '\n';
+		gz_.write(row_);
 	}
-	return o.str();
-}
+	void close()
+	{
+		gz_.close();
+		out_.commit();
+	}
+
+   private:
+	AtomicOutput out_;
+	io::GzWriter gz_;
+	std::string row_;
+};
 }  // namespace
 
 int main(int argc, char** argv)
@@ -88,6 +117,7 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<std::string> arg_out("o", "output", "Output (.rawlog or .csv)", true, "", "OUT", cmd);
 		TCLAP::ValueArg<std::string> arg_label("", "label", "FOG sensor label in rawlogs with several", false, "", "L", cmd);
 		TCLAP::ValueArg<std::string> arg_json("", "json", "Write the summary as JSON", false, "", "FILE", cmd);
+		TCLAP::SwitchArg arg_quiet("q", "quiet", "No progress line on stderr", cmd);
 		TCLAP::SwitchArg arg_no_screen("", "no-screening",
 									   "Do not screen thermistor readings (stuck / spike / out of range) before "
 									   "compensating",
@@ -100,28 +130,67 @@ int main(int argc, char** argv)
 		requireSafeOutputs({{"-i", arg_in.getValue()}, {"--cal", arg_cal.getValue()}},
 						   {{"-o", out}, {"--json", arg_json.getValue()}});
 		const Calibration cal = loadCalibrationYaml(arg_cal.getValue());
-		const FogSeries in = readFogLog(arg_in.getValue(), arg_label.getValue());
-		const bool screen = !arg_no_screen.getValue();
-		ThermistorScreening screening;
-		CompensatedSeries c;
+
+		// Sample by sample: read, screen, compensate, write. Memory does not grow with the log.
+		FogLogReader reader(arg_in.getValue(), arg_label.getValue());
+		const FogSeries& layout = reader.header();
+		const int axis_index = static_cast<int>(cal.axis);
+		const char axis = axisLetter(cal.axis);
+		const auto withInput = [&](const std::exception& e) {
+			return std::runtime_error(arg_in.getValue() + " with " + arg_cal.getValue() + ": " + e.what());
+		};
+		if (!layout.has_axis[axis_index])
+			throw withInput(std::invalid_argument(std::string("the log has no ") + axis + " axis, which the calibration is for"));
+		std::unique_ptr<Compensator> comp;
 		try
 		{
-			c = compensate(cal, app::screenedForCompensation(in, screen, screening));
+			comp = std::make_unique<Compensator>(cal, layout.thermistors);
 		}
 		catch (const std::invalid_argument& e)
 		{
-			throw std::runtime_error(arg_in.getValue() + " with " + arg_cal.getValue() + ": " + e.what());
+			throw withInput(e);
 		}
-		const char axis = axisLetter(cal.axis);
-		if (ext == ".csv")
-			writeTextFileAtomically(out, csvText(in, c, axis, arg_cal.getValue()));
-		else
+		const bool screen = !arg_no_screen.getValue();
+		ThermistorHealth health(layout.thermistorCount());
+		std::unique_ptr<FogLogWriter> rawlog_out;
+		std::unique_ptr<CompensatedCsvWriter> csv_out;
+		if (ext == ".csv") csv_out = std::make_unique<CompensatedCsvWriter>(out, layout, axis, arg_cal.getValue());
+		else rawlog_out = std::make_unique<FogLogWriter>(out, layout, RawlogForm::Stock);
+		app::Progress progress("fog-compensate", arg_quiet.getValue());
+		FogSample x;
+		std::vector<double> temps;
+		std::size_t gyro_off_rows = 0, turn_ons = 0;
+		double prev_power = NAN;
+		while (reader.next(x))
 		{
-			FogSeries comp = in;
-			comp.rate_dph[static_cast<int>(cal.axis)] = c.compensated_dph;
-			writeRawlogObservations(out, stockObservationsForRawlog(comp));
+			temps = x.temp_C;  // the output keeps the temperatures as read
+			if (screen) health.step(x.time_s, temps.data());
+			const double raw = x.rate_dph[axis_index];
+			const Compensator::Output r = comp->step(x.time_s, raw, temps.data());
+			if (csv_out) csv_out->write(x.time_s, raw, r, x.temp_C);
+			else
+			{
+				x.rate_dph[axis_index] = r.compensated_dph;
+				rawlog_out->write(x);
+			}
+			if (x.power == 0.0) gyro_off_rows++;
+			if (x.power == 1.0 && prev_power == 0.0) turn_ons++;
+			prev_power = x.power;
+			progress.update(reader.samplesRead(), reader.fileBytesRead(), reader.fileBytes());
 		}
-		const auto& k = c.counters;
+		if (csv_out) csv_out->close();
+		else rawlog_out->close();
+		progress.finish();
+		ThermistorScreening screening;
+		if (screen)
+			for (std::size_t i = 0; i < layout.thermistorCount(); i++)
+			{
+				screening.names.push_back(layout.thermistors[i].name);
+				screening.counters.push_back(health.counters(i));
+				const auto& c = health.counters(i);
+				screening.rejected_readings += c.out_of_range + c.spike + c.stuck;
+			}
+		const auto& k = comp->counters();
 		std::printf("fog-compensate: %s -> %s (%zu samples, axis %c)\n", arg_in.getValue().c_str(), out.c_str(),
 					k.samples, axis);
 		std::printf("  fallback model used: %zu samples; no model (>= 2 thermistors missing): %zu samples\n",
@@ -129,10 +198,7 @@ int main(int argc, char** argv)
 		std::printf("  clamped to the calibrated range: %zu samples (%zu signal values); rate warm-up: %zu samples; "
 					"model switches: %zu\n",
 					k.clamped_samples, k.clamped_signals, k.warmup_samples, k.model_switches);
-		std::size_t gyro_off_rows = 0;
-		for (std::size_t i = 0; i < in.size(); i++) gyro_off_rows += in.gyroOn(i) ? 0 : 1;
-		const std::size_t turn_ons = in.turnOnSamples().size();
-		if (!in.power.empty())
+		if (reader.hasPower())
 			std::printf("  gyro off: %zu rows (bias tracked on the thermistors, no compensated sample where the rate "
 						"is empty); turn-on events: %zu\n",
 						gyro_off_rows, turn_ons);

@@ -6,6 +6,8 @@
 #include <mrpt_fog/common/OutputSafety.h>
 #include <mrpt_fog/common/JsonWriter.h>
 #include <mrpt_fog/io/FogLogIO.h>
+#include <mrpt_fog/io/FogLogReader.h>
+#include <mrpt_fog/io/FogLogWriter.h>
 #include <mrpt_fog/io/NumberText.h>
 #include <mrpt_fog/obs/CObservationFOG.h>
 
@@ -18,6 +20,7 @@
 
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "Progress.h"
 
 using namespace mrpt_fog;
 
@@ -70,14 +73,6 @@ void requireKnownExtension(const std::string& path, const char* what)
 								 "' (expected .rawlog, .csv or .csv.gz)");
 }
 
-std::size_t dropoutsOf(const std::vector<double>& column)
-{
-	std::size_t n = 0;
-	for (double v : column)
-		if (std::isnan(v)) n++;
-	return n;
-}
-
 }  // namespace
 
 int main(int argc, char** argv)
@@ -93,6 +88,7 @@ int main(int argc, char** argv)
 			"FOG sensor label to take from a rawlog holding several (e.g. FOG_IDEAL)", false, "", "L", cmd);
 		TCLAP::ValueArg<std::string> arg_json("", "json", "Write a JSON summary (counts, time span, sensors, "
 			"thermistors, axes, dropouts) to FILE", false, "", "FILE", cmd);
+		TCLAP::SwitchArg arg_quiet("q", "quiet", "No progress line on stderr", cmd);
 		TCLAP::SwitchArg arg_stock("", "to-stock", "Write stock MRPT CObservationIMU + CObservationRawDAQ instead "
 			"of CObservationFOG (output must be .rawlog)", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-convert", kFormatHelp)) return *rc;
@@ -104,88 +100,90 @@ int main(int argc, char** argv)
 		if (arg_stock.getValue() && !isRawlog(out))
 			throw std::runtime_error("--to-stock writes a rawlog: the output '" + out + "' must end in .rawlog");
 
-		// Read.
-		FogRawlogContents input;
-		if (isRawlog(in)) input = readFogRawlog(in, arg_label.getValue());
-		else
-		{
-			input.fog = readFogLog(in, arg_label.getValue());
-			input.objects_read = 0;
-		}
-		const FogSeries& s = input.fog;
-
-		// Write.
-		std::size_t objects_written = 0;
+		// Read sample by sample and write as we go: memory does not grow with the log.
+		const bool to_rawlog = isRawlog(out), stock = arg_stock.getValue();
+		std::vector<mrpt::obs::CObservation::Ptr> pending;  // other observations met while reading
+		std::map<std::string, std::size_t> fog_labels, other_classes;
+		std::size_t others_seen = 0;
+		FogLogReader reader(in, arg_label.getValue(), ReadLimits{}, [&](const mrpt::obs::CObservation::Ptr& o) {
+			others_seen++;
+			if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o)) fog_labels[f->sensorLabel]++;
+			other_classes[o->GetRuntimeClass()->className]++;
+			if (to_rawlog) pending.push_back(o);
+		});
+		const FogSeries& s = reader.header();
+		FogLogWriter writer(out, s, stock ? RawlogForm::Stock : RawlogForm::Fog);
 		std::size_t others_written = 0;
-		if (!isRawlog(out))
-		{
-			writeFogCsv(out, s);
-			if (!input.others.empty())
-				std::cerr << "fog-convert: note: " << input.others.size()
-						  << " other observations of the rawlog (not FOG sensor '" << s.sensor_label
-						  << "') have no place in a CSV and were not written\n";
-		}
-		else if (arg_stock.getValue())
-		{
-			std::vector<mrpt::obs::CObservation::Ptr> others;
-			for (const auto& o : input.others)
+		const auto flushOthers = [&] {
+			for (const auto& o : pending)
 			{
-				if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o))
+				if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o); f && stock)
 				{
-					others.push_back(f->toIMU());
-					others.push_back(f->toRawDAQ());
+					writer.writeOther(*f->toIMU());
+					writer.writeOther(*f->toRawDAQ());
+					others_written += 2;
 				}
-				else others.push_back(o);
+				else
+				{
+					writer.writeOther(*o);
+					others_written++;
+				}
 			}
-			const auto objs = mergeByTimestamp(stockObservationsForRawlog(s), others);
-			writeRawlogObservations(out, objs);
-			objects_written = objs.size();
-			others_written = others.size();
-		}
-		else
+			pending.clear();
+		};
+		std::vector<std::size_t> dropouts_of(s.thermistorCount(), 0);
+		std::size_t gyro_off_rows = 0, turn_ons = 0;
+		double t0 = 0, t1 = 0, prev_power = NAN;
+		app::Progress progress("fog-convert", arg_quiet.getValue());
+		FogSample x;
+		while (reader.next(x))
 		{
-			writeFogRawlog(out, s, input.others);
-			objects_written = 1 + s.size() + input.others.size();
-			others_written = input.others.size();
+			flushOthers();
+			writer.write(x);
+			if (reader.samplesRead() == 1) t0 = x.time_s;
+			t1 = x.time_s;
+			for (std::size_t i = 0; i < x.temp_C.size(); i++) dropouts_of[i] += std::isnan(x.temp_C[i]);
+			if (x.power == 0.0) gyro_off_rows++;
+			if (x.power == 1.0 && prev_power == 0.0) turn_ons++;
+			prev_power = x.power;
+			progress.update(reader.samplesRead(), reader.fileBytesRead(), reader.fileBytes());
 		}
+		flushOthers();
+		writer.close();
+		progress.finish();
+		const std::size_t samples = reader.samplesRead();
+		fog_labels[s.sensor_label] += samples;
+		if (!to_rawlog && others_seen > 0)
+			std::cerr << "fog-convert: note: " << others_seen << " other observations of the rawlog (not FOG sensor '"
+					  << s.sensor_label << "') have no place in a CSV and were not written\n";
 
 		// Summary.
 		std::size_t dropouts = 0;
-		for (const auto& c : s.temp_C) dropouts += dropoutsOf(c);
+		for (auto n : dropouts_of) dropouts += n;
 		std::string axes;
 		for (int a = 0; a < 3; a++)
 			if (s.has_axis[a]) axes += axes.empty() ? "" : ",", axes += axisLetter(static_cast<GyroAxis>(a));
-		const double t0 = s.time_s.front(), t1 = s.time_s.back();
-		std::size_t gyro_off_rows = 0;
-		for (std::size_t k = 0; k < s.size(); k++) gyro_off_rows += s.gyroOn(k) ? 0 : 1;
-		const std::size_t turn_ons = s.turnOnSamples().size();
-		std::cout << "fog-convert: " << in << " -> " << out << (arg_stock.getValue() ? " (stock IMU+DAQ)" : "")
-				  << "\n  sensor '" << s.sensor_label << "': " << s.size() << " samples, axes " << axes << ", "
-				  << s.thermistorCount() << " thermistors, " << dropouts << " dropouts, time "
-				  << io::formatNumber(t0) << " .. " << io::formatNumber(t1) << " s\n";
-		if (!s.power.empty())
+		std::cout << "fog-convert: " << in << " -> " << out << (stock ? " (stock IMU+DAQ)" : "") << "\n  sensor '"
+				  << s.sensor_label << "': " << samples << " samples, axes " << axes << ", " << s.thermistorCount()
+				  << " thermistors, " << dropouts << " dropouts, time " << io::formatNumber(t0) << " .. "
+				  << io::formatNumber(t1) << " s\n";
+		if (reader.hasPower())
 			std::cout << "  gyro off on " << gyro_off_rows << " rows (thermistors kept, no gyro sample), " << turn_ons
 					  << " turn-on events\n";
-		if (isRawlog(out)) std::cout << "  wrote " << objects_written << " objects (" << others_written << " other observations)\n";
+		if (to_rawlog)
+			std::cout << "  wrote " << writer.objectsWritten() << " objects (" << others_written << " other observations)\n";
 
 		if (!arg_json.getValue().empty())
 		{
-			std::map<std::string, std::size_t> fog_labels{{s.sensor_label, s.size()}};
-			std::map<std::string, std::size_t> other_classes;
-			for (const auto& o : input.others)
-			{
-				if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o)) fog_labels[f->sensorLabel]++;
-				other_classes[o->GetRuntimeClass()->className]++;
-			}
 			JsonValue j = JsonValue::object();
 			j["input"] = in;
 			j["output"] = out;
-			j["output_kind"] = isRawlog(out) ? (arg_stock.getValue() ? "rawlog-stock" : "rawlog") : "csv";
+			j["output_kind"] = to_rawlog ? (stock ? "rawlog-stock" : "rawlog") : "csv";
 			j["sensor"] = s.sensor_label;
-			j["samples"] = static_cast<unsigned long>(s.size());
-			if (isRawlog(in)) j["input_objects"] = static_cast<unsigned long>(input.objects_read);
-			j["other_observations"] = static_cast<unsigned long>(input.others.size());
-			j["objects_written"] = static_cast<unsigned long>(objects_written);
+			j["samples"] = static_cast<unsigned long>(samples);
+			if (isRawlog(in)) j["input_objects"] = static_cast<unsigned long>(reader.objectsRead());
+			j["other_observations"] = static_cast<unsigned long>(others_seen);
+			j["objects_written"] = static_cast<unsigned long>(to_rawlog ? writer.objectsWritten() : 0);
 			JsonValue& sensors = j["fog_sensors"] = JsonValue::object();
 			for (const auto& [label, n] : fog_labels) sensors[label] = static_cast<unsigned long>(n);
 			JsonValue& classes = j["other_classes"] = JsonValue::object();
@@ -204,16 +202,16 @@ int main(int argc, char** argv)
 				t["name"] = s.thermistors[i].name;
 				t["side"] = toString(s.thermistors[i].side);
 				t["angle_deg"] = s.thermistors[i].angle_deg;
-				t["dropouts"] = static_cast<unsigned long>(dropoutsOf(s.temp_C[i]));
+				t["dropouts"] = static_cast<unsigned long>(dropouts_of[i]);
 				th.push_back(t);
 			}
 			j["dropouts"] = static_cast<unsigned long>(dropouts);
 			j["gyro_off_rows"] = static_cast<unsigned long>(gyro_off_rows);
 			j["turn_on_events"] = static_cast<unsigned long>(turn_ons);
 			JsonValue& opt = j["optional_columns"] = JsonValue::array();
-			if (!s.table_rate_dph.empty()) opt.push_back("table_rate_dph");
-			if (!s.field_uT.empty()) opt.push_back("field_uT");
-			if (!s.power.empty()) opt.push_back("power");
+			if (reader.hasTableRate()) opt.push_back("table_rate_dph");
+			if (reader.hasField()) opt.push_back("field_uT");
+			if (reader.hasPower()) opt.push_back("power");
 			writeTextFileAtomically(arg_json.getValue(), j.dump());
 		}
 		return app::kExitOk;

@@ -8,6 +8,7 @@
 #include <mrpt_fog/io/GzStream.h>
 #include <mrpt_fog/io/NumberText.h>
 #include <mrpt_fog/obs/CObservationFOG.h>
+#include <mrpt_fog/obs/Units.h>
 
 #include <charconv>
 #include <cmath>
@@ -70,6 +71,14 @@ class FogLogWriter::Impl
 		proto_->hasTableRate = has_table_;
 		proto_->hasField = has_field_;
 		proto_->hasPower = has_power_;
+		if (form_ == RawlogForm::Stock)
+		{
+			const auto imu = proto_->toIMU();  // the stock objects' fixed fields, from the class's own conversion
+			imu_clean_ = *imu;
+			for (auto& present : imu_clean_.dataIsPresent) present = false;
+			const auto daq = proto_->toRawDAQ();
+			daq_ = *daq;
+		}
 	}
 
 	void write(const FogSample& x)
@@ -186,8 +195,19 @@ class FogLogWriter::Impl
 		if (form_ == RawlogForm::Fog) serialize(o);
 		else
 		{
-			serialize(*o.toIMU());
-			serialize(*o.toRawDAQ());
+			// What o.toIMU() / o.toRawDAQ() make, in reused objects (no allocation per sample).
+			imu_ = imu_clean_;
+			imu_.timestamp = o.timestamp;
+			const mrpt::obs::TIMUDataIndex idx[3] = {mrpt::obs::IMU_WX, mrpt::obs::IMU_WY, mrpt::obs::IMU_WZ};
+			for (int a = 0; a < 3; a++)
+				if (o.hasAxis[a] && !std::isnan(o.rate_dph[a]))  // NaN: gyro off, no rate sample (left absent)
+					imu_.set(idx[a], o.rate_dph[a] * units::kDegPerHourToRadPerSec);
+			const double t = o.meanTemperature_C();
+			if (std::isfinite(t)) imu_.set(mrpt::obs::IMU_TEMPERATURE, t);
+			serialize(imu_);
+			daq_.timestamp = o.timestamp;
+			for (std::size_t i = 0; i < o.temp_C.size(); i++) daq_.AIN_double[i] = o.temperature_C(i);
+			serialize(daq_);
 		}
 	}
 
@@ -264,6 +284,8 @@ class FogLogWriter::Impl
 	std::unique_ptr<io::GzWriter> gz_;
 	std::unique_ptr<mrpt::serialization::CArchiveStreamBase<mrpt::io::CStream>> arch_;
 	CObservationFOG::Ptr proto_;
+	mrpt::obs::CObservationIMU imu_clean_, imu_;  // stock form
+	mrpt::obs::CObservationRawDAQ daq_;
 	int64_t epoch_ticks_ = 0, last_ticks_ = 0;
 	double last_t_ = 0;
 	char row_[8192];

@@ -117,6 +117,13 @@ bool GzReader::fill()
 
 size_t GzReader::Read(void* buffer, size_t count)
 {
+	if (count <= buf_len_ - buf_pos_)  // fast path: MRPT's archive reads field by field
+	{
+		std::memcpy(buffer, buf_.data() + buf_pos_, count);
+		buf_pos_ += count;
+		out_pos_ += count;
+		return count;
+	}
 	auto* out = static_cast<unsigned char*>(buffer);
 	std::size_t done = 0;
 	while (done < count)
@@ -228,6 +235,13 @@ void GzWriter::flushBuffer(bool finish)
 
 size_t GzWriter::Write(const void* buffer, size_t count)
 {
+	if (count < buf_.size() - buf_len_ && !closed_)  // fast path: MRPT's archive writes field by field
+	{
+		std::memcpy(buf_.data() + buf_len_, buffer, count);
+		buf_len_ += count;
+		in_bytes_ += count;
+		return count;
+	}
 	if (closed_) fail("write after close", 0);
 	const auto* p = static_cast<const unsigned char*>(buffer);
 	const size_t total = count;
