@@ -156,6 +156,19 @@ int main(int argc, char** argv)
 		std::unique_ptr<CompensatedCsvWriter> csv_out;
 		if (ext == ".csv") csv_out = std::make_unique<CompensatedCsvWriter>(out, layout, axis, arg_cal.getValue());
 		else rawlog_out = std::make_unique<FogLogWriter>(out, layout, RawlogForm::Stock);
+		// Turn-ons for the warm-up term (as compensate() does): before the log, and 0 -> 1 power steps.
+		if (cal.warmup)
+		{
+			const std::string meta = layout.metadataValue("power_on_time_s");
+			if (!meta.empty())
+			{
+				char* end = nullptr;
+				const double t_on = std::strtod(meta.c_str(), &end);
+				if (!std::isfinite(t_on) || *end != '\0')
+					throw withInput(std::invalid_argument("metadata power_on_time_s: '" + meta + "' is not a time [s]"));
+				comp->notePowerOn(t_on);
+			}
+		}
 		app::Progress progress("fog-compensate", arg_quiet.getValue());
 		FogSample x;
 		std::vector<double> temps;
@@ -165,6 +178,7 @@ int main(int argc, char** argv)
 		{
 			temps = x.temp_C;  // the output keeps the temperatures as read
 			if (screen) health.step(x.time_s, temps.data());
+			if (cal.warmup && x.power == 1.0 && prev_power == 0.0) comp->notePowerOn(x.time_s);
 			const double raw = x.rate_dph[axis_index];
 			const Compensator::Output r = comp->step(x.time_s, raw, temps.data());
 			if (csv_out) csv_out->write(x.time_s, raw, r, x.temp_C);
