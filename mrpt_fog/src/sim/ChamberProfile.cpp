@@ -20,6 +20,32 @@ namespace
 {
 constexpr double kSecondsPerMinute = 60.0;
 
+/** IEEE Std 952 style scale-factor-vs-temperature run: soaks at -40, -15, 10, 35 and 60 C
+ * (2 C/min between them, 90 min soak each: about 2 coil time constants), then at each soak the
+ * table turns at +-1, +-10 and +-100 deg/s for 4 min each (both signs, so that bias and scale
+ * factor separate); 10.9 h. Gyro on and settled at the start. */
+std::string rateTableProfileYaml()
+{
+	std::string yaml =
+		"name: ratetable\n"
+		"initial_temp_C: 25\n"
+		"power_initially: true\n"
+		"initial_state: steady\n"
+		"segments:\n";
+	for (const char* soak_C : {"-40", "-15", "10", "35", "60"})
+	{
+		yaml += std::string("  - {type: ramp, to_C: ") + soak_C + ", rate_C_per_min: 2}\n";
+		yaml += "  - {type: hold, duration_min: 90}\n";
+		for (const char* rate_dph : {"3600", "-3600", "36000", "-36000", "360000", "-360000"})
+		{
+			yaml += std::string("  - {type: table, rate_dph: ") + rate_dph + "}\n";
+			yaml += "  - {type: hold, duration_min: 4}\n";
+		}
+		yaml += "  - {type: table, rate_dph: 0}\n";
+	}
+	return yaml;
+}
+
 // The built-in profiles, as the YAML users would write.
 const std::map<std::string, std::string>& presetTable()
 {
@@ -119,91 +145,7 @@ const std::map<std::string, std::string>& presetTable()
 		 "  - {type: hold, duration_min: 1}\n"
 		 "  - {type: ramp, to_C: 22, rate_C_per_min: 1.5}\n"
 		 "  - {type: hold, duration_min: 57.5}\n"},
-		{"ratetable",
-		 // IEEE Std 952 style scale-factor-vs-temperature run: soaks at -40, -15, 10, 35 and 60 C
-		 // (2 C/min between them, 90 min soak each: about 2 coil time constants), then at each soak the table turns at
-		 // +-1, +-10 and +-100 deg/s for 4 min each (both signs, so that bias and scale factor
-		 // separate); 10.9 h. Gyro on and settled at the start.
-		 "name: ratetable\n"
-		 "initial_temp_C: 25\n"
-		 "power_initially: true\n"
-		 "initial_state: steady\n"
-		 "segments:\n"
-		 "  - {type: ramp, to_C: -40, rate_C_per_min: 2}\n"
-		 "  - {type: hold, duration_min: 90}\n"
-		 "  - {type: table, rate_dph: 3600}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: -3600}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: 36000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: -36000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: 360000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: -360000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: 0}\n"
-		 "  - {type: ramp, to_C: -15, rate_C_per_min: 2}\n"
-		 "  - {type: hold, duration_min: 90}\n"
-		 "  - {type: table, rate_dph: 3600}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: -3600}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: 36000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: -36000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: 360000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: -360000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: 0}\n"
-		 "  - {type: ramp, to_C: 10, rate_C_per_min: 2}\n"
-		 "  - {type: hold, duration_min: 90}\n"
-		 "  - {type: table, rate_dph: 3600}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: -3600}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: 36000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: -36000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: 360000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: -360000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: 0}\n"
-		 "  - {type: ramp, to_C: 35, rate_C_per_min: 2}\n"
-		 "  - {type: hold, duration_min: 90}\n"
-		 "  - {type: table, rate_dph: 3600}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: -3600}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: 36000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: -36000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: 360000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: -360000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: 0}\n"
-		 "  - {type: ramp, to_C: 60, rate_C_per_min: 2}\n"
-		 "  - {type: hold, duration_min: 90}\n"
-		 "  - {type: table, rate_dph: 3600}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: -3600}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: 36000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: -36000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: 360000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: -360000}\n"
-		 "  - {type: hold, duration_min: 4}\n"
-		 "  - {type: table, rate_dph: 0}\n"},
+		{"ratetable", rateTableProfileYaml()},
 		{"drive_cabin",
 		 // Vehicle cabin on a winter cold start: soaked at -15 C, gyro and heater on at t = 0,
 		 // cabin warms to 20 C at 2 C/min, then slowly to 24 C (sun); 70.5 min.
