@@ -103,12 +103,7 @@ inline sim::FogDevice truthDevice(const std::string& hidden, double k)
 	return d;
 }
 
-inline sim::FogDevice quiet(sim::FogDevice d)
-{
-	d.noise.arw_deg_rt_h = d.noise.bias_instability_dph = d.noise.rrw_deg_h_rt_h = d.noise.angle_quantum_arcsec = 0;
-	d.thermistor_noise_C = d.thermistor_quantum_C = 0;
-	return d;
-}
+inline sim::FogDevice quiet(const sim::FogDevice& d) { return d.withoutNoise(); }
 
 inline FogSeries simulateRun(const sim::FogDevice& d, const sim::EffectSet& effects, std::uint64_t seed)
 {

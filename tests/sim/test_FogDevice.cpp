@@ -67,3 +67,26 @@ TEST(FogDevice, BadInputNamesFileAndField)
 	EXPECT_NE(errorOf("errors: {temp_poly_dph: 3}\n").find("temp_poly_dph"), std::string::npos);
 	EXPECT_NE(errorOf("colour: red\n").find("dev.yaml: colour"), std::string::npos);
 }
+
+TEST(FogDevice, WithoutNoiseSilencesEveryNoiseSourceAndKeepsThePhysics)
+{
+	const auto dev = FogDevice::defaultDevice();
+	const auto quiet = dev.withoutNoise();
+	EXPECT_EQ(quiet.noise.arw_deg_rt_h, 0.0);
+	EXPECT_EQ(quiet.noise.bias_instability_dph, 0.0);
+	EXPECT_EQ(quiet.noise.rrw_deg_h_rt_h, 0.0);
+	EXPECT_EQ(quiet.noise.angle_quantum_arcsec, 0.0);
+	EXPECT_EQ(quiet.thermistor_noise_C, 0.0);
+	EXPECT_EQ(quiet.thermistor_quantum_C, 0.0);
+	// everything that is not noise is kept
+	const auto describe_without_noise = [](const FogDevice& d) {
+		auto rows = d.describe();
+		rows.erase(std::remove_if(rows.begin(), rows.end(),
+								  [](const auto& kv) { return kv.first.find("noise") != std::string::npos ||
+															  kv.first.find("quantum") != std::string::npos; }),
+				   rows.end());
+		return rows;
+	};
+	EXPECT_EQ(describe_without_noise(quiet), describe_without_noise(dev));
+	EXPECT_GT(dev.noise.arw_deg_rt_h, 0.0);  // the default device is noisy: the test means something
+}

@@ -26,12 +26,7 @@ namespace
 std::vector<std::vector<double>> simulateThermistors(sim::FogDevice dev, const sim::EffectSet& effects, double time_scale,
 													 const std::vector<sim::ChamberState>& states, double rate_hz)
 {
-	dev.noise.arw_deg_rt_h = 0;
-	dev.noise.bias_instability_dph = 0;
-	dev.noise.rrw_deg_h_rt_h = 0;
-	dev.noise.angle_quantum_arcsec = 0;
-	dev.thermistor_noise_C = 0;
-	dev.thermistor_quantum_C = 0;
+	dev = dev.withoutNoise();
 	dev.thermal.scaleHeatCapacities(time_scale);
 	sim::FogSimulator fog(dev, effects, 1);
 	const double dt = 1.0 / rate_hz;

@@ -170,13 +170,7 @@ SimModel simModelFromConfig(const SimulatorConfig& cfg)
 
 SimTrace simulateOnRun(const SimModel& model, const ChamberDrive& drive, const FogSeries& run)
 {
-	sim::FogDevice dev = model.device;
-	dev.noise.arw_deg_rt_h = 0;
-	dev.noise.bias_instability_dph = 0;
-	dev.noise.rrw_deg_h_rt_h = 0;
-	dev.noise.angle_quantum_arcsec = 0;
-	dev.thermistor_noise_C = 0;
-	dev.thermistor_quantum_C = 0;
+	sim::FogDevice dev = model.device.withoutNoise();
 	const double s = model.thermal_time_scale;
 	dev.thermal.scaleHeatCapacities(s);
 

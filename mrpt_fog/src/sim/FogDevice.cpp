@@ -243,6 +243,18 @@ FogDevice FogDevice::fromFile(const std::string& path)
 	return fromYaml(parseYamlFile(path), path);
 }
 
+FogDevice FogDevice::withoutNoise() const
+{
+	FogDevice dev = *this;
+	dev.noise.arw_deg_rt_h = 0;
+	dev.noise.bias_instability_dph = 0;
+	dev.noise.rrw_deg_h_rt_h = 0;
+	dev.noise.angle_quantum_arcsec = 0;
+	dev.thermistor_noise_C = 0;
+	dev.thermistor_quantum_C = 0;
+	return dev;
+}
+
 void FogDevice::validate() const
 {
 	thermal.validate();

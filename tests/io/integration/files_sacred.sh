@@ -30,7 +30,7 @@ expect_refused() {  # expect_refused WHAT PATTERN FILE... -- CMD...
 }
 cp "$src/tests/data/io/sample.csv" run.csv
 cp "$src/datasets/chamber_A.rawlog" A.rawlog
-"$bin/fog-calibrate" -i A.rawlog --model M1@2/1 -o cal.yaml >/dev/null || bad "calibration failed"
+"$bin/fog-calibrate" -i A.rawlog --model M1@2 -o cal.yaml >/dev/null || bad "calibration failed"
 ln run.csv hard.csv
 
 expect_refused "convert -o = -i" "same file as the input" run.csv -- "$bin/fog-convert" -i run.csv -o run.csv
@@ -45,7 +45,7 @@ expect_refused "evaluate --json = --cal" "same file as the input --cal" cal.yaml
 [ -e c.csv ] && bad "compensate wrote c.csv although --json was refused"
 
 # --json into a missing directory: refused before the main output is written.
-"$bin/fog-calibrate" -i A.rawlog --model M1@2/1 -o new.yaml --json nodir/fit.json >/dev/null 2>err.txt
+"$bin/fog-calibrate" -i A.rawlog --model M1@2 -o new.yaml --json nodir/fit.json >/dev/null 2>err.txt
 rc=$?
 [ $rc -eq 1 ] || bad "calibrate --json nodir: exit $rc"
 [ -e new.yaml ] && bad "calibrate wrote new.yaml before failing on --json nodir/"
@@ -68,7 +68,7 @@ grep -q 'preset: "M2@2/1"' real/cal.yaml || bad "the symlink's target was not wr
 
 # An existing output keeps its mode.
 chmod 600 cal.yaml
-"$bin/fog-calibrate" -i A.rawlog --model M1@2/1 -o cal.yaml >/dev/null || bad "recalibration failed"
+"$bin/fog-calibrate" -i A.rawlog --model M1@2 -o cal.yaml >/dev/null || bad "recalibration failed"
 [ "$(stat -c %a cal.yaml)" = 600 ] || bad "mode of cal.yaml changed to $(stat -c %a cal.yaml)"
 
 # SIGTERM while a conversion writes its output: no temporary left, previous output intact.

@@ -92,6 +92,10 @@ struct FogDevice
 	/** Reads a YAML device file (overlay on the default device). */
 	static FogDevice fromFile(const std::string& path);
 
+	/** The same device with every noise source off (gyro white noise, bias instability, rate
+	 * random walk, angle quantisation, thermistor noise and quantisation): the deterministic
+	 * response that model fits and reconstructions compare against. */
+	FogDevice withoutNoise() const;
 	/** Consistency checks (throws std::invalid_argument naming the field). */
 	void validate() const;
 	/** Every parameter as (key, value) text pairs, keys "device.<section>.<field>". */
