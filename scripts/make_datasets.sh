@@ -25,19 +25,22 @@ else
 fi
 mkdir -p "$OUT"
 
-# name | profile | description
+# name | profile | seed | csv twin (yes/no) | description
+# ratetable_A: same (default) device as chamber_A, its own noise seed (SEED + 1) so that a joint
+# calibration (-i chamber_A.rawlog -i ratetable_A.rawlog) does not see the same noise sequence twice.
 RUNS=(
-	"chamber_A|seed|Chamber run A: the seed paper's profile (25 C -> -40 C at 1 C/min, soak 2 h, -> 60 C at 1 C/min, soak 2 h; 6.75 h), gyro on and settled at t = 0."
-	"chamber_B|B|Chamber run B (held-out validation): 20 C, 0.5 C/min down to -30 C, 1 h soak, step to -10 C, 2 C/min up to 50 C, log-swept sine (8 C, periods 60 -> 4 min, 90 min), 1.5 C/min to 25 C; 7.4 h."
-	"warmup|warmup|Room-temperature warm-up: unpowered soak at 23 C, power on at t = 0, 3 h."
-	"drive|drive|Vehicle drive, 70.5 min: winter cold start (cabin -15 C -> 20 C at 2 C/min -> 24 C), gyro powered at t = 0; streams FOG (thermal error), FOG_IDEAL (same noise, no thermal error), ODOMETRY (CObservationOdometry), GROUND_TRUTH (CObservationRobotPose)."
+	"chamber_A|seed|$SEED|yes|Chamber run A: the seed paper's profile (25 C -> -40 C at 1 C/min, soak 2 h, -> 60 C at 1 C/min, soak 2 h; 6.75 h), gyro on and settled at t = 0."
+	"chamber_B|B|$SEED|yes|Chamber run B (held-out validation): 20 C, 0.5 C/min down to -30 C, 1 h soak, step to -10 C, 2 C/min up to 50 C, log-swept sine (8 C, periods 60 -> 4 min, 90 min), 1.5 C/min to 25 C; 7.4 h."
+	"warmup|warmup|$SEED|yes|Room-temperature warm-up: unpowered soak at 23 C, power on at t = 0, 3 h."
+	"drive|drive|$SEED|no|Vehicle drive, 70.5 min: winter cold start (cabin -15 C -> 20 C at 2 C/min -> 24 C), gyro powered at t = 0; streams FOG (thermal error), FOG_IDEAL (same noise, no thermal error), ODOMETRY (CObservationOdometry), GROUND_TRUTH (CObservationRobotPose)."
+	"ratetable_A|ratetable|$((SEED + 1))|no|Rate-table run, same device as chamber_A (scale factor vs temperature, IEEE Std 952 style): 90 min soaks at -40, -15, 10, 35, 60 C (2 C/min between), at each the table turns +-1, +-10, +-100 deg/s for 4 min each (table_rate_dph in the FOG observations); 10.9 h."
 )
 
 for run in "${RUNS[@]}"; do
-	IFS='|' read -r name profile _ <<<"$run"
-	"$SIM" --profile "$profile" --seed "$SEED" --rate-hz "$RATE" -o "$OUT/$name.rawlog" >/dev/null
-	if [ "$name" != drive ]; then
-		"$SIM" --profile "$profile" --seed "$SEED" --rate-hz "$RATE" -o "$OUT/$name.csv.gz" >/dev/null
+	IFS='|' read -r name profile seed csv _ <<<"$run"
+	"$SIM" --profile "$profile" --seed "$seed" --rate-hz "$RATE" -o "$OUT/$name.rawlog" >/dev/null
+	if [ "$csv" = yes ]; then
+		"$SIM" --profile "$profile" --seed "$seed" --rate-hz "$RATE" -o "$OUT/$name.csv.gz" >/dev/null
 	fi
 done
 
@@ -45,11 +48,15 @@ done
 	echo "# datasets/ manifest"
 	echo
 	echo "Simulated with \`fog-sim\` (mrpt_fog simulator, default device; see docs/sim.md). Every file is"
-	echo "regenerated bit for bit by \`scripts/make_datasets.sh\` (seed $SEED, $RATE Hz, all error effects on)."
+	echo "regenerated bit for bit by \`scripts/make_datasets.sh\` (seed $SEED unless the command says"
+	echo "otherwise, $RATE Hz, all error effects on)."
 	echo "Rawlogs hold CObservationFOG (label FOG: rate_z in deg/h, thermistors Ti1/To1 at 0 deg and"
 	echo "Ti2/To2 at 180 deg, power); the simulator configuration is in the metadata (sim.*, latitude_deg)."
 	echo "The .csv.gz twins hold the same FOG stream in the lab CSV format. The drive has no CSV twin:"
-	echo "its odometry and ground truth only fit a rawlog."
+	echo "its odometry and ground truth only fit a rawlog. ratetable_A has none either (size); its"
+	echo "rawlog carries table_rate_dph. It is the same device as chamber_A (the default device) with"
+	echo "its own noise seed, for a joint calibration:"
+	echo "\`fog-calibrate -i chamber_A.rawlog -i ratetable_A.rawlog --model multipoint -o cal.yaml\`."
 	echo
 	echo "Bit-for-bit regeneration holds on the same platform (made on x86-64 Linux, GCC, glibc libm,"
 	echo "Eigen 3.4, MRPT 2.5). Another C library or compiler can change the last bits of floating-point"
@@ -59,10 +66,10 @@ done
 	echo "| file | what | command |"
 	echo "|---|---|---|"
 	for run in "${RUNS[@]}"; do
-		IFS='|' read -r name profile what <<<"$run"
-		echo "| $name.rawlog | $what | \`fog-sim --profile $profile --seed $SEED --rate-hz $RATE -o $name.rawlog\` |"
-		if [ "$name" != drive ]; then
-			echo "| $name.csv.gz | CSV twin of $name.rawlog | \`fog-sim --profile $profile --seed $SEED --rate-hz $RATE -o $name.csv.gz\` |"
+		IFS='|' read -r name profile seed csv what <<<"$run"
+		echo "| $name.rawlog | $what | \`fog-sim --profile $profile --seed $seed --rate-hz $RATE -o $name.rawlog\` |"
+		if [ "$csv" = yes ]; then
+			echo "| $name.csv.gz | CSV twin of $name.rawlog | \`fog-sim --profile $profile --seed $seed --rate-hz $RATE -o $name.csv.gz\` |"
 		fi
 	done
 	echo
@@ -70,9 +77,9 @@ done
 	echo
 	echo '```sha256'
 	(cd "$OUT" && for run in "${RUNS[@]}"; do
-		IFS='|' read -r name _ _ <<<"$run"
+		IFS='|' read -r name _ _ csv _ <<<"$run"
 		sha256sum "$name.rawlog"
-		if [ "$name" != drive ]; then sha256sum "$name.csv.gz"; fi
+		if [ "$csv" = yes ]; then sha256sum "$name.csv.gz"; fi
 	done)
 	echo '```'
 	echo
