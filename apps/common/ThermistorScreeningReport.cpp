@@ -13,6 +13,12 @@ FogSeries screenedForCompensation(const FogSeries& in, bool enabled, ThermistorS
 	return out;
 }
 
+ThermistorScreening screenInPlace(FogSeries& series, bool enabled)
+{
+	if (!enabled) return {};
+	return screenThermistors(series);
+}
+
 std::string screeningText(const ThermistorScreening& s, bool enabled)
 {
 	if (!enabled) return "  thermistor screening: off (--no-screening)\n";

@@ -17,6 +17,12 @@ namespace mrpt_fog::app
  * it with the counts. With `enabled` false the copy is returned unscreened (all counts 0). */
 FogSeries screenedForCompensation(const FogSeries& in, bool enabled, ThermistorScreening& screening);
 
+/** Screens the series' thermistors in place (rejected readings become NaN dropouts) when
+ * enabled; returns the counts (all 0 when disabled). For the programs that fit or evaluate
+ * (fog-calibrate, fog-evaluate, fog-discrepancy): the same screening fog-compensate runs, so that
+ * one log gives the same figures through every program. */
+ThermistorScreening screenInPlace(FogSeries& series, bool enabled);
+
 /** One line per thermistor with a rejected reading ("  thermistor T3: stuck 412 samples (1
  * event), spike 0, out of range 0"); "  thermistor screening: all readings accepted" when
  * none; "  thermistor screening: off" when disabled. */

@@ -10,12 +10,15 @@
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/ScaleFactorFit.h>
 
+#include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
 #include "AppMain.h"
 #include "CommandLine.h"
 #include "RangeWarning.h"
+#include "ThermistorScreeningReport.h"
 
 using namespace mrpt_fog;
 
@@ -63,6 +66,16 @@ HOW THE FIT GUARDS AGAINST OVER-FITTING (--selection)
     collinear thermistors it fits the calibration run and fails on others.
   The fit refuses (with the reason) too few samples, a temperature span too narrow for the
   polynomial order, and a rank-deficient system with plain least squares.
+
+NO SILENT EMPTY MODEL (--allow-empty-model)
+  A fit that keeps no thermal term (a constant bias only: the bias does not follow the
+  thermistors, the noise hides it, table rates dominate) is an error saying why, and nothing
+  is written; --allow-empty-model writes it with a warning. A model whose thermal terms lower
+  the held-out stability by less than 1 % (it compensates nothing) is written with a warning.
+
+THERMISTOR SCREENING (--no-screening)
+  Before fitting, every run's thermistor readings are screened as fog-compensate screens them
+  (stuck, spike, out of range -> a dropout); rejected readings are counted in the summary.
 
 RATES
   dT/dt from a causal local line over the trailing --window seconds (default 60; delay about
@@ -126,6 +139,59 @@ JsonValue figuresJson(const FitFigures& f)
 	j["compensated"]["rms_dph"] = f.rms_dph;
 	return j;
 }
+
+/** Why a fit selected no thermal term, from the runs themselves (issue 14: such a calibration
+ * used to be written silently as "1 terms (0 thermistors)"). */
+std::string whyNoThermalTerm(const std::vector<FogSeries>& runs, const BiasModel& m)
+{
+	std::size_t samples = 0;
+	double span_C = 0.0;
+	std::string span_name;
+	double table_range = 0.0, residual_range = 0.0;
+	for (const auto& r : runs)
+	{
+		samples += r.size();
+		for (std::size_t i = 0; i < r.thermistorCount(); i++)
+		{
+			double lo = INFINITY, hi = -INFINITY;
+			for (double t : r.temp_C[i])
+				if (std::isfinite(t)) lo = std::min(lo, t), hi = std::max(hi, t);
+			if (hi - lo > span_C) span_C = hi - lo, span_name = r.thermistors[i].name;
+		}
+		if (!r.table_rate_dph.empty())
+		{
+			double tlo = INFINITY, thi = -INFINITY, rlo = INFINITY, rhi = -INFINITY;
+			const auto& rate = r.primaryRate_dph();
+			for (std::size_t k = 0; k < r.size(); k++)
+			{
+				if (!std::isfinite(r.table_rate_dph[k]) || !std::isfinite(rate[k])) continue;
+				tlo = std::min(tlo, r.table_rate_dph[k]), thi = std::max(thi, r.table_rate_dph[k]);
+				const double res = rate[k] - r.table_rate_dph[k];
+				rlo = std::min(rlo, res), rhi = std::max(rhi, res);
+			}
+			if (thi >= tlo) table_range = std::max(table_range, thi - tlo), residual_range = std::max(residual_range, rhi - rlo);
+		}
+	}
+	char b[400];
+	if (samples < 100 || m.samples < 100)
+		std::snprintf(b, sizeof(b), "too few samples (%zu): a thermal term needs hundreds over the temperature range", samples);
+	else if (span_C < 2.0)
+		std::snprintf(b, sizeof(b),
+					  "no temperature span: the thermistors vary by at most %.3g C (%s); a thermal model needs runs over "
+					  "several degrees",
+					  span_C, span_name.empty() ? "no valid reading" : span_name.c_str());
+	else if (table_range > 0 && table_range > 100.0 * residual_range)
+		std::snprintf(b, sizeof(b),
+					  "the applied table rates dominate the output (table range %.4g deg/h, gyro minus table %.4g deg/h): "
+					  "an error proportional to the rate (scale factor) hides the thermal bias",
+					  table_range, residual_range);
+	else
+		std::snprintf(b, sizeof(b),
+					  "no thermal term lowered the held-out error (thermistors span %.3g C): the bias does not follow these "
+					  "thermistors, or the noise hides it",
+					  span_C);
+	return b;
+}
 }  // namespace
 
 int main(int argc, char** argv)
@@ -156,6 +222,14 @@ int main(int argc, char** argv)
 											"auto (default): fit the scale factor vs temperature from table-rate "
 											"segments when a run has them; off: bias only",
 											false, "auto", "auto|off", cmd);
+		TCLAP::SwitchArg arg_no_screen("", "no-screening",
+									   "Do not screen thermistor readings (stuck / spike / out of range -> dropout) "
+									   "before fitting (the screening fog-compensate runs)",
+									   cmd);
+		TCLAP::SwitchArg arg_allow_empty("", "allow-empty-model",
+										 "Write the calibration even when the fit selects no thermal term (a constant "
+										 "bias only); without it that is an error saying why",
+										 cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-calibrate", kHelp)) return *rc;
 
 		std::vector<FileArg> inputs{{"--validate", arg_val.getValue()}};
@@ -179,7 +253,14 @@ int main(int argc, char** argv)
 		if (arg_sf.getValue() != "auto" && arg_sf.getValue() != "off")
 			throw std::invalid_argument("--scale-factor: '" + arg_sf.getValue() + "' is not auto or off");
 		std::vector<FogSeries> runs;
-		for (const auto& path : arg_in.getValue()) runs.push_back(readFogLog(path, arg_label.getValue()));
+		const bool screen = !arg_no_screen.getValue();
+		std::string screening_text;
+		const auto screened = [&](FogSeries s, const std::string& path) {
+			const ThermistorScreening sc = app::screenInPlace(s, screen);
+			if (!screen || sc.rejected_readings > 0) screening_text += "  " + path + ":\n" + app::screeningText(sc, screen);
+			return s;
+		};
+		for (const auto& path : arg_in.getValue()) runs.push_back(screened(readFogLog(path, arg_label.getValue()), path));
 		const bool fit_sf = arg_sf.getValue() == "auto" && hasTableRates(runs);
 		if (fit_sf) opt.table_samples = TableSamples::Exclude;
 		Calibration cal = fitCalibration(runs, arg_model.getValue(), opt, arg_in.getValue());
@@ -199,11 +280,25 @@ int main(int argc, char** argv)
 		}
 		if (!arg_val.getValue().empty())
 		{
-			const FogSeries val = readFogLog(arg_val.getValue(), arg_label.getValue());
+			const FogSeries val = screened(readFogLog(arg_val.getValue(), arg_label.getValue()), arg_val.getValue());
 			cal.validation = evaluateCalibration(cal, val, "validation run " + arg_val.getValue(), opt.tau_s);
 		}
 		else
 			cal.validation.label = "validation run (none given)";
+		if (cal.model.features.thermistors().empty())
+		{
+			const std::string why = whyNoThermalTerm(runs, cal.model);
+			if (!arg_allow_empty.getValue())
+				throw std::runtime_error("the fitted model has no thermal term (a constant bias only): " + why +
+										 "; nothing written (--allow-empty-model writes it anyway)");
+			std::fprintf(stderr, "fog-calibrate: warning: the fitted model has no thermal term (a constant bias only): %s\n",
+						 why.c_str());
+		}
+		else if (cal.held_out.valid && !(cal.held_out.stability_dph < 0.99 * cal.held_out.raw_stability_dph))
+			std::fprintf(stderr,
+						 "fog-calibrate: warning: the thermal terms lower the held-out stability by less than 1 %% "
+						 "(%.4g -> %.4g deg/h): the model compensates nothing these runs can show\n",
+						 cal.held_out.raw_stability_dph, cal.held_out.stability_dph);
 		saveCalibrationYaml(cal, arg_out.getValue());
 
 		const auto& m = cal.model;
@@ -266,6 +361,7 @@ int main(int argc, char** argv)
 		}
 		if (!cal.scale_factor && hasTableRates(runs))
 			std::printf("  scale factor: not fitted (--scale-factor off): table samples used as bias samples\n");
+		std::fputs(screening_text.c_str(), stdout);
 		std::printf("  wrote %s\n", arg_out.getValue().c_str());
 
 		if (!arg_json.getValue().empty())

@@ -19,6 +19,7 @@
 
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "ThermistorScreeningReport.h"
 
 using namespace mrpt_fog;
 
@@ -50,6 +51,10 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<double> alpha("", "alpha", "family-wise significance level (Holm)", false, 0.005, "P", cmd);
 		TCLAP::ValueArg<std::string> label("", "fog-label", "FOG sensor label in a rawlog with several", false, "",
 										   "LABEL", cmd);
+		TCLAP::SwitchArg no_screen("", "no-screening",
+								   "do not screen thermistor readings (stuck / spike / out of range -> dropout) before "
+								   "the analysis (fog-compensate's screening)",
+								   cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-discrepancy")) return *rc;
 
 		if (measured.getValue().size() > 2)
@@ -75,6 +80,8 @@ int main(int argc, char** argv)
 		for (const auto& f : measured.getValue())
 		{
 			runs.push_back(readFogLog(f, label.getValue()));
+			const ThermistorScreening sc = app::screenInPlace(runs.back(), !no_screen.getValue());
+			if (sc.rejected_readings > 0) std::cout << f << ":\n" << app::screeningText(sc, true);
 			labels.push_back(std::filesystem::path(f).filename().string());
 		}
 		discrepancy::DiscrepancyOptions opt;

@@ -9,6 +9,7 @@
  * peak-to-peak and the Allan deviation measure spread and are unaffected by it. */
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "ThermistorScreeningReport.h"
 #include "CalibrationSource.h"
 #include "RangeWarning.h"
 #include "EvaluationPlots.h"
@@ -64,6 +65,10 @@ int main(int argc, char** argv)
 										   false, "", "DIR", cmd);
 		TCLAP::ValueArg<std::string> label("", "label", "FOG sensor label in a rawlog with several", false, "", "FOG",
 										   cmd);
+		TCLAP::SwitchArg no_screen("", "no-screening",
+								   "do not screen thermistor readings (stuck / spike / out of range -> dropout) before "
+								   "compensating (fog-compensate's screening)",
+								   cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-evaluate")) return *rc;
 
 		const double tau_s = tau.getValue();
@@ -72,7 +77,10 @@ int main(int argc, char** argv)
 
 		const std::string path = in.getValue();
 		requireSafeOutputs({{"-i", path}, {"--cal", cal.getValue()}}, {{"--json", json.getValue()}});
-		const FogSeries series = readFogLog(path, label.getValue());
+		FogSeries series = readFogLog(path, label.getValue());
+		// The screening fog-compensate runs (stuck / spike / out of range -> dropout), so that a log
+		// gives the same compensated figures here and there.
+		const ThermistorScreening screening = app::screenInPlace(series, !no_screen.getValue());
 		try
 		{
 			series.validate();
@@ -137,6 +145,7 @@ int main(int argc, char** argv)
 				std::printf("  * in-sample: this log is one of the calibration's runs\n");
 			std::fputs(app::outOfRangeWarning(k, comp_series->extrapolation).c_str(), stdout);
 		}
+		if (comp_series) std::fputs(app::screeningText(screening, !no_screen.getValue()).c_str(), stdout);
 		std::printf("  (Earth rate is not removed: it is in the mean only; stability, range and Allan terms "
 					"measure spread)\n");
 
@@ -176,6 +185,7 @@ int main(int argc, char** argv)
 				j["compensated"]["clamped_samples"] = k.clamped_samples;
 				j["compensated"]["rate_warmup_samples"] = k.warmup_samples;
 				j["compensated"]["out_of_range"] = app::outOfRangeJson(k, comp_series->extrapolation);
+				j["screening"] = app::screeningJson(screening, !no_screen.getValue());
 				j["improvement"]["stability_ratio"] = raw.stats.stability_dph / comp->stats.stability_dph;
 				j["improvement"]["range_ratio"] = raw.stats.range_dph / comp->stats.range_dph;
 			}

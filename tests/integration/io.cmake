@@ -40,3 +40,17 @@ if(TARGET fog-convert AND TARGET fog-calibrate AND TARGET fog-compensate AND TAR
     ${FOG_SOURCE_DIR} ${io_work}/files_sacred)
   set_tests_properties(io_files_sacred PROPERTIES LABELS "io;integration" TIMEOUT 300)
 endif()
+
+# The same thermistor screening in every program (issue 14).
+if(TARGET fog-calibrate AND TARGET fog-evaluate)
+  add_test(NAME io_screening_everywhere COMMAND bash ${io_scripts}/screening_everywhere.sh
+    $<TARGET_FILE_DIR:fog-calibrate> ${FOG_SOURCE_DIR} ${io_work}/screening_everywhere)
+  set_tests_properties(io_screening_everywhere PROPERTIES LABELS "io;integration" TIMEOUT 300)
+endif()
+
+# No silent empty model (issue 14).
+if(TARGET fog-calibrate)
+  add_test(NAME io_calibrate_empty_model COMMAND bash ${io_scripts}/empty_model.sh
+    $<TARGET_FILE_DIR:fog-calibrate> ${FOG_SOURCE_DIR} ${io_work}/empty_model)
+  set_tests_properties(io_calibrate_empty_model PROPERTIES LABELS "io;integration" TIMEOUT 300)
+endif()

@@ -407,10 +407,7 @@ std::unique_ptr<FogLogReader::Impl> makeCsvReaderImpl(const std::string& path, c
 FogSeries readFogCsv(const std::string& path)
 {
 	FogLogReader reader(path);
-	FogSeries s = emptySeriesLike(reader.header());
-	FogSample x;
-	while (reader.next(x)) appendSample(s, x, reader);
-	return s;
+	return readAllSamples(reader);
 }
 
 void writeFogCsv(const std::string& path, const FogSeries& series)

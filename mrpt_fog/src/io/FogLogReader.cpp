@@ -2,6 +2,8 @@
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/io/FogLogIO.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "FogLogReaderImpl.h"
@@ -59,6 +61,78 @@ std::size_t FogLogReader::objectsRead() const { return impl_->objectsRead(); }
 bool FogLogReader::isRawlog() const { return impl_->isRawlog(); }
 std::uint64_t FogLogReader::fileBytesRead() const { return impl_->fileBytesRead(); }
 std::uint64_t FogLogReader::fileBytes() const { return impl_->fileBytes(); }
+
+namespace
+{
+/** One column in fixed-size blocks: appending never copies what was read, and the exact-size
+ * column is made at the end (peak memory: the data once plus one column, instead of up to twice
+ * every column while std::vector grows). */
+class BlockColumn
+{
+   public:
+	void push(double v)
+	{
+		if (used_ == kBlock || blocks_.empty())
+		{
+			blocks_.emplace_back(new double[kBlock]);
+			used_ = 0;
+		}
+		blocks_.back()[used_++] = v;
+		n_++;
+	}
+	/** Moves the values into `out` (exact size) and frees the blocks. */
+	void moveTo(std::vector<double>& out)
+	{
+		out.clear();
+		out.shrink_to_fit();
+		out.resize(n_);
+		std::size_t k = 0;
+		for (auto& b : blocks_)
+		{
+			const std::size_t m = std::min(kBlock, n_ - k);
+			std::copy(b.get(), b.get() + m, out.data() + k);
+			k += m;
+			b.reset();
+		}
+		blocks_.clear();
+		n_ = used_ = 0;
+	}
+
+   private:
+	static constexpr std::size_t kBlock = 1 << 16;
+	std::vector<std::unique_ptr<double[]>> blocks_;
+	std::size_t used_ = 0, n_ = 0;
+};
+}  // namespace
+
+FogSeries readAllSamples(FogLogReader& r)
+{
+	FogSeries s = emptySeriesLike(r.header());
+	const std::size_t nt = s.thermistors.size();
+	BlockColumn time;
+	std::array<BlockColumn, 3> rate;
+	std::vector<BlockColumn> temp(nt);
+	BlockColumn table, field, power;
+	FogSample x;
+	while (r.next(x))
+	{
+		time.push(x.time_s);
+		for (int a = 0; a < 3; a++)
+			if (s.has_axis[a]) rate[a].push(x.rate_dph[a]);
+		for (std::size_t i = 0; i < nt; i++) temp[i].push(x.temp_C[i]);
+		if (r.hasTableRate()) table.push(x.table_rate_dph);
+		if (r.hasField()) field.push(x.field_uT);
+		if (r.hasPower()) power.push(x.power);
+	}
+	time.moveTo(s.time_s);
+	for (int a = 0; a < 3; a++)
+		if (s.has_axis[a]) rate[a].moveTo(s.rate_dph[a]);
+	for (std::size_t i = 0; i < nt; i++) temp[i].moveTo(s.temp_C[i]);
+	if (r.hasTableRate()) table.moveTo(s.table_rate_dph);
+	if (r.hasField()) field.moveTo(s.field_uT);
+	if (r.hasPower()) power.moveTo(s.power);
+	return s;
+}
 
 FogSeries emptySeriesLike(const FogSeries& h)
 {

@@ -269,9 +269,7 @@ FogRawlogContents readFogRawlog(const std::string& path, const std::string& fog_
 	FogRawlogContents out;
 	FogLogReader reader(path, fog_label, ReadLimits{},
 						[&](const mrpt::obs::CObservation::Ptr& o) { out.others.push_back(o); });
-	out.fog = emptySeriesLike(reader.header());
-	FogSample x;
-	while (reader.next(x)) appendSample(out.fog, x, reader);
+	out.fog = readAllSamples(reader);
 	out.objects_read = reader.objectsRead();
 	try
 	{

@@ -90,6 +90,10 @@ class FogLogReader
 /** Appends a sample read by `reader` to a series of the reader's layout (emptySeriesLike). */
 void appendSample(FogSeries& series, const FogSample& sample, const FogLogReader& reader);
 
+/** Every remaining sample of the reader as a series (columns of exact size; peak memory about
+ * the series plus one column). */
+FogSeries readAllSamples(FogLogReader& reader);
+
 /** A series with the header's layout and no samples (optional columns present but empty). */
 FogSeries emptySeriesLike(const FogSeries& header);
 
