@@ -60,4 +60,18 @@ double JsonFigures::number(const std::string& dotted_path) const
 		return std::numeric_limits<double>::quiet_NaN();
 	}
 }
+
+std::string JsonFigures::text(const std::string& dotted_path) const
+{
+	const auto n = find(dotted_path);
+	if (!n || n->isNullNode() || !n->isScalar()) return {};
+	try
+	{
+		return n->as<std::string>();
+	}
+	catch (const std::exception&)
+	{
+		return {};
+	}
+}
 }  // namespace mrpt_fog::demo

@@ -20,6 +20,8 @@ class JsonFigures
 	/** Number at a dotted path ("raw.stability_dph"); NaN when absent or null. */
 	double number(const std::string& dotted_path) const;
 	bool has(const std::string& dotted_path) const;
+	/** Text at a dotted path; empty when absent, null or not a scalar. */
+	std::string text(const std::string& dotted_path) const;
 
    private:
 	std::optional<mrpt::containers::yaml> find(const std::string& dotted_path) const;

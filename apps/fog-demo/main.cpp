@@ -37,7 +37,9 @@ WHAT IT DOES
       for the raw, compensated and ideal (no thermal error) gyros, against the ground truth;
    4. fog-localize (when built): MRPT particle-filter localization on a simulated world around
       the drive, odometry heading from the raw / compensated / ideal FOG, 5 filter seeds:
-      position RMS on the observation-poor (open-field) stretches;
+      position RMS on the observation-poor (open-field) stretches. Its calibration: bias on
+      chamber run A plus the scale factor vs temperature on the rate-table run
+      (ratetable_A.rawlog) when the datasets have one, else the bias only (said in the report);
    5. fog-paper (when built): the seed paper's Tables 1-3 beside ours.
   The report folder holds summary.md (key figures, tables, the command behind each), the
   calibration YAML, every program's JSON, PNG plots and logs.
@@ -179,9 +181,18 @@ int main(int argc, char** argv)
 				 {run.program("fog-drift"), "-i", ds.drive, "--cal", cal, "--json", (json / "drift.json").string(), "--plots",
 				  (plots / "drift").string(), "--odometry-out", (out / "odometry_compensated.rawlog").string()}});
 		if (have_localize)
-			run.run({"localize", "MRPT particle-filter localization with raw / compensated / ideal FOG heading (fog-localize)",
-					 {run.program("fog-localize"), "--drive", ds.drive, "--cal", cal, "--out", (out / "localize").string(),
-					  "--json", (json / "localize.json").string()}});
+		{
+			// The drive turns: the localization compensates with the scale factor too when the
+			// datasets hold a rate-table run of the same gyro (fog-localize fits bias + scale factor).
+			const fs::path table = data / "ratetable_A.rawlog";
+			const std::string table_arg = fs::exists(table) ? table.string() : "none";
+			run.run({"localize",
+					 "MRPT particle-filter localization with raw / compensated / ideal FOG heading (fog-localize; "
+					 "calibration: chamber A" +
+						 std::string(fs::exists(table) ? " + rate table A, bias and scale factor)" : ", bias only)"),
+					 {run.program("fog-localize"), "--drive", ds.drive, "--chamber", ds.chamber_A, "--ratetable", table_arg,
+					  "--out", (out / "localize").string(), "--json", (json / "localize.json").string()}});
+		}
 		if (have_paper)
 		{
 			fs::create_directories(plots / "paper");
@@ -238,13 +249,18 @@ int main(int argc, char** argv)
 			const double lr = loc.number("position_rms_m.raw"), lc = loc.number("position_rms_m.compensated"),
 						 li = loc.number("position_rms_m.ideal");
 			md << "\n## MRPT localization on the drive (fog-localize)\n\n"
+			   << "Calibration of the compensated gyro: " << loc.text("calibration.description") << ".\n\n"
 			   << "Particle filter on a simulated map around the route (laser scans), odometry heading from each gyro; "
 			   << "position RMS on the open-field (observation-poor) stretches, pooled over the filter seeds: raw " << fmt(lr)
 			   << " m, compensated " << fmt(lc) << " m, ideal " << fmt(li) << " m (compensated/raw = " << ratio(lc, lr)
 			   << ", target <= 0.5; compensated/ideal = " << ratio(lc, li) << ", target <= 1.5); paired over the seeds, "
 			   << "compensated - raw = " << fmt(loc.number("paired_open_rms_difference_m.compensated_minus_raw.mean"), "%+.2f")
 			   << " +- " << fmt(loc.number("paired_open_rms_difference_m.compensated_minus_raw.standard_error"), "%.2f")
-			   << " m (below 2 standard errors: cannot be told from the filter's seed-to-seed spread). Map, rawlogs, "
+			   << " m (" << loc.text("paired_open_rms_difference_m.compensated_minus_raw.verdict")
+			   << "; 'cannot tell' below 2 standard errors), compensated - ideal = "
+			   << fmt(loc.number("paired_open_rms_difference_m.compensated_minus_ideal.mean"), "%+.2f") << " +- "
+			   << fmt(loc.number("paired_open_rms_difference_m.compensated_minus_ideal.standard_error"), "%.2f") << " m ("
+			   << loc.text("paired_open_rms_difference_m.compensated_minus_ideal.verdict") << "). Map, rawlogs, "
 			   << "pf-localization .ini files and plots: `localize/`; details: docs/localize.md.\n";
 		}
 		if (have_paper)

@@ -115,6 +115,7 @@ std::string iniText(const std::string& gyro_name, const MclOptions& m, const Las
 
 void printSummary(const LocalizeResults& r, const World& world)
 {
+	std::printf("  compensated gyro: calibration %s\n", describeCalibration(r.calibration).c_str());
 	std::printf("  position RMS [m] per stretch kind (pooled over %zu filter seeds; %.0f s run time)\n",
 				r.gyros.empty() ? 0 : r.gyros.front().seeds.size(), r.runtime_s);
 	std::printf("  %-12s %10s %10s %10s %10s %14s %9s\n", "gyro", "open", "tunnel", "urban", "all", "worst open",
@@ -153,7 +154,28 @@ void writeOutputs(const std::string& dir, const std::string& json_path, const Lo
 	// ---- JSON
 	JsonValue j = JsonValue::object();
 	j["drive"] = r.drive;
-	j["calibration"] = r.calibration;
+	{
+		JsonValue& c = j["calibration"];
+		c = JsonValue::object();
+		c["path"] = r.calibration.path;
+		c["source"] = toString(r.calibration.source);
+		c["fitted_on"] = JsonValue::array();
+		for (const auto& f : r.calibration.fitted_on) c["fitted_on"].push_back(f);
+		c["bias_model"] = r.calibration.cal.preset;
+		if (const auto& sf = r.calibration.cal.scale_factor)
+		{
+			JsonValue& m = c["scale_factor"];
+			m = JsonValue::object();
+			m["thermistor"] = sf->thermistor;
+			m["order"] = static_cast<unsigned long>(sf->order());
+			m["slope_ppm_per_C"] = sf->slope_ppm_per_C;
+			m["min_C"] = sf->min_C;
+			m["max_C"] = sf->max_C;
+		}
+		else
+			c["scale_factor"] = JsonValue();
+		c["description"] = describeCalibration(r.calibration);
+	}
 	j["seeds"] = JsonValue::array();
 	if (!r.gyros.empty())
 		for (unsigned s : r.gyros.front().seeds) j["seeds"].push_back(s);

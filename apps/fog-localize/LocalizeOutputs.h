@@ -8,6 +8,7 @@
  * (map.gridmap.gz), an actions-observations rawlog per gyro, an .ini per gyro and the ground
  * truth as text. Every file is written atomically. */
 
+#include "CalibrationChoice.h"
 #include "Localization.h"
 #include "LocalizationErrors.h"
 #include "Sensors.h"
@@ -31,7 +32,8 @@ struct GyroResult
 
 struct LocalizeResults
 {
-	std::string drive, calibration;
+	std::string drive;
+	CalibrationChoice calibration;  //!< what compensated the FOG
 	double t0_s = 0, runtime_s = 0;
 	std::vector<GyroResult> gyros;  //!< raw, compensated, ideal
 };

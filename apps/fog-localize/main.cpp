@@ -8,6 +8,7 @@
  * seeds, and reports the position and heading error per stretch kind; the open (observation-
  * poor) stretches are where the FOG is judged. */
 #include "AppMain.h"
+#include "CalibrationChoice.h"
 #include "CommandLine.h"
 #include "Compensation.h"
 #include "DriveData.h"
@@ -38,6 +39,14 @@ namespace
 {
 const char* const kHelp = R"(
 What it does
+  0. Calibration of the compensated gyro: --cal as given; without it, fitted here as
+     `fog-calibrate -i CHAMBER -i RATETABLE --model multipoint` does: the bias on the static
+     samples, the scale factor vs temperature on the rate-table run's table segments. The drive
+     turns, and a bias-only calibration leaves the scale factor's heading error at every turn
+     in the compensated gyro: without a rate-table run (--ratetable none, or no bundled
+     datasets/ratetable_A.rawlog) the fit is bias only and fog-localize says so. The
+     calibration used is printed and recorded in --json (calibration.{path, source,
+     fitted_on, bias_model, scale_factor, description}).
   1. World: an occupancy grid (2 m cells) around the drive's true route. Urban stretches have
      building facades both sides; the route's 3 longest straights hold open fields (nothing in
      laser range for >= 2 km, 800 m of urban road kept at both ends); the next straight holds a
@@ -64,7 +73,8 @@ Outputs in --out: map.gridmap.gz, map.png, localize_<gyro>.rawlog (actions-obser
   errors.png (position and heading error vs time, open stretches shaded), localize.json.
 
 Examples
-  fog-localize --out loc --json loc.json                       # bundled drive, calibration fitted on chamber A
+  fog-localize --out loc --json loc.json                       # bundled drive, calibration fitted on chamber A + rate table A
+  fog-localize --ratetable none --out loc_bias --json b.json   # the same with a bias-only calibration
   fog-localize --drive datasets/drive.rawlog --cal cal.yaml --seeds 10 --out loc
 )";
 
@@ -97,9 +107,17 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<std::string> arg_drive("", "drive", "drive rawlog (FOG, FOG_IDEAL, ODOMETRY, GROUND_TRUTH) "
 															"[default: the bundled datasets/drive.rawlog]",
 											   false, "", "F", cmd);
-		TCLAP::ValueArg<std::string> arg_cal("", "cal", "calibration YAML [default: multipoint fitted on "
-														"datasets/chamber_A.rawlog, written to DIR/cal_A.yaml]",
+		TCLAP::ValueArg<std::string> arg_cal("", "cal", "calibration YAML [default: fitted here on --chamber and "
+														"--ratetable (bias + scale factor), written to DIR/calibration.yaml]",
 											 false, "", "CAL.yaml", cmd);
+		TCLAP::ValueArg<std::string> arg_chamber("", "chamber", "chamber run for the fit when no --cal [default: the "
+																"bundled datasets/chamber_A.rawlog]",
+												 false, "", "F", cmd);
+		TCLAP::ValueArg<std::string> arg_table("", "ratetable",
+											   "rate-table run of the same gyro for the scale-factor fit when no --cal, "
+											   "or 'none' (bias only) [default: the bundled datasets/ratetable_A.rawlog "
+											   "if present, else none, said on stdout]",
+											   false, "", "F|none", cmd);
 		TCLAP::ValueArg<std::string> arg_out("o", "out", "output folder [default: fog-localize-out]", false,
 											 "fog-localize-out", "DIR", cmd);
 		TCLAP::ValueArg<std::string> arg_json("", "json", "write the figures as JSON", false, "", "F", cmd);
@@ -138,15 +156,27 @@ int main(int argc, char** argv)
 		fs::create_directories(out);
 		const std::string drive_path =
 			arg_drive.getValue().empty() ? (defaultDatasetsDir() / "drive.rawlog").string() : arg_drive.getValue();
-		std::string cal_path = arg_cal.getValue();
-		if (cal_path.empty())
+		CalibrationRequest creq;
+		creq.given_path = arg_cal.getValue();
+		if (creq.given_path.empty())
 		{
-			const std::string chamber = (defaultDatasetsDir() / "chamber_A.rawlog").string();
-			cal_path = (out / "cal_A.yaml").string();
-			const FitOptions fit_options;
-			saveCalibrationYaml(fitCalibration({readFogLog(chamber)}, "multipoint", fit_options, {chamber}), cal_path);
-			std::printf("fog-localize: calibration fitted on %s (multipoint) -> %s\n", chamber.c_str(), cal_path.c_str());
+			creq.chamber_path = arg_chamber.getValue().empty() ? (defaultDatasetsDir() / "chamber_A.rawlog").string()
+															   : arg_chamber.getValue();
+			if (arg_table.getValue() == "none")
+				creq.ratetable_path.reset();
+			else if (!arg_table.getValue().empty())
+				creq.ratetable_path = arg_table.getValue();
+			else if (const fs::path t = defaultDatasetsDir() / "ratetable_A.rawlog"; fs::exists(t))
+				creq.ratetable_path = t.string();
+			else
+				std::printf("fog-localize: no rate-table run (%s): the calibration models the bias only\n", t.c_str());
+			creq.write_path = (out / "calibration.yaml").string();
 		}
+		else if (!arg_chamber.getValue().empty() || !arg_table.getValue().empty())
+			throw std::runtime_error("--chamber/--ratetable choose the runs of a fit: not with --cal");
+		const CalibrationChoice calib = chooseCalibration(creq);
+		const std::string& cal_path = calib.path;
+		std::printf("fog-localize: calibration %s\n", describeCalibration(calib).c_str());
 
 		// Drive, gyro variants (as fog-drift), truth.
 		const drift::DriveData drive = drift::readDrive(drive_path);
@@ -156,7 +186,7 @@ int main(int argc, char** argv)
 		hopt.latitude_deg = *drive.latitude_deg;
 		// The Earth rate the calibration's bias absorbed, at the latitude the file records (a file
 		// without one is taken as made at the drive's latitude).
-		const Calibration cal_file = loadCalibrationYaml(cal_path);
+		const Calibration& cal_file = calib.cal;
 		double cal_earth_dph = 0.0;
 		if (cal_file.earth_rate == EarthRateHandling::InBias)
 		{
@@ -166,7 +196,7 @@ int main(int argc, char** argv)
 							hopt.latitude_deg);
 			cal_earth_dph = units::kEarthRate_dph * std::sin(cal_lat_deg * units::kDegToRad);
 		}
-		std::vector<double> comp = drift::compensatedRate_dph(drive.fog, cal_path, true);
+		std::vector<double> comp = drift::compensatedRate_dph(drive.fog, calib.cal, cal_path, true);
 		for (double& r : comp) r += cal_earth_dph;  // the static calibration absorbed it: removed once, by the strapdown
 		const std::vector<double> t_fog = drift::absoluteTimes(drive.fog);
 		const std::vector<std::pair<std::string, nav::Trajectory>> gyros = {
@@ -216,7 +246,7 @@ int main(int argc, char** argv)
 
 		LocalizeResults results;
 		results.drive = drive_path;
-		results.calibration = cal_path;
+		results.calibration = calib;
 		results.t0_s = t0;
 		for (const auto& [name, traj] : gyros)
 		{
