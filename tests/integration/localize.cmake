@@ -8,6 +8,7 @@ if(TARGET fog-localize)
     --seeds 1 --particles 100)
   set_tests_properties(localize.fog_localize.run PROPERTIES FIXTURES_SETUP loc_run LABELS "localize;integration" TIMEOUT 600)
   add_test(NAME localize.fog_localize.check COMMAND ${CMAKE_COMMAND} -DJSON=${LOC_DIR}.json -DDIR=${LOC_DIR}
+    -DRATETABLE=${FOG_SOURCE_DIR}/datasets/ratetable_A.rawlog
     -P ${FOG_SOURCE_DIR}/tests/localize/check_localize.cmake)
   set_tests_properties(localize.fog_localize.check PROPERTIES FIXTURES_REQUIRED loc_run LABELS "localize;integration")
   find_program(LOC_PF_LOCALIZATION pf-localization)
@@ -24,6 +25,12 @@ if(TARGET fog-localize)
   add_test(NAME localize.fog_localize.bad_seeds COMMAND fog-localize --seeds 0 --out ${LOC_DIR}_bad)
   add_test(NAME localize.fog_localize.missing_drive COMMAND fog-localize --drive ${LOC_DIR}/no_such.rawlog --cal x.yaml --out ${LOC_DIR}_bad)
   add_test(NAME localize.fog_localize.bad_fields COMMAND fog-localize --fields curvy --out ${LOC_DIR}_bad)
-  set_tests_properties(localize.fog_localize.bad_seeds localize.fog_localize.missing_drive localize.fog_localize.bad_fields PROPERTIES
-    WILL_FAIL TRUE LABELS "localize;integration")
+  # --ratetable chooses a run of the fit: refused beside --cal; a run without table rates is no rate-table run.
+  add_test(NAME localize.fog_localize.cal_and_ratetable COMMAND fog-localize --cal x.yaml --ratetable none --out ${LOC_DIR}_bad)
+  set_tests_properties(localize.fog_localize.bad_seeds localize.fog_localize.missing_drive localize.fog_localize.bad_fields
+    localize.fog_localize.cal_and_ratetable PROPERTIES WILL_FAIL TRUE LABELS "localize;integration")
+  add_test(NAME localize.fog_localize.not_a_ratetable COMMAND fog-localize --ratetable ${FOG_SOURCE_DIR}/datasets/warmup.rawlog
+    --out ${LOC_DIR}_bad)
+  set_tests_properties(localize.fog_localize.not_a_ratetable PROPERTIES
+    PASS_REGULAR_EXPRESSION "warmup.rawlog: no table rates" LABELS "localize;integration")
 endif()

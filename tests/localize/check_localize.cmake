@@ -3,8 +3,20 @@
 # - the map localizes: urban RMS < 1 m for every gyro, and no run diverged;
 # - the open fields are observation-poor: their RMS exceeds the urban one for every gyro;
 # - the tunnel fixes heading and lateral position: its RMS is below the open fields' RMS;
-# - the files pf-localization needs exist.
+# - the files pf-localization needs exist;
+# - the calibration is named: with the bundled rate-table run (-D RATETABLE=) present, the
+#   default fit models the scale factor; without it, the JSON says bias only.
 file(READ ${JSON} j)
+string(JSON cal_source GET "${j}" calibration source)
+string(JSON cal_sf TYPE "${j}" calibration scale_factor)
+message(STATUS "calibration: ${cal_source}, scale_factor ${cal_sf}")
+if(EXISTS "${RATETABLE}")
+  if(NOT cal_source STREQUAL "fitted_bias_and_scale_factor" OR NOT cal_sf STREQUAL "OBJECT")
+    message(FATAL_ERROR "with ${RATETABLE} present the default calibration must fit the scale factor (got ${cal_source}, ${cal_sf})")
+  endif()
+elseif(NOT cal_source STREQUAL "fitted_bias_only" OR NOT cal_sf STREQUAL "NULL")
+  message(FATAL_ERROR "without a rate-table run the calibration must say bias only (got ${cal_source}, ${cal_sf})")
+endif()
 foreach(g raw compensated ideal)
   string(JSON open GET "${j}" position_rms_m ${g})
   string(JSON urban GET "${j}" position_rms_m_by_kind ${g} urban)
