@@ -150,6 +150,8 @@ int main(int argc, char** argv)
 		if (arg_particles.getValue() < 10) throw std::runtime_error("--particles: must be >= 10");
 		if (!(arg_period.getValue() >= 0.1 && arg_period.getValue() <= 10))
 			throw std::runtime_error("--scan-period-s: must be within [0.1, 10] s");
+		WorldOptions wopt;
+		wopt.placement = fieldPlacementFromString(arg_fields.getValue());
 		const auto t_start = std::chrono::steady_clock::now();
 
 		const fs::path out = arg_out.getValue();
@@ -207,8 +209,6 @@ int main(int argc, char** argv)
 						  .trajectory}};
 
 		// World and scans.
-		WorldOptions wopt;
-		wopt.placement = fieldPlacementFromString(arg_fields.getValue());
 		LaserOptions lopt;
 		const World world = buildWorld(drive.truth, wopt);
 		double t0 = drive.truth.front().t_s, t1 = drive.truth.back().t_s;
