@@ -76,9 +76,17 @@ endif()
 
 # fog-rawlog-edit (installed script): rawlog-edit with the moved prefix's plugin reads every
 # FOG object of the drive (12001 FOG + 12001 FOG_IDEAL samples).
+# In a sanitizer build (scripts/run-sanitizers.sh exports FOG_ASAN_PRELOAD) MRPT's uninstrumented
+# rawlog-edit loads our instrumented plugin: without the ASan runtime preloaded it stops with "ASan
+# runtime does not come first in initial library list" (exit 1). Preloaded for this step only (the
+# compilers and ldd above must not run under it).
+set(preload "")
+if(DEFINED ENV{FOG_ASAN_PRELOAD} AND NOT "$ENV{FOG_ASAN_PRELOAD}" STREQUAL "")
+  set(preload ${CMAKE_COMMAND} -E env "LD_PRELOAD=$ENV{FOG_ASAN_PRELOAD}")
+endif()
 find_program(RAWLOG_EDIT_FOUND rawlog-edit)
 if(RAWLOG_EDIT_FOUND)
-  step("fog-rawlog-edit --info" ${prefix}/bin/fog-rawlog-edit --info -i ${DRIVE})
+  step("fog-rawlog-edit --info" ${preload} ${prefix}/bin/fog-rawlog-edit --info -i ${DRIVE})
   if(NOT out MATCHES "FOG_IDEAL / +12001 ")
     message(FATAL_ERROR "fog-rawlog-edit --info did not read the FOG_IDEAL objects:\n${out}")
   endif()
