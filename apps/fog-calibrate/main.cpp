@@ -347,6 +347,10 @@ int main(int argc, char** argv)
 						"held-out (%s) %.3g ppm\n",
 						sf.slope_ppm_per_C, sf.slope_ci95_lo_ppm_per_C, sf.slope_ci95_hi_ppm_per_C, sf.rms_in_sample_ppm,
 						sf.held_out_label.c_str(), sf.rms_held_out_ppm);
+			std::printf("    interval = noise [%.4g, %.4g] widened to the slopes against each of %zu thermistor(s) "
+						"[%.4g .. %.4g] (the coil temperature the scale factor follows is read by none)\n",
+						sf.slope_noise_ci95_lo_ppm_per_C, sf.slope_noise_ci95_hi_ppm_per_C, sf.slope_thermistors,
+						sf.slope_thermistor_min_ppm_per_C, sf.slope_thermistor_max_ppm_per_C);
 			std::printf("    candidates (held-out RMS [ppm]):");
 			for (const auto& c : sf_report.candidates) std::printf(" %s/%d:%.3g", c.thermistor.c_str(), c.order, c.rms_held_out_ppm);
 			std::printf("\n");
@@ -412,6 +416,13 @@ int main(int argc, char** argv)
 				js["slope_ci95_ppm_per_C"] = JsonValue::array();
 				js["slope_ci95_ppm_per_C"].push_back(sf.slope_ci95_lo_ppm_per_C);
 				js["slope_ci95_ppm_per_C"].push_back(sf.slope_ci95_hi_ppm_per_C);
+				js["slope_noise_ci95_ppm_per_C"] = JsonValue::array();
+				js["slope_noise_ci95_ppm_per_C"].push_back(sf.slope_noise_ci95_lo_ppm_per_C);
+				js["slope_noise_ci95_ppm_per_C"].push_back(sf.slope_noise_ci95_hi_ppm_per_C);
+				js["slope_thermistor_range_ppm_per_C"] = JsonValue::array();
+				js["slope_thermistor_range_ppm_per_C"].push_back(sf.slope_thermistor_min_ppm_per_C);
+				js["slope_thermistor_range_ppm_per_C"].push_back(sf.slope_thermistor_max_ppm_per_C);
+				js["slope_thermistors"] = static_cast<unsigned long>(sf.slope_thermistors);
 				js["min_C"] = sf.min_C;
 				js["max_C"] = sf.max_C;
 				js["table_rate_min_abs_dph"] = sf.table_rate_min_abs_dph;

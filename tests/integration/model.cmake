@@ -67,3 +67,11 @@ if(TARGET fog-convert)
             $<TARGET_FILE:fog-convert> $<TARGET_FILE:fog-calibrate>)
   set_tests_properties(model.calibrate_from_rawlog PROPERTIES LABELS "integration;model")
 endif()
+
+# Scale-factor interval on held-out simulator runs (18 rate-table runs, a few minutes: long).
+if(TARGET fog-sim)
+  add_test(NAME model.scale_factor_interval_trial
+    COMMAND bash ${FOG_SOURCE_DIR}/tests/model/scale_factor/interval_trial.sh $<TARGET_FILE:fog-sim>
+            $<TARGET_FILE:fog-calibrate> ${FOG_SOURCE_DIR} ${_mo}/sf_trial)
+  set_tests_properties(model.scale_factor_interval_trial PROPERTIES LABELS "long;integration;model" TIMEOUT 1800)
+endif()

@@ -185,6 +185,11 @@ ScaleFactorModel someScaleFactor()
 	m.slope_ppm_per_C = 20.0;
 	m.slope_ci95_lo_ppm_per_C = 19.9;
 	m.slope_ci95_hi_ppm_per_C = 20.1;
+	m.slope_noise_ci95_lo_ppm_per_C = 19.95;
+	m.slope_noise_ci95_hi_ppm_per_C = 20.02;
+	m.slope_thermistor_min_ppm_per_C = 19.93;
+	m.slope_thermistor_max_ppm_per_C = 20.08;
+	m.slope_thermistors = 4;
 	m.table_rate_min_abs_dph = 3600;
 	m.table_rate_max_abs_dph = 36000;
 	m.segments = 24;
@@ -272,6 +277,9 @@ TEST(CalibrationYaml, ScaleFactorAndWarmupRoundTrip)
 	EXPECT_EQ(s.covariance_ppm2, c.scale_factor->covariance_ppm2);
 	EXPECT_EQ(s.min_C, -40.0);
 	EXPECT_EQ(s.slope_ci95_hi_ppm_per_C, 20.1);
+	EXPECT_EQ(s.slope_noise_ci95_lo_ppm_per_C, 19.95);
+	EXPECT_EQ(s.slope_thermistor_max_ppm_per_C, 20.08);
+	EXPECT_EQ(s.slope_thermistors, 4u);
 	EXPECT_EQ(s.table_rate_max_abs_dph, 36000.0);
 	EXPECT_EQ(s.held_out_label, "leave-one-temperature-out");
 	EXPECT_EQ(back.warmup->tau_s, 600.0);
@@ -286,6 +294,18 @@ TEST(CalibrationYaml, ScaleFactorAndWarmupRoundTrip)
 	EXPECT_NE(errorOf(replaced(good, "scale_C: 50", "scale_C: 0")).find("axes[0].scale_factor.scale_C"), std::string::npos);
 	EXPECT_NE(errorOf(replaced(good, "thermistor: \"Ti1\"", "thermistor: \"Tx\"")).find("scale_factor.thermistor"), std::string::npos);
 	EXPECT_NE(errorOf(replaced(good, "tau_s: 600", "tau_s: -1")).find("axes[0].warmup.tau_s"), std::string::npos);
+	EXPECT_NE(errorOf(replaced(good, "slope_thermistors: 4", "slope_thermistors: 2.5")).find("scale_factor.slope_thermistors"), std::string::npos);
+	// a file from before the widened interval (no slope_thermistors) still loads
+	std::string old = good;
+	for (const char* key : {"  slope_noise_ci95_ppm_per_C:", "  slope_thermistor_range_ppm_per_C:", "  slope_thermistors:"})
+	{
+		const auto at = old.find(key);
+		ASSERT_NE(at, std::string::npos) << key;
+		old.erase(old.rfind('\n', at) + 1, old.find('\n', at) - old.rfind('\n', at));
+	}
+	const Calibration before = calibrationFromYaml(old, "old.yaml");
+	EXPECT_EQ(before.scale_factor->slope_thermistors, 0u);
+	EXPECT_EQ(before.scale_factor->slope_ci95_hi_ppm_per_C, 20.1);
 	EXPECT_NE(errorOf(replaced(good, "coef_ppm: [-300, 1000, 3.5]", "coef_ppm: [-300, x]")).find("coef_ppm[1]: not a number"), std::string::npos);
 }
 

@@ -18,6 +18,9 @@ struct Truth
 	double s0_ppm = -150.0, k_ppm_per_C = 20.0;
 	double bias0_dph = 0.3, bias_per_C = 0.004;
 	double noise_dph = 0.2;  // per 1 Hz sample
+	// thermistor reading = T + gain (T - 10) (+ 0.3 degC on To1): a gain != 0 makes the
+	// thermistors disagree on how far the coil temperature T moved between soaks
+	double gain_Ti1 = 0.0, gain_To1 = 0.0;
 };
 
 FogSeries rateTableRun(unsigned seed, const Truth& tr, std::vector<double> temps = {-35, -10, 15, 40, 60},
@@ -35,8 +38,8 @@ FogSeries rateTableRun(unsigned seed, const Truth& tr, std::vector<double> temps
 		const double s_ppm = tr.s0_ppm + tr.k_ppm_per_C * (T - 25.0);
 		const double bias = tr.bias0_dph + tr.bias_per_C * (T - 25.0);
 		s.rate_dph[2].push_back((1 + 1e-6 * s_ppm) * applied + bias + tr.noise_dph * n01(rng));
-		s.temp_C[0].push_back(T + 0.01 * n01(rng));
-		s.temp_C[1].push_back(T + 0.3 + 0.01 * n01(rng));
+		s.temp_C[0].push_back(T + tr.gain_Ti1 * (T - 10.0) + 0.01 * n01(rng));
+		s.temp_C[1].push_back(T + 0.3 + tr.gain_To1 * (T - 10.0) + 0.01 * n01(rng));
 		s.table_rate_dph.push_back(applied);
 	};
 	for (std::size_t i = 0; i < temps.size(); i++)
@@ -111,6 +114,33 @@ TEST(ScaleFactorFit, IntervalCoversTheTruth)
 		covered += m.slope_ci95_lo_ppm_per_C <= tr.k_ppm_per_C && tr.k_ppm_per_C <= m.slope_ci95_hi_ppm_per_C;
 	}
 	EXPECT_GE(covered, 16);
+}
+
+// Errors in the temperature variable: the scale factor follows the coil temperature T, the two
+// thermistors read T + 1 % and T - 1.5 % of (T - 10 degC), so the slope against Ti1 is
+// k / 1.01 = 19.80 and against To1 k / 0.985 = 20.30 ppm/degC whatever the noise: the noise-only
+// interval of either misses the truth in (almost) every seed, the reported one (spanning the
+// thermistors) holds it in >= 16 of 20, and stays narrower than 5 % of k.
+TEST(ScaleFactorFit, IntervalCoversErrorsInTheTemperatureVariable)
+{
+	Truth tr;
+	tr.gain_Ti1 = 0.01;
+	tr.gain_To1 = -0.015;
+	int covered = 0, covered_noise_only = 0;
+	for (unsigned seed = 200; seed < 220; seed++)
+	{
+		const FogSeries run = rateTableRun(seed, tr);
+		const ScaleFactorModel m = fitScaleFactor({run}, biasOf(run));
+		covered += m.slope_ci95_lo_ppm_per_C <= tr.k_ppm_per_C && tr.k_ppm_per_C <= m.slope_ci95_hi_ppm_per_C;
+		covered_noise_only +=
+			m.slope_noise_ci95_lo_ppm_per_C <= tr.k_ppm_per_C && tr.k_ppm_per_C <= m.slope_noise_ci95_hi_ppm_per_C;
+		EXPECT_EQ(m.slope_thermistors, 2u);
+		EXPECT_NEAR(m.slope_thermistor_min_ppm_per_C, tr.k_ppm_per_C / 1.01, 0.1);
+		EXPECT_NEAR(m.slope_thermistor_max_ppm_per_C, tr.k_ppm_per_C / 0.985, 0.1);
+		EXPECT_LT(m.slope_ci95_hi_ppm_per_C - m.slope_ci95_lo_ppm_per_C, 0.05 * tr.k_ppm_per_C);
+	}
+	EXPECT_GE(covered, 16);
+	EXPECT_LE(covered_noise_only, 4);
 }
 
 // A quadratic truth is chosen as order 2 by the held-out error, and fitted.

@@ -93,7 +93,16 @@ void writeScaleFactor(std::ostringstream& o, const ScaleFactorModel& m, const st
 	o << ind << "  slope_ppm_per_C: " << num(m.slope_ppm_per_C)
 	  << "  # (s(max_C) - s(min_C)) / (max_C - min_C) [ppm/degC]\n";
 	o << ind << "  slope_ci95_ppm_per_C: [" << num(m.slope_ci95_lo_ppm_per_C) << ", " << num(m.slope_ci95_hi_ppm_per_C)
-	  << "]  # 95 % interval\n";
+	  << "]  # 95 % interval: noise and the thermistors' disagreement on the coil temperature\n";
+	if (m.slope_thermistors > 0)
+	{
+		o << ind << "  slope_noise_ci95_ppm_per_C: [" << num(m.slope_noise_ci95_lo_ppm_per_C) << ", "
+		  << num(m.slope_noise_ci95_hi_ppm_per_C) << "]  # measurement noise only\n";
+		o << ind << "  slope_thermistor_range_ppm_per_C: [" << num(m.slope_thermistor_min_ppm_per_C) << ", "
+		  << num(m.slope_thermistor_max_ppm_per_C) << "]  # slope against each of " << m.slope_thermistors
+		  << " thermistor(s)\n";
+		o << ind << "  slope_thermistors: " << m.slope_thermistors << "\n";
+	}
 	o << ind << "  table_rate_abs_dph: [" << num(m.table_rate_min_abs_dph) << ", " << num(m.table_rate_max_abs_dph)
 	  << "]  # |applied rate| range of the segments used [deg/h]\n";
 	o << ind << "  segments: " << m.segments << "\n";
@@ -391,6 +400,20 @@ ScaleFactorModel readScaleFactor(const Reader& rd, const yaml& n, const std::str
 	if (ci.size() != 2) rd.fail(path + ".slope_ci95_ppm_per_C", "expected [lo, hi]");
 	m.slope_ci95_lo_ppm_per_C = ci[0];
 	m.slope_ci95_hi_ppm_per_C = ci[1];
+	if (n.has("slope_thermistors"))  // written since the interval covers the temperature errors
+	{
+		const auto nc = readNumbers(rd, n, "slope_noise_ci95_ppm_per_C", path);
+		if (nc.size() != 2) rd.fail(path + ".slope_noise_ci95_ppm_per_C", "expected [lo, hi]");
+		const auto rg = readNumbers(rd, n, "slope_thermistor_range_ppm_per_C", path);
+		if (rg.size() != 2) rd.fail(path + ".slope_thermistor_range_ppm_per_C", "expected [min, max]");
+		m.slope_noise_ci95_lo_ppm_per_C = nc[0];
+		m.slope_noise_ci95_hi_ppm_per_C = nc[1];
+		m.slope_thermistor_min_ppm_per_C = rg[0];
+		m.slope_thermistor_max_ppm_per_C = rg[1];
+		const double count = rd.bounded(n, "slope_thermistors", path, 1, 64, "a thermistor count (1..64)");
+		if (count != std::floor(count)) rd.fail(path + ".slope_thermistors", "expected a whole number");
+		m.slope_thermistors = static_cast<std::size_t>(count);
+	}
 	const auto tr = readNumbers(rd, n, "table_rate_abs_dph", path);
 	if (tr.size() != 2) rd.fail(path + ".table_rate_abs_dph", "expected [min, max]");
 	m.table_rate_min_abs_dph = tr[0];

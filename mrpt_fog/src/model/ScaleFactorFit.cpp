@@ -252,27 +252,59 @@ ScaleFactorModel fitScaleFactor(const std::vector<FogSeries>& runs, const Calibr
 				picked = true;
 			}
 
-	// 5. final fit
-	ScaleFactorModel m;
-	double lo, hi;
-	const std::vector<double> z = zOf(pick.therm, m.centre_C, m.scale_C, lo, hi);
-	m.thermistor = bias_cal.layout[pick.therm].name;
-	m.min_C = lo;
-	m.max_C = hi;
-	const Poly p = fitPoly(z, y, pick.order);
+	// 5. final fit on every thermistor with the chosen order: the model's, and the slopes that
+	// bound the errors in the temperature variable (6.)
 	const std::size_t np = static_cast<std::size_t>(pick.order) + 1, dof = segs.size() > np ? segs.size() - np : 0;
-	const double sigma2 = dof > 0 ? p.rss / static_cast<double>(dof) : std::numeric_limits<double>::quiet_NaN();
-	m.coef_ppm.assign(p.coef.data(), p.coef.data() + p.coef.size());
-	m.covariance_ppm2 = sigma2 * p.inv_normal;
-	// mean slope over the calibrated range: a linear functional g . coef
-	Eigen::VectorXd gvec(static_cast<Eigen::Index>(np));
-	const double zl = (lo - m.centre_C) / m.scale_C, zh = (hi - m.centre_C) / m.scale_C;
-	for (std::size_t k = 0; k < np; k++)
-		gvec(static_cast<Eigen::Index>(k)) = (std::pow(zh, static_cast<double>(k)) - std::pow(zl, static_cast<double>(k))) / (hi - lo);
-	m.slope_ppm_per_C = gvec.dot(p.coef);
-	const double half = tQuantile975(dof) * std::sqrt(std::max(0.0, gvec.dot(m.covariance_ppm2 * gvec)));
-	m.slope_ci95_lo_ppm_per_C = m.slope_ppm_per_C - half;
-	m.slope_ci95_hi_ppm_per_C = m.slope_ppm_per_C + half;
+	struct ThermFit
+	{
+		double centre = 0, scale = 1, lo = 0, hi = 0;
+		Poly p;
+		Eigen::MatrixXd cov;
+		double slope = 0, half = 0;
+	};
+	const auto fitOn = [&](std::size_t th) {
+		ThermFit f;
+		const std::vector<double> z = zOf(th, f.centre, f.scale, f.lo, f.hi);
+		f.p = fitPoly(z, y, pick.order);
+		const double sigma2 = dof > 0 ? f.p.rss / static_cast<double>(dof) : std::numeric_limits<double>::quiet_NaN();
+		f.cov = sigma2 * f.p.inv_normal;
+		// mean slope over the calibrated range: a linear functional g . coef
+		Eigen::VectorXd gvec(static_cast<Eigen::Index>(np));
+		const double zl = (f.lo - f.centre) / f.scale, zh = (f.hi - f.centre) / f.scale;
+		for (std::size_t k = 0; k < np; k++)
+			gvec(static_cast<Eigen::Index>(k)) =
+				(std::pow(zh, static_cast<double>(k)) - std::pow(zl, static_cast<double>(k))) / (f.hi - f.lo);
+		f.slope = gvec.dot(f.p.coef);
+		f.half = tQuantile975(dof) * std::sqrt(std::max(0.0, gvec.dot(f.cov * gvec)));
+		return f;
+	};
+	ScaleFactorModel m;
+	const ThermFit own = fitOn(pick.therm);
+	m.thermistor = bias_cal.layout[pick.therm].name;
+	m.centre_C = own.centre;
+	m.scale_C = own.scale;
+	m.min_C = own.lo;
+	m.max_C = own.hi;
+	m.coef_ppm.assign(own.p.coef.data(), own.p.coef.data() + own.p.coef.size());
+	m.covariance_ppm2 = own.cov;
+	m.slope_ppm_per_C = own.slope;
+	m.slope_noise_ci95_lo_ppm_per_C = own.slope - own.half;
+	m.slope_noise_ci95_hi_ppm_per_C = own.slope + own.half;
+	m.slope_ci95_lo_ppm_per_C = m.slope_noise_ci95_lo_ppm_per_C;
+	m.slope_ci95_hi_ppm_per_C = m.slope_noise_ci95_hi_ppm_per_C;
+	m.slope_thermistor_min_ppm_per_C = m.slope_thermistor_max_ppm_per_C = own.slope;
+	m.slope_thermistors = 1;
+	for (std::size_t th = 0; th < nt; th++)
+	{
+		if (th == pick.therm) continue;
+		const ThermFit f = fitOn(th);
+		if (!(f.hi - f.lo >= opt.min_span_C) || !std::isfinite(f.slope)) continue;  // no usable span on this one
+		m.slope_thermistors++;
+		m.slope_thermistor_min_ppm_per_C = std::min(m.slope_thermistor_min_ppm_per_C, f.slope);
+		m.slope_thermistor_max_ppm_per_C = std::max(m.slope_thermistor_max_ppm_per_C, f.slope);
+		m.slope_ci95_lo_ppm_per_C = std::min(m.slope_ci95_lo_ppm_per_C, f.slope - f.half);
+		m.slope_ci95_hi_ppm_per_C = std::max(m.slope_ci95_hi_ppm_per_C, f.slope + f.half);
+	}
 	m.table_rate_min_abs_dph = std::numeric_limits<double>::infinity();
 	m.table_rate_max_abs_dph = 0;
 	for (const auto& g : segs)
@@ -282,7 +314,7 @@ ScaleFactorModel fitScaleFactor(const std::vector<FogSeries>& runs, const Calibr
 		m.samples += g.samples;
 	}
 	m.segments = segs.size();
-	m.rms_in_sample_ppm = std::sqrt(p.rss / static_cast<double>(segs.size()));
+	m.rms_in_sample_ppm = std::sqrt(own.p.rss / static_cast<double>(segs.size()));
 	m.rms_held_out_ppm = pick.cv;
 	m.held_out_label = "leave-one-temperature-out (" + std::to_string(groups) + " soaks, " +
 					   std::to_string(segs.size()) + " segments)";

@@ -22,7 +22,16 @@
  *     `prefer_simpler` of it.
  *  5. Final fit on all segments (ordinary least squares on z in [-1, 1]); covariance
  *     sigma^2 (Z'Z)^-1 with sigma^2 = RSS / (n - p); the mean slope over the calibrated range
- *     and its 95 % interval (Student t, n - p degrees of freedom).
+ *     and its measurement-noise 95 % interval (Student t, n - p degrees of freedom).
+ *  6. Errors in the temperature variable: the scale factor follows the coil's (mean) temperature,
+ *     which no thermistor reads; the thermistors disagree on how far it moved between soaks
+ *     (gradients, lags, soaks not fully settled), and a slope measured against one of them is
+ *     off by that ratio, an error no noise interval covers and that does not average out over
+ *     seeds. Taking the coil temperature as an unknown weighted mean (weights >= 0) of the
+ *     thermistor readings, its slope lies between the lowest and the highest slope measured
+ *     against each thermistor (same order, same segments). The reported 95 % interval runs from
+ *     the lowest lower noise bound to the highest upper one over the thermistors; with one
+ *     thermistor it is the noise interval.
  *
  * Throws ScaleFactorFitError (a std::invalid_argument) with the reason when the runs cannot
  * support a fit: no table-rate column, no usable segment, fewer than 2 temperature groups, a

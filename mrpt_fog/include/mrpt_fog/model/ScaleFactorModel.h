@@ -28,9 +28,20 @@ struct ScaleFactorModel
 	std::vector<double> coef_ppm;  //!< coefficient of z^k, k = 0..order [ppm]
 	Eigen::MatrixXd covariance_ppm2;  //!< of coef_ppm [ppm^2]
 	/** Mean temperature sensitivity over the calibrated range, (s(max) - s(min)) / (max - min)
-	 * [ppm/degC], and its 95 % interval (from the coefficient covariance, Student t). */
+	 * [ppm/degC], of this model's thermistor. */
 	double slope_ppm_per_C = 0.0;
+	/** 95 % interval of the coil's temperature sensitivity: the measurement-noise interval
+	 * (slope_noise_ci95_*) widened by the errors in the temperature variable, i.e. from the lowest
+	 * to the highest noise bound over the slopes measured against each thermistor of the layout
+	 * (the coil's effective temperature taken as an unknown weighted mean of the thermistors;
+	 * ScaleFactorFit.h, docs/model.md). */
 	double slope_ci95_lo_ppm_per_C = 0.0, slope_ci95_hi_ppm_per_C = 0.0;
+	/** Measurement-noise-only 95 % interval of slope_ppm_per_C (coefficient covariance, Student t). */
+	double slope_noise_ci95_lo_ppm_per_C = 0.0, slope_noise_ci95_hi_ppm_per_C = 0.0;
+	/** Lowest and highest mean slope over the thermistors (same order) [ppm/degC]; equal to
+	 * slope_ppm_per_C when the layout has one thermistor. */
+	double slope_thermistor_min_ppm_per_C = 0.0, slope_thermistor_max_ppm_per_C = 0.0;
+	std::size_t slope_thermistors = 0;  //!< thermistors the interval spans (0 = not computed, old file)
 	double table_rate_min_abs_dph = 0.0, table_rate_max_abs_dph = 0.0;  //!< |applied rate| range used [deg/h]
 	std::size_t segments = 0;  //!< rate-table segments used
 	std::size_t samples = 0;  //!< samples in those segments
