@@ -88,4 +88,46 @@ GyroSummary summarize(const std::vector<RunErrors>& seeds, const std::vector<Str
 	return g;
 }
 
+std::vector<HeadingBudget> headingBudget(const std::vector<RunErrors>& seeds, const std::vector<Stretch>& stretches,
+										 const std::vector<double>& odo_err_deg)
+{
+	std::vector<HeadingBudget> out;
+	if (seeds.empty()) return out;
+	const std::vector<double>& t = seeds.front().t_s;
+	for (std::size_t i = 0; i < stretches.size(); ++i)
+	{
+		const Stretch& s = stretches[i];
+		if (s.kind != StretchKind::Open) continue;
+		std::size_t a = 0;
+		while (a < t.size() && t[a] < s.t_begin_s) ++a;
+		std::size_t b = a;
+		while (b + 1 < t.size() && t[b + 1] <= s.t_end_s) ++b;
+		if (a >= t.size() || b <= a || odo_err_deg.size() != t.size()) continue;
+		HeadingBudget h;
+		h.index = i;
+		h.duration_s = t[b] - t[a];
+		h.length_m = s.s_end_m - s.s_begin_m;
+		h.gyro_drift_deg = odo_err_deg[b] - odo_err_deg[a];
+		double e2 = 0, em = 0, p2 = 0, w2 = 0, f2 = 0;
+		for (const auto& r : seeds)
+		{
+			const double e0 = r.heading_deg[a], e1 = r.heading_deg[b];
+			e2 += e0 * e0;
+			em += e0;
+			p2 += r.position_m[a] * r.position_m[a];
+			const double w = e1 - e0 - h.gyro_drift_deg;
+			w2 += w * w;
+			f2 += e1 * e1;
+		}
+		const double n = static_cast<double>(seeds.size());
+		h.entry_heading_rms_deg = std::sqrt(e2 / n);
+		h.entry_heading_mean_deg = em / n;
+		h.entry_position_rms_m = std::sqrt(p2 / n);
+		h.walk_rms_deg = std::sqrt(w2 / n);
+		h.end_heading_rms_deg = std::sqrt(f2 / n);
+		out.push_back(h);
+	}
+	return out;
+}
+
 }  // namespace mrpt_fog::localize

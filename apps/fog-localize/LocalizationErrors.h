@@ -45,4 +45,29 @@ struct GyroSummary
 
 GyroSummary summarize(const std::vector<RunErrors>& seeds, const std::vector<Stretch>& stretches);
 
+/** Where an open stretch's heading error comes from. With no observation the filter's mean
+ * heading error at time t in the stretch is
+ *   e(t) = e(entry)                      what the map-matching left at the stretch's start
+ *        + [o(t) - o(entry)]             the gyro's own heading error accrued since (o: the
+ *                                        odometry's heading error against the truth)
+ *        + w(t)                          the rest: the motion model's heading noise as the
+ *                                        particle mean carries it (zero-mean, ~ spread/sqrt(N)),
+ * so at the stretch's end: entry, gyro drift and residual walk. Per stretch, over the seeds. */
+struct HeadingBudget
+{
+	std::size_t index = 0;  //!< into World::stretches
+	double duration_s = 0, length_m = 0;
+	double entry_heading_rms_deg = 0;  //!< RMS over seeds of e(entry)
+	double entry_heading_mean_deg = 0;  //!< mean over seeds of e(entry)
+	double entry_position_rms_m = 0;  //!< RMS over seeds of the position error at entry
+	double gyro_drift_deg = 0;  //!< o(end) - o(entry): the same for every seed
+	double walk_rms_deg = 0;  //!< RMS over seeds of e(end) - e(entry) - gyro drift
+	double end_heading_rms_deg = 0;  //!< RMS over seeds of e(end)
+};
+
+/** odometry_heading_error_deg: the odometry's heading error against the truth at each scan
+ * time (the same times as every run's). */
+std::vector<HeadingBudget> headingBudget(const std::vector<RunErrors>& seeds, const std::vector<Stretch>& stretches,
+										 const std::vector<double>& odometry_heading_error_deg);
+
 }  // namespace mrpt_fog::localize

@@ -131,6 +131,13 @@ void printSummary(const LocalizeResults& r, const World& world)
 					g.summary.stretches[g.summary.worst_open].position_rms_m, g.summary.worst_open, g.summary.diverged_runs,
 					g.runs.size());
 	}
+	std::printf("  open stretches' heading budget [deg] (RMS over seeds; end = entry + gyro drift + filter walk)\n");
+	std::printf("  %-12s %3s %7s %9s %9s %9s %9s %9s\n", "gyro", "#", "km", "entry", "gyro", "walk", "end", "entry [m]");
+	for (const auto& g : r.gyros)
+		for (const auto& h : g.heading_budget)
+			std::printf("  %-12s %3zu %7.2f %9.4f %+9.4f %9.4f %9.4f %9.2f\n", g.name.c_str(), h.index, h.length_m / 1000,
+						h.entry_heading_rms_deg, h.gyro_drift_deg, h.walk_rms_deg, h.end_heading_rms_deg,
+						h.entry_position_rms_m);
 	const GyroResult *raw = gyro(r, "raw"), *comp = gyro(r, "compensated"), *ideal = gyro(r, "ideal");
 	if (raw && comp && ideal)
 	{
@@ -235,6 +242,26 @@ void writeOutputs(const std::string& dir, const std::string& json_path, const Lo
 		div[g.name] = static_cast<unsigned long>(g.summary.diverged_runs);
 		scale[g.name] = JsonValue::array();
 		for (double v : g.final_scale) scale[g.name].push_back(v);
+	}
+	JsonValue& hb = j["heading_budget"];
+	hb = JsonValue::object();
+	for (const auto& g : r.gyros)
+	{
+		hb[g.name] = JsonValue::array();
+		for (const auto& h : g.heading_budget)
+		{
+			JsonValue e = JsonValue::object();
+			e["stretch"] = static_cast<unsigned long>(h.index);
+			e["duration_s"] = h.duration_s;
+			e["length_m"] = h.length_m;
+			e["entry_heading_rms_deg"] = h.entry_heading_rms_deg;
+			e["entry_heading_mean_deg"] = h.entry_heading_mean_deg;
+			e["entry_position_rms_m"] = h.entry_position_rms_m;
+			e["gyro_drift_deg"] = h.gyro_drift_deg;
+			e["walk_rms_deg"] = h.walk_rms_deg;
+			e["end_heading_rms_deg"] = h.end_heading_rms_deg;
+			hb[g.name].push_back(e);
+		}
 	}
 	JsonValue& st = j["stretches"];
 	st = JsonValue::array();

@@ -26,6 +26,7 @@ struct GyroResult
 	std::vector<RunErrors> runs;  //!< per seed
 	std::vector<double> final_scale;  //!< odometry scale calibrated by the end, per seed
 	GyroSummary summary;
+	std::vector<HeadingBudget> heading_budget;  //!< per open stretch
 	MclRun first_run;  //!< the first seed's estimate (for the plots)
 	std::vector<mrpt::poses::CPose2D> odometry;  //!< at the scan times (for the rawlog)
 };

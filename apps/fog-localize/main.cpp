@@ -25,6 +25,7 @@
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/obs/Units.h>
+#include <mrpt_fog_nav/Rotation.h>
 
 #include <chrono>
 #include <cmath>
@@ -263,6 +264,10 @@ int main(int argc, char** argv)
 				if (s == 0) gr.first_run = run;
 			}
 			gr.summary = summarize(gr.runs, world.stretches);
+			std::vector<double> odo_err_deg;
+			for (std::size_t k = 0; k < scan_t.size(); ++k)
+				odo_err_deg.push_back(nav::wrapToPi(odo[k].phi() - nav::interpolate(drive.truth, scan_t[k]).yaw_rad) * 180.0 / M_PI);
+			gr.heading_budget = headingBudget(gr.runs, world.stretches, odo_err_deg);
 			gr.odometry = odo;
 			results.gyros.push_back(std::move(gr));
 		}
