@@ -9,6 +9,7 @@
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/ScaleFactorFit.h>
+#include <mrpt_fog/model/WarmupFit.h>
 
 #include <cmath>
 #include <algorithm>
@@ -94,9 +95,22 @@ SCALE FACTOR VS TEMPERATURE (--scale-factor auto|off)
   reason rather than return a bias-only model. --scale-factor off: table samples are treated
   as bias samples with the nominal scale factor (the behaviour before version 2 files).
 
+  The reported 95 % interval of the mean slope also covers the thermistors' disagreement on
+  the coil temperature (the fit repeated against each thermistor; docs/model.md).
+
+WARM-UP (--warmup-run RUN, repeatable)
+  Runs that hold a turn-on (a 0 -> 1 power step, or metadata power_on_time_s at or before the
+  first sample: a gyro switched on cold, e.g. datasets/warmup.rawlog) fit the turn-on term
+  bias += A exp(-(t - t_on) / tau) on the residual of the calibration fitted on the -i runs;
+  they do not join the bias fit (their transient would be taken for a thermal effect). Printed
+  with its standard errors and the residual RMS without / with the term over the fitted spans.
+  The compensator adds it from each turn-on on (metadata power_on_time_s, 0 -> 1 steps). A run
+  with no turn-on, a span under 600 s, or no decay resolved stops fog-calibrate with the reason.
+
 EXAMPLES
   fog-calibrate -i datasets/chamber_A.rawlog --model multipoint -o cal.yaml --validate datasets/chamber_B.rawlog
-  fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable.rawlog -o cal_sf.yaml
+  fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable_A.rawlog -o cal_sf.yaml
+  fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable_A.rawlog --warmup-run datasets/warmup.rawlog -o cal_full.yaml
   fog-calibrate -i runA.csv -i runB.csv --model points:2 -o cal2.yaml --json fit.json
   fog-calibrate -i runA.csv --model M3:Ti1,To1 --selection none -o m3.yaml
 )";
@@ -222,6 +236,10 @@ int main(int argc, char** argv)
 											"auto (default): fit the scale factor vs temperature from table-rate "
 											"segments when a run has them; off: bias only",
 											false, "auto", "auto|off", cmd);
+		TCLAP::MultiArg<std::string> arg_warm("", "warmup-run",
+											  "Run holding a turn-on (cold start) to fit the warm-up term; repeatable; "
+											  "not used in the bias fit",
+											  false, "RUN", cmd);
 		TCLAP::SwitchArg arg_no_screen("", "no-screening",
 									   "Do not screen thermistor readings (stuck / spike / out of range -> dropout) "
 									   "before fitting (the screening fog-compensate runs)",
@@ -234,6 +252,7 @@ int main(int argc, char** argv)
 
 		std::vector<FileArg> inputs{{"--validate", arg_val.getValue()}};
 		for (const auto& p : arg_in.getValue()) inputs.push_back({"-i", p});
+		for (const auto& p : arg_warm.getValue()) inputs.push_back({"--warmup-run", p});
 		requireSafeOutputs(inputs, {{"-o", arg_out.getValue()}, {"--json", arg_json.getValue()}});
 
 		FitOptions opt;
@@ -276,6 +295,20 @@ int main(int argc, char** argv)
 				throw std::runtime_error(std::string(e.what()) +
 										 "; the runs apply table rates, so a bias-only calibration would be wrong "
 										 "there (give --scale-factor off to fit the bias alone anyway)");
+			}
+		}
+		if (!arg_warm.getValue().empty())
+		{
+			std::vector<FogSeries> warm;
+			for (const auto& path : arg_warm.getValue())
+				warm.push_back(screened(readFogLog(path, arg_label.getValue()), path));
+			try
+			{
+				cal.warmup = fitWarmup(warm, cal, {}, nullptr, arg_warm.getValue());
+			}
+			catch (const WarmupFitError& e)
+			{
+				throw std::runtime_error(std::string(e.what()) + " (--warmup-run)");
 			}
 		}
 		if (!arg_val.getValue().empty())

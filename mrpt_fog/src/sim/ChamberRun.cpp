@@ -34,6 +34,10 @@ void recordSimMetadata(FogSeries& series, const std::string& scenario, const Cha
 	lat << device.latitude_deg;
 	series.setMetadata("latitude_deg", lat.str());
 	for (const auto& kv : device.describe()) series.setMetadata("sim." + kv.first, kv.second);
+	// A run that starts cold and powered is a turn-on at t = 0 (the simulator's warm-up clock
+	// starts there): said for the compensator's and the warm-up fit's turn-on bookkeeping.
+	if (profile.initialState() == InitialThermalState::Cold && profile.stateAt(0.0).power_on)
+		series.setMetadata("power_on_time_s", "0");
 }
 
 FogSeries simulateChamber(const ChamberProfile& profile, const FogDevice& device, const SimSettings& settings)
