@@ -9,8 +9,8 @@
 #include <mrpt_fog/common/OutputSafety.h>
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/discrepancy/CalibrationAugment.h>
-#include <mrpt_fog/discrepancy/DiscrepancyAnalysis.h>
-#include <mrpt_fog/discrepancy/SimulatorGap.h>
+#include <mrpt_fog/report/DiscrepancyOutput.h>
+#include <mrpt_fog/report/SimDiscrepancyOutput.h>
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 

@@ -6,7 +6,7 @@
 #include <mrpt/system/filesystem.h>
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/common/JsonWriter.h>
-#include <mrpt_fog/metrics/PlotCanvas.h>
+#include <mrpt_fog/plot/PlotCanvas.h>
 #include <mrpt_fog_nav/OdometryRawlog.h>
 
 #include <cmath>

@@ -1,7 +1,7 @@
 /* fog-evaluate: the PNG figures. */
 #include "EvaluationPlots.h"
 
-#include <mrpt_fog/metrics/PlotCanvas.h>
+#include <mrpt_fog/plot/PlotCanvas.h>
 
 #include <cmath>
 #include <cstdio>

@@ -2,7 +2,7 @@
 #pragma once
 
 /** \file EvaluationPlots.h
- * fog-evaluate's figures (metrics/PlotCanvas.h), written atomically into a directory:
+ * fog-evaluate's figures (plot/PlotCanvas.h), written atomically into a directory:
  *  - bias_vs_time.png: bias about its mean, tau-s averages (bold) and tau/10-s averages (thin;
  *    the samples when tau/10 is under 2 sample periods), raw and compensated;
  *    thermistor temperatures below on the same time axis; gyro-off intervals (power column 0)

@@ -7,7 +7,7 @@
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/common/JsonWriter.h>
-#include <mrpt_fog/metrics/PlotCanvas.h>
+#include <mrpt_fog/plot/PlotCanvas.h>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>

@@ -13,7 +13,7 @@
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/common/JsonWriter.h>
 #include <mrpt_fog/io/FogLogIO.h>
-#include <mrpt_fog/metrics/PlotCanvas.h>
+#include <mrpt_fog/plot/PlotCanvas.h>
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/sim/ChamberRun.h>
 #include <mrpt_fog/sim/SimRandom.h>

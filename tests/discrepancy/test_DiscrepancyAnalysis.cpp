@@ -1,6 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <gtest/gtest.h>
-#include <mrpt_fog/discrepancy/DiscrepancyAnalysis.h>
+#include <mrpt_fog/report/DiscrepancyOutput.h>
 #include "support/SyntheticChamberRun.h"
 
 #include <cmath>

@@ -1,6 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <gtest/gtest.h>
-#include <mrpt_fog/discrepancy/SimulatorGap.h>
+#include <mrpt_fog/report/SimDiscrepancyOutput.h>
 
 #include "LumpedCoilGenerator.h"
 #include "SimulatorGapTrialSuite.h"

@@ -1,7 +1,8 @@
 # -D BUILD_DIR=<project build dir> -D EXAMPLE_SRC=<examples/fog_heading_odometry> -D WORK=<scratch>
 # -D DRIVE=<synthetic drive rawlog> -D CAL=<its calibration> -D CMAKE_GENERATOR=<generator>
 # -D READER_SRC=<tests/package/reader_only> -D CHAMBER=<a rawlog with CObservationFOG>
-# 1. install to WORK/prefix, then move it to WORK/moved (a relocated package);
+# 1. install to WORK/prefix, then move it to WORK/moved (a relocated package); libmrpt_fog and
+#    its CMake package do not depend on OpenCV;
 # 2. the installed programs carry RUNPATH $ORIGIN/... and run with no LD_LIBRARY_PATH:
 #    bin/fog-demo --help, bin/fog-drift on the synthetic circle drive (compensated heading
 #    error must be ~0: the drive's thermal bias law is inside the model class);
@@ -26,6 +27,20 @@ endfunction()
 step("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK}/prefix)
 file(RENAME ${WORK}/prefix ${WORK}/moved)
 set(prefix ${WORK}/moved)
+
+# Plotting lives in the programs' static report/ libraries: neither the installed library nor
+# its CMake package may depend on OpenCV.
+file(GLOB_RECURSE fog_so ${prefix}/*/libmrpt_fog.so)
+file(GLOB_RECURSE fog_targets ${prefix}/*/mrpt_fog-targets*.cmake ${prefix}/*/mrpt_fog-config.cmake)
+step("readelf libmrpt_fog" readelf -d ${fog_so})
+foreach(f ${fog_targets})
+  file(READ ${f} txt)
+  string(APPEND out "${txt}")
+endforeach()
+string(TOLOWER "${out}" out)
+if(NOT fog_so OR NOT fog_targets OR out MATCHES "opencv")
+  message(FATAL_ERROR "libmrpt_fog (${fog_so}) or its package (${fog_targets}) depends on OpenCV")
+endif()
 
 step("readelf fog-drift" readelf -d ${prefix}/bin/fog-drift)
 if(NOT out MATCHES "(RUNPATH|RPATH)[^\n]*\\$ORIGIN/")

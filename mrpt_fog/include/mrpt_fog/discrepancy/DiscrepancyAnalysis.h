@@ -7,9 +7,9 @@
  * (EffectSelector), add them and refit, and show the gap before/after: residual RMS, 100 s
  * stability and range of the residual, per segment, and on the confirmation run (second run,
  * coefficients from the first, only the constant offset re-estimated).
+ * Returns data only; fog-discrepancy shows it (report/DiscrepancyOutput.h).
  */
 
-#include <mrpt_fog/common/JsonWriter.h>
 #include <mrpt_fog/discrepancy/EffectSelector.h>
 #include <mrpt_fog/discrepancy/RunSegmenter.h>
 
@@ -102,15 +102,5 @@ GapFigures gapFigures(const std::vector<double>& time_s, const Eigen::VectorXd& 
 RunGap runGapFromResiduals(const std::string& label, const RunSignals& sig, const std::vector<Segment>& segments,
 						   const Eigen::VectorXd& before_dph, const Eigen::VectorXd& after_dph,
 						   const std::vector<unsigned char>& rows, const DiscrepancyOptions& opt = {});
-
-/** JSON document (stable keys: named_effects, segments, gap.before.rms_dph, gap.after.rms_dph,
- * gap_confirm..., see docs/discrepancy.md). */
-JsonValue discrepancyJson(const DiscrepancyReport& report);
-
-/** Readable report (several lines). */
-std::string discrepancyText(const DiscrepancyReport& report);
-
-/** PNG: residual vs time before and after (two panels), flagged segments shaded. Atomic. */
-void saveGapPlot(const RunGap& gap, const std::string& path_png, const std::string& title);
 
 }  // namespace mrpt_fog::discrepancy

@@ -25,6 +25,7 @@
  *     on, both calibrated): bias residual (RMS, 100 s stability, range, per
  *     segment) and thermistor residual RMS, on the run and on the confirmation run (parameters
  *     from the first run, only the constant bias re-estimated).
+ * Returns data only; fog-discrepancy shows it (report/SimDiscrepancyOutput.h).
  */
 
 #include <mrpt_fog/discrepancy/DiscrepancyAnalysis.h>
@@ -80,11 +81,5 @@ struct SimDiscrepancyReport
 SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& runs,
 												 const std::vector<std::string>& run_labels,
 												 const SimulatorConfig& config, const SimDiscrepancyOptions& opt = {});
-
-/** discrepancyJson plus the simulator keys (docs/discrepancy-sim.md). */
-JsonValue simDiscrepancyJson(const SimDiscrepancyReport& r);
-
-/** Readable report. */
-std::string simDiscrepancyText(const SimDiscrepancyReport& r);
 
 }  // namespace mrpt_fog::discrepancy

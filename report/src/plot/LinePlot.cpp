@@ -1,5 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
-#include <mrpt_fog/metrics/LinePlot.h>
+#include <mrpt_fog/plot/LinePlot.h>
 
 #include <opencv2/imgproc.hpp>
 

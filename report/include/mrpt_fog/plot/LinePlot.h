@@ -5,7 +5,7 @@
  * One panel of a PNG figure drawn with OpenCV: several x-y series with colours and a legend,
  * axes with ticks and labels (units go in the label, e.g. "time [s]"), optional log-log axes,
  * an optional second y axis on the right, and shaded x-intervals (e.g. the segments of a test
- * profile). Panels are stacked into a figure by PlotCanvas (metrics/PlotCanvas.h).
+ * profile). Panels are stacked into a figure by PlotCanvas (plot/PlotCanvas.h).
  *
  * Axis mapping (used by the tests, and documented so that a pixel can be predicted): the data
  * area of a panel drawn into `panel` is dataArea(panel) = panel minus the fixed margins

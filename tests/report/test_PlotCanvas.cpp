@@ -1,7 +1,7 @@
 /* Tests of mrpt_fog::PlotCanvas / LinePlot: the axis mapping in closed form (a drawn series lands
  * on the predicted pixel), log and second axes, shading, stacked panels, atomic PNG output. */
 #include <gtest/gtest.h>
-#include <mrpt_fog/metrics/PlotCanvas.h>
+#include <mrpt_fog/plot/PlotCanvas.h>
 #include <unistd.h>
 
 #include <cmath>

@@ -13,7 +13,7 @@
  *   fig.save("bias.png");
  */
 
-#include <mrpt_fog/metrics/LinePlot.h>
+#include <mrpt_fog/plot/LinePlot.h>
 
 #include <deque>
 #include <string>

@@ -1,0 +1,285 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/common/NumberFormat.h>
+#include <mrpt_fog/plot/PlotCanvas.h>
+#include <mrpt_fog/report/DiscrepancyOutput.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace mrpt_fog::discrepancy
+{
+namespace
+{
+JsonValue figuresJson(const GapFigures& f, double tau_s)
+{
+	JsonValue j = JsonValue::object();
+	j["rms_dph"] = f.rms_dph;
+	j["stability_dph"] = f.stability_dph;
+	j["range_dph"] = f.range_dph;
+	j["tau_s"] = tau_s;
+	j["samples"] = static_cast<unsigned long>(f.samples);
+	return j;
+}
+
+/** One segment's gap figures. rank > 0 (the ranked top-level list) adds the rank and the
+ * descriptive fields, in the same key order as before. */
+JsonValue segmentJson(const SegmentGap& s, int rank)
+{
+	const bool ranked = rank > 0;
+	JsonValue e = JsonValue::object();
+	if (ranked) e["rank"] = rank;
+	e["type"] = toString(s.segment.type);
+	e["direction"] = s.segment.direction;
+	e["band"] = s.segment.band;
+	if (ranked) e["description"] = s.segment.describe();
+	e["t_start_s"] = s.segment.t_start_s;
+	e["t_end_s"] = s.segment.t_end_s;
+	if (ranked) e["mean_temp_C"] = s.segment.mean_temp_C;
+	e["rms_before_dph"] = s.segment.rms_dph;
+	e["rms_after_dph"] = s.rms_after_dph;
+	e["stability_before_dph"] = s.before.stability_dph;
+	e["stability_after_dph"] = s.after.stability_dph;
+	e["range_before_dph"] = s.before.range_dph;
+	e["range_after_dph"] = s.after.range_dph;
+	if (ranked)
+	{
+		e["energy_share"] = s.segment.energy_share;
+		e["time_share"] = s.segment.time_share;
+		e["flagged"] = s.flagged;
+	}
+	return e;
+}
+
+JsonValue runGapJson(const RunGap& g, double tau_s)
+{
+	JsonValue j = JsonValue::object();
+	j["run"] = g.label;
+	j["outside_model_range_samples"] = static_cast<unsigned long>(g.outside_model_range);
+	j["validity_note"] = g.validity_note;
+	j["before"] = figuresJson(g.before, tau_s);
+	j["after"] = figuresJson(g.after, tau_s);
+	JsonValue segs = JsonValue::array();
+	for (const auto& s : g.segments) segs.push_back(segmentJson(s, 0));
+	j["segments"] = segs;
+	return j;
+}
+}  // namespace
+
+JsonValue discrepancyJson(const DiscrepancyReport& rep)
+{
+	const auto& sel = rep.selection;
+	JsonValue j = JsonValue::object();
+	j["model"] = rep.model_source;
+	JsonValue terms = JsonValue::array();
+	for (const auto& t : rep.base_terms) terms.push_back(t);
+	j["base_terms"] = terms;
+	JsonValue runs = JsonValue::array();
+	for (const auto& r : rep.run_labels) runs.push_back(r);
+	j["runs"] = runs;
+	j["verdict"] = rep.verdict();
+	JsonValue named = JsonValue::array();
+	for (const auto& ne : sel.named)
+	{
+		JsonValue e = JsonValue::object();
+		e["id"] = ne.id;
+		JsonValue ag = JsonValue::array();
+		for (const auto& a : ne.alias_group) ag.push_back(a);
+		e["alias_group"] = ag;
+		e["confidence"] = ne.confidence;
+		e["group_confidence"] = ne.group_confidence;
+		e["coefficient"] = ne.coefficient;
+		e["coefficient_unit"] = ne.coefficient_unit;
+		JsonValue ci = JsonValue::array();
+		ci.push_back(ne.ci_low);
+		ci.push_back(ne.ci_high);
+		e["ci"] = ci;
+		if (!ne.theta_name.empty()) e[ne.theta_name] = ne.theta;
+		e["chi2"] = ne.chi2;
+		e["p_adjusted"] = ne.p_adjusted;
+		e["delta_bic"] = ne.delta_bic;
+		JsonValue sep = JsonValue::array();
+		for (const auto& s : ne.separating_profiles) sep.push_back(s);
+		e["separating_profiles"] = sep;
+		if (ne.confirm_tested)
+		{
+			e["confirmed"] = ne.confirmed;
+			e["confirm_p"] = ne.confirm_p;
+		}
+		named.push_back(e);
+	}
+	j["named_effects"] = named;
+	// named on the analysed run, not confirmed on the second run: reported, not added
+	JsonValue unconfirmed = JsonValue::array();
+	for (const auto& ne : sel.not_confirmed)
+	{
+		JsonValue e = JsonValue::object();
+		e["id"] = ne.id;
+		e["p_adjusted"] = ne.p_adjusted;
+		e["coefficient"] = ne.coefficient;
+		e["coefficient_unit"] = ne.coefficient_unit;
+		e["confirm_p"] = ne.confirm_p;
+		unconfirmed.push_back(e);
+	}
+	j["not_confirmed"] = unconfirmed;
+	JsonValue rejected = JsonValue::array();
+	for (const auto& r : rep.rejected)
+	{
+		JsonValue e = JsonValue::object();
+		e["id"] = r.id;
+		e["reason"] = r.reason;
+		rejected.push_back(e);
+	}
+	j["not_named"] = rejected;
+	j["cannot_tell"] = rep.cannot_tell;
+	j["where"] = rep.gap.ranking_before.sentence;
+	JsonValue segs = JsonValue::array();
+	int rank = 1;
+	for (const auto& s : rep.gap.segments) segs.push_back(segmentJson(s, rank++));
+	j["segments"] = segs;
+	JsonValue groups = JsonValue::array();
+	for (const auto& g : rep.gap.ranking_before.groups)
+	{
+		JsonValue e = JsonValue::object();
+		e["description"] = g.description;
+		e["rms_dph"] = g.rms_dph;
+		e["energy_share"] = g.energy_share;
+		e["time_share"] = g.time_share;
+		e["segments"] = static_cast<unsigned long>(g.segments);
+		groups.push_back(e);
+	}
+	j["segment_groups"] = groups;
+	JsonValue cands = JsonValue::array();
+	if (!sel.rounds.empty())
+		for (const auto& t : sel.rounds.front())
+		{
+			JsonValue e = JsonValue::object();
+			e["id"] = t.id;
+			e["status"] = t.status;
+			e["note"] = t.note;
+			if (t.status == "tested")
+			{
+				e["chi2"] = t.chi2;
+				e["dof"] = t.dof;
+				e["p_adjusted"] = t.p_adjusted;
+				e["delta_bic"] = t.delta_bic;
+				e["significant"] = t.significant;
+			}
+			cands.push_back(e);
+		}
+	j["candidates_first_round"] = cands;
+	JsonValue noise = JsonValue::object();
+	JsonValue phi = JsonValue::array();
+	for (double p : sel.ar.phi) phi.push_back(p);
+	noise["ar_phi"] = phi;
+	noise["ma_theta"] = sel.ar.theta;
+	noise["long_run_variance_factor"] = sel.lrv_factor;
+	noise["outliers_excluded"] = static_cast<unsigned long>(sel.outliers);
+	j["noise_model"] = noise;
+	j["gap"] = runGapJson(rep.gap, rep.tau_s);
+	if (rep.has_confirm) j["gap_confirm"] = runGapJson(rep.gap_confirm, rep.tau_s);
+	return j;
+}
+
+std::string discrepancyText(const DiscrepancyReport& rep)
+{
+	std::ostringstream os;
+	const auto& sel = rep.selection;
+	if (rep.base_terms.empty() && !rep.cannot_tell.empty())
+		return "Model under test: " + rep.model_source + " (not fitted)\nVerdict: " + rep.verdict() + "\n";
+	os << "Model under test: " << rep.model_source << " (" << rep.base_terms.size() << " terms, refitted on "
+	   << rep.run_labels[0] << ")\n";
+	os << "Where: " << rep.gap.ranking_before.sentence << "\n";
+	os << "Top segments by residual energy (before):\n";
+	for (std::size_t i = 0; i < rep.gap.segments.size() && i < 5; ++i)
+	{
+		const auto& s = rep.gap.segments[i];
+		os << "  " << i + 1 << ". " << s.segment.describe() << " [" << formatValue("%.0f", s.segment.t_start_s) << ".."
+		   << formatValue("%.0f", s.segment.t_end_s) << " s] RMS " << formatValue("%.3g", s.segment.rms_dph) << " -> "
+		   << formatValue("%.3g", s.rms_after_dph) << " deg/h, " << formatValue("%.0f", 100 * s.segment.energy_share)
+		   << " % of the energy" << (s.flagged ? "  (flagged)" : "") << "\n";
+	}
+	os << "Verdict: " << rep.verdict() << "\n";
+	for (const auto& ne : sel.named)
+	{
+		os << "  " << ne.id << ": " << candidateById(ne.id).description << "\n";
+		os << "    coefficient " << formatValue("%.4g", ne.coefficient) << " " << ne.coefficient_unit << " (95 % CI "
+		   << formatValue("%.4g", ne.ci_low) << " .. " << formatValue("%.4g", ne.ci_high) << ")";
+		if (!ne.theta_name.empty()) os << ", " << ne.theta_name << " = " << formatValue("%g", ne.theta);
+		os << "; confidence " << formatValue("%.2f", ne.confidence) << ", chi2 " << formatValue("%.1f", ne.chi2) << ", Holm p "
+		   << formatValue("%.2g", ne.p_adjusted) << "\n";
+		for (std::size_t a = 1; a < ne.alias_group.size(); ++a)
+			os << "    alias: " << ne.alias_group[a] << " cannot be told apart on this run; to separate them use "
+			   << ne.separating_profiles[a - 1] << "\n";
+		if (ne.alias_group.size() > 1)
+			os << "    confidence of the alias group: " << formatValue("%.2f", ne.group_confidence) << "\n";
+		if (ne.confirm_tested)
+			os << "    confirmation run: " << (ne.confirmed ? "confirmed" : "NOT confirmed") << " (p "
+			   << formatValue("%.2g", ne.confirm_p) << ")\n";
+	}
+	for (const auto& ne : sel.not_confirmed)
+		os << "  not confirmed (named on " << rep.run_labels[0] << ", not added): " << ne.id << ", coefficient "
+		   << formatValue("%.4g", ne.coefficient) << " " << ne.coefficient_unit << ", Holm p " << formatValue("%.2g", ne.p_adjusted)
+		   << "; on the confirmation run p " << formatValue("%.2g", ne.confirm_p)
+		   << (ne.confirm_p < 0.01 ? " with the opposite sign" : "") << "\n";
+	for (const auto& r : rep.rejected) os << "  not named: " << r.id << " (" << r.reason << ")\n";
+	if (!sel.rounds.empty())
+	{
+		std::string skipped;
+		for (const auto& t : sel.rounds.front())
+			if (t.status != "tested") skipped += "  " + t.id + ": " + t.status + " (" + t.note + ")\n";
+		if (!skipped.empty()) os << "Not tested:\n" << skipped;
+	}
+	auto gapLine = [&](const RunGap& g)
+	{
+		os << "Gap on " << g.label << ": RMS " << formatValue("%.4g", g.before.rms_dph) << " -> " << formatValue("%.4g", g.after.rms_dph)
+		   << " deg/h; " << formatValue("%g", rep.tau_s) << " s stability " << formatValue("%.4g", g.before.stability_dph) << " -> "
+		   << formatValue("%.4g", g.after.stability_dph) << " deg/h; range " << formatValue("%.4g", g.before.range_dph) << " -> "
+		   << formatValue("%.4g", g.after.range_dph) << " deg/h\n";
+	};
+	gapLine(rep.gap);
+	if (rep.has_confirm) gapLine(rep.gap_confirm);
+	if (rep.has_confirm && !rep.gap_confirm.validity_note.empty()) os << "  (" << rep.gap_confirm.validity_note << ")\n";
+	os << "Noise model: ARMA(" << sel.ar.order() << ",1) theta " << formatValue("%.2f", sel.ar.theta) << ", long-run factor "
+	   << formatValue("%.2f", sel.lrv_factor) << ", " << sel.outliers << " outlier(s) excluded\n";
+	return os.str();
+}
+
+void saveGapPlot(const RunGap& g, const std::string& path, const std::string& title)
+{
+	PlotCanvas fig(1200, 800);
+	auto& top = fig.addPanel(1.0);
+	auto& bottom = fig.addPanel(1.0);
+	top.title = title + ": residual before (" + g.label + ")";
+	bottom.title = "after adding the named effect(s)";
+	for (auto* p : {&top, &bottom})
+	{
+		p->x_axis.label = "time [s]";
+		p->y_axis.label = "residual [deg/h]";
+		for (const auto& s : g.segments)
+			if (s.flagged) p->addShade(s.segment.t_start_s, s.segment.t_end_s, cv::Scalar(160, 200, 255));
+	}
+	// same y limits on both panels so the reduction is visible
+	double lo = 0, hi = 0;
+	for (double v : g.residual_before_dph)
+		if (std::isfinite(v))
+		{
+			lo = std::min(lo, v);
+			hi = std::max(hi, v);
+		}
+	const double pad = 0.05 * std::max(hi - lo, 1e-3);
+	for (auto* p : {&top, &bottom})
+	{
+		p->y_axis.min = lo - pad;
+		p->y_axis.max = hi + pad;
+	}
+	PlotSeries b{"before", g.time_s, g.residual_before_dph};
+	b.colour = plot_colour::kRed;
+	top.addSeries(b);
+	PlotSeries a{"after", g.time_s, g.residual_after_dph};
+	a.colour = plot_colour::kBlue;
+	bottom.addSeries(a);
+	fig.save(path);
+}
+
+}  // namespace mrpt_fog::discrepancy
