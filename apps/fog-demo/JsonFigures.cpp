@@ -47,6 +47,20 @@ bool JsonFigures::has(const std::string& dotted_path) const
 	return n && !n->isNullNode();
 }
 
+double JsonFigures::numberAt(const std::vector<std::string>& keys) const
+{
+	const auto n = descend(doc_, keys, 0);
+	if (!n || n->isNullNode()) return std::numeric_limits<double>::quiet_NaN();
+	try
+	{
+		return n->as<double>();
+	}
+	catch (const std::exception&)
+	{
+		return std::numeric_limits<double>::quiet_NaN();
+	}
+}
+
 double JsonFigures::number(const std::string& dotted_path) const
 {
 	const auto n = find(dotted_path);

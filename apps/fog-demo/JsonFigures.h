@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace mrpt_fog::demo
 {
@@ -20,6 +21,9 @@ class JsonFigures
 	/** Number at a dotted path ("raw.stability_dph"); NaN when absent or null. */
 	double number(const std::string& dotted_path) const;
 	bool has(const std::string& dotted_path) const;
+	/** Number at a path of keys that may themselves hold dots (fog-drift's over_drives keys,
+	 * e.g. {"over_drives", "ratio.heading_rms_compensated_over_raw", "median"}); NaN when absent. */
+	double numberAt(const std::vector<std::string>& keys) const;
 	/** Text at a dotted path; empty when absent, null or not a scalar. */
 	std::string text(const std::string& dotted_path) const;
 

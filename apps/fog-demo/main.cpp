@@ -40,12 +40,19 @@ WHAT IT DOES
       position RMS on the observation-poor (open-field) stretches. Its calibration: bias on
       chamber run A plus the scale factor vs temperature on the rate-table run
       (ratetable_A.rawlog) when the datasets have one, else the bias only (said in the report);
-   5. fog-paper (when built): the seed paper's Tables 1-3 beside ours.
+   5. fog-paper (when built): the seed paper's Tables 1-3 beside ours;
+   6. stages of the thermal error model, each compensating the bundled drive plus --drives
+      simulated drives (fog-sim --profile drive, seeds 11.., cabins winter / mild / hot in
+      turn; fog-drift -i ... over all of them): bias only (chamber A), + scale factor vs
+      temperature (+ the rate-table run ratetable_A.rawlog), + warm-up (+ the cold-start run
+      warmup.rawlog in the bias fit); the median heading RMS of each over the drives leads the
+      report. Stages whose runs the datasets folder lacks are skipped, said in the report.
   The report folder holds summary.md (key figures, tables, the command behind each), the
   calibration YAML, every program's JSON, PNG plots and logs.
 
 EXAMPLES
   fog-demo --out report
+  fog-demo --drives 2 --out quick_report
   fog-demo --datasets /path/to/datasets --out report
 )";
 
@@ -105,7 +112,12 @@ int main(int argc, char** argv)
 											  false, "", "DIR", cmd);
 		TCLAP::ValueArg<std::string> arg_model("m", "model", "bias-model preset [default: multipoint]", false,
 											   "multipoint", "PRESET", cmd);
+		TCLAP::ValueArg<int> arg_drives("", "drives",
+										"simulated drives (besides the bundled one) for the stage figures [default: 9]",
+										false, 9, "N", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-demo", kHelp)) return *rc;
+		if (arg_drives.getValue() < 0 || arg_drives.getValue() > 100)
+			throw std::invalid_argument("--drives: " + std::to_string(arg_drives.getValue()) + " is not in 0..100");
 
 		const fs::path out = fs::absolute(arg_out.getValue());
 		prepareOutDir(out);
@@ -145,7 +157,12 @@ int main(int argc, char** argv)
 		{
 			have_localize = false;
 		}
-		const int total = static_cast<int>(missing.size()) + 4 + (have_paper ? 1 : 0) + (have_localize ? 1 : 0);
+		// Stages of the thermal error model (the runs each needs must be in the datasets folder).
+		const fs::path table_run = data / "ratetable_A.rawlog", warm_run = data / "warmup.rawlog";
+		const bool have_table = fs::exists(table_run), have_warm = have_table && fs::exists(warm_run);
+		const int n_drives = arg_drives.getValue();
+		const int stage_steps = n_drives + 1 + (have_table ? 2 : 0) + (have_warm ? 2 : 0);
+		const int total = static_cast<int>(missing.size()) + 4 + (have_paper ? 1 : 0) + (have_localize ? 1 : 0) + stage_steps;
 		StepRunner run(bin, (out / "logs").string(), total);
 
 		std::cout << "fog-demo: datasets from " << data.string() << ", report in " << out.string() << "\n";
@@ -201,6 +218,57 @@ int main(int argc, char** argv)
 					  (json / "paper.json").string(), "--plots", (plots / "paper").string()}});
 		}
 
+		// 6. stages over several drives
+		struct Stage
+		{
+			std::string id, label, runs, cal;
+		};
+		std::vector<Stage> stages{{"bias", "bias only", "chamber A", cal}};
+		const std::string cal_sf = (out / "calibration_scale_factor.yaml").string();
+		const std::string cal_full = (out / "calibration_full.yaml").string();
+		if (have_table)
+		{
+			run.run({"calibrate_scale_factor", "stage + scale factor: calibrating on chamber run A + the rate-table run",
+					 {run.program("fog-calibrate"), "-i", ds.chamber_A, "-i", table_run.string(), "--model",
+					  arg_model.getValue(), "-o", cal_sf, "--json", (json / "calibrate_scale_factor.json").string()}});
+			stages.push_back({"scale_factor", "+ scale factor vs temperature", "chamber A + rate table A", cal_sf});
+		}
+		if (have_warm)
+		{
+			run.run({"calibrate_full",
+					 "stage + warm-up: calibrating on chamber run A + the rate-table run + the cold-start run",
+					 {run.program("fog-calibrate"), "-i", ds.chamber_A, "-i", table_run.string(), "-i", warm_run.string(),
+					  "--model", arg_model.getValue(), "-o", cal_full, "--json", (json / "calibrate_full.json").string()}});
+			stages.push_back({"full", "+ warm-up (cold-start run in the bias fit)", "chamber A + rate table A + warm-up",
+							  cal_full});
+		}
+		std::vector<std::string> drive_inputs{ds.drive};
+		const char* const cabins[] = {"drive_cabin", "drive_cabin_mild", "drive_cabin_hot"};
+		if (n_drives > 0) fs::create_directories(out / "drives");
+		for (int k = 0; k < n_drives; k++)
+		{
+			const std::string seed = std::to_string(11 + k), cabin = cabins[k % 3];
+			const std::string f = (out / "drives" / ("drive_seed" + seed + "_" + cabin + ".rawlog")).string();
+			run.run({"sim_drive_" + seed, "simulating drive seed " + seed + " (" + cabin + ")",
+					 {run.program("fog-sim"), "--profile", "drive", "--cabin", cabin, "--seed", seed, "-o", f}});
+			drive_inputs.push_back(f);
+		}
+		for (const auto& st : stages)
+		{
+			std::vector<std::string> argv{run.program("fog-drift")};
+			for (const auto& d : drive_inputs) argv.insert(argv.end(), {"-i", d});
+			argv.insert(argv.end(), {"--cal", st.cal, "--json", (json / ("drives_" + st.id + ".json")).string()});
+			run.run({"drives_" + st.id,
+					 "stage '" + st.label + "': heading over " + std::to_string(drive_inputs.size()) + " drive(s)", argv});
+		}
+		// fog-drift writes over_drives only for several drives; one drive: its own figures
+		const auto stageFigure = [&](const JsonFigures& j, const std::string& key, const char* q) {
+			if (drive_inputs.size() > 1) return j.numberAt({"over_drives", key, q});
+			const auto dot = key.find('.');
+			if (key.rfind("ratio.", 0) == 0) return j.numberAt({"ratios", key.substr(6)});
+			return j.numberAt({key.substr(0, dot), key.substr(dot + 1)});
+		};
+
 		const JsonFigures evA((json / "evaluate_A.json").string());
 		const JsonFigures evB((json / "evaluate_B.json").string());
 		const JsonFigures drift((json / "drift.json").string());
@@ -214,8 +282,21 @@ int main(int argc, char** argv)
 		md << "# mrpt_fog demo report\n\n"
 		   << "Multi-point thermal-bias model (`" << arg_model.getValue() << "`) fitted on chamber run A, validated on "
 		   << "chamber run B, applied causally to a vehicle drive. Datasets: `" << data.string() << "`.\n\n";
-		md << "## Headline\n\n"
-		   << "- Held-out 100 s bias stability (run B): raw " << fmt(rawB) << " deg/h -> compensated " << fmt(compB)
+		md << "## Headline\n\n";
+		{
+			const JsonFigures last((json / ("drives_" + stages.back().id + ".json")).string());
+			const std::string n = std::to_string(drive_inputs.size());
+			const char* med = "median";
+			md << "- Heading over " << n << " drive" << (drive_inputs.size() > 1 ? "s (median)" : "")
+			   << ", calibration '" << stages.back().label << "' (" << stages.back().runs << "): heading RMS raw "
+			   << fmt(stageFigure(last, "heading_error_rms_deg.raw", med)) << " deg, compensated "
+			   << fmt(stageFigure(last, "heading_error_rms_deg.compensated", med)) << " deg, ideal gyro "
+			   << fmt(stageFigure(last, "heading_error_rms_deg.ideal", med)) << " deg (compensated/raw "
+			   << fmt(stageFigure(last, "ratio.heading_rms_compensated_over_raw", med), "%.3g") << ", target <= 0.1; "
+			   << "compensated/ideal " << fmt(stageFigure(last, "ratio.heading_rms_compensated_over_ideal", med), "%.3g")
+			   << ", target <= 2). Each stage's share: the table below.\n";
+		}
+		md << "- Held-out 100 s bias stability (run B): raw " << fmt(rawB) << " deg/h -> compensated " << fmt(compB)
 		   << " deg/h (x" << ratio(compB, rawB) << ").\n"
 		   << "- Final heading error after the drive: raw " << fmt(hRaw) << " deg, compensated " << fmt(hComp)
 		   << " deg, ideal gyro " << fmt(hIdeal) << " deg (compensated/raw = " << ratio(hComp, hRaw)
@@ -224,6 +305,32 @@ int main(int argc, char** argv)
 		   << fmt(drift.number("position_error_final_m.compensated")) << " m, ideal "
 		   << fmt(drift.number("position_error_final_m.ideal")) << " m over " << fmt(drift.number("distance_m") / 1000.0)
 		   << " km.\n\n";
+		md << "## Stages of the thermal error model, heading over " << drive_inputs.size() << " drive(s)\n\n"
+		   << "Drives: the bundled one" << (n_drives > 0 ? " + fog-sim drives seeds 11.." + std::to_string(10 + n_drives) +
+																  " (cabins winter / mild / hot in turn)"
+															: std::string())
+		   << ". Median [quartiles] over the drives"
+		   << (drive_inputs.size() > 1 ? "" : " (one drive: its own figures)") << ".\n\n"
+		   << "| stage | calibration runs | heading RMS compensated [deg] | compensated / raw | compensated / ideal | "
+			  "drift between turns compensated / raw |\n"
+		   << "|---|---|---|---|---|---|\n";
+		for (const auto& st : stages)
+		{
+			const JsonFigures j((json / ("drives_" + st.id + ".json")).string());
+			const auto cell = [&](const std::string& key, const char* f) {
+				std::string c = fmt(stageFigure(j, key, "median"), f);
+				if (drive_inputs.size() > 1)
+					c += " [" + fmt(stageFigure(j, key, "q1"), f) + ", " + fmt(stageFigure(j, key, "q3"), f) + "]";
+				return c;
+			};
+			md << "| " << st.label << " | " << st.runs << " | " << cell("heading_error_rms_deg.compensated", "%.3g")
+			   << " | " << cell("ratio.heading_rms_compensated_over_raw", "%.3g") << " | "
+			   << cell("ratio.heading_rms_compensated_over_ideal", "%.3g") << " | "
+			   << cell("ratio.drift_between_turns_compensated_over_raw", "%.3g") << " |\n";
+		}
+		if (!have_table) md << "\nNo `ratetable_A.rawlog` in the datasets folder: the scale-factor and warm-up stages are skipped.\n";
+		else if (!have_warm) md << "\nNo `warmup.rawlog` in the datasets folder: the warm-up stage is skipped.\n";
+		md << "\nWhere the remaining error comes from (decomposition by simulator effect): docs/nav.md.\n\n";
 		md << "## Bias (chamber runs, tau = 100 s)\n\n"
 		   << "| run | raw stability [deg/h] | compensated stability [deg/h] | raw range [deg/h] | compensated range [deg/h] |\n"
 		   << "|---|---|---|---|---|\n";
@@ -289,7 +396,16 @@ int main(int argc, char** argv)
 		md << "```\n";
 		writeTextFileAtomically((out / "summary.md").string(), md.str());
 
-		std::cout << "\nReport: " << (out / "summary.md").string() << "\n"
+		std::cout << "\nReport: " << (out / "summary.md").string() << "\n";
+		for (const auto& st : stages)
+		{
+			const JsonFigures j((json / ("drives_" + st.id + ".json")).string());
+			std::cout << "  heading RMS over " << drive_inputs.size() << " drive(s), " << st.label << ": compensated "
+					  << fmt(stageFigure(j, "heading_error_rms_deg.compensated", "median")) << " deg (/raw "
+					  << fmt(stageFigure(j, "ratio.heading_rms_compensated_over_raw", "median"), "%.6g") << ", /ideal "
+					  << fmt(stageFigure(j, "ratio.heading_rms_compensated_over_ideal", "median"), "%.3g") << ")\n";
+		}
+		std::cout
 				  << "  held-out bias stability (run B, 100 s): raw " << fmt(rawB) << " -> compensated " << fmt(compB)
 				  << " deg/h\n"
 				  << "  final heading error after the drive:    raw " << fmt(hRaw) << " deg, compensated " << fmt(hComp)

@@ -20,7 +20,7 @@ if(NOT kept STREQUAL "keep me\n" OR NOT nleft EQUAL 1)
 endif()
 
 # 2. The end-to-end run.
-execute_process(COMMAND ${DEMO} --datasets ${DATASETS} --out ${WORK}/report
+execute_process(COMMAND ${DEMO} --datasets ${DATASETS} --out ${WORK}/report --drives 1
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "fog-demo failed (${rc}): ${err}\n${out}")
@@ -32,7 +32,14 @@ foreach(f summary.md calibration.yaml json/calibrate.json json/evaluate_A.json j
   endif()
 endforeach()
 file(READ ${WORK}/report/summary.md md)
-foreach(needle "Held-out 100 s bias stability" "| compensated |" "fog-calibrate -i" "fog-drift -i")
+foreach(f json/drives_bias.json json/drives_scale_factor.json json/drives_full.json calibration_full.yaml)
+  if(NOT EXISTS ${WORK}/report/${f})
+    message(FATAL_ERROR "stage file missing: ${f}")
+  endif()
+endforeach()
+foreach(needle "Held-out 100 s bias stability" "| compensated |" "fog-calibrate -i" "fog-drift -i"
+    "## Stages of the thermal error model, heading over 2 drive(s)" "| + scale factor vs temperature |"
+    "| + warm-up (cold-start run in the bias fit) |" "Heading over 2 drives (median)")
   string(FIND "${md}" "${needle}" pos)
   if(pos LESS 0)
     message(FATAL_ERROR "summary.md lacks '${needle}'")
@@ -54,8 +61,27 @@ if(NOT raw_prefix STREQUAL printed_prefix)
   message(FATAL_ERROR "printed raw heading error ${printed} differs from drift.json ${raw_final}")
 endif()
 
+# The stage figures printed are fog-drift's medians over the drives (not hard-coded).
+file(READ ${WORK}/report/json/drives_full.json fj)
+string(JSON full_ratio GET "${fj}" over_drives "ratio.heading_rms_compensated_over_raw" median)
+string(REGEX MATCH "warm-up \\(cold-start run in the bias fit\\): compensated [0-9.eE+-]+ deg \\(/raw ([0-9.eE+-]+)," m "${out}")
+if(NOT m)
+  message(FATAL_ERROR "stage line missing in fog-demo output:\n${out}")
+endif()
+string(SUBSTRING "${full_ratio}" 0 6 a)  # printed with %.6g: 6 characters agree
+string(SUBSTRING "${CMAKE_MATCH_1}" 0 6 b)
+if(NOT a STREQUAL b)
+  message(FATAL_ERROR "printed warm-up stage ratio ${CMAKE_MATCH_1} differs from drives_full.json ${full_ratio}")
+endif()
+
 # 3. Re-running into its own previous report is allowed.
-execute_process(COMMAND ${DEMO} --datasets ${DATASETS} --out ${WORK}/report RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+execute_process(COMMAND ${DEMO} --datasets ${DATASETS} --out ${WORK}/report --drives 0 RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "fog-demo could not refresh its own report: ${err}")
+endif()
+# with --drives 0 the stages are the bundled drive's own figures
+file(READ ${WORK}/report/summary.md md0)
+string(FIND "${md0}" "heading over 1 drive(s)" pos)
+if(pos LESS 0)
+  message(FATAL_ERROR "summary.md of the one-drive run lacks the stage table")
 endif()
