@@ -1,6 +1,8 @@
 /* fog-localize: MRPT particle-filter localization with raw, compensated and ideal FOG heading. */
 #include "CalibrationChoice.h"
 
+#include "ThermistorScreeningReport.h"
+
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/ScaleFactorFit.h>
@@ -31,11 +33,18 @@ CalibrationChoice chooseCalibration(const CalibrationRequest& request)
 		c.cal = loadCalibrationYaml(request.given_path, GyroAxis::Z);
 		return c;
 	}
-	std::vector<FogSeries> runs{readFogLog(request.chamber_path)};
+	// Thermistor readings screened before the fit, as fog-calibrate and the compensation do.
+	const auto screened = [](FogSeries s, const std::string& path) {
+		const ThermistorScreening sc = app::screenInPlace(s, true);
+		if (sc.rejected_readings > 0)
+			std::printf("  %s:\n%s", path.c_str(), app::screeningText(sc, true).c_str());
+		return s;
+	};
+	std::vector<FogSeries> runs{screened(readFogLog(request.chamber_path), request.chamber_path)};
 	c.fitted_on = {request.chamber_path};
 	if (request.ratetable_path)
 	{
-		runs.push_back(readFogLog(*request.ratetable_path));
+		runs.push_back(screened(readFogLog(*request.ratetable_path), *request.ratetable_path));
 		c.fitted_on.push_back(*request.ratetable_path);
 		if (!hasTableRates({runs.back()}))
 			throw std::runtime_error(*request.ratetable_path +
@@ -59,6 +68,7 @@ CalibrationChoice chooseCalibration(const CalibrationRequest& request)
 	}
 	else
 		c.source = CalibrationSource::FittedBiasOnly;
+	c.cal.validation.label = "validation run (none given)";
 	c.path = request.write_path;
 	saveCalibrationYaml(c.cal, c.path);
 	return c;

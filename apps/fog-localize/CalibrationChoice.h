@@ -7,8 +7,9 @@
  * A drive turns: the gyro's scale-factor error (its temperature dependence, ScaleFactorModel.h)
  * adds a heading error at every turn, which a bias-only calibration leaves in the compensated
  * gyro. So when no calibration is given, fog-localize fits one the way fog-calibrate does on a
- * chamber run plus a rate-table run of the same gyro (bias from the static samples, scale
- * factor vs temperature from the table segments), and falls back to a bias-only fit on the
+ * chamber run plus a rate-table run of the same gyro (thermistor readings screened; bias from
+ * the static samples, scale factor vs temperature from the table segments; the same file as
+ * `fog-calibrate -i CHAMBER -i RATETABLE --model multipoint`), and falls back to a bias-only fit on the
  * chamber run when no rate-table run is available, saying so. A given calibration is used as
  * it is. What was used goes into the text output and the JSON (`calibration`). */
 

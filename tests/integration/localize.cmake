@@ -11,6 +11,13 @@ if(TARGET fog-localize)
     -DRATETABLE=${FOG_SOURCE_DIR}/datasets/ratetable_A.rawlog
     -P ${FOG_SOURCE_DIR}/tests/localize/check_localize.cmake)
   set_tests_properties(localize.fog_localize.check PROPERTIES FIXTURES_REQUIRED loc_run LABELS "localize;integration")
+  # The calibration fog-localize fits by default is the file fog-calibrate writes for the same runs.
+  if(TARGET fog-calibrate AND EXISTS ${FOG_SOURCE_DIR}/datasets/ratetable_A.rawlog)
+    add_test(NAME localize.fog_localize.calibration_as_fog_calibrate COMMAND sh -c
+      "'$<TARGET_FILE:fog-calibrate>' -i '${FOG_SOURCE_DIR}/datasets/chamber_A.rawlog' -i '${FOG_SOURCE_DIR}/datasets/ratetable_A.rawlog' --model multipoint -o '${LOC_DIR}_fog_calibrate.yaml' > /dev/null && cmp '${LOC_DIR}_fog_calibrate.yaml' '${LOC_DIR}/calibration.yaml'")
+    set_tests_properties(localize.fog_localize.calibration_as_fog_calibrate PROPERTIES FIXTURES_REQUIRED loc_run
+      LABELS "localize;integration")
+  endif()
   find_program(LOC_PF_LOCALIZATION pf-localization)
   if(LOC_PF_LOCALIZATION)
     add_test(NAME localize.pf_localization.run
