@@ -62,11 +62,12 @@ MclRun runMcl(const World& world, const std::vector<mrpt::obs::CObservation2DRan
 
 	MclRun run;
 	auto record = [&](double tk, double scale) {
-		const mrpt::poses::CPose2D m = pdf.getMeanVal();
+		const auto [cov, m] = pdf.getCovarianceAndMean();
 		run.t_s.push_back(tk);
 		run.x_m.push_back(m.x());
 		run.y_m.push_back(m.y());
 		run.yaw_rad.push_back(m.phi());
+		run.yaw_std_rad.push_back(std::sqrt(std::max(0.0, cov(2, 2))));
 		run.odometry_scale.push_back(scale);
 	};
 	record(t[0], 1.0);

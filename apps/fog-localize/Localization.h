@@ -68,6 +68,7 @@ struct MclOptions
 struct MclRun
 {
 	std::vector<double> t_s, x_m, y_m, yaw_rad;  //!< weighted-mean estimate at each scan
+	std::vector<double> yaw_std_rad;  //!< the particles' weighted heading standard deviation at each scan
 	std::vector<double> odometry_scale;  //!< scale applied at each step
 	std::size_t resamplings = 0;
 };

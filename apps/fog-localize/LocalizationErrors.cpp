@@ -19,6 +19,7 @@ RunErrors computeErrors(const MclRun& run, const nav::Trajectory& truth, const s
 		e.t_s.push_back(run.t_s[k]);
 		e.position_m.push_back(pos);
 		e.heading_deg.push_back(nav::wrapToPi(run.yaw_rad[k] - p.yaw_rad) * 180.0 / M_PI);
+		e.heading_spread_deg.push_back(k < run.yaw_std_rad.size() ? run.yaw_std_rad[k] * 180.0 / M_PI : NAN);
 		const Stretch& s = stretchAt(stretches, run.t_s[k]);
 		if (s.kind == StretchKind::Urban && run.t_s[k] > s.t_begin_s + recover_s)
 		{
@@ -108,13 +109,14 @@ std::vector<HeadingBudget> headingBudget(const std::vector<RunErrors>& seeds, co
 		h.duration_s = t[b] - t[a];
 		h.length_m = s.s_end_m - s.s_begin_m;
 		h.gyro_drift_deg = odo_err_deg[b] - odo_err_deg[a];
-		double e2 = 0, em = 0, p2 = 0, w2 = 0, f2 = 0;
+		double e2 = 0, em = 0, p2 = 0, w2 = 0, f2 = 0, sp2 = 0;
 		for (const auto& r : seeds)
 		{
 			const double e0 = r.heading_deg[a], e1 = r.heading_deg[b];
 			e2 += e0 * e0;
 			em += e0;
 			p2 += r.position_m[a] * r.position_m[a];
+			if (a < r.heading_spread_deg.size()) sp2 += r.heading_spread_deg[a] * r.heading_spread_deg[a];
 			const double w = e1 - e0 - h.gyro_drift_deg;
 			w2 += w * w;
 			f2 += e1 * e1;
@@ -122,6 +124,7 @@ std::vector<HeadingBudget> headingBudget(const std::vector<RunErrors>& seeds, co
 		const double n = static_cast<double>(seeds.size());
 		h.entry_heading_rms_deg = std::sqrt(e2 / n);
 		h.entry_heading_mean_deg = em / n;
+		h.entry_heading_spread_rms_deg = std::sqrt(sp2 / n);
 		h.entry_position_rms_m = std::sqrt(p2 / n);
 		h.walk_rms_deg = std::sqrt(w2 / n);
 		h.end_heading_rms_deg = std::sqrt(f2 / n);

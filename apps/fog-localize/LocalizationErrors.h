@@ -18,6 +18,7 @@ namespace mrpt_fog::localize
 struct RunErrors
 {
 	std::vector<double> t_s, position_m, heading_deg;  //!< per scan
+	std::vector<double> heading_spread_deg;  //!< the particles' heading standard deviation per scan
 	bool diverged = false;
 	double max_urban_error_m = 0;  //!< after the recovery time
 };
@@ -59,6 +60,9 @@ struct HeadingBudget
 	double duration_s = 0, length_m = 0;
 	double entry_heading_rms_deg = 0;  //!< RMS over seeds of e(entry)
 	double entry_heading_mean_deg = 0;  //!< mean over seeds of e(entry)
+	/** RMS over seeds of the particles' heading standard deviation at entry: what the filter
+	 * believes its heading error is (well below entry_heading_rms_deg: overconfident). */
+	double entry_heading_spread_rms_deg = 0;
 	double entry_position_rms_m = 0;  //!< RMS over seeds of the position error at entry
 	double gyro_drift_deg = 0;  //!< o(end) - o(entry): the same for every seed
 	double walk_rms_deg = 0;  //!< RMS over seeds of e(end) - e(entry) - gyro drift

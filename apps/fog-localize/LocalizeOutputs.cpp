@@ -131,13 +131,14 @@ void printSummary(const LocalizeResults& r, const World& world)
 					g.summary.stretches[g.summary.worst_open].position_rms_m, g.summary.worst_open, g.summary.diverged_runs,
 					g.runs.size());
 	}
-	std::printf("  open stretches' heading budget [deg] (RMS over seeds; end = entry + gyro drift + filter walk)\n");
-	std::printf("  %-12s %3s %7s %9s %9s %9s %9s %9s\n", "gyro", "#", "km", "entry", "gyro", "walk", "end", "entry [m]");
+	std::printf("  open stretches' heading budget [deg] (RMS over seeds; end = entry + gyro drift + filter walk; spread: the particles' own heading std at entry)\n");
+	std::printf("  %-12s %3s %7s %9s %9s %9s %9s %9s %9s\n", "gyro", "#", "km", "entry", "spread", "gyro", "walk", "end",
+				"entry [m]");
 	for (const auto& g : r.gyros)
 		for (const auto& h : g.heading_budget)
-			std::printf("  %-12s %3zu %7.2f %9.4f %+9.4f %9.4f %9.4f %9.2f\n", g.name.c_str(), h.index, h.length_m / 1000,
-						h.entry_heading_rms_deg, h.gyro_drift_deg, h.walk_rms_deg, h.end_heading_rms_deg,
-						h.entry_position_rms_m);
+			std::printf("  %-12s %3zu %7.2f %9.4f %9.4f %+9.4f %9.4f %9.4f %9.2f\n", g.name.c_str(), h.index,
+						h.length_m / 1000, h.entry_heading_rms_deg, h.entry_heading_spread_rms_deg, h.gyro_drift_deg,
+						h.walk_rms_deg, h.end_heading_rms_deg, h.entry_position_rms_m);
 	const GyroResult *raw = gyro(r, "raw"), *comp = gyro(r, "compensated"), *ideal = gyro(r, "ideal");
 	if (raw && comp && ideal)
 	{
@@ -256,6 +257,7 @@ void writeOutputs(const std::string& dir, const std::string& json_path, const Lo
 			e["length_m"] = h.length_m;
 			e["entry_heading_rms_deg"] = h.entry_heading_rms_deg;
 			e["entry_heading_mean_deg"] = h.entry_heading_mean_deg;
+			e["entry_heading_spread_rms_deg"] = h.entry_heading_spread_rms_deg;
 			e["entry_position_rms_m"] = h.entry_position_rms_m;
 			e["gyro_drift_deg"] = h.gyro_drift_deg;
 			e["walk_rms_deg"] = h.walk_rms_deg;
