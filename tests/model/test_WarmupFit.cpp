@@ -138,6 +138,10 @@ TEST(WarmupFit, RefusesRunsWithoutATurnOnOrADecay)
 	EXPECT_NE(why(turnOnRun(6, 0.1, 600, 23.0, 300, 400)).find("stays on for"), std::string::npos);
 	// no transient at all: no amplitude resolved
 	EXPECT_NE(why(turnOnRun(7, 0.0, 600)).find("no turn-on transient"), std::string::npos);
+	// metadata says on at t = 0 but the power column says off there: no powered span
+	FogSeries off_first = turnOnRun(9, 0.1, 600, 23.0, 300, 400);
+	off_first.setMetadata("power_on_time_s", "0");
+	EXPECT_NE(why(off_first).find("stays on for 0 s"), std::string::npos) << why(off_first);
 	FogSeries bad = turnOnRun(8, 0.1, 600);
 	bad.power.clear();
 	bad.setMetadata("power_on_time_s", "soon");

@@ -110,7 +110,7 @@ WarmupModel fitWarmup(const std::vector<FogSeries>& runs, const Calibration& cal
 		{
 			std::size_t k1 = k0;
 			while (k1 < n && (s.power.empty() || s.power[k1] != 0.0)) k1++;
-			const double span = s.time_s[k1 - 1] - t_on;
+			const double span = k1 > k0 ? s.time_s[k1 - 1] - t_on : 0.0;  // off at the metadata turn-on: no span
 			if (span < opt.min_span_s)
 				throw WarmupFitError(runName(labels, r) + ": the gyro stays on for " + fmt(span) + " s after the turn-on at " +
 									 fmt(t_on) + " s; the warm-up fit needs " + fmt(opt.min_span_s) + " s or more");
