@@ -53,6 +53,7 @@ WHAT IT DOES
 EXAMPLES
   fog-demo --out report
   fog-demo --drives 2 --out quick_report
+  fog-demo --no-stages --out quicker_report
   fog-demo --datasets /path/to/datasets --out report
 )";
 
@@ -115,6 +116,10 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<int> arg_drives("", "drives",
 										"simulated drives (besides the bundled one) for the stage figures [default: 9]",
 										false, 9, "N", cmd);
+		TCLAP::SwitchArg arg_no_stages("", "no-stages",
+									   "bias-only stage on the bundled drive only (no rate-table / warm-up calibrations, no "
+									   "simulated drives): a quicker run",
+									   cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-demo", kHelp)) return *rc;
 		if (arg_drives.getValue() < 0 || arg_drives.getValue() > 100)
 			throw std::invalid_argument("--drives: " + std::to_string(arg_drives.getValue()) + " is not in 0..100");
@@ -159,8 +164,9 @@ int main(int argc, char** argv)
 		}
 		// Stages of the thermal error model (the runs each needs must be in the datasets folder).
 		const fs::path table_run = data / "ratetable_A.rawlog", warm_run = data / "warmup.rawlog";
-		const bool have_table = fs::exists(table_run), have_warm = have_table && fs::exists(warm_run);
-		const int n_drives = arg_drives.getValue();
+		const bool stages_on = !arg_no_stages.getValue();
+		const bool have_table = stages_on && fs::exists(table_run), have_warm = have_table && fs::exists(warm_run);
+		const int n_drives = stages_on ? arg_drives.getValue() : 0;
 		const int stage_steps = n_drives + 1 + (have_table ? 2 : 0) + (have_warm ? 2 : 0);
 		const int total = static_cast<int>(missing.size()) + 4 + (have_paper ? 1 : 0) + (have_localize ? 1 : 0) + stage_steps;
 		StepRunner run(bin, (out / "logs").string(), total);
@@ -328,7 +334,8 @@ int main(int argc, char** argv)
 			   << cell("ratio.heading_rms_compensated_over_ideal", "%.3g") << " | "
 			   << cell("ratio.drift_between_turns_compensated_over_raw", "%.3g") << " |\n";
 		}
-		if (!have_table) md << "\nNo `ratetable_A.rawlog` in the datasets folder: the scale-factor and warm-up stages are skipped.\n";
+		if (!stages_on) md << "\nScale-factor and warm-up stages and the simulated drives skipped (--no-stages).\n";
+		else if (!have_table) md << "\nNo `ratetable_A.rawlog` in the datasets folder: the scale-factor and warm-up stages are skipped.\n";
 		else if (!have_warm) md << "\nNo `warmup.rawlog` in the datasets folder: the warm-up stage is skipped.\n";
 		md << "\nWhere the remaining error comes from (decomposition by simulator effect): docs/nav.md.\n\n";
 		md << "## Bias (chamber runs, tau = 100 s)\n\n"
