@@ -96,15 +96,63 @@ namespace
 {
 const std::vector<double> kRidgeGrid = {0.0, 1e-9, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1};
 
-/** One calibration run prepared for the fit: bias, per-thermistor temperatures and rates. */
+/** One calibration run prepared for the fit: which samples are usable, the bias and the
+ * thermistor rates. Memory does not grow with the log beyond one bit per sample (issue 14): the
+ * bias is computed from the series when asked (y()), and the causal rates are recomputed in each
+ * sequential pass by a RowCursor (the tracker is deterministic: the same numbers as storing
+ * them); only the non-causal estimator (savgol, studies) stores its rates. */
 struct PreparedRun
 {
 	const FogSeries* s = nullptr;
 	std::vector<int> col;  // layout column of each feature-set thermistor
-	std::vector<std::vector<double>> rate;  // [thermistor][sample] degC/s
-	std::vector<double> y;  // bias [deg/h]
+	int axis = 0;
+	bool exclude_table = false;
+	RateEstimatorSettings est;
+	std::vector<std::vector<double>> rate;  // [thermistor][sample] degC/s (non-causal estimator only)
 	std::vector<bool> ok;  // usable sample
 	std::size_t usable = 0;
+	/** Bias sample k [deg/h]: gyro minus table rate; NaN for a table sample left out of the fit. */
+	double y(std::size_t k) const
+	{
+		const double table = s->table_rate_dph.empty() ? 0.0 : s->table_rate_dph[k];
+		if (exclude_table && table != 0.0) return std::numeric_limits<double>::quiet_NaN();
+		return s->rate_dph[axis][k] - table;
+	}
+};
+
+/** Sequential access to a prepared run's per-thermistor temperatures and rates: row(k) with k
+ * ascending (gaps allowed: skipped samples still go through the rate tracker). */
+class RowCursor
+{
+   public:
+	explicit RowCursor(const PreparedRun& r)
+		: r_(r), causal_(r.est.kind == "causal"), tracker_(r.col.size(), r.est.window_s), x_(r.col.size())
+	{
+	}
+	/** Temperatures and rates of sample k (k >= the previous k). */
+	void row(std::size_t k, double* temp, double* rate)
+	{
+		const std::size_t nt = r_.col.size();
+		if (causal_)
+		{
+			for (; next_ <= k; next_++)
+			{
+				for (std::size_t i = 0; i < nt; i++) x_[i] = r_.s->temp_C[r_.col[i]][next_];
+				tracker_.push(r_.s->time_s[next_], x_.data());
+			}
+			for (std::size_t i = 0; i < nt; i++) rate[i] = tracker_.rate(i);
+		}
+		else
+			for (std::size_t i = 0; i < nt; i++) rate[i] = r_.rate[i][k];
+		for (std::size_t i = 0; i < nt; i++) temp[i] = r_.s->temp_C[r_.col[i]][k];
+	}
+
+   private:
+	const PreparedRun& r_;
+	bool causal_;
+	CausalRateTracker tracker_;
+	std::vector<double> x_;
+	std::size_t next_ = 0;
 };
 
 PreparedRun prepare(const FogSeries& s, const ThermalFeatureSet& fs, const RateEstimatorSettings& est, GyroAxis axis,
@@ -114,49 +162,35 @@ PreparedRun prepare(const FogSeries& s, const ThermalFeatureSet& fs, const RateE
 	r.s = &s;
 	const std::size_t n = s.size(), nt = fs.thermistors().size();
 	for (const auto& name : fs.thermistors()) r.col.push_back(s.thermistorIndex(name));
-	const auto& rate = s.rate_dph[static_cast<int>(axis)];
-	r.y.resize(n);
-	for (std::size_t k = 0; k < n; k++) r.y[k] = rate[k] - (s.table_rate_dph.empty() ? 0.0 : s.table_rate_dph[k]);
-	r.rate.resize(nt);
-	if (est.kind == "causal")
-	{
-		// The same multi-channel tracker as the compensator: identical numbers.
-		CausalRateTracker tr(nt, est.window_s);
-		std::vector<double> x(nt);
-		for (auto& v : r.rate) v.resize(n);
-		for (std::size_t k = 0; k < n; k++)
-		{
-			for (std::size_t i = 0; i < nt; i++) x[i] = s.temp_C[r.col[i]][k];
-			tr.push(s.time_s[k], x.data());
-			for (std::size_t i = 0; i < nt; i++) r.rate[i][k] = tr.rate(i);
-		}
-	}
-	else
+	r.axis = static_cast<int>(axis);
+	// A table sample is not a bias sample (nor in the raw figures) when excluded.
+	r.exclude_table = table == TableSamples::Exclude;
+	r.est = est;
+	if (est.kind != "causal")
 	{
 		auto e = makeRateEstimator(est);
+		r.rate.resize(nt);
 		for (std::size_t i = 0; i < nt; i++) r.rate[i] = e->estimate(s.time_s, s.temp_C[r.col[i]]);
 	}
+	// The same multi-channel tracker as the compensator (RowCursor): identical numbers.
+	RowCursor cur(r);
+	std::vector<double> temp(nt), rate(nt);
 	r.ok.assign(n, true);
 	for (std::size_t k = 0; k < n; k++)
 	{
-		if (table == TableSamples::Exclude && !s.table_rate_dph.empty() && s.table_rate_dph[k] != 0.0)
-			r.y[k] = std::numeric_limits<double>::quiet_NaN();  // not a bias sample (nor in the raw figures)
-		bool ok = std::isfinite(r.y[k]) && (s.power.empty() || s.power[k] != 0.0);
-		for (std::size_t i = 0; i < nt && ok; i++) ok = std::isfinite(s.temp_C[r.col[i]][k]) && std::isfinite(r.rate[i][k]);
+		cur.row(k, temp.data(), rate.data());
+		bool ok = std::isfinite(r.y(k)) && (s.power.empty() || s.power[k] != 0.0);
+		for (std::size_t i = 0; i < nt && ok; i++) ok = std::isfinite(temp[i]) && std::isfinite(rate[i]);
 		r.ok[k] = ok;
 		r.usable += ok;
 	}
 	return r;
 }
 
-void rowSignals(const PreparedRun& r, const ThermalFeatureSet& fs, std::size_t k, std::vector<double>& temp,
+void rowSignals(RowCursor& cur, const ThermalFeatureSet& fs, std::size_t k, std::vector<double>& temp,
 				std::vector<double>& rate, std::vector<double>& values)
 {
-	for (std::size_t i = 0; i < r.col.size(); i++)
-	{
-		temp[i] = r.s->temp_C[r.col[i]][k];
-		rate[i] = r.rate[i][k];
-	}
+	cur.row(k, temp.data(), rate.data());
 	fs.signalValues(temp.data(), rate.data(), values.data());
 }
 
@@ -350,28 +384,9 @@ std::vector<int> regimeFolds(const PreparedRun& r, double threshold_C_per_min, d
 	// The regime is a property of the run, not of the model: the rate of the mean of ALL the
 	// run's thermistors (finite readings), whatever thermistors the preset uses.
 	const std::size_t n = r.s->size();
-	std::vector<double> mean_C(n, std::numeric_limits<double>::quiet_NaN());
-	for (std::size_t k = 0; k < n; k++)
-	{
-		double sum = 0;
-		int cnt = 0;
-		for (const auto& col : r.s->temp_C)
-			if (std::isfinite(col[k]))
-			{
-				sum += col[k];
-				cnt++;
-			}
-		if (cnt == static_cast<int>(r.s->temp_C.size()) && cnt > 0) mean_C[k] = sum / cnt;
-	}
-	const std::vector<double> mean_rate = CausalRateEstimator(window_s).estimate(r.s->time_s, mean_C);
-	std::vector<int> cls(n, -1);
+	// The mean temperature's rate, sample by sample (CausalRateEstimator's numbers, no columns).
+	CausalRateTracker tracker(1, window_s);
 	const double thr = threshold_C_per_min / 60.0;
-	for (std::size_t k = 0; k < n; k++)
-	{
-		if (!r.ok[k] || !std::isfinite(mean_rate[k])) continue;
-		const double m = mean_rate[k];
-		cls[k] = m > thr ? 2 : (m < -thr ? 0 : 1);
-	}
 	// Segments: [start time, class]; short ones take the class of the one before.
 	struct Seg
 	{
@@ -381,9 +396,21 @@ std::vector<int> regimeFolds(const PreparedRun& r, double threshold_C_per_min, d
 	std::vector<Seg> segs;
 	for (std::size_t k = 0; k < n; k++)
 	{
-		if (cls[k] < 0) continue;
+		double sum = 0, mean_C = std::numeric_limits<double>::quiet_NaN();
+		int cnt = 0;
+		for (const auto& col : r.s->temp_C)
+			if (std::isfinite(col[k]))
+			{
+				sum += col[k];
+				cnt++;
+			}
+		if (cnt == static_cast<int>(r.s->temp_C.size()) && cnt > 0) mean_C = sum / cnt;
+		tracker.push(r.s->time_s[k], &mean_C);
+		const double m = std::isnan(mean_C) ? std::numeric_limits<double>::quiet_NaN() : tracker.rate(0);
+		if (!r.ok[k] || !std::isfinite(m)) continue;
+		const int cls = m > thr ? 2 : (m < -thr ? 0 : 1);
 		const double t = r.s->time_s[k];
-		if (segs.empty() || segs.back().cls != cls[k]) segs.push_back({t, t, cls[k]});
+		if (segs.empty() || segs.back().cls != cls) segs.push_back({t, t, cls});
 		segs.back().t1 = t;
 	}
 	std::vector<Seg> merged;
@@ -553,17 +580,20 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	double ysum = 0;
 	std::vector<double> fsum(fs.termCount(), 0.0);
 	for (const auto& r : prep)
+	{
+		RowCursor cur(r);
 		for (std::size_t k = 0; k < r.s->size(); k++)
 		{
 			if (!r.ok[k]) continue;
-			rowSignals(r, fs, k, temp, rate, values);
+			rowSignals(cur, fs, k, temp, rate, values);
 			for (std::size_t s = 0; s < ns; s++)
 			{
 				lo[s] = std::min(lo[s], values[s]);
 				hi[s] = std::max(hi[s], values[s]);
 			}
-			ysum += r.y[k];
+			ysum += r.y(k);
 		}
+	}
 	const double y_ref = ysum / static_cast<double>(usable);
 	if (candidates_added)  // a physics candidate without variation (e.g. two identical readings) is left out
 	{
@@ -627,13 +657,16 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 
 	// Feature means (the accumulation reference: the sums then hold centred features).
 	for (const auto& r : prep)
+	{
+		RowCursor cur(r);
 		for (std::size_t k = 0; k < r.s->size(); k++)
 		{
 			if (!r.ok[k]) continue;
-			rowSignals(r, fs, k, temp, rate, values);
+			rowSignals(cur, fs, k, temp, rate, values);
 			fs.features(values.data(), f.data(), false);
 			for (std::size_t j = 0; j < f.size(); j++) fsum[j] += f[j];
 		}
+	}
 	std::vector<double> x_ref(fs.termCount());
 	for (std::size_t j = 0; j < x_ref.size(); j++) x_ref[j] = fsum[j] / static_cast<double>(usable);
 
@@ -670,13 +703,15 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	{
 		const auto& r = prep[ri];
 		const auto& t = r.s->time_s;
+		RowCursor cur(r);
 		for (std::size_t k = 0; k < r.s->size(); k++)
 		{
 			if (!r.ok[k]) continue;
-			rowSignals(r, fs, k, temp, rate, values);
+			rowSignals(cur, fs, k, temp, rate, values);
 			fs.features(values.data(), f.data(), false);
 			const std::size_t fold = foldOf(ri, k);
-			folds.held_out[fold].add(f.data(), r.y[k]);
+			const double y = r.y(k);
+			folds.held_out[fold].add(f.data(), y);
 			if (resample)
 			{
 				const double u = (t[k] - t.front()) / (t.back() - t.front() + 1e-300);
@@ -684,7 +719,7 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 									  std::min(kStabilityBlocks - 1, static_cast<std::size_t>(u * kStabilityBlocks));
 				auto it = units.find({fold, b});
 				if (it == units.end()) it = units.emplace(std::make_pair(fold, b), StreamingQr(fs.termCount(), y_ref, x_ref)).first;
-				it->second.add(f.data(), r.y[k]);
+				it->second.add(f.data(), y);
 			}
 		}
 	}
@@ -910,32 +945,42 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 
 	// In-sample figures: the calibration runs through the real-time compensator (only when the
 	// model can run in real time), else through the fitted feature set directly.
+	// Columns of exact size (memory: three columns of the runs, issue 14).
+	std::size_t total_samples = 0;
+	for (const auto& r : runs) total_samples += r.size();
 	{
 		std::vector<double> t, raw, comp;
+		t.reserve(total_samples);
+		raw.reserve(total_samples);
+		comp.reserve(total_samples);
 		double offset = 0;
 		for (std::size_t ri = 0; ri < runs.size(); ri++)
 		{
 			const auto& r = prep[ri];
 			const double t0 = r.s->time_s.front();
-			std::vector<double> bias(r.s->size(), std::numeric_limits<double>::quiet_NaN());
+			std::vector<double> bias;
 			if (opt.rate_estimator.kind == "causal")
-				bias = compensate(cal, *r.s).bias_dph;
+				bias = compensatedBias_dph(cal, *r.s);
 			else
+			{
+				bias.assign(r.s->size(), std::numeric_limits<double>::quiet_NaN());
+				RowCursor cur(r);
 				for (std::size_t k = 0; k < r.s->size(); k++)
 					if (r.ok[k])
 					{
-						rowSignals(r, fs, k, temp, rate, values);
+						rowSignals(cur, fs, k, temp, rate, values);
 						std::vector<double> mv(cal.model.features.signals().size());
 						for (std::size_t s = 0; s < mv.size(); s++)
 							for (std::size_t q = 0; q < ns; q++)
 								if (fs.signals()[q] == cal.model.features.signals()[s]) mv[s] = values[q];
 						bias[k] = cal.model.evaluate(mv.data(), cal.extrapolation);
 					}
+			}
 			for (std::size_t k = 0; k < r.s->size(); k++)
 			{
 				t.push_back(offset + r.s->time_s[k] - t0);
-				raw.push_back(r.y[k]);
-				comp.push_back(r.ok[k] ? r.y[k] - bias[k] : std::numeric_limits<double>::quiet_NaN());
+				raw.push_back(r.y(k));
+				comp.push_back(r.ok[k] ? r.y(k) - bias[k] : std::numeric_limits<double>::quiet_NaN());
 			}
 			offset = t.back() + opt.tau_s;  // runs concatenated with a one-window gap
 		}
@@ -955,25 +1000,29 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 			has[fo] = true;
 		}
 		std::vector<double> t, raw, comp;
+		t.reserve(total_samples);
+		raw.reserve(total_samples);
+		comp.reserve(total_samples);
 		double offset = 0;
 		for (std::size_t ri = 0; ri < prep.size(); ri++)
 		{
 			const auto& r = prep[ri];
 			const double t0 = r.s->time_s.front();
+			RowCursor cur(r);
 			for (std::size_t k = 0; k < r.s->size(); k++)
 			{
 				const std::size_t fo = foldOf(ri, k);
 				double c = std::numeric_limits<double>::quiet_NaN();
 				if (r.ok[k] && has[fo])
 				{
-					rowSignals(r, fs, k, temp, rate, values);
+					rowSignals(cur, fs, k, temp, rate, values);
 					fs.features(values.data(), f.data(), false);
 					double pred = 0;
 					for (std::size_t j = 0; j < cols.size(); j++) pred += coef[fo][static_cast<Eigen::Index>(j)] * f[cols[j]];
-					c = r.y[k] - pred;
+					c = r.y(k) - pred;
 				}
 				t.push_back(offset + r.s->time_s[k] - t0);
-				raw.push_back(r.y[k]);
+				raw.push_back(r.y(k));
 				comp.push_back(c);
 			}
 			offset = t.back() + opt.tau_s;
@@ -989,21 +1038,22 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 
 FitFigures evaluateCalibration(const Calibration& cal, const FogSeries& series, const std::string& label, double tau_s)
 {
-	const CompensatedSeries out = compensate(cal, series);
+	// The bias column alone, the compensated rate in its place (memory: two columns, issue 14).
+	CompensationCounters counters;
+	std::vector<double> comp = compensatedBias_dph(cal, series, &counters);
 	FitFigures f;
 	f.label = label;
-	std::vector<double> raw(out.raw_dph);
+	std::vector<double> raw(series.rate_dph[static_cast<int>(cal.axis)]);
 	if (!series.table_rate_dph.empty())
 		for (std::size_t k = 0; k < raw.size(); k++) raw[k] -= series.table_rate_dph[k];
-	std::vector<double> comp(raw.size());
 	for (std::size_t k = 0; k < raw.size(); k++)
-		comp[k] = (series.power.empty() || series.power[k] != 0.0) ? raw[k] - out.bias_dph[k]
+		comp[k] = (series.power.empty() || series.power[k] != 0.0) ? raw[k] - comp[k]
 																	: std::numeric_limits<double>::quiet_NaN();
-	statsInto(f, out.time_s, raw, comp, tau_s);
-	f.temp_outside_samples = out.counters.temp_outside_samples;
-	f.rate_outside_samples = out.counters.rate_outside_samples;
-	f.max_temp_excursion_C = out.counters.max_temp_excursion_C;
-	f.max_rate_excursion_C_per_s = out.counters.max_rate_excursion_C_per_s;
+	statsInto(f, series.time_s, raw, comp, tau_s);
+	f.temp_outside_samples = counters.temp_outside_samples;
+	f.rate_outside_samples = counters.rate_outside_samples;
+	f.max_temp_excursion_C = counters.max_temp_excursion_C;
+	f.max_rate_excursion_C_per_s = counters.max_rate_excursion_C_per_s;
 	return f;
 }
 

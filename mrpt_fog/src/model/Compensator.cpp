@@ -422,7 +422,12 @@ Compensator::Output Compensator::stepFixed(double time_s, double raw_dph, const 
 	return stepBody<NC, 2>(time_s, raw_dph, temp_C);
 }
 
-CompensatedSeries compensate(const Calibration& cal, const FogSeries& series)
+namespace
+{
+/** compensate()'s loop: the series through a Compensator in chunks of rows; sink(k0, m, res)
+ * receives the outputs of rows k0..k0+m-1. Returns the counters. */
+template <class Sink>
+CompensationCounters compensateChunks(const Calibration& cal, const FogSeries& series, Sink&& sink)
 {
 	series.validate();
 	const int axis = static_cast<int>(cal.axis);
@@ -430,7 +435,6 @@ CompensatedSeries compensate(const Calibration& cal, const FogSeries& series)
 		throw std::invalid_argument(std::string("the log has no ") + axisLetter(cal.axis) +
 									" axis, which the calibration is for");
 	Compensator comp(cal, series.thermistors);
-	CompensatedSeries out;
 	const std::size_t n = series.size();
 	// Turn-ons (only the warm-up term needs them): before the log, and 0 -> 1 power steps.
 	std::vector<std::size_t> turn_on;  // sample indices, ascending
@@ -448,11 +452,6 @@ CompensatedSeries compensate(const Calibration& cal, const FogSeries& series)
 		turn_on = series.turnOnSamples();
 	}
 	std::size_t next_on = 0;
-	out.time_s = series.time_s;
-	out.raw_dph = series.rate_dph[axis];
-	out.bias_dph.resize(n);
-	out.compensated_dph.resize(n);
-	out.flags.resize(n);
 	// The batch form of step() over chunks of rows (the series stores columns).
 	const std::size_t nt = series.thermistorCount(), stride = std::max<std::size_t>(nt, 1), chunk = 4096;
 	std::vector<double> rows(chunk * stride);
@@ -464,16 +463,42 @@ CompensatedSeries compensate(const Calibration& cal, const FogSeries& series)
 		if (next_on < turn_on.size()) m = std::min(m, turn_on[next_on] - k0);  // stop at the next turn-on
 		for (std::size_t j = 0; j < m; j++)
 			for (std::size_t i = 0; i < nt; i++) rows[j * stride + i] = series.temp_C[i][k0 + j];
-		comp.stepBatch(m, series.time_s.data() + k0, out.raw_dph.data() + k0, rows.data(), stride, res.data());
+		comp.stepBatch(m, series.time_s.data() + k0, series.rate_dph[axis].data() + k0, rows.data(), stride, res.data());
+		sink(k0, m, res.data());
+	}
+	return comp.counters();
+}
+}  // namespace
+
+CompensatedSeries compensate(const Calibration& cal, const FogSeries& series)
+{
+	CompensatedSeries out;
+	const std::size_t n = series.size();
+	out.bias_dph.resize(n);
+	out.compensated_dph.resize(n);
+	out.flags.resize(n);
+	out.counters = compensateChunks(cal, series, [&](std::size_t k0, std::size_t m, const Compensator::Output* res) {
 		for (std::size_t j = 0; j < m; j++)
 		{
 			out.bias_dph[k0 + j] = res[j].bias_dph;
 			out.compensated_dph[k0 + j] = res[j].compensated_dph;
 			out.flags[k0 + j] = res[j].flags;
 		}
-	}
-	out.counters = comp.counters();
+	});
+	out.time_s = series.time_s;
+	out.raw_dph = series.rate_dph[static_cast<int>(cal.axis)];
 	return out;
+}
+
+std::vector<double> compensatedBias_dph(const Calibration& cal, const FogSeries& series, CompensationCounters* counters)
+{
+	std::vector<double> bias(series.size());
+	const CompensationCounters c =
+		compensateChunks(cal, series, [&](std::size_t k0, std::size_t m, const Compensator::Output* res) {
+			for (std::size_t j = 0; j < m; j++) bias[k0 + j] = res[j].bias_dph;
+		});
+	if (counters) *counters = c;
+	return bias;
 }
 
 }  // namespace mrpt_fog

@@ -182,4 +182,9 @@ struct CompensatedSeries
  * step of its power column. */
 CompensatedSeries compensate(const Calibration& cal, const FogSeries& series);
 
+/** The bias column of compensate() alone (the same numbers; memory: one column, for the
+ * programs that only need the estimated bias), with the counters through `counters`. */
+std::vector<double> compensatedBias_dph(const Calibration& cal, const FogSeries& series,
+										CompensationCounters* counters = nullptr);
+
 }  // namespace mrpt_fog
