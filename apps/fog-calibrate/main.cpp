@@ -275,6 +275,7 @@ int main(int argc, char** argv)
 		const bool screen = !arg_no_screen.getValue();
 		std::string screening_text;
 		const auto screened = [&](FogSeries s, const std::string& path) {
+			std::vector<double>().swap(s.field_uT);  // the fit does not read the magnetic field (memory)
 			const ThermistorScreening sc = app::screenInPlace(s, screen);
 			if (!screen || sc.rejected_readings > 0) screening_text += "  " + path + ":\n" + app::screeningText(sc, screen);
 			return s;
@@ -297,6 +298,13 @@ int main(int argc, char** argv)
 										 "there (give --scale-factor off to fit the bias alone anyway)");
 			}
 		}
+		// What the summary needs from the runs, then the runs are freed before the warm-up and
+		// validation runs are read (memory: one log at a time, issue 14).
+		const std::size_t run_count = runs.size();
+		const bool table_rates = hasTableRates(runs);
+		const std::string why_empty =
+			cal.model.features.thermistors().empty() ? whyNoThermalTerm(runs, cal.model) : std::string();
+		std::vector<FogSeries>().swap(runs);
 		if (!arg_warm.getValue().empty())
 		{
 			std::vector<FogSeries> warm;
@@ -320,7 +328,7 @@ int main(int argc, char** argv)
 			cal.validation.label = "validation run (none given)";
 		if (cal.model.features.thermistors().empty())
 		{
-			const std::string why = whyNoThermalTerm(runs, cal.model);
+			const std::string& why = why_empty;
 			if (!arg_allow_empty.getValue())
 				throw std::runtime_error("the fitted model has no thermal term (a constant bias only): " + why +
 										 "; nothing written (--allow-empty-model writes it anyway)");
@@ -335,7 +343,7 @@ int main(int argc, char** argv)
 		saveCalibrationYaml(cal, arg_out.getValue());
 
 		const auto& m = cal.model;
-		std::printf("fog-calibrate: %zu run(s), preset %s, selection %s, rates %s\n", runs.size(), cal.preset.c_str(),
+		std::printf("fog-calibrate: %zu run(s), preset %s, selection %s, rates %s\n", run_count, cal.preset.c_str(),
 					cal.selection.c_str(), cal.rate_estimator.describe().c_str());
 		std::printf("  model: %zu terms (%zu thermistors), ridge %g, condition number %.3g, rank %zu, %zu samples\n",
 					m.features.termCount(), m.features.thermistors().size(), m.ridge, m.condition_number,
@@ -396,7 +404,7 @@ int main(int argc, char** argv)
 						w.amplitude_dph, w.amplitude_std_dph, w.tau_s, w.tau_std_s, w.turn_ons, w.fitted_span_s,
 						w.rms_before_dph, w.rms_after_dph);
 		}
-		if (!cal.scale_factor && hasTableRates(runs))
+		if (!cal.scale_factor && table_rates)
 			std::printf("  scale factor: not fitted (--scale-factor off): table samples used as bias samples\n");
 		std::fputs(screening_text.c_str(), stdout);
 		std::printf("  wrote %s\n", arg_out.getValue().c_str());

@@ -27,15 +27,15 @@ CompensationResult compensateWithCalibration(const std::string& cal_path, const 
 	r.extrapolation = cal.extrapolation;
 	try
 	{
-		r.series = compensate(cal, series);
+		r.compensated_dph = compensatedRate_dph(cal, series, &r.counters);
 	}
 	catch (const std::exception& e)
 	{
 		throw std::invalid_argument(cal_path + ": cannot compensate this log: " + e.what());
 	}
-	if (r.series.compensated_dph.size() != series.size())
+	if (r.compensated_dph.size() != series.size())
 		throw std::runtime_error(cal_path + ": the compensator returned " +
-								 std::to_string(r.series.compensated_dph.size()) + " samples for " +
+								 std::to_string(r.compensated_dph.size()) + " samples for " +
 								 std::to_string(series.size()));
 	for (const auto& run : cal.runs)
 		if (run == log_path || sameFile(run, log_path)) r.in_sample = true;

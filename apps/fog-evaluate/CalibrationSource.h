@@ -10,7 +10,10 @@ namespace mrpt_fog::evaluate
 {
 struct CompensationResult
 {
-	CompensatedSeries series;  //!< raw_dph is the calibrated axis
+	/** Compensated rate of the calibrated axis [deg/h] (the raw rate is the series' column of
+	 * that axis); one column, not compensate()'s five (memory, issue 14). */
+	std::vector<double> compensated_dph;
+	CompensationCounters counters;
 	GyroAxis axis = GyroAxis::Z;  //!< the calibrated axis
 	/** The evaluated log is one of the calibration's runs: the figures are in-sample. */
 	bool in_sample = false;

@@ -83,16 +83,66 @@ PlotSeries gapBroken(const std::string& label, const std::vector<double>& time_s
 	ps.label = label;
 	ps.colour = colour;
 	const double dt = medianSampleInterval_s(time_s);
-	for (std::size_t k = 0; k < time_s.size(); k++)
+	const std::size_t n = time_s.size();
+	// A long log is thinned to the lowest and highest sample of each of kBuckets time buckets:
+	// the envelope that a line through every sample draws at this width, in bounded memory
+	// (issue 14: 4 thermistors x 2.4 M samples took 300 MB here).
+	constexpr std::size_t kBuckets = 4096;
+	if (n <= 4 * kBuckets)
 	{
-		if (k > 0 && time_s[k] - time_s[k - 1] > 5 * dt)
+		for (std::size_t k = 0; k < n; k++)
+		{
+			if (k > 0 && time_s[k] - time_s[k - 1] > 5 * dt)
+			{
+				ps.x.push_back(NAN);
+				ps.y.push_back(NAN);
+			}
+			ps.x.push_back(time_s[k] * scale);
+			ps.y.push_back(y[k]);
+		}
+		return ps;
+	}
+	const double t0 = time_s.front(), span = time_s.back() - t0;
+	const auto bucketOf = [&](std::size_t k) {
+		return std::min(kBuckets - 1, static_cast<std::size_t>((time_s[k] - t0) / span * static_cast<double>(kBuckets)));
+	};
+	const auto flush = [&](std::size_t a, std::size_t b) {  // samples [a, b)
+		std::size_t lo = b, hi = b;
+		for (std::size_t k = a; k < b; k++)
+			if (std::isfinite(y[k]))
+			{
+				if (lo == b || y[k] < y[lo]) lo = k;
+				if (hi == b || y[k] > y[hi]) hi = k;
+			}
+		if (lo == b)  // no reading in the bucket: the line breaks
+		{
+			ps.x.push_back(NAN);
+			ps.y.push_back(NAN);
+			return;
+		}
+		for (std::size_t k : {std::min(lo, hi), std::max(lo, hi)})
+		{
+			ps.x.push_back(time_s[k] * scale);
+			ps.y.push_back(y[k]);
+			if (lo == hi) break;
+		}
+	};
+	std::size_t start = 0;
+	for (std::size_t k = 1; k < n; k++)
+	{
+		const bool gap = time_s[k] - time_s[k - 1] > 5 * dt;
+		if (gap || bucketOf(k) != bucketOf(start))
+		{
+			flush(start, k);
+			start = k;
+		}
+		if (gap)
 		{
 			ps.x.push_back(NAN);
 			ps.y.push_back(NAN);
 		}
-		ps.x.push_back(time_s[k] * scale);
-		ps.y.push_back(y[k]);
 	}
+	flush(start, n);
 	return ps;
 }
 

@@ -5,9 +5,9 @@
 
 namespace mrpt_fog::evaluate
 {
-std::vector<double> biasOf(const FogSeries& series, const std::vector<double>& rate_dph)
+std::vector<double> biasOf(const FogSeries& series, std::vector<double> rate_dph)
 {
-	std::vector<double> bias(rate_dph);
+	std::vector<double> bias(std::move(rate_dph));
 	for (std::size_t k = 0; k < bias.size(); k++)
 	{
 		if (!series.table_rate_dph.empty()) bias[k] -= series.table_rate_dph[k];

@@ -28,7 +28,7 @@ struct RateEvaluation
 
 /** The gyro bias of a series: primary-axis rate minus the applied table rate (when the log has
  * that column), NaN while the gyro is powered off (power column 0). [deg/h] */
-std::vector<double> biasOf(const FogSeries& series, const std::vector<double>& rate_dph);
+std::vector<double> biasOf(const FogSeries& series, std::vector<double> rate_dph);
 
 /** Figures of one record. Throws std::invalid_argument (from biasStats) when tau_s does not fit
  * the record twice; the Allan part is left empty (terms NaN) for records too short for it. */

@@ -91,27 +91,29 @@ int main(int argc, char** argv)
 		}
 		if (series.size() < 2) throw std::invalid_argument(path + ": fewer than 2 samples");
 
-		// With --cal the compensator works on the calibrated axis (CompensatedSeries::raw_dph), and
-		// the raw figures are of that same axis; without it, of the log's primary axis.
+		// With --cal the compensator works on the calibrated axis, and the raw figures are of that
+		// same axis; without it, of the log's primary axis.
 		std::unique_ptr<CompensationResult> comp_series;
 		if (!cal.getValue().empty())
 			comp_series =
 				std::make_unique<CompensationResult>(compensateWithCalibration(cal.getValue(), path, series));
-		const std::vector<double>& raw_rate = comp_series ? comp_series->series.raw_dph : series.primaryRate_dph();
+		const std::vector<double>& raw_rate =
+			comp_series ? series.rate_dph[static_cast<int>(comp_series->axis)] : series.primaryRate_dph();
 		const char axis = axisLetter(comp_series ? comp_series->axis : series.primaryAxis());
-
-		const std::vector<double> raw_bias = biasOf(series, raw_rate);
-		RateEvaluation raw;
 		std::vector<double> comp_bias;
+		if (comp_series) comp_bias = biasOf(series, std::move(comp_series->compensated_dph));
+		const std::vector<double> raw_bias = biasOf(series, raw_rate);
+		// Memory (issue 14): the magnetic field and the temperatures were the compensator's input;
+		// nothing reads the field again, nor the temperatures without plots.
+		std::vector<double>().swap(series.field_uT);
+		if (plots.getValue().empty())
+			for (auto& c : series.temp_C) std::vector<double>().swap(c);
+		RateEvaluation raw;
 		std::unique_ptr<RateEvaluation> comp;
 		try
 		{
 			raw = evaluateRate(series.time_s, raw_bias, tau_s);
-			if (comp_series)
-			{
-				comp_bias = biasOf(series, comp_series->series.compensated_dph);
-				comp = std::make_unique<RateEvaluation>(evaluateRate(series.time_s, comp_bias, tau_s));
-			}
+			if (comp_series) comp = std::make_unique<RateEvaluation>(evaluateRate(series.time_s, comp_bias, tau_s));
 		}
 		catch (const std::invalid_argument& e)
 		{
@@ -138,7 +140,7 @@ int main(int argc, char** argv)
 				 comp ? comp->terms.quantization_arcsec : 0);
 		if (comp_series)
 		{
-			const auto& k = comp_series->series.counters;
+			const auto& k = comp_series->counters;
 			std::printf("  compensator: %zu fallback, %zu no-model, %zu clamped, %zu rate-warm-up samples\n",
 						k.fallback_samples, k.no_model_samples, k.clamped_samples, k.warmup_samples);
 			if (comp_series->in_sample)
@@ -178,7 +180,7 @@ int main(int argc, char** argv)
 			{
 				j["calibration"] = cal.getValue();
 				j["compensated"] = toJson(*comp);
-				const auto& k = comp_series->series.counters;
+				const auto& k = comp_series->counters;
 				j["compensated"]["in_sample"] = comp_series->in_sample;
 				j["compensated"]["fallback_samples"] = k.fallback_samples;
 				j["compensated"]["no_model_samples"] = k.no_model_samples;

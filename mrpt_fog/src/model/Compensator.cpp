@@ -501,4 +501,15 @@ std::vector<double> compensatedBias_dph(const Calibration& cal, const FogSeries&
 	return bias;
 }
 
+std::vector<double> compensatedRate_dph(const Calibration& cal, const FogSeries& series, CompensationCounters* counters)
+{
+	std::vector<double> rate(series.size());
+	const CompensationCounters c =
+		compensateChunks(cal, series, [&](std::size_t k0, std::size_t m, const Compensator::Output* res) {
+			for (std::size_t j = 0; j < m; j++) rate[k0 + j] = res[j].compensated_dph;
+		});
+	if (counters) *counters = c;
+	return rate;
+}
+
 }  // namespace mrpt_fog

@@ -187,4 +187,8 @@ CompensatedSeries compensate(const Calibration& cal, const FogSeries& series);
 std::vector<double> compensatedBias_dph(const Calibration& cal, const FogSeries& series,
 										CompensationCounters* counters = nullptr);
 
+/** The compensated-rate column of compensate() alone (the same numbers), with the counters. */
+std::vector<double> compensatedRate_dph(const Calibration& cal, const FogSeries& series,
+										CompensationCounters* counters = nullptr);
+
 }  // namespace mrpt_fog
