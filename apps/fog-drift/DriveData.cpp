@@ -5,6 +5,7 @@
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CObservationRobotPose.h>
 #include <mrpt_fog/io/FogLogIO.h>
+#include <mrpt_fog/io/FogLogReader.h>
 #include <mrpt_fog/obs/CObservationFOG.h>
 #include <mrpt_fog/obs/FogSeriesConversion.h>
 #include <mrpt_fog_nav/Rotation.h>
@@ -42,27 +43,63 @@ std::optional<double> latitudeFrom(const FogSeries& s)
 	}
 	return std::nullopt;
 }
+
+/** seriesFromObservations() one observation at a time (the same series and layout error), so
+ * that a drive's observations need not be kept as MRPT objects (~2 KB each, issue 14). */
+class SeriesBuilder
+{
+   public:
+	void add(const CObservationFOG& o)
+	{
+		if (n_ == 0)
+		{
+			s_.sensor_label = o.sensorLabel;
+			s_.thermistors = o.thermistors;
+			s_.has_axis = o.hasAxis;
+			s_.epoch_s = std::floor(mrpt::Clock::toDouble(o.timestamp));
+			s_.temp_C.assign(s_.thermistors.size(), {});
+			table_ = o.hasTableRate;
+			field_ = o.hasField;
+			power_ = o.hasPower;
+		}
+		else if (o.thermistors != s_.thermistors || o.hasAxis != s_.has_axis || o.hasTableRate != table_ ||
+				 o.hasField != field_ || o.hasPower != power_)
+			throw std::invalid_argument("FOG observation " + std::to_string(n_) + " (sensor '" + o.sensorLabel +
+										"') has a different layout than the first one");
+		s_.time_s.push_back(mrpt::Clock::toDouble(o.timestamp) - s_.epoch_s);
+		for (int a = 0; a < 3; a++)
+			if (s_.has_axis[a]) s_.rate_dph[a].push_back(o.rate_dph[a]);
+		for (std::size_t i = 0; i < s_.thermistors.size(); i++) s_.temp_C[i].push_back(o.temperature_C(i));
+		if (table_) s_.table_rate_dph.push_back(o.tableRate_dph);
+		if (field_) s_.field_uT.push_back(o.field_uT);
+		if (power_) s_.power.push_back(o.powerOn ? 1.0 : 0.0);
+		n_++;
+	}
+	bool empty() const { return n_ == 0; }
+	FogSeries take() { return std::move(s_); }
+
+   private:
+	FogSeries s_;
+	std::size_t n_ = 0;
+	bool table_ = false, field_ = false, power_ = false;
+};
 }  // namespace
 
 DriveData readDrive(const std::string& path, const DriveLabels& labels)
 {
-	FogRawlogContents c = readFogRawlog(path, labels.fog);
+	// Read as readFogRawlog() reads, but the other observations are taken in as they come: the
+	// odometry and the truth as poses, the ideal FOG as a series.
 	DriveData d;
-	d.fog = std::move(c.fog);
-	if (d.fog.size() < 2) throw std::runtime_error(path + ": FOG '" + labels.fog + "' has fewer than 2 samples");
-	d.latitude_deg = latitudeFrom(d.fog);
-
-	std::vector<CObservationFOG::Ptr> ideal;
-	for (const auto& o : c.others)
-	{
+	SeriesBuilder ideal;
+	const auto take = [&](const mrpt::obs::CObservation::Ptr& o) {
 		if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o); f && o->sensorLabel == labels.fog_ideal)
-			ideal.push_back(f);
+			ideal.add(*f);
 		else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(o);
 				 odo && o->sensorLabel == labels.odometry)
 		{
 			const double t = mrpt::Clock::toDouble(o->timestamp);
 			if (!d.odometry.t_s.empty() && !(t > d.odometry.t_s.back()))
-				continue;  // a repeated timestamp carries no motion; an earlier one is skipped
+				return;  // a repeated timestamp carries no motion; an earlier one is skipped
 			d.odometry.t_s.push_back(t);
 			d.odometry.x_m.push_back(odo->odometry.x());
 			d.odometry.y_m.push_back(odo->odometry.y());
@@ -73,7 +110,7 @@ DriveData readDrive(const std::string& path, const DriveLabels& labels)
 		{
 			nav::TrajectoryPoint p;
 			p.t_s = mrpt::Clock::toDouble(o->timestamp);
-			if (!d.truth.empty() && !(p.t_s > d.truth.back().t_s)) continue;
+			if (!d.truth.empty() && !(p.t_s > d.truth.back().t_s)) return;
 			const mrpt::poses::CPose3D& m = gt->pose.mean;
 			p.x_m = m.x();
 			p.y_m = m.y();
@@ -82,8 +119,22 @@ DriveData readDrive(const std::string& path, const DriveLabels& labels)
 			p.q_nb = nav::quatFromYawPitchRoll(m.yaw(), m.pitch(), m.roll());
 			d.truth.push_back(p);
 		}
+	};
+	{
+		FogLogReader reader(path, labels.fog, ReadLimits{}, take);
+		d.fog = readAllSamples(reader);
 	}
-	if (!ideal.empty()) d.fog_ideal = seriesFromObservations(ideal);
+	try
+	{
+		d.fog.validate();
+	}
+	catch (const std::exception& e)
+	{
+		throw FogIoError(path + ": sensor '" + d.fog.sensor_label + "': " + e.what());
+	}
+	if (d.fog.size() < 2) throw std::runtime_error(path + ": FOG '" + labels.fog + "' has fewer than 2 samples");
+	d.latitude_deg = latitudeFrom(d.fog);
+	if (!ideal.empty()) d.fog_ideal = ideal.take();
 	if (d.odometry.t_s.size() < 2)
 		throw std::runtime_error(path + ": fewer than 2 CObservationOdometry with label '" + labels.odometry + "'");
 	if (d.truth.size() < 2)
