@@ -18,26 +18,27 @@ std::vector<double> compensatedRate_dph(const FogSeries& fog, const Calibration&
 	if (cal.axis != GyroAxis::Z)
 		throw std::runtime_error(cal_path + ": calibration is for axis " + std::string(1, axisLetter(cal.axis)) +
 								 "; fog-drift compensates the vertical (z) gyro");
-	CompensatedSeries out;
+	// The compensated column alone (compensate() returns five: memory, issue 14).
+	std::vector<double> rate;
+	CompensationCounters c;
 	ThermistorScreening screening;
 	try
 	{
-		out = compensate(cal, app::screenedForCompensation(fog, screen_thermistors, screening));
+		rate = mrpt_fog::compensatedRate_dph(cal, app::screenedForCompensation(fog, screen_thermistors, screening), &c);
 	}
 	catch (const std::exception& e)
 	{
 		throw std::runtime_error(cal_path + ": cannot compensate the drive's FOG: " + e.what());
 	}
-	if (out.compensated_dph.size() != fog.size())
+	if (rate.size() != fog.size())
 		throw std::runtime_error(cal_path + ": the compensator returned a different number of samples");
 	if (!screen_thermistors || screening.rejected_readings) std::fputs(app::screeningText(screening, screen_thermistors).c_str(), stdout);
-	const auto& c = out.counters;
 	if (c.fallback_samples || c.no_model_samples || c.clamped_samples)
 		std::printf("  compensation: %zu samples, %zu on a fallback model, %zu without model, %zu clamped to the "
 					"calibrated range\n",
 					c.samples, c.fallback_samples, c.no_model_samples, c.clamped_samples);
 	std::fputs(app::outOfRangeWarning(c, cal.extrapolation).c_str(), stdout);
-	return out.compensated_dph;
+	return rate;
 }
 
 std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string& cal_path, bool screen_thermistors)
