@@ -6,12 +6,22 @@
  *
  *   bench_generalization [--seeds tuning|heldout|all] [--sector-coil N] [--rate-cap HZ] [--cases]
  *                        [--extrapolation clamp|linear|polynomial] [--preset TEXT] [--extra PRESET]...
+ *                        [--effects SEL] [--ideal-thermistors] [--oracle] [--rate-window S]
  *
  * Seeds 1..16 are the tuning devices, 17..24 were kept out of every tuning decision.
  * --sector-coil N adds sector-coil devices 1..N (the independent generator). --cases prints every
  * device x profile x preset line; --extrapolation overrides every preset's policy; --preset
  * keeps the presets whose label contains TEXT; --extra adds a fixed preset
- * (selection none), e.g. --extra M2@5/1. Not a Google Benchmark: a figure-of-merit table. */
+ * (selection none), e.g. --extra M2@5/1. Not a Google Benchmark: a figure-of-merit table.
+ *
+ * Diagnostics (what the held-out error above the noise floor is made of; fog-sim devices):
+ * --effects SEL simulates calibration and evaluation runs with the effects selected as fog-sim
+ * does (comma-separated, e.g. -hysteresis,-warmup); --ideal-thermistors removes the thermistors'
+ * reading noise and quantisation; --oracle adds, for every preset, the same preset fitted on each
+ * evaluation run itself (in-sample: what that model can do at best on that profile);
+ * --rate-window S sets every preset's causal rate window [s] (default 60); --savgol uses the
+ * non-causal, delay-free Savitzky-Golay rate estimator instead (evaluated offline: no
+ * compensator can run it), to measure what the causal estimator's delay costs. */
 #include "DeviceEnsemble.h"
 #include "GeneralizationBench.h"
 
@@ -28,6 +38,10 @@ int main(int argc, char** argv)
 	bool cases = false;
 	std::string policy, only;
 	std::vector<std::string> extra;
+	mrpt_fog::sim::EffectSet effects = mrpt_fog::sim::defaultEffects();
+	bool ideal = false, oracle = false;
+	double rate_window_s = 0;
+	bool savgol = false, causal2 = false;
 	for (int i = 1; i < argc; i++)
 	{
 		const std::string a = argv[i];
@@ -38,6 +52,28 @@ int main(int argc, char** argv)
 		else if (a == "--extrapolation" && i + 1 < argc) policy = argv[++i];
 		else if (a == "--preset" && i + 1 < argc) only = argv[++i];
 		else if (a == "--extra" && i + 1 < argc) extra.push_back(argv[++i]);
+		else if (a == "--effects" && i + 1 < argc)
+		{
+			std::vector<std::string> sel;
+			std::string item;
+			for (const char* p = argv[++i];; p++)
+			{
+				if (*p == ',' || *p == 0)
+				{
+					if (!item.empty()) sel.push_back(item);
+					item.clear();
+					if (*p == 0) break;
+				}
+				else
+					item += *p;
+			}
+			effects = mrpt_fog::sim::effectsFromSelection(sel);
+		}
+		else if (a == "--ideal-thermistors") ideal = true;
+		else if (a == "--oracle") oracle = true;
+		else if (a == "--rate-window" && i + 1 < argc) rate_window_s = std::atof(argv[++i]);
+		else if (a == "--savgol") savgol = true;
+		else if (a == "--causal2") causal2 = true;
 		else
 		{
 			std::fprintf(stderr, "bench_generalization: unknown argument '%s' (see the file comment)\n", a.c_str());
@@ -54,7 +90,7 @@ int main(int argc, char** argv)
 		std::fprintf(stderr, "bench_generalization: --seeds must be tuning, heldout or all\n");
 		return 2;
 	}
-	for (auto s : seeds) list.push_back({fogtest::Generator::FogSim, s, cap});
+	for (auto s : seeds) list.push_back({fogtest::Generator::FogSim, s, cap, effects, ideal});
 	for (int s = 1; s <= sector_coil; s++) list.push_back({fogtest::Generator::SectorCoil, static_cast<std::uint64_t>(s), cap});
 	auto presets = fogtest::benchPresets();
 	for (const auto& e : extra)
@@ -71,6 +107,23 @@ int main(int argc, char** argv)
 		for (const auto& p : presets)
 			if (p.label.find(only) != std::string::npos) keep.push_back(p);
 		presets = keep;
+	}
+	if (rate_window_s > 0)
+		for (auto& p : presets) p.options.rate_estimator.window_s = rate_window_s;
+	if (savgol)
+		for (auto& p : presets) p.options.rate_estimator.kind = "savgol";
+	if (causal2)
+		for (auto& p : presets) p.options.rate_estimator.poly_order = 2;
+	if (oracle)
+	{
+		const std::size_t n = presets.size();
+		for (std::size_t i = 0; i < n; i++)
+		{
+			fogtest::BenchPreset o = presets[i];
+			o.label = "oracle " + o.label;
+			o.fit_on_evaluation = true;
+			presets.push_back(o);
+		}
 	}
 	const auto profiles = fogtest::evaluationProfiles();
 	std::vector<fogtest::CaseResult> all;

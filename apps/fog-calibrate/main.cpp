@@ -225,6 +225,10 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<std::string> arg_est("", "estimator", "Rate estimator: causal (default) or savgol", false, "causal", "KIND", cmd);
 		TCLAP::ValueArg<double> arg_window("", "window", "Rate window [s]", false, 60.0, "S", cmd);
 		TCLAP::ValueArg<int> arg_order("", "savgol-order", "Savitzky-Golay polynomial order (1..4)", false, 2, "N", cmd);
+		TCLAP::ValueArg<int> arg_corder("", "causal-order",
+										"Causal estimator: 2 (default) extrapolates the window's slope to the newest sample "
+										"(no delay); 1 is the plain slope, about window/2 late (the method before issue 11)",
+										false, 2, "1|2", cmd);
 		TCLAP::ValueArg<unsigned> arg_folds("", "folds", "Cross-validation folds for a single run", false, 5, "K", cmd);
 		TCLAP::ValueArg<double> arg_tau("", "tau", "Averaging time of the stability figures [s]", false, 100.0, "S", cmd);
 		TCLAP::SwitchArg arg_nofb("", "no-fallbacks", "Do not fit per-thermistor fallback models", cmd);
@@ -260,7 +264,7 @@ int main(int argc, char** argv)
 		opt.ridge = arg_ridge.getValue();
 		opt.rate_estimator.kind = arg_est.getValue();
 		opt.rate_estimator.window_s = arg_window.getValue();
-		opt.rate_estimator.poly_order = opt.rate_estimator.kind == "savgol" ? arg_order.getValue() : 1;
+		opt.rate_estimator.poly_order = opt.rate_estimator.kind == "savgol" ? arg_order.getValue() : arg_corder.getValue();
 		opt.folds = arg_folds.getValue();
 		opt.tau_s = arg_tau.getValue();
 		opt.fallbacks = !arg_nofb.getValue();

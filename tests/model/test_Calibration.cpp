@@ -18,11 +18,12 @@ namespace
 double truthT(double T) { const double d = T - 10; return 0.5 + 4e-3 * d + 3e-5 * d * d - 2e-7 * d * d * d + 1e-9 * d * d * d * d; }
 double truthR(double r) { return 30 * r + 2000 * r * r - 5e4 * r * r * r; }
 
-/** Run A's Ti1 temperatures with a bias that is a KNOWN function of Ti1 and its causal rate. */
+/** Run A's Ti1 temperatures with a bias that is a KNOWN function of Ti1 and its rate from the
+ * fit's default (causal) estimator. */
 FogSeries knownRun(double noise_dph, unsigned seed)
 {
 	FogSeries s = fogtest::makeCoilRun("A", seed, 0.0);
-	const auto rate = CausalRateEstimator(60.0).estimate(s.time_s, s.temp_C[0]);
+	const auto rate = makeRateEstimator(FitOptions{}.rate_estimator)->estimate(s.time_s, s.temp_C[0]);
 	std::mt19937 rng(seed);
 	std::normal_distribution<double> nd(0, noise_dph);
 	for (std::size_t k = 0; k < s.size(); k++)

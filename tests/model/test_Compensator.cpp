@@ -140,7 +140,7 @@ TEST(Compensator, OutOfRangeTemperaturesAreClampedAndCounted)
 	{
 		const int col = hot.thermistorIndex(n);
 		temp.push_back(hot.temp_C[col][k]);
-		rate.push_back(CausalRateEstimator(calA().rate_estimator.window_s).estimate(hot.time_s, hot.temp_C[col])[k]);
+		rate.push_back(makeRateEstimator(calA().rate_estimator)->estimate(hot.time_s, hot.temp_C[col])[k]);
 	}
 	m.features.signalValues(temp.data(), rate.data(), v.data());
 	int clamped = 0;
@@ -176,7 +176,7 @@ TEST(Compensator, OutOfRangeTemperaturesLinearPolicyContinuesTheEdgeTangent)
 	{
 		const int col = hot.thermistorIndex(n);
 		temp.push_back(hot.temp_C[col][k]);
-		rate.push_back(CausalRateEstimator(cal.rate_estimator.window_s).estimate(hot.time_s, hot.temp_C[col])[k]);
+		rate.push_back(makeRateEstimator(cal.rate_estimator)->estimate(hot.time_s, hot.temp_C[col])[k]);
 	}
 	m.features.signalValues(temp.data(), rate.data(), v.data());
 	double expected = m.evaluate(v.data(), true);  // every signal clamped
@@ -353,7 +353,7 @@ TEST(Compensator, HostileLogMatchesIndependentReference)
 		const CompensatedSeries c = compensate(*cal, s);
 		std::vector<std::vector<double>> rate(s.thermistorCount());
 		for (std::size_t i = 0; i < rate.size(); i++)
-			rate[i] = CausalRateEstimator(cal->rate_estimator.window_s).estimate(s.time_s, s.temp_C[i]);
+			rate[i] = makeRateEstimator(cal->rate_estimator)->estimate(s.time_s, s.temp_C[i]);
 		std::size_t clamped_signals = 0, fallback = 0, none = 0;
 		for (std::size_t k = 0; k < s.size(); k++)
 		{

@@ -125,6 +125,21 @@ Eigen::VectorXd shiftedCoef(const StreamingQr& acc, const std::vector<int>& cols
 }
 }  // namespace
 
+Eigen::VectorXd shiftedFullCoefficients(const StreamingQr& acc, const std::vector<int>& cols, const Eigen::VectorXd& coef)
+{
+	if (static_cast<std::size_t>(coef.size()) != cols.size())
+		throw std::invalid_argument("shiftedFullCoefficients: coefficient count differs from the column count");
+	const Eigen::VectorXd b = shiftedCoef(acc, cols, coef);
+	Eigen::VectorXd full = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(acc.terms()));
+	for (std::size_t i = 0; i < cols.size(); i++)
+	{
+		if (cols[i] < 0 || static_cast<std::size_t>(cols[i]) >= acc.terms())
+			throw std::invalid_argument("shiftedFullCoefficients: column " + std::to_string(cols[i]) + " out of range");
+		full[cols[i]] = b[static_cast<Eigen::Index>(i)];
+	}
+	return full;
+}
+
 double residualSumOfSquares(StreamingQr& acc, const std::vector<int>& cols, const Eigen::VectorXd& coef)
 {
 	if (static_cast<std::size_t>(coef.size()) != cols.size())

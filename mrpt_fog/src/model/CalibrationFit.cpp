@@ -126,7 +126,12 @@ class RowCursor
 {
    public:
 	explicit RowCursor(const PreparedRun& r)
-		: r_(r), causal_(r.est.kind == "causal"), tracker_(r.col.size(), r.est.window_s), x_(r.col.size())
+		: r_(r),
+		  causal_(r.est.kind == "causal"),
+		  order2_(causal_ && r.est.poly_order == 2),
+		  tracker_(r.col.size(), r.est.window_s),
+		  half_(r.col.size(), 0.5 * r.est.window_s),
+		  x_(r.col.size())
 	{
 	}
 	/** Temperatures and rates of sample k (k >= the previous k). */
@@ -139,8 +144,11 @@ class RowCursor
 			{
 				for (std::size_t i = 0; i < nt; i++) x_[i] = r_.s->temp_C[r_.col[i]][next_];
 				tracker_.push(r_.s->time_s[next_], x_.data());
+				if (order2_) half_.push(r_.s->time_s[next_], x_.data());
 			}
-			for (std::size_t i = 0; i < nt; i++) rate[i] = tracker_.rate(i);
+			// order 2 (delay-compensated): the same two trackers and formula as the compensator
+			for (std::size_t i = 0; i < nt; i++)
+				rate[i] = order2_ ? CausalRateTracker::extrapolatedRate(tracker_, half_, i, r_.s->time_s[k]) : tracker_.rate(i);
 		}
 		else
 			for (std::size_t i = 0; i < nt; i++) rate[i] = r_.rate[i][k];
@@ -149,8 +157,8 @@ class RowCursor
 
    private:
 	const PreparedRun& r_;
-	bool causal_;
-	CausalRateTracker tracker_;
+	bool causal_, order2_;
+	CausalRateTracker tracker_, half_;
 	std::vector<double> x_;
 	std::size_t next_ = 0;
 };
@@ -881,18 +889,31 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 			unit_list.push_back(&acc);
 			unit_fold.push_back(key.first);
 		}
+		// Wild (sign-flip) block bootstrap: the rows (the thermal history) stay, the residual of
+		// the chosen model changes sign block by block: another noise realisation of the same
+		// calibration run, which is what "the same choice with another noise seed" asks about.
+		// (A bootstrap that redraws the blocks themselves also changes which temperatures are
+		// seen, a much larger change: it called every fit unstable.)
+		const LinearFit chosen_fit = solveBiasFit(total, columnsOf(fs, best.order), best.ridge);
+		const Eigen::VectorXd beta = shiftedFullCoefficients(total, chosen_fit.columns, chosen_fit.coef_dph);
 		std::mt19937_64 rng(opt.stability_seed);
-		std::uniform_int_distribution<std::size_t> pick(0, unit_list.size() - 1);
+		std::bernoulli_distribution flip(0.5);
 		std::map<std::string, std::size_t> model_count, term_count;
 		std::map<std::string, std::vector<int>> model_order;
 		for (std::size_t b = 0; b < opt.stability_resamples; b++)
 		{
 			FoldSet fr;
 			fr.held_out.assign(nfolds, StreamingQr(fs.termCount(), y_ref, x_ref));
-			for (std::size_t i = 0; i < unit_list.size(); i++)
+			for (std::size_t u = 0; u < unit_list.size(); u++)
 			{
-				const std::size_t u = pick(rng);
-				fr.held_out[unit_fold[u]].merge(*unit_list[u]);
+				if (!flip(rng))
+				{
+					fr.held_out[unit_fold[u]].merge(*unit_list[u]);
+					continue;
+				}
+				StreamingQr flipped = *unit_list[u];
+				flipped.flipResiduals(beta);
+				fr.held_out[unit_fold[u]].merge(flipped);
 			}
 			fr.training = trainingSets(fr.held_out);
 			const Choice c = selectMain(fr);

@@ -455,8 +455,10 @@ void writeAxis(std::ostringstream& o, const Calibration& cal)
 	o << ind << "  kind: " << str(cal.rate_estimator.kind) << "\n";
 	o << ind << "  window_s: " << num(cal.rate_estimator.window_s) << "\n";
 	o << ind << "  poly_order: " << cal.rate_estimator.poly_order << "\n";
-	o << ind << "  delay_s: " << num(cal.rate_estimator.kind == "causal" ? cal.rate_estimator.window_s / 2 : 0.0)
-	  << "  # informational: the causal estimate lags by about window_s / 2\n";
+	o << ind << "  delay_s: " << num(cal.rate_estimator.kind == "causal" && cal.rate_estimator.poly_order == 1 ? cal.rate_estimator.window_s / 2 : 0.0)
+	  << (cal.rate_estimator.kind == "causal" && cal.rate_estimator.poly_order == 2
+			  ? "  # informational: order 2 extrapolates the slope to the newest sample (no delay)\n"
+			  : "  # informational: the causal estimate lags by about window_s / 2\n");
 	o << ind << "calibration_runs: [";
 	for (std::size_t i = 0; i < cal.runs.size(); i++) o << (i ? ", " : "") << str(cal.runs[i]);
 	o << "]\n";

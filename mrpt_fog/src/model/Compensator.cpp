@@ -156,7 +156,8 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 	  half_window_s_(0.5 * cal.rate_estimator.window_s),
 	  mean_bias_dph_(cal.mean_bias_dph),
 	  extrapolation_(cal.extrapolation),
-	  tracker_(1, cal.rate_estimator.window_s)
+	  tracker_(1, cal.rate_estimator.window_s),
+	  half_tracker_(1, 0.5 * cal.rate_estimator.window_s)
 {
 	if (build == KernelBuild::Avx2 && !kernel::cpuHasAvx2())
 		throw std::invalid_argument("compensator: the AVX2 build was requested but this CPU lacks AVX2");
@@ -173,6 +174,8 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 			if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
 	if (names.size() > 32) throw std::invalid_argument("compensator: at most 32 thermistors are supported");
 	tracker_ = CausalRateTracker(names.size(), cal.rate_estimator.window_s);
+	delay_comp_ = cal.rate_estimator.poly_order == 2;
+	half_tracker_ = CausalRateTracker(names.size(), 0.5 * cal.rate_estimator.window_s);
 	for (const auto& n : names)
 	{
 		const ThermistorInfo* want = nullptr;
@@ -220,6 +223,7 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 void Compensator::reset()
 {
 	tracker_.reset();
+	half_tracker_.reset();
 	counters_ = {};
 	last_model_ = kNoSampleYet;
 	sf_ppm_ = sf_initial_ppm_;
@@ -227,6 +231,13 @@ void Compensator::reset()
 }
 
 void Compensator::notePowerOn(double time_s) { power_on_s_ = time_s; }
+
+[[gnu::noinline]] void Compensator::delayCompensateRates(double time_s, const double* temp_C)
+{
+	half_tracker_.push(time_s, temp_C);
+	for (std::size_t c = 0; c < channel_col_.size(); c++)
+		rate_[c] = CausalRateTracker::extrapolatedRate(tracker_, half_tracker_, c, time_s);
+}
 
 [[gnu::noinline]] void Compensator::applyExtras(Output& out, double time_s, double raw_dph, const double* temp_C)
 {

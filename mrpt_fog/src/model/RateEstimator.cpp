@@ -32,7 +32,7 @@ std::string RateEstimatorSettings::describe() const
 {
 	std::ostringstream o;
 	o << kind << "(window_s=" << window_s;
-	if (kind == "savgol") o << ", order=" << poly_order;
+	if (kind == "savgol" || poly_order != 1) o << ", order=" << poly_order;
 	o << ")";
 	return o.str();
 }
@@ -51,8 +51,9 @@ void RateEstimatorSettings::validate() const
 	if (window_s > kMaxWindow_s)  // issue 14: window_s 1e9 was accepted (worse than raw)
 		throw std::invalid_argument("rate estimator window_s " + std::to_string(window_s) +
 									" s exceeds the limit of 3600 s (the causal estimate lags by half the window)");
-	if (kind == "causal" && poly_order != 1)
-		throw std::invalid_argument("rate estimator: the causal estimator is a local line (order 1), got order " +
+	if (kind == "causal" && poly_order != 1 && poly_order != 2)
+		throw std::invalid_argument("rate estimator: the causal estimator has order 1 (the slope over the window, "
+									"delayed by half of it) or 2 (delay-compensated), got order " +
 									std::to_string(poly_order));
 	if (kind == "savgol" && (poly_order < 1 || poly_order > 4))
 		throw std::invalid_argument("rate estimator: savgol order must be 1..4, got " + std::to_string(poly_order));
@@ -61,7 +62,7 @@ void RateEstimatorSettings::validate() const
 std::unique_ptr<RateEstimator> makeRateEstimator(const RateEstimatorSettings& s)
 {
 	s.validate();
-	if (s.kind == "causal") return std::make_unique<CausalRateEstimator>(s.window_s);
+	if (s.kind == "causal") return std::make_unique<CausalRateEstimator>(s.window_s, s.poly_order);
 	return std::make_unique<SavitzkyGolayRateEstimator>(s.window_s, s.poly_order);
 }
 
@@ -347,22 +348,24 @@ double CausalRateTracker::coveredSpan_s(std::size_t c) const
 }
 
 // ---------------------------------------------------------------- CausalRateEstimator
-CausalRateEstimator::CausalRateEstimator(double window_s) : window_s_(window_s)
+CausalRateEstimator::CausalRateEstimator(double window_s, int order) : window_s_(window_s), order_(order)
 {
-	RateEstimatorSettings{"causal", window_s, 1}.validate();
+	RateEstimatorSettings{"causal", window_s, order}.validate();
 }
 
-RateEstimatorSettings CausalRateEstimator::settings() const { return {"causal", window_s_, 1}; }
+RateEstimatorSettings CausalRateEstimator::settings() const { return {"causal", window_s_, order_}; }
 
 std::vector<double> CausalRateEstimator::estimate(const std::vector<double>& t, const std::vector<double>& x) const
 {
 	checkColumns(t, x);
-	CausalRateTracker tracker(1, window_s_);
+	CausalRateTracker tracker(1, window_s_), half(1, 0.5 * window_s_);
 	std::vector<double> out(t.size(), kNaN);
 	for (std::size_t k = 0; k < t.size(); k++)
 	{
 		tracker.push(t[k], &x[k]);
-		if (!std::isnan(x[k])) out[k] = tracker.rate(0);
+		if (order_ == 2) half.push(t[k], &x[k]);
+		if (!std::isnan(x[k]))
+			out[k] = order_ == 2 ? CausalRateTracker::extrapolatedRate(tracker, half, 0, t[k]) : tracker.rate(0);
 	}
 	return out;
 }

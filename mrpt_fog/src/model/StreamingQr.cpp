@@ -173,6 +173,19 @@ const Eigen::MatrixXd& StreamingQr::r()
 	return r_;
 }
 
+void StreamingQr::flipResiduals(const Eigen::VectorXd& beta)
+{
+	if (static_cast<std::size_t>(beta.size()) != n_)
+		throw std::invalid_argument("StreamingQr::flipResiduals: beta has " + std::to_string(beta.size()) + " terms, not " +
+									std::to_string(n_));
+	flush();
+	const auto n = static_cast<Eigen::Index>(n_);
+	Eigen::MatrixXd a = r_;
+	a.col(n) = 2.0 * (a.leftCols(n) * beta) - a.col(n);
+	Eigen::HouseholderQR<Eigen::MatrixXd> qr(a);
+	r_ = qr.matrixQR().triangularView<Eigen::Upper>();
+}
+
 Eigen::MatrixXd StreamingQr::columnsR(const std::vector<int>& cols)
 {
 	flush();

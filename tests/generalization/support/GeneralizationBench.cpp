@@ -7,6 +7,7 @@
 #include <mrpt/containers/yaml.h>
 #include <mrpt_fog/metrics/BiasMetrics.h>
 #include <mrpt_fog/model/Compensator.h>
+#include <mrpt_fog/model/RateEstimator.h>
 #include <mrpt_fog/sim/ChamberRun.h>
 
 #include <algorithm>
@@ -116,8 +117,14 @@ DeviceRuns simulate(const BenchCase& c, const std::vector<BenchProfile>& profile
 	DeviceRuns r;
 	if (c.generator == Generator::FogSim)
 	{
-		const DrawnDevice d = drawDevice(c.seed);
+		DrawnDevice d = drawDevice(c.seed);
+		if (c.ideal_thermistors)
+		{
+			d.device.thermistor_noise_C = 0;
+			d.device.thermistor_quantum_C = 0;
+		}
 		mrpt_fog::sim::SimSettings st;
+		st.effects = c.effects;
 		st.rate_hz = std::min(d.rate_hz, c.rate_cap_hz);
 		r.rate_hz = st.rate_hz;
 		r.thermistors = static_cast<int>(d.device.thermistors.size());
@@ -126,7 +133,7 @@ DeviceRuns simulate(const BenchCase& c, const std::vector<BenchProfile>& profile
 		for (std::size_t i = 0; i < profiles.size(); i++)
 		{
 			st.seed = 1000 * c.seed + 2 + i;
-			st.effects = mrpt_fog::sim::defaultEffects();
+			st.effects = c.effects;
 			r.eval.push_back(mrpt_fog::sim::simulateChamber(profiles[i].profile, d.device, st));
 			st.effects = {};  // noise only: the device's noise floor on this profile
 			r.floor.push_back(mrpt_fog::sim::simulateChamber(profiles[i].profile, d.device, st));
@@ -146,6 +153,39 @@ DeviceRuns simulate(const BenchCase& c, const std::vector<BenchProfile>& profile
 		}
 	}
 	return r;
+}
+
+/** Diagnostic evaluation of a calibration whose rate estimator cannot run in real time (savgol):
+ * the model evaluated on the run's signals with that estimator, the 100 s stability of the
+ * compensated output (powered samples). */
+double offlineStability_dph(const mrpt_fog::Calibration& cal, const mrpt_fog::FogSeries& s)
+{
+	const auto& fs = cal.model.features;
+	const auto est = mrpt_fog::makeRateEstimator(cal.rate_estimator);
+	std::vector<std::vector<double>> temp, rate;
+	for (const auto& name : fs.thermistors())
+	{
+		temp.push_back(s.temp_C[static_cast<std::size_t>(s.thermistorIndex(name))]);
+		rate.push_back(est->estimate(s.time_s, temp.back()));
+	}
+	const auto& raw = s.primaryRate_dph();
+	std::vector<double> T(temp.size()), R(temp.size()), v(fs.signals().size()), t, comp;
+	for (std::size_t k = 0; k < s.size(); k++)
+	{
+		if (!s.power.empty() && s.power[k] == 0.0) continue;
+		bool ok = true;
+		for (std::size_t i = 0; i < T.size(); i++)
+		{
+			T[i] = temp[i][k];
+			R[i] = rate[i][k];
+			ok = ok && std::isfinite(T[i]) && std::isfinite(R[i]);
+		}
+		if (!ok) continue;
+		fs.signalValues(T.data(), R.data(), v.data());
+		t.push_back(s.time_s[k]);
+		comp.push_back(raw[k] - cal.model.evaluate(v.data(), cal.extrapolation));
+	}
+	return mrpt_fog::biasStats(t, comp, 100.0).stability_dph;
 }
 
 std::string describeTerms(const mrpt_fog::Calibration& cal)
@@ -172,16 +212,21 @@ std::vector<CaseResult> runBenchCase(const BenchCase& c, const std::vector<Bench
 	{
 		mrpt_fog::Calibration cal;
 		std::string error;
-		try
-		{
-			cal = mrpt_fog::fitCalibration({runs.cal}, bp.preset, bp.options, {"calibration"});
-		}
-		catch (const std::exception& e)
-		{
-			error = e.what();
-		}
+		const auto fit = [&](const mrpt_fog::FogSeries& run) {
+			error.clear();
+			try
+			{
+				cal = mrpt_fog::fitCalibration({run}, bp.preset, bp.options, {"calibration"});
+			}
+			catch (const std::exception& e)
+			{
+				error = e.what();
+			}
+		};
+		if (!bp.fit_on_evaluation) fit(runs.cal);
 		for (std::size_t i = 0; i < profiles.size(); i++)
 		{
+			if (bp.fit_on_evaluation) fit(runs.eval[i]);
 			CaseResult r;
 			r.generator = c.generator;
 			r.seed = c.seed;
@@ -194,7 +239,25 @@ std::vector<CaseResult> runBenchCase(const BenchCase& c, const std::vector<Bench
 			r.error = error;
 			if (error.empty())
 			{
-				const auto f = mrpt_fog::evaluateCalibration(cal, runs.eval[i], profiles[i].name, 100.0);
+				mrpt_fog::FitFigures f;
+				if (cal.rate_estimator.kind != "causal")
+				{
+					f.stability_dph = offlineStability_dph(cal, runs.eval[i]);
+					f.raw_stability_dph = mrpt_fog::biasStats(runs.eval[i].time_s, runs.eval[i].primaryRate_dph(), 100.0).stability_dph;
+					f.valid = true;
+				}
+				else
+					f = mrpt_fog::evaluateCalibration(cal, runs.eval[i], profiles[i].name, 100.0);
+				if (const char* skip = std::getenv("FOG_BENCH_SKIP_S"))  // EXPERIMENT
+				{
+					auto e = runs.eval[i];
+					const double t0 = e.time_s.front() + std::atof(skip);
+					const auto out = mrpt_fog::compensate(cal, e);
+					std::vector<double> t, comp;
+					for (std::size_t k = 0; k < e.size(); k++)
+						if (e.time_s[k] >= t0) { t.push_back(e.time_s[k]); comp.push_back(out.raw_dph[k] - out.bias_dph[k]); }
+					f.stability_dph = mrpt_fog::biasStats(t, comp, 100.0).stability_dph;
+				}
 				r.ok = f.valid;
 				r.stability_dph = f.stability_dph;
 				r.raw_stability_dph = f.raw_stability_dph;

@@ -12,6 +12,7 @@
 
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/sim/ChamberProfile.h>
+#include <mrpt_fog/sim/ErrorEffects.h>
 
 #include <cstdint>
 #include <string>
@@ -40,6 +41,9 @@ struct BenchPreset
 	std::string preset;
 	mrpt_fog::FitOptions options;
 	bool fixed = true;  //!< false for presets that select terms (the default)
+	/** Diagnostic only: fitted on each evaluation run itself (in-sample there), the best that
+	 * model family and selection can do on that profile; not a held-out figure. */
+	bool fit_on_evaluation = false;
 };
 /** The default (`multipoint`, default options) and fixed presets (selection none). */
 std::vector<BenchPreset> benchPresets();
@@ -56,6 +60,10 @@ struct BenchCase
 	Generator generator = Generator::FogSim;
 	std::uint64_t seed = 0;
 	double rate_cap_hz = 1e9;  //!< the drawn sample rate, at most this (the quick subset caps it)
+	/** Diagnostics (fog-sim devices only): the simulator effects of the calibration and
+	 * evaluation runs (default: all), and thermistors without reading noise or quantisation. */
+	mrpt_fog::sim::EffectSet effects = mrpt_fog::sim::defaultEffects();
+	bool ideal_thermistors = false;
 };
 
 struct CaseResult

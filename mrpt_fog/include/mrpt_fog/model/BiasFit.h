@@ -59,6 +59,12 @@ struct LinearFit
  * range. A feature with zero variance gives numerical_rank < columns.size(). */
 LinearFit solveBiasFit(StreamingQr& acc, const std::vector<int>& columns, double ridge = 0.0, double rcond = 1e-10);
 
+/** The model coef_dph (on `columns`, as solveBiasFit returns it) as a vector over all of the
+ * accumulator's terms in its shifted coordinates (y - y_ref = (x - x_ref)' beta; zero off
+ * `columns`): the beta of StreamingQr::flipResiduals. */
+Eigen::VectorXd shiftedFullCoefficients(const StreamingQr& acc, const std::vector<int>& columns,
+										const Eigen::VectorXd& coef_dph);
+
 /** Residual sum of squares of coef (on `columns`) over the rows accumulated in `acc`. */
 double residualSumOfSquares(StreamingQr& acc, const std::vector<int>& columns, const Eigen::VectorXd& coef_dph);
 

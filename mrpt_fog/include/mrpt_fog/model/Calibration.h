@@ -116,8 +116,10 @@ struct FitOptions
 	 * adds orders and candidates by held-out error; multipoint then keeps all its thermistors
 	 * (points:K still searches subsets). false: from the constant, over thermistor subsets. */
 	bool linear_base = true;
-	/** "auto": refits on block-bootstrap resamples of the calibration data (40 time blocks per
-	 * run, drawn with replacement, each in its own fold) to measure how stable the choice is;
+	/** "auto": refits on wild-bootstrap resamples of the calibration data to measure how stable
+	 * the choice is: the run is cut into 40 time blocks, and in each resample the residual of
+	 * the chosen model changes sign in a random half of them (the thermal history stays: a new
+	 * noise realisation of the same run, what a recalibration with another noise seed sees);
 	 * 0 = not measured. */
 	std::size_t stability_resamples = 10;
 	std::uint64_t stability_seed = 1;  //!< fixed: the same data give the same report

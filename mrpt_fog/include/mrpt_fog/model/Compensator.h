@@ -140,6 +140,9 @@ class Compensator
 	double addGroups(const Compiled& m, const double* temp_C, double sum, int& clamped) const;  // sum + the groups' terms
 	/** Rare path after a clamp: the extrapolation policy's correction [deg/h] and the range counters. */
 	double outsideRange(const Compiled& m, const double* temp_C);
+	/** Delay-compensated rates (causal estimator of order 2): rate_ = 2 x slope over the last
+	 * half window - slope over the whole window (exact for a quadratic signal). Out of line. */
+	void delayCompensateRates(double time_s, const double* temp_C);
 	/** Warm-up and scale factor (only when the calibration has one of them): out of line. */
 	void applyExtras(Output& out, double time_s, double raw_dph, const double* temp_C);
 
@@ -153,6 +156,8 @@ class Compensator
 	std::vector<Compiled> models_;  // [0] main, [1 + c] fallback without channel c (may be empty)
 	std::vector<bool> has_fallback_;
 	CausalRateTracker tracker_;
+	bool delay_comp_ = false;  // causal estimator of order 2
+	CausalRateTracker half_tracker_;  // the last half window (order 2 only)
 	std::vector<double> temp_, rate_;  // per tracked channel, zero padded to the kernel's blocks of 4
 	CompensationCounters counters_;
 	static constexpr int kNoSampleYet = -2;  //!< last_model_ before the first sample

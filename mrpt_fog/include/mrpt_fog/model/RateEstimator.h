@@ -11,6 +11,12 @@
  *    cannot drift). Delay: for a smooth signal the slope is the derivative at the centre of the
  *    window, i.e. about window_s / 2 late. This is what the real-time compensator uses, and the
  *    fit uses it by default so that the compensator reproduces the fitted model (to round-off).
+ *    Order 2 (the default since issue 11) removes the delay: the slopes over the whole window
+ *    and over its last half are the derivative at their two centroids, and the line through
+ *    them is evaluated at t (CausalRateTracker::extrapolatedRate): exact for a quadratic,
+ *    still causal, about 5x the rate noise of order 1. The 30 s delay of order 1 was the
+ *    largest part of the held-out error above the noise floor on profiles with steps and
+ *    sines (docs/generalization.md, "Why the default lost").
  *  - "savgol" (SavitzkyGolayRateEstimator): derivative at t of a local polynomial (order 1..4)
  *    fitted by least squares over the centred window [t - window_s/2, t + window_s/2] (a
  *    Savitzky-Golay filter generalised to irregular timestamps). Non-causal, no delay; for
@@ -38,9 +44,11 @@ struct RateEstimatorSettings
 {
 	std::string kind = "causal";  //!< "causal" or "savgol"
 	double window_s = 60.0;  //!< window length [s]
-	int poly_order = 1;  //!< local polynomial order (causal: always 1; savgol: 1..4)
+	/** causal: 1 = the window's slope (delayed by about window_s / 2), 2 = delay-compensated
+	 * (default, see the file comment); savgol: the local polynomial's order 1..4. */
+	int poly_order = 2;
 
-	/** e.g. "causal(window_s=60)" or "savgol(window_s=60, order=2)". */
+	/** e.g. "causal(window_s=60, order=2)", "causal(window_s=60)" (order 1) or "savgol(window_s=60, order=2)". */
 	std::string describe() const;
 	/** Throws std::invalid_argument (naming the field) for an unknown kind, window_s not
 	 * finite or <= 0, or an order outside the kind's range. */
@@ -77,6 +85,24 @@ class CausalRateTracker
 	void push(double time_s, const double* x);
 	/** Current slope of channel c [unit/s]; NaN with fewer than 2 valid samples in the window. */
 	double rate(std::size_t c) const;
+	/** Mean time of the valid samples of channel c in the window [s] (NaN when none): the time
+	 * at which rate(c) is the derivative for a smooth signal. */
+	double centroid_s(std::size_t c) const
+	{
+		return n_[c] > 0 ? t_ref_ + s1_[c] / n_[c] : std::numeric_limits<double>::quiet_NaN();
+	}
+	/** The delay-compensated rate (causal estimator of order 2) from a tracker over the whole
+	 * window (`full`) and one over its last half (`half`) fed the same samples: the two slopes
+	 * are the derivative at their centroids; the line through them, evaluated at `time_s`, is
+	 * exact for a quadratic signal sampled regularly. NaN when either slope is. */
+	static double extrapolatedRate(const CausalRateTracker& full, const CausalRateTracker& half, std::size_t c,
+								   double time_s)
+	{
+		const double ra = full.rate(c), rb = half.rate(c);
+		const double ca = full.centroid_s(c), cb = half.centroid_s(c);
+		if (!(cb > ca)) return rb;  // one sample more in the whole window only: nothing to extrapolate from
+		return rb + (rb - ra) * (time_s - cb) / (cb - ca);
+	}
 	/** Valid samples of channel c now inside the window. */
 	std::size_t validCount(std::size_t c) const { return static_cast<std::size_t>(n_[c]); }
 	/** Time spread of the valid samples of channel c in the window, as sqrt(12) x their
@@ -134,13 +160,14 @@ class CausalRateTracker
 class CausalRateEstimator : public RateEstimator
 {
    public:
-	explicit CausalRateEstimator(double window_s);
+	explicit CausalRateEstimator(double window_s, int order = 1);
 	RateEstimatorSettings settings() const override;
 	bool isCausal() const override { return true; }
 	std::vector<double> estimate(const std::vector<double>& time_s, const std::vector<double>& x) const override;
 
    private:
 	double window_s_;
+	int order_ = 1;
 };
 
 class SavitzkyGolayRateEstimator : public RateEstimator

@@ -52,6 +52,11 @@ class StreamingQr
 	/** R of [X(:, columns) | y] of the shifted rows, (columns.size()+1) square (throws
 	 * std::invalid_argument for a column out of range). */
 	Eigen::MatrixXd columnsR(const std::vector<int>& columns);
+	/** Wild (sign-flip) bootstrap of the rows: every response y becomes 2 x'beta - y, i.e. the
+	 * residual about the linear model beta (all terms, shifted coordinates: y - y_ref =
+	 * (x - x_ref)'beta) changes sign while the rows' features stay. Exact on the factor (R is
+	 * linear in the rows); the row count is kept. */
+	void flipResiduals(const Eigen::VectorXd& beta);
 	/** X'X of the shifted rows (= R'R; for tests and diagnostics). */
 	Eigen::MatrixXd xtx();
 

@@ -80,6 +80,7 @@ template <std::size_t NC, int W>
 	}
 	tracker_.pushFixed<NC>(time_s, same_order_ ? temp_C : temp_.data());
 	const std::uint32_t short_span = tracker_.ratesAndCoverageFixed<NC>(rate_.data(), half_window_s_);
+	if (__builtin_expect(delay_comp_, 0)) delayCompensateRates(time_s, same_order_ ? temp_C : temp_.data());
 	// One predictable test for the common case: is any reading or rate NaN? (Then the mask of
 	// missing channels is built element by element; an infinite value is not missing.)
 	bool any_nan;
