@@ -11,7 +11,7 @@
  * Seeds 1..16 are the tuning devices, 17..24 were kept out of every tuning decision.
  * --sector-coil N adds sector-coil devices 1..N (the independent generator). --cases prints every
  * device x profile x preset line; --extrapolation overrides every preset's policy; --preset
- * keeps the presets whose label contains TEXT; --extra adds a fixed preset
+ * keeps the presets whose label contains TEXT (--exclude TEXT drops them); --extra adds a fixed preset
  * (selection none), e.g. --extra M2@5/1. Not a Google Benchmark: a figure-of-merit table.
  *
  * Diagnostics (what the held-out error above the noise floor is made of; fog-sim devices):
@@ -36,7 +36,7 @@ int main(int argc, char** argv)
 	int sector_coil = 8;
 	double cap = 1e9;
 	bool cases = false;
-	std::string policy, only;
+	std::string policy, only, excluded;
 	std::vector<std::string> extra;
 	mrpt_fog::sim::EffectSet effects = mrpt_fog::sim::defaultEffects();
 	bool ideal = false, oracle = false;
@@ -51,6 +51,7 @@ int main(int argc, char** argv)
 		else if (a == "--cases") cases = true;
 		else if (a == "--extrapolation" && i + 1 < argc) policy = argv[++i];
 		else if (a == "--preset" && i + 1 < argc) only = argv[++i];
+		else if (a == "--exclude" && i + 1 < argc) excluded = argv[++i];
 		else if (a == "--extra" && i + 1 < argc) extra.push_back(argv[++i]);
 		else if (a == "--effects" && i + 1 < argc)
 		{
@@ -101,6 +102,13 @@ int main(int argc, char** argv)
 	}
 	if (!policy.empty())
 		for (auto& p : presets) p.options.extrapolation = mrpt_fog::extrapolationPolicyFromString(policy);
+	if (!excluded.empty())
+	{
+		std::vector<fogtest::BenchPreset> keep;
+		for (const auto& p : presets)
+			if (p.label.find(excluded) == std::string::npos) keep.push_back(p);
+		presets = keep;
+	}
 	if (!only.empty())
 	{
 		std::vector<fogtest::BenchPreset> keep;

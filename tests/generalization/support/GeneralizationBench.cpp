@@ -248,16 +248,6 @@ std::vector<CaseResult> runBenchCase(const BenchCase& c, const std::vector<Bench
 				}
 				else
 					f = mrpt_fog::evaluateCalibration(cal, runs.eval[i], profiles[i].name, 100.0);
-				if (const char* skip = std::getenv("FOG_BENCH_SKIP_S"))  // EXPERIMENT
-				{
-					auto e = runs.eval[i];
-					const double t0 = e.time_s.front() + std::atof(skip);
-					const auto out = mrpt_fog::compensate(cal, e);
-					std::vector<double> t, comp;
-					for (std::size_t k = 0; k < e.size(); k++)
-						if (e.time_s[k] >= t0) { t.push_back(e.time_s[k]); comp.push_back(out.raw_dph[k] - out.bias_dph[k]); }
-					f.stability_dph = mrpt_fog::biasStats(t, comp, 100.0).stability_dph;
-				}
 				r.ok = f.valid;
 				r.stability_dph = f.stability_dph;
 				r.raw_stability_dph = f.raw_stability_dph;
