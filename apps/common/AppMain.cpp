@@ -15,12 +15,17 @@ namespace mrpt_fog::app
 {
 std::string oneLineMessage(const std::string& what) { return oneLineErrorMessage(what); }
 
+void returnLargeBlocksToSystem()
+{
+	// glibc's default threshold (128 KiB), fixed: otherwise it rises to the size of the first
+	// freed column and later columns come from the heap, where freeing one does not lower the
+	// peak memory. Not for every program: one that allocates and frees many mid-size blocks
+	// (fog-discrepancy) then spends its time in mmap/munmap.
+	mallopt(M_MMAP_THRESHOLD, 128 * 1024);
+}
+
 int runApp(const std::string& program, const std::function<int()>& body)
 {
-	// Large blocks (a log's columns) always from mmap and back to the system when freed: glibc's
-	// dynamic threshold otherwise rises to the size of the first freed column and later columns
-	// come from the heap, where freeing one does not lower the peak memory (issue 14).
-	mallopt(M_MMAP_THRESHOLD, 128 * 1024);  // glibc's default, fixed
 	try
 	{
 		mrpt_fog::registerAllClasses_mrpt_fog();

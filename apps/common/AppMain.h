@@ -22,6 +22,10 @@ constexpr int kExitUsage = 2;
 
 int runApp(const std::string& program, const std::function<int()>& body);
 
+/** Large blocks (a log's columns) from mmap, given back to the system when freed (issue 14:
+ * fog-calibrate and fog-evaluate free columns they no longer need); call first in main(). */
+void returnLargeBlocksToSystem();
+
 /** An exception text on one line (MRPT's call-stack and location lines removed). */
 std::string oneLineMessage(const std::string& what);
 

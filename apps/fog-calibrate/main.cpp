@@ -210,6 +210,7 @@ std::string whyNoThermalTerm(const std::vector<FogSeries>& runs, const BiasModel
 
 int main(int argc, char** argv)
 {
+	app::returnLargeBlocksToSystem();
 	return app::runApp("fog-calibrate", [&]() -> int {
 		TCLAP::CmdLine cmd("fog-calibrate: fit the FOG thermal-bias model to chamber runs and write a calibration "
 						   "YAML. Presets, the over-fitting guard and examples below.",

@@ -49,6 +49,7 @@ void printRow(const std::string& name, double raw, const RateEvaluation* comp, d
 
 int main(int argc, char** argv)
 {
+	app::returnLargeBlocksToSystem();
 	return app::runApp("fog-evaluate", [&] {
 		TCLAP::CmdLine cmd("fog-evaluate: bias stability (std of tau-s averages), full-temperature range and Allan "
 						   "deviation of a FOG log, raw and (with --cal) compensated",
