@@ -16,6 +16,7 @@
 #include <functional>
 
 #include "FaultRun.h"
+#include "support/AddressSpaceLimit.h"
 
 using namespace mrpt_fog;
 
@@ -32,8 +33,7 @@ std::string refusedInChild(const std::function<void()>& load, const std::vector<
 	{
 		::close(pipefd[0]);
 		::alarm(20);
-		struct rlimit lim{2048ull << 20, 2048ull << 20};
-		::setrlimit(RLIMIT_AS, &lim);
+		fogtest::limitAddressSpace(2048ull << 20);  // not under ASan (support/AddressSpaceLimit.h)
 		std::string msg;
 		int code = 0;
 		try
