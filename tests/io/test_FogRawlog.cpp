@@ -9,6 +9,8 @@
 #include <mrpt/obs/CObservationRawDAQ.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
+
+#include <limits>
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/io/GzFile.h>
 #include <mrpt_fog/obs/FogSeriesConversion.h>
@@ -387,3 +389,22 @@ TEST(FogLogIO, DispatchesByExtension)
 	EXPECT_NE(ioErrorOf([&] { readFogLog(dataFile("sample.csv"), "OTHER"); }).find("not 'OTHER'"), std::string::npos);
 }
 
+
+// Found by fuzz_rawlog: a thermistor angle read as NaN made the first observation's layout unequal
+// to itself, and the reader threw std::invalid_argument ("observation 0 has a different layout
+// than the first one") instead of FogIoError. A non-finite angle is now a corrupt object.
+TEST(FogRawlog, NonFiniteThermistorAngleIsACorruptObject)
+{
+	iotest::ScratchDir dir;
+	const FogSeries s = makeSeries("FOG", 5);
+	std::vector<mrpt::obs::CObservation::Ptr> objs;
+	for (auto& o : observationsFromSeries(s))
+	{
+		o->thermistors.at(0).angle_deg = std::numeric_limits<double>::quiet_NaN();
+		objs.push_back(o);
+	}
+	writeRawlogObservations(dir.path("nan_angle.rawlog"), objs);
+	const std::string e = ioErrorOf([&] { readFogRawlog(dir.path("nan_angle.rawlog")); });
+	EXPECT_NE(e.find("nan_angle.rawlog"), std::string::npos) << e;
+	EXPECT_NE(e.find("thermistor angle"), std::string::npos) << e;
+}

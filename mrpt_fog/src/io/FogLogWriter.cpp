@@ -8,6 +8,7 @@
 #include <mrpt_fog/io/GzStream.h>
 #include <mrpt_fog/io/NumberText.h>
 #include <mrpt_fog/obs/CObservationFOG.h>
+#include <mrpt_fog/common/ErrorText.h>
 #include <mrpt_fog/obs/Units.h>
 
 #include <charconv>
@@ -18,7 +19,6 @@
 
 namespace mrpt_fog
 {
-using io::detail::firstLine;
 using io::detail::fromTicks;
 using io::detail::kTicksPerSecond;
 using io::detail::ticksOf;
@@ -43,7 +43,7 @@ class FogLogWriter::Impl
 		}
 		catch (const std::exception& e)
 		{
-			throw FogIoError(path + ": cannot write: " + firstLine(e.what()));
+			throw FogIoError(path + ": cannot write: " + oneLineErrorMessage(e.what()));
 		}
 		has_table_ = !layout.table_rate_dph.empty();
 		has_field_ = !layout.field_uT.empty();
@@ -155,7 +155,7 @@ class FogLogWriter::Impl
 		}
 		catch (const std::exception& e)
 		{
-			throw FogIoError(path_ + ": cannot write: " + firstLine(e.what()));
+			throw FogIoError(path_ + ": cannot write: " + oneLineErrorMessage(e.what()));
 		}
 		objects_++;
 	}

@@ -8,6 +8,7 @@
 #include <mrpt_fog/io/GzStream.h>
 #include <mrpt_fog/io/NumberText.h>
 #include <mrpt_fog/obs/FogSeriesConversion.h>
+#include <mrpt_fog/common/ErrorText.h>
 #include <mrpt_fog/obs/registerAllClasses.h>
 
 #include <cmath>
@@ -21,7 +22,6 @@ namespace mrpt_fog
 {
 namespace
 {
-using io::detail::firstLine;
 using io::detail::fromTicks;
 using io::detail::kTicksPerSecond;
 using io::detail::ticksOf;
@@ -39,7 +39,7 @@ std::string whyReadFailed(const std::string& what, bool at_end_of_data)
 	}
 	if (at_end_of_data)
 		return "the file ends in the middle of this object (truncated file, or a corrupt length field in the object)";
-	return "corrupt object: " + firstLine(what);
+	return "corrupt object: " + oneLineErrorMessage(what);
 }
 
 std::string labelList(const std::map<std::string, std::size_t>& counts)

@@ -7,6 +7,7 @@
 #include <mrpt_fog/io/FogLogWriter.h>
 #include <mrpt_fog/io/GzStream.h>
 #include <mrpt_fog/io/FogRawlogMetadata.h>
+#include <mrpt_fog/common/ErrorText.h>
 #include <mrpt_fog/obs/FogSeriesConversion.h>
 
 #include <cmath>
@@ -16,7 +17,6 @@
 
 namespace mrpt_fog
 {
-using io::detail::firstLine;
 using io::detail::fromTicks;
 using io::detail::kTicksPerSecond;
 using io::detail::ticksOf;
@@ -57,7 +57,7 @@ void writeRawlogObservations(const std::string& path, const std::vector<mrpt::ob
 	}
 	catch (const std::exception& e)
 	{
-		throw FogIoError(path + ": cannot write: " + firstLine(e.what()));
+		throw FogIoError(path + ": cannot write: " + oneLineErrorMessage(e.what()));
 	}
 }
 
@@ -105,7 +105,7 @@ void writeFogRawlog(const std::string& path, const FogSeries& fog, const std::ve
 	}
 	catch (const std::exception& e)
 	{
-		throw FogIoError(path + ": cannot write: " + firstLine(e.what()));
+		throw FogIoError(path + ": cannot write: " + oneLineErrorMessage(e.what()));
 	}
 	for (std::size_t i = 0; i < others.size(); i++)
 		if (!others[i]) throw FogIoError(path + ": cannot write: other observation #" + std::to_string(i) + " is null");

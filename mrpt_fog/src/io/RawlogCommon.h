@@ -1,7 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #pragma once
-/* Internal to the io room: MRPT time ticks and exception text shared by the rawlog reader and
- * writer. */
+/* Internal to the io room: MRPT time ticks shared by the rawlog reader and writer (exception
+ * texts on one line: common/ErrorText.h). */
 
 #include <mrpt/core/Clock.h>
 
@@ -16,11 +16,4 @@ constexpr double kTicksPerSecond = 1e7;
 inline int64_t ticksOf(mrpt::Clock::time_point t) { return t.time_since_epoch().count(); }
 inline mrpt::Clock::time_point fromTicks(int64_t ticks) { return mrpt::Clock::time_point(mrpt::Clock::duration(ticks)); }
 
-/** First line of an (MRPT, multi-line) exception message. */
-inline std::string firstLine(const std::string& what)
-{
-	std::string s = what.substr(0, what.find('\n'));
-	while (!s.empty() && (s.back() == ' ' || s.back() == '\r')) s.pop_back();
-	return s;
-}
 }  // namespace mrpt_fog::io::detail

@@ -72,6 +72,9 @@ void CObservationFOG::serializeFrom(mrpt::serialization::CArchive& in, uint8_t v
 				if (side > 2) throw std::runtime_error(mrpt::format("CObservationFOG: corrupt coil side %u", side));
 				thermistors[i].side = static_cast<CoilSide>(side);
 				in >> thermistors[i].angle_deg >> temp_C[i];
+				// A NaN angle would make the layout unequal to itself (found by fuzz_rawlog).
+				if (!std::isfinite(thermistors[i].angle_deg))
+					throw std::runtime_error("CObservationFOG: corrupt thermistor angle (not finite)");
 				tempValid[i] = in.ReadAs<uint8_t>() != 0;
 			}
 			uint8_t flags = 0;
