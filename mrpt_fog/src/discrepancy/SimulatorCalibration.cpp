@@ -80,7 +80,17 @@ SimModel gaussNewton(SimModel m, const std::vector<ParamSlot>& slots, F residual
 			SimModel trial = m;
 			for (std::size_t j = 0; j < slots.size(); ++j)
 				setParam(trial, slots[j], getParam(m, slots[j]) + lambda * fit.coef(static_cast<Eigen::Index>(j)));
-			const Eigen::VectorXd rt = residual(trial);
+			// a step that leaves a parameter's valid domain (e.g. the midpoint offset beyond +-L/2,
+			// which the simulator refuses) is rejected like a step that does not improve: halved
+			Eigen::VectorXd rt;
+			try
+			{
+				rt = residual(trial);
+			}
+			catch (const std::invalid_argument&)
+			{
+				continue;
+			}
 			++sims;
 			if (rt.squaredNorm() < rss)
 			{

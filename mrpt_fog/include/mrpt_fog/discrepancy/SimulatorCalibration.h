@@ -11,6 +11,9 @@
  *  2. bias channel: every free bias parameter by damped Gauss-Newton on the bias residual over
  *     `bias_rows` (linear coefficients converge in one step; the winding asymmetry enters the
  *     Shupe weights nonlinearly).
+ * Both damp by halving the step (from 1 down to 1/512) until the residual falls; a step that
+ * takes a parameter outside the simulator's valid domain (it throws std::invalid_argument, e.g.
+ * a midpoint offset beyond +-L/2) is halved the same way instead of ending the calibration.
  * The result holds the bias Jacobian at the optimum: the linearised calibrated model, which the
  * bias-channel selector (EffectSelector) uses as its base design.
  * 95 % intervals of the calibrated parameters: +-1.96 sqrt(diag(s2_LR (J^T J)^-1)), J the
