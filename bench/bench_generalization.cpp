@@ -21,7 +21,9 @@
  * evaluation run itself (in-sample: what that model can do at best on that profile);
  * --rate-window S sets every preset's causal rate window [s] (default 60); --savgol uses the
  * non-causal, delay-free Savitzky-Golay rate estimator instead (evaluated offline: no
- * compensator can run it), to measure what the causal estimator's delay costs. */
+ * compensator can run it), to measure what the causal estimator's delay costs;
+ * --causal-order 1|2 sets the causal estimator's order (default 2; 1 = the delayed slope used
+ * before issue 11's diagnosis). */
 #include "DeviceEnsemble.h"
 #include "GeneralizationBench.h"
 
@@ -41,7 +43,8 @@ int main(int argc, char** argv)
 	mrpt_fog::sim::EffectSet effects = mrpt_fog::sim::defaultEffects();
 	bool ideal = false, oracle = false;
 	double rate_window_s = 0;
-	bool savgol = false, causal2 = false;
+	bool savgol = false;
+	int causal_order = 0;
 	for (int i = 1; i < argc; i++)
 	{
 		const std::string a = argv[i];
@@ -74,7 +77,7 @@ int main(int argc, char** argv)
 		else if (a == "--oracle") oracle = true;
 		else if (a == "--rate-window" && i + 1 < argc) rate_window_s = std::atof(argv[++i]);
 		else if (a == "--savgol") savgol = true;
-		else if (a == "--causal2") causal2 = true;
+		else if (a == "--causal-order" && i + 1 < argc) causal_order = std::atoi(argv[++i]);
 		else
 		{
 			std::fprintf(stderr, "bench_generalization: unknown argument '%s' (see the file comment)\n", a.c_str());
@@ -119,9 +122,13 @@ int main(int argc, char** argv)
 	if (rate_window_s > 0)
 		for (auto& p : presets) p.options.rate_estimator.window_s = rate_window_s;
 	if (savgol)
-		for (auto& p : presets) p.options.rate_estimator.kind = "savgol";
-	if (causal2)
-		for (auto& p : presets) p.options.rate_estimator.poly_order = 2;
+		for (auto& p : presets)
+		{
+			p.options.rate_estimator.kind = "savgol";
+			p.options.rate_estimator.poly_order = 1;  // a centred line: no delay
+		}
+	if (causal_order > 0)
+		for (auto& p : presets) p.options.rate_estimator.poly_order = causal_order;
 	if (oracle)
 	{
 		const std::size_t n = presets.size();

@@ -359,9 +359,15 @@ int main(int argc, char** argv)
 		const auto& st = cal.selection_stability;
 		if (st.resamples > 0)
 		{
-			std::printf("  selection stability: %.0f %% of %zu block-bootstrap refits chose this model%s\n",
-						100.0 * st.chosen_share, st.resamples,
-						st.stable ? " (stable)" : ": UNSTABLE (< 90 %), the data do not settle the choice; alternatives:");
+			std::printf("  selection stability: %.0f %% of %zu wild-bootstrap refits (new noise, same thermal history) "
+						"chose this model (held-out RMS %.4g deg/h)%s\n",
+						100.0 * st.chosen_share, st.resamples, st.chosen_held_out_rms_dph,
+						st.stable ? " (stable)"
+						: st.alternatives_equivalent
+							? ": UNSTABLE (< 90 %) among equivalent models: every alternative's held-out error is within "
+							  "one standard error of this one's (the data cannot tell them apart); alternatives:"
+							: ": UNSTABLE (< 90 %), the data do not settle the choice and the alternatives predict "
+							  "differently; alternatives:");
 			if (!st.stable)
 				for (const auto& a : st.alternatives)
 					std::printf("    %.0f %%  held-out RMS %.4g deg/h  %s\n", 100.0 * a.share, a.held_out_rms_dph,
@@ -441,6 +447,9 @@ int main(int argc, char** argv)
 			sj["resamples"] = static_cast<unsigned long>(st.resamples);
 			sj["chosen_share"] = st.chosen_share;
 			sj["stable"] = st.stable;
+			sj["chosen_held_out_rms_dph"] = st.chosen_held_out_rms_dph;
+			sj["held_out_se_mse"] = st.held_out_se_mse;
+			sj["alternatives_equivalent"] = st.alternatives_equivalent;
 			JsonValue& alts = sj["alternatives"] = JsonValue::array();
 			for (const auto& a : st.alternatives)
 			{

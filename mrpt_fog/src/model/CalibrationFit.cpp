@@ -847,8 +847,9 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 		}
 	}
 
-	// Stability of the choice: the main-model selection rerun on block-bootstrap resamples of the
-	// calibration data (units drawn with replacement, each keeping its fold).
+	// Stability of the choice: the main-model selection rerun on wild (sign-flip) block-bootstrap
+	// resamples of the calibration data (every unit kept in its fold, its residual sign-flipped
+	// with probability 1/2).
 	SelectionStability stability;
 	if (resample && !units.empty())
 	{
@@ -937,6 +938,13 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 			a.held_out_rms_dph = scoreOrders(folds, fs, model_order[key], kRidgeGrid).cv_rms;  // on the real folds
 			stability.alternatives.push_back(a);
 		}
+		const Choice chosen_score = scoreOrders(folds, fs, best.order, kRidgeGrid);
+		stability.chosen_held_out_rms_dph = chosen_score.cv_rms;
+		stability.held_out_se_mse = chosen_score.cv_se_mse;
+		stability.alternatives_equivalent = !stability.alternatives.empty();
+		for (const auto& a : stability.alternatives)
+			stability.alternatives_equivalent &= std::abs(a.held_out_rms_dph * a.held_out_rms_dph -
+														  chosen_score.cv_rms * chosen_score.cv_rms) <= chosen_score.cv_se_mse;
 		std::sort(stability.alternatives.begin(), stability.alternatives.end(),
 				  [](const auto& a, const auto& b) { return a.share > b.share; });
 		for (const auto& [term, n] : term_count) stability.term_share.push_back({term, static_cast<double>(n) / nb});

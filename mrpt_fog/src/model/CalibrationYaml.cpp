@@ -481,7 +481,7 @@ void writeAxis(std::ostringstream& o, const Calibration& cal)
 	if (cal.selection_stability.resamples > 0)  // optional (issue 11): how stable the term choice is
 	{
 		const auto& st = cal.selection_stability;
-		o << ind << "  selection_stability:  # refits on block-bootstrap resamples of the calibration data\n";
+		o << ind << "  selection_stability:  # refits on wild-bootstrap resamples of the calibration data\n";
 		o << ind << "    resamples: " << st.resamples << "\n";
 		o << ind << "    chosen_share: " << num(st.chosen_share) << "  # share of refits that chose this model\n";
 		o << ind << "    stable: " << (st.stable ? "true" : "false") << "\n";

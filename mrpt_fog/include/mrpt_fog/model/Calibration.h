@@ -193,6 +193,15 @@ struct SelectionStability
 		double held_out_rms_dph = 0.0;  //!< its cross-validated RMS on the calibration's folds [deg/h]
 	};
 	std::vector<Alternative> alternatives;  //!< the other models refits chose, most frequent first
+	/** The chosen model's cross-validated RMS on the calibration's folds [deg/h] and one standard
+	 * error of its cross-validated MSE [(deg/h)^2] (spread over the folds). */
+	double chosen_held_out_rms_dph = 0.0, held_out_se_mse = 0.0;
+	/** Unstable choices only: true when every alternative's held-out MSE lies within one standard
+	 * error of the chosen model's, i.e. the refits disagree only among models the calibration
+	 * data cannot tell apart (the held-out error does not depend on which one is used; other
+	 * profiles may still, since the data did not separate them); false when some alternative
+	 * is distinguishably worse or better. Not stored in the calibration file. */
+	bool alternatives_equivalent = false;
 	std::vector<std::pair<std::string, double>> term_share;  //!< each term: share of refits that include it
 };
 
