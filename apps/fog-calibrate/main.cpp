@@ -5,6 +5,7 @@
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/common/OutputSafety.h>
 #include <mrpt_fog/common/JsonWriter.h>
+#include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
@@ -115,12 +116,7 @@ EXAMPLES
   fog-calibrate -i runA.csv --model M3:Ti1,To1 --selection none -o m3.yaml
 )";
 
-std::string fmt(double v, const char* f = "%.6g")
-{
-	char b[64];
-	std::snprintf(b, sizeof(b), f, v);
-	return b;
-}
+std::string fmt(double v, const char* f = "%.6g") { return formatValue(f, v); }
 
 void printFigures(const std::vector<const FitFigures*>& figs)
 {

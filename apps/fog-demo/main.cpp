@@ -5,9 +5,9 @@
  * every figure in the report comes with the command that reproduces it. */
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt_fog/common/NumberFormat.h>
 
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -57,13 +57,7 @@ EXAMPLES
   fog-demo --datasets /path/to/datasets --out report
 )";
 
-std::string fmt(double v, const char* f = "%.4g")
-{
-	if (!std::isfinite(v)) return "n/a";
-	char b[64];
-	std::snprintf(b, sizeof(b), f, v);
-	return b;
-}
+std::string fmt(double v, const char* f = "%.4g") { return std::isfinite(v) ? formatValue(f, v) : "n/a"; }
 
 std::string ratio(double num, double den)
 {

@@ -1,10 +1,10 @@
 /* fog-evaluate: the PNG figures. */
 #include "EvaluationPlots.h"
 
+#include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/plot/PlotCanvas.h>
 
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <stdexcept>
@@ -13,13 +13,6 @@ namespace mrpt_fog::evaluate
 {
 namespace
 {
-std::string fmt(const char* f, double v)
-{
-	char b[64];
-	std::snprintf(b, sizeof(b), f, v);
-	return b;
-}
-
 /** A lighter version of a colour (for the unaveraged samples). */
 cv::Scalar light(const cv::Scalar& c) { return c * 0.35 + cv::Scalar(255, 255, 255) * 0.65; }
 
@@ -155,7 +148,7 @@ PlotSeries shortTrace(const std::string& what, const std::vector<double>& time_s
 	if (short_tau < 2 * medianSampleInterval_s(time_s))
 		return gapBroken(what + " samples", time_s, minus(y, mean), scale, colour);
 	PlotSeries ps;
-	ps.label = what + " " + fmt("%g", short_tau) + " s avg";
+	ps.label = what + " " + formatValue("%g", short_tau) + " s avg";
 	ps.colour = colour;
 	BiasStats st;
 	try
@@ -217,8 +210,8 @@ void biasVsTime(const std::string& path, const PlotInputs& in)
 	const bool temps = s.thermistorCount() > 0;
 	PlotCanvas fig(1100, temps ? 800 : 520);
 	LinePlot& top = fig.addPanel(temps ? 1.7 : 1.0);
-	top.title = "bias vs time (each about its own mean; " + fmt("%g", in.tau_s) + " s averages bold, " +
-				fmt("%g", in.tau_s / 10) + " s thin)";
+	top.title = "bias vs time (each about its own mean; " + formatValue("%g", in.tau_s) + " s averages bold, " +
+				formatValue("%g", in.tau_s / 10) + " s thin)";
 	top.x_axis.label = tlabel;
 	top.x_axis.min = s.time_s.front() * scale;  // the run, not rounded out to a tick
 	top.x_axis.max = s.time_s.back() * scale;
@@ -231,13 +224,13 @@ void biasVsTime(const std::string& path, const PlotInputs& in)
 		const double m_comp = in.comp->stats.mean_dph;
 		top.addSeries(
 			shortTrace("compensated", s.time_s, *in.comp_bias_dph, in.tau_s, m_comp, scale, light(plot_colour::kOrange)));
-		addAverages(top, in.raw->stats, m_raw, scale, "raw avg (mean " + fmt("%.4g", m_raw) + " deg/h)",
+		addAverages(top, in.raw->stats, m_raw, scale, "raw avg (mean " + formatValue("%.4g", m_raw) + " deg/h)",
 					plot_colour::kBlue);
-		addAverages(top, in.comp->stats, m_comp, scale, "compensated avg (mean " + fmt("%.4g", m_comp) + " deg/h)",
+		addAverages(top, in.comp->stats, m_comp, scale, "compensated avg (mean " + formatValue("%.4g", m_comp) + " deg/h)",
 					plot_colour::kOrange);
 	}
 	else
-		addAverages(top, in.raw->stats, m_raw, scale, "raw avg (mean " + fmt("%.4g", m_raw) + " deg/h)",
+		addAverages(top, in.raw->stats, m_raw, scale, "raw avg (mean " + formatValue("%.4g", m_raw) + " deg/h)",
 					plot_colour::kBlue);
 	if (temps)
 	{
@@ -284,7 +277,7 @@ bool biasVsTemperature(const std::string& path, const PlotInputs& in)
 	};
 	PlotCanvas fig(900, 650);
 	LinePlot& p = fig.addPanel();
-	p.title = fmt("%g", in.tau_s) + " s averaged bias vs mean coil temperature (time order)";
+	p.title = formatValue("%g", in.tau_s) + " s averaged bias vs mean coil temperature (time order)";
 	p.x_axis.label = "mean thermistor temperature [degC]";
 	p.y_axis.label = "bias - mean [deg/h]";
 	p.addSeries(series(*in.raw, "raw", plot_colour::kBlue));
@@ -311,10 +304,10 @@ void addNoiseLines(LinePlot& p, const RateEvaluation& e, const std::string& who,
 		p.addSeries(s);
 	};
 	const AllanNoiseTerms& n = e.terms;
-	line(n.quantization, who + " Q = " + fmt("%.3g", n.quantization_arcsec) + " arcsec");
-	line(n.arw, who + " N = " + fmt("%.3g", n.arw_dpsh) + " deg/sqrt(h)");
-	line(n.flat, who + " 0.664 B, B = " + fmt("%.3g", n.bias_instability_dph) + " deg/h");
-	line(n.rrw, who + " K = " + fmt("%.3g", n.rrw_dphsh) + " deg/h/sqrt(h)");
+	line(n.quantization, who + " Q = " + formatValue("%.3g", n.quantization_arcsec) + " arcsec");
+	line(n.arw, who + " N = " + formatValue("%.3g", n.arw_dpsh) + " deg/sqrt(h)");
+	line(n.flat, who + " 0.664 B, B = " + formatValue("%.3g", n.bias_instability_dph) + " deg/h");
+	line(n.rrw, who + " K = " + formatValue("%.3g", n.rrw_dphsh) + " deg/h/sqrt(h)");
 }
 
 void allanPlot(const std::string& path, const PlotInputs& in)

@@ -17,6 +17,7 @@
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/common/OutputSafety.h>
 #include <mrpt_fog/io/FogLogIO.h>
 
@@ -31,13 +32,7 @@ using namespace mrpt_fog::evaluate;
 
 namespace
 {
-std::string num(double v, const char* f = "%.6g")
-{
-	if (!std::isfinite(v)) return "n/a";
-	char b[64];
-	std::snprintf(b, sizeof(b), f, v);
-	return b;
-}
+std::string num(double v, const char* f = "%.6g") { return std::isfinite(v) ? formatValue(f, v) : "n/a"; }
 
 void printRow(const std::string& name, double raw, const RateEvaluation* comp, double comp_value)
 {

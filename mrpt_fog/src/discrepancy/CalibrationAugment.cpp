@@ -1,10 +1,10 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/CalibrationAugment.h>
+#include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 
 #include <algorithm>
 #include <optional>
-#include <cstdio>
 #include <stdexcept>
 
 namespace mrpt_fog::discrepancy
@@ -139,12 +139,6 @@ JsonValue figures(const FitFigures& f)
 	j["tau_s"] = f.tau_s;
 	return j;
 }
-std::string num(double v)
-{
-	char b[32];
-	std::snprintf(b, sizeof b, "%.4g", v);
-	return b;
-}
 }  // namespace
 
 std::string augmentedCalibrationText(const AugmentedCalibration& aug, const std::string& path)
@@ -159,9 +153,9 @@ std::string augmentedCalibrationText(const AugmentedCalibration& aug, const std:
 	}
 	for (const auto& [id, why] : aug.not_written) t += "  not written: " + id + " (" + why + ")\n";
 	if (aug.has_confirm)
-		t += "  through the compensator on the confirmation run: RMS " + num(aug.before.rms_dph) + " -> " +
-			 num(aug.after.rms_dph) + " deg/h, " + num(aug.before.tau_s) + " s stability " +
-			 num(aug.before.stability_dph) + " -> " + num(aug.after.stability_dph) + " deg/h\n";
+		t += "  through the compensator on the confirmation run: RMS " + formatValue("%.4g", aug.before.rms_dph) + " -> " +
+			 formatValue("%.4g", aug.after.rms_dph) + " deg/h, " + formatValue("%.4g", aug.before.tau_s) + " s stability " +
+			 formatValue("%.4g", aug.before.stability_dph) + " -> " + formatValue("%.4g", aug.after.stability_dph) + " deg/h\n";
 	return t;
 }
 

@@ -1,10 +1,10 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/HeatSourceCandidate.h>
+#include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/discrepancy/WhitenedRegression.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 namespace mrpt_fog::discrepancy
@@ -97,12 +97,6 @@ bool powerChanges(const std::vector<double>& power)
 	return false;
 }
 
-std::string fmt(const char* f, double v)
-{
-	char b[64];
-	std::snprintf(b, sizeof b, f, v);
-	return b;
-}
 }  // namespace
 
 std::vector<double> powerResponse(const std::vector<double>& t, const std::vector<double>& power, double tau_s)
@@ -193,19 +187,19 @@ HeatSourceResult testHeatSource(const std::vector<double>& t, const std::vector<
 	{
 		const auto& n = *std::find_if(res.thermistors.begin(), res.thermistors.end(),
 									  [&](const ThermistorHeatResponse& x) { return x.info.name == res.nearest; });
-		res.sentence = "The thermistor residual follows the gyro power (first-order, tau " + fmt("%.0f", res.tau_s) +
-					   " s): +" + fmt("%.3g", res.amplitude_C) + " C at full power on average, warmer on all " +
+		res.sentence = "The thermistor residual follows the gyro power (first-order, tau " + formatValue("%.0f", res.tau_s) +
+					   " s): +" + formatValue("%.3g", res.amplitude_C) + " C at full power on average, warmer on all " +
 					   std::to_string(r.size()) + " thermistors, largest at " + res.nearest + " (" +
-					   toString(n.info.side) + ", " + fmt("%.0f", n.info.angle_deg) + " deg, +" +
-					   fmt("%.3g", n.amplitude_C) + " C): an unmodelled internal heat source nearest " + res.nearest +
+					   toString(n.info.side) + ", " + formatValue("%.0f", n.info.angle_deg) + " deg, +" +
+					   formatValue("%.3g", n.amplitude_C) + " C): an unmodelled internal heat source nearest " + res.nearest +
 					   ".";
 	}
 	else if (res.significant)
 		res.sentence = "The thermistor residual correlates with the gyro power (amplitude " +
-					   fmt("%.3g", res.amplitude_C) + " C, Sidak p " + fmt("%.2g", res.p_adjusted) +
+					   formatValue("%.3g", res.amplitude_C) + " C, Sidak p " + formatValue("%.2g", res.p_adjusted) +
 					   ") but not with the same warming sign on every thermistor: not named as a heat source.";
 	else
-		res.sentence = "No heat-source signature in the thermistor residual (Sidak p " + fmt("%.2g", res.p_adjusted) + ").";
+		res.sentence = "No heat-source signature in the thermistor residual (Sidak p " + formatValue("%.2g", res.p_adjusted) + ").";
 	return res;
 }
 

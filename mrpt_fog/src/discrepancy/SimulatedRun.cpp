@@ -1,11 +1,11 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/SimulatedRun.h>
+#include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/sim/ChamberRun.h>
 #include <mrpt_fog/sim/FogSimulator.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
@@ -53,13 +53,6 @@ sim::InitialThermalState ChamberDrive::initialState() const
 
 namespace
 {
-std::string fmtC(double v)
-{
-	char b[32];
-	std::snprintf(b, sizeof b, "%.2g", v);
-	return b;
-}
-
 /** Power, table rate and field per simulator step from the run's columns (held). */
 ChamberDrive driveFromLog(const FogSeries& run)
 {
@@ -101,9 +94,9 @@ void reconstructInto(ChamberDrive& d, const SimModel& model, const FogSeries& ru
 	for (std::size_t j = 0; j < d.log_states.size(); ++j) d.log_states[j].air_C = d.air.airAt(static_cast<double>(j) / d.rate_hz);
 	d.how = "the measured log: power, table rate and field from its columns; chamber air reconstructed from the "
 			"thermistors through the thermal network (" +
-			std::to_string(d.air.knot_time_s.size()) + " knots every " + fmtC(d.air.knot_time_s.size() > 1 ? d.air.knot_time_s[1] : 0) +
-			" s, thermistor fit RMS " + fmtC(d.air.fit_rms_C) + " C, air 95 % half-width " + fmtC(d.air.mean_ci95_half_C) +
-			" C mean, " + fmtC(d.air.max_ci95_half_C) + " C max)";
+			std::to_string(d.air.knot_time_s.size()) + " knots every " + formatValue("%.2g", d.air.knot_time_s.size() > 1 ? d.air.knot_time_s[1] : 0) +
+			" s, thermistor fit RMS " + formatValue("%.2g", d.air.fit_rms_C) + " C, air 95 % half-width " + formatValue("%.2g", d.air.mean_ci95_half_C) +
+			" C mean, " + formatValue("%.2g", d.air.max_ci95_half_C) + " C max)";
 }
 }  // namespace
 

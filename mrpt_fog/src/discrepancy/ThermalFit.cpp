@@ -1,8 +1,8 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/ThermalFit.h>
+#include <mrpt_fog/common/NumberFormat.h>
 
 #include <cmath>
-#include <cstdio>
 
 namespace mrpt_fog::discrepancy
 {
@@ -20,13 +20,6 @@ const char* toString(ThermalFix f)
 
 namespace
 {
-std::string fmt(const char* f, double v)
-{
-	char b[64];
-	std::snprintf(b, sizeof b, f, v);
-	return b;
-}
-
 /** Pooled explained share of r_i ~ a_i + b x_i (per thermistor) and the pooled slope. */
 struct Explained
 {
@@ -134,34 +127,34 @@ ThermalFit assessThermalFit(const FogSeries& run, const std::vector<std::vector<
 			}
 		}
 	}
-	std::string s = "Thermal fit: thermistor residual RMS " + fmt("%.3g", f.rms_C) + " C (";
-	for (std::size_t i = 0; i < f.names.size(); ++i) s += (i ? ", " : "") + f.names[i] + " " + fmt("%.3g", f.rms_per_C[i]);
-	s += "), largest " + fmt("%.3g", f.max_abs_C) + " C at " + f.max_abs_thermistor + ", t = " + fmt("%.0f", f.max_abs_time_s) + " s";
+	std::string s = "Thermal fit: thermistor residual RMS " + formatValue("%.3g", f.rms_C) + " C (";
+	for (std::size_t i = 0; i < f.names.size(); ++i) s += (i ? ", " : "") + f.names[i] + " " + formatValue("%.3g", f.rms_per_C[i]);
+	s += "), largest " + formatValue("%.3g", f.max_abs_C) + " C at " + f.max_abs_thermistor + ", t = " + formatValue("%.0f", f.max_abs_time_s) + " s";
 	if (!f.misfit)
 	{
-		s += "; below the " + fmt("%.2g", f.threshold_C) + " C misfit threshold: the optical part is judged on it.";
+		s += "; below the " + formatValue("%.2g", f.threshold_C) + " C misfit threshold: the optical part is judged on it.";
 		f.sentence = s;
 		return f;
 	}
 	const bool lagWins = f.lag_share >= opt.min_explained_share && f.lag_share >= f.power_share && f.lag_tau_s > 0;
 	const bool powerWins = !lagWins && f.power_share >= opt.min_explained_share;
 	f.fix = lagWins ? ThermalFix::Lag : powerWins ? ThermalFix::HeatSource : ThermalFix::MissingNode;
-	s += ". THE THERMAL MODEL IS THE FIRST DISAGREEMENT (above the " + fmt("%.2g", f.threshold_C) +
+	s += ". THE THERMAL MODEL IS THE FIRST DISAGREEMENT (above the " + formatValue("%.2g", f.threshold_C) +
 		 " C threshold): no bias effect is named on top of it. ";
 	switch (f.fix)
 	{
 		case ThermalFix::Lag:
-			s += "What would fix it: a lag: the residual follows -tau dT/dt with tau = " + fmt("%.3g", f.lag_tau_s) +
-				 " s (explains " + fmt("%.0f", 100 * f.lag_share) + " % of it): a thermistor lag or a node slower than modelled.";
+			s += "What would fix it: a lag: the residual follows -tau dT/dt with tau = " + formatValue("%.3g", f.lag_tau_s) +
+				 " s (explains " + formatValue("%.0f", 100 * f.lag_share) + " % of it): a thermistor lag or a node slower than modelled.";
 			break;
 		case ThermalFix::HeatSource:
 			s += "What would fix it: a heat source: the residual follows the gyro power through a " +
-				 fmt("%.0f", f.power_tau_s) + " s lag (explains " + fmt("%.0f", 100 * f.power_share) + " % of it).";
+				 formatValue("%.0f", f.power_tau_s) + " s lag (explains " + formatValue("%.0f", 100 * f.power_share) + " % of it).";
 			break;
 		default:
 			s += "What would fix it: a missing node or path (or wrong thermistor placements): neither a lag (" +
-				 fmt("%.0f", 100 * f.lag_share) + " %) nor a heat source following the power (" +
-				 fmt("%.0f", 100 * f.power_share) + " %) explains the residual.";
+				 formatValue("%.0f", 100 * f.lag_share) + " %) nor a heat source following the power (" +
+				 formatValue("%.0f", 100 * f.power_share) + " %) explains the residual.";
 	}
 	f.sentence = s;
 	return f;

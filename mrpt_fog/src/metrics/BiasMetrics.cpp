@@ -1,23 +1,16 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/metrics/BiasMetrics.h>
+#include <mrpt_fog/common/NumberFormat.h>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <sstream>
 #include <string>
 
 namespace mrpt_fog
 {
 namespace
 {
-std::string num(double v)
-{
-	std::ostringstream o;
-	o << v;
-	return o.str();
-}
-
 void checkTimes(const std::vector<double>& time_s)
 {
 	for (std::size_t k = 0; k < time_s.size(); k++)
@@ -27,7 +20,7 @@ void checkTimes(const std::vector<double>& time_s)
 		if (k > 0 && !(time_s[k] > time_s[k - 1]))
 			throw std::invalid_argument(
 				"time_s is not strictly increasing at sample " + std::to_string(k) + " (" +
-				num(time_s[k - 1]) + " s then " + num(time_s[k]) + " s)");
+				formatValue("%g", time_s[k - 1]) + " s then " + formatValue("%g", time_s[k]) + " s)");
 	}
 }
 }  // namespace
@@ -48,7 +41,7 @@ BiasStats biasStats(const std::vector<double>& time_s, const std::vector<double>
 		throw std::invalid_argument("time_s has " + std::to_string(time_s.size()) + " samples but rate_dph has " +
 									std::to_string(rate_dph.size()));
 	if (!std::isfinite(tau_s) || tau_s <= 0)
-		throw std::invalid_argument("tau_s must be a positive number of seconds, got " + num(tau_s));
+		throw std::invalid_argument("tau_s must be a positive number of seconds, got " + formatValue("%g", tau_s));
 	checkTimes(time_s);
 	if (time_s.size() < 2) throw std::invalid_argument("need at least 2 samples, got " + std::to_string(time_s.size()));
 
@@ -108,8 +101,8 @@ BiasStats biasStats(const std::vector<double>& time_s, const std::vector<double>
 	s.empty_window_count += n_windows - w;
 	s.window_count = s.window_mean_dph.size();
 	if (s.window_count < 2)
-		throw std::invalid_argument("tau " + num(tau_s) + " s leaves " + std::to_string(s.window_count) +
-									" window(s) with data in a run of " + num(covered_s) +
+		throw std::invalid_argument("tau " + formatValue("%g", tau_s) + " s leaves " + std::to_string(s.window_count) +
+									" window(s) with data in a run of " + formatValue("%g", covered_s) +
 									" s; bias stability needs at least 2 (use a shorter tau)");
 
 	// Two-pass mean and variance (numerically safe for a large constant offset such as Earth rate).

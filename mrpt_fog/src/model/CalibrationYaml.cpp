@@ -5,6 +5,7 @@
 #include <mrpt_fog/common/Utf8.h>
 #include <mrpt_fog/common/YamlGuard.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
+#include <mrpt_fog/common/NumberFormat.h>
 
 #include <cmath>
 #include <cstdio>
@@ -36,9 +37,7 @@ std::string num(double v)
 {
 	if (std::isnan(v)) return ".nan";
 	if (std::isinf(v)) return v > 0 ? ".inf" : "-.inf";
-	char buf[40];
-	std::snprintf(buf, sizeof(buf), "%.17g", v);
-	return buf;
+	return formatValue("%.17g", v);
 }
 
 std::string str(const std::string& s)

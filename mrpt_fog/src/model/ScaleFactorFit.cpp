@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/model/Compensator.h>
+#include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/model/ScaleFactorFit.h>
 
 #include <Eigen/Dense>
@@ -7,7 +8,6 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <sstream>
 
 namespace mrpt_fog
 {
@@ -16,14 +16,6 @@ namespace
 std::string runName(const std::vector<std::string>& labels, std::size_t i)
 {
 	return i < labels.size() ? labels[i] : "run " + std::to_string(i + 1);
-}
-
-std::string fmt(double v)
-{
-	std::ostringstream o;
-	o.precision(4);
-	o << v;
-	return o.str();
 }
 
 /** Two-sided 95 % quantile of Student's t with dof degrees of freedom (table to 30, then the
@@ -158,7 +150,7 @@ ScaleFactorModel fitScaleFactor(const std::vector<FogSeries>& runs, const Calibr
 	if (!any_table) throw ScaleFactorFitError("scale factor: no run has a table_rate_dph column");
 	if (segs.empty())
 		throw ScaleFactorFitError("scale factor: no table segment of a constant non-zero rate lasts " +
-								  fmt(opt.settle_s + opt.min_segment_s) + " s or more with the gyro powered");
+								  formatValue("%.4g", opt.settle_s + opt.min_segment_s) + " s or more with the gyro powered");
 	bool pos = false, neg = false;
 	for (const auto& g : segs) (g.applied_dph > 0 ? pos : neg) = true;
 	if (!(pos && neg))
@@ -181,8 +173,8 @@ ScaleFactorModel fitScaleFactor(const std::vector<FogSeries>& runs, const Calibr
 	groups++;
 	const double span = tmean[order_idx.back()] - tmean[order_idx.front()];
 	if (groups < 2 || span < opt.min_span_C)
-		throw ScaleFactorFitError("scale factor: the table segments cover " + fmt(span) + " degC in " +
-								  std::to_string(groups) + " temperature group(s); at least 2 soaks " + fmt(opt.min_span_C) +
+		throw ScaleFactorFitError("scale factor: the table segments cover " + formatValue("%.4g", span) + " degC in " +
+								  std::to_string(groups) + " temperature group(s); at least 2 soaks " + formatValue("%.4g", opt.min_span_C) +
 								  " degC apart are needed to fit a temperature dependence");
 
 	// 4. candidates by leave-one-temperature-out error

@@ -2,6 +2,7 @@
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CObservationRobotPose.h>
 #include <mrpt/system/datetime.h>
+#include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/obs/FogSeriesConversion.h>
 #include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog/sim/DriveRun.h>
@@ -9,21 +10,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace mrpt_fog::sim
 {
-namespace
-{
-std::string num(double v)
-{
-	std::ostringstream ss;
-	ss.precision(10);
-	ss << v;
-	return ss.str();
-}
-}  // namespace
-
 DriveOutput simulateDrive(const ChamberProfile& cabin, const FogDevice& device, const SimSettings& settings,
 						  const OdometryErrors& odo)
 {
@@ -109,12 +98,12 @@ DriveOutput simulateDrive(const ChamberProfile& cabin, const FogDevice& device, 
 	out.coil_transient_C = coil_max - coil_min;
 
 	recordSimMetadata(fog, "vehicle", cabin, device, settings);
-	fog.setMetadata("drive.odometry.scale_error", num(odo.scale_error));
-	fog.setMetadata("drive.odometry.yaw_scale_error", num(odo.yaw_scale_error));
-	fog.setMetadata("drive.odometry.distance_noise_m_rt_m", num(odo.distance_noise_m_rt_m));
-	fog.setMetadata("drive.odometry.yaw_noise_rad_rt_m", num(odo.yaw_noise_rad_rt_m));
-	fog.setMetadata("drive.coil_transient_C", num(out.coil_transient_C));
-	fog.setMetadata("drive.distance_m", num(traj.at(out.duration_s).distance_m));
+	fog.setMetadata("drive.odometry.scale_error", formatValue("%.10g", odo.scale_error));
+	fog.setMetadata("drive.odometry.yaw_scale_error", formatValue("%.10g", odo.yaw_scale_error));
+	fog.setMetadata("drive.odometry.distance_noise_m_rt_m", formatValue("%.10g", odo.distance_noise_m_rt_m));
+	fog.setMetadata("drive.odometry.yaw_noise_rad_rt_m", formatValue("%.10g", odo.yaw_noise_rad_rt_m));
+	fog.setMetadata("drive.coil_transient_C", formatValue("%.10g", out.coil_transient_C));
+	fog.setMetadata("drive.distance_m", formatValue("%.10g", traj.at(out.duration_s).distance_m));
 	fog.setMetadata("drive.streams", "FOG (thermal error), FOG_IDEAL (same noise, no thermal error), ODOMETRY, GROUND_TRUTH");
 	const auto fog_meta = fog.metadata;
 	ideal.metadata = fog_meta;

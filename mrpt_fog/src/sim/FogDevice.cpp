@@ -1,12 +1,12 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/sim/FogDevice.h>
+#include <mrpt_fog/common/NumberFormat.h>
 
 #include <mrpt/containers/yaml.h>
 
 #include <cmath>
 #include <fstream>
 #include <set>
-#include <sstream>
 
 #include "YamlFields.h"
 
@@ -87,14 +87,6 @@ std::set<std::string> keysOf(const std::vector<NumField>& f, std::set<std::strin
 void readFields(const mrpt::containers::yaml& node, const std::vector<NumField>& fields, const std::string& where)
 {
 	for (const auto& f : fields) *f.value = readNumber(node, f.key, where, *f.value);
-}
-
-std::string num(double v)
-{
-	std::ostringstream ss;
-	ss.precision(10);
-	ss << v;
-	return ss.str();
 }
 
 int readInt(const mrpt::containers::yaml& node, const std::string& key, const std::string& where, int fallback)
@@ -282,27 +274,27 @@ std::vector<std::pair<std::string, std::string>> FogDevice::describe() const
 	FogDevice c = *this;  // the field tables take non-const pointers
 	std::vector<std::pair<std::string, std::string>> out;
 	out.emplace_back("device.name", name);
-	out.emplace_back("device.latitude_deg", num(latitude_deg));
+	out.emplace_back("device.latitude_deg", formatValue("%.10g", latitude_deg));
 	out.emplace_back("device.coil.pattern", toString(winding.pattern));
 	out.emplace_back("device.coil.fiber_layers", std::to_string(winding.fiber_layers));
-	for (const auto& f : coilFields(c.winding)) out.emplace_back(std::string("device.coil.") + f.key, num(*f.value));
+	for (const auto& f : coilFields(c.winding)) out.emplace_back(std::string("device.coil.") + f.key, formatValue("%.10g", *f.value));
 	if (winding.layer_length_mismatch != 0.0)
-		out.emplace_back("device.coil.layer_length_mismatch", num(winding.layer_length_mismatch));
+		out.emplace_back("device.coil.layer_length_mismatch", formatValue("%.10g", winding.layer_length_mismatch));
 	out.emplace_back("device.thermal.layers", std::to_string(thermal.layers));
 	out.emplace_back("device.thermal.sectors", std::to_string(thermal.sectors));
 	for (const auto& f : thermalFields(c.thermal))
-		out.emplace_back(std::string("device.thermal.") + f.key, num(*f.value));
-	for (const auto& f : errorFields(c.errors)) out.emplace_back(std::string("device.errors.") + f.key, num(*f.value));
+		out.emplace_back(std::string("device.thermal.") + f.key, formatValue("%.10g", *f.value));
+	for (const auto& f : errorFields(c.errors)) out.emplace_back(std::string("device.errors.") + f.key, formatValue("%.10g", *f.value));
 	std::string poly;
-	for (double v : errors.temp_poly_dph) poly += (poly.empty() ? "" : ",") + num(v);
+	for (double v : errors.temp_poly_dph) poly += (poly.empty() ? "" : ",") + formatValue("%.10g", v);
 	out.emplace_back("device.errors.temp_poly_dph", "[" + poly + "]");
-	for (const auto& f : noiseFields(c.noise)) out.emplace_back(std::string("device.noise.") + f.key, num(*f.value));
+	for (const auto& f : noiseFields(c.noise)) out.emplace_back(std::string("device.noise.") + f.key, formatValue("%.10g", *f.value));
 	for (const auto& t : thermistors)
 		out.emplace_back("device.thermistor." + t.info.name, std::string("side=") + toString(t.info.side) +
-																  " angle_deg=" + num(t.info.angle_deg) +
-																  " tau_s=" + num(t.tau_s) + " offset_C=" + num(t.offset_C));
-	out.emplace_back("device.thermistor_noise_C", num(thermistor_noise_C));
-	out.emplace_back("device.thermistor_quantum_C", num(thermistor_quantum_C));
+																  " angle_deg=" + formatValue("%.10g", t.info.angle_deg) +
+																  " tau_s=" + formatValue("%.10g", t.tau_s) + " offset_C=" + formatValue("%.10g", t.offset_C));
+	out.emplace_back("device.thermistor_noise_C", formatValue("%.10g", thermistor_noise_C));
+	out.emplace_back("device.thermistor_quantum_C", formatValue("%.10g", thermistor_quantum_C));
 	return out;
 }
 
