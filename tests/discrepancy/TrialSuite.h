@@ -32,6 +32,17 @@ struct Tally
 {
 	int trials = 0, named = 0, clean = 0, gap_ok = 0, false_naming = 0;
 	std::vector<std::string> misses;
+
+	Tally& operator+=(const Tally& o)
+	{
+		trials += o.trials;
+		named += o.named;
+		clean += o.clean;
+		gap_ok += o.gap_ok;
+		false_naming += o.false_naming;
+		misses.insert(misses.end(), o.misses.begin(), o.misses.end());
+		return *this;
+	}
 };
 
 /** Runs `seeds` trials (FOG_TRIAL_SEEDS subset aware), seed = first_seed + i, through
@@ -69,6 +80,29 @@ inline void print(const std::string& what, const Tally& t)
 				trialSeeds(10) < 10 ? "  (FOG_TRIAL_SEEDS subset: not the success table)" : "");
 	for (const auto& m : t.misses) std::printf("  miss: %s\n", m.c_str());
 	std::fflush(stdout);
+}
+
+/** The cells `what @1` and `what @3` (tally = cell(ratio)), each printed; returns their sum. */
+template <class Cell>
+Tally ratios1And3(const std::string& what, Cell cell)
+{
+	Tally all;
+	for (double ratio : {1.0, 3.0})
+	{
+		const Tally t = cell(ratio);
+		print(what + " @" + std::to_string(int(ratio)), t);
+		all += t;
+	}
+	return all;
+}
+
+/** A trial with the given hidden effects at the given ratios (strongest first). */
+inline TrialSpec hiddenSpec(std::vector<std::string> hidden, std::vector<double> ratios)
+{
+	TrialSpec s;
+	s.hidden = std::move(hidden);
+	s.ratios = std::move(ratios);
+	return s;
 }
 
 inline const std::vector<std::string>& biasEffects()
@@ -121,35 +155,21 @@ inline Tally runSimSeeds(SimTrialSpec spec, int seeds, std::uint64_t first_seed)
 inline std::vector<std::pair<std::string, TrialSpec>> confounderScenarios()
 {
 	std::vector<std::pair<std::string, TrialSpec>> v;
-	TrialSpec a;
-	a.hidden = {"shupe_rate"};
-	a.ratios = {3};
+	TrialSpec a = hiddenSpec({"shupe_rate"}, {3});
 	a.static_coef_error = 0.02;
 	v.push_back({"shupe_rate@3 + 2% coefficient error (run 2)", a});
-	TrialSpec b;
-	b.hidden = {"radial_gradient"};
-	b.ratios = {3};
+	TrialSpec b = hiddenSpec({"radial_gradient"}, {3});
 	b.thermistor_noise_C = 0.01;
 	b.thermistor_quantum_C = 0.01;
 	v.push_back({"radial_gradient@3 + thermistor noise/quant", b});
-	TrialSpec c;
-	c.hidden = {"hysteresis"};
-	c.ratios = {3};
+	TrialSpec c = hiddenSpec({"hysteresis"}, {3});
 	c.gap = true;
 	v.push_back({"hysteresis@3 + data gap", c});
-	TrialSpec d;
-	d.hidden = {"magnetic"};
-	d.ratios = {3};
+	TrialSpec d = hiddenSpec({"magnetic"}, {3});
 	d.outliers = 5;
 	v.push_back({"magnetic@3 + 5 outliers", d});
-	TrialSpec e;
-	e.hidden = {"shupe_rate", "magnetic"};
-	e.ratios = {3, 1.5};
-	v.push_back({"two hidden: shupe_rate@3 + magnetic@1.5", e});
-	TrialSpec f;
-	f.hidden = {"radial_gradient", "warmup"};
-	f.ratios = {3, 1.5};
-	v.push_back({"two hidden: radial_gradient@3 + warmup@1.5", f});
+	v.push_back({"two hidden: shupe_rate@3 + magnetic@1.5", hiddenSpec({"shupe_rate", "magnetic"}, {3, 1.5})});
+	v.push_back({"two hidden: radial_gradient@3 + warmup@1.5", hiddenSpec({"radial_gradient", "warmup"}, {3, 1.5})});
 	return v;
 }
 }  // namespace trial_suite

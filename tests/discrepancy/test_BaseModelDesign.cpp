@@ -16,9 +16,7 @@ struct Fixture
 	RunSignals sig;
 	Fixture()
 	{
-		SyntheticRunOptions o;
-		o.dt_s = 30;
-		run = makeSyntheticChamberRun(o);
+		run = makeSyntheticChamberRun(30);
 		sig = computeRunSignals(run.series);
 	}
 };

@@ -9,6 +9,18 @@
 using namespace mrpt_fog;
 using namespace mrpt_fog::discrepancy;
 
+namespace
+{
+/** Signals of the synthetic chamber run (default profile unless given), one sample every 20 s. */
+RunSignals syntheticSignals(SyntheticProfile profile = SyntheticRunOptions{}.profile)
+{
+	SyntheticRunOptions o;
+	o.profile = profile;
+	o.dt_s = 20;
+	return computeRunSignals(makeSyntheticChamberRun(o).series);
+}
+}  // namespace
+
 TEST(CandidateEffect, LibraryHoldsTheStableIds)
 {
 	std::vector<std::string> ids;
@@ -30,10 +42,7 @@ TEST(CandidateEffect, LibraryHoldsTheStableIds)
 
 TEST(CandidateEffect, ColumnsMatchClosedForms)
 {
-	SyntheticRunOptions o;
-	o.dt_s = 20;
-	const auto run = makeSyntheticChamberRun(o);
-	const auto sig = computeRunSignals(run.series);
+	const auto sig = syntheticSignals();
 	CandidateContext ctx;
 	ctx.sig = &sig;
 	ctx.static_temp_C = sig.temp_mean_C;
@@ -103,10 +112,7 @@ TEST(CandidateEffect, HysteresisIsPlayTypeAndKeepsItsBranchThroughSoaks)
 
 TEST(CandidateEffect, ShupeRateHoldsTheMeanRateAndTheRadialRateDifference)
 {
-	SyntheticRunOptions o;
-	o.dt_s = 20;
-	const auto run = makeSyntheticChamberRun(o);
-	const auto sig = computeRunSignals(run.series);
+	const auto sig = syntheticSignals();
 	CandidateContext ctx;
 	ctx.sig = &sig;
 	const auto c = candidateById("shupe_rate").build(ctx, 0.0);
@@ -120,11 +126,7 @@ TEST(CandidateEffect, ShupeRateHoldsTheMeanRateAndTheRadialRateDifference)
 
 TEST(CandidateEffect, UntestableWithoutTheExcitingColumns)
 {
-	SyntheticRunOptions o;
-	o.profile = SyntheticProfile::Ramp;  // no table rate, no field
-	o.dt_s = 20;
-	const auto run = makeSyntheticChamberRun(o);
-	const auto sig = computeRunSignals(run.series);
+	const auto sig = syntheticSignals(SyntheticProfile::Ramp);  // no table rate, no field
 	EXPECT_FALSE(candidateById("scale_factor_temp").untestable_reason(sig).empty());
 	EXPECT_FALSE(candidateById("magnetic").untestable_reason(sig).empty());
 	EXPECT_TRUE(candidateById("shupe_rate").untestable_reason(sig).empty());

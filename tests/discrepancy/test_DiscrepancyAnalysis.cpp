@@ -14,14 +14,7 @@ namespace
 {
 std::vector<FogSeries> twoRuns(const std::map<std::string, double>& hidden)
 {
-	SyntheticRunOptions o;
-	o.dt_s = 20;
-	o.hidden = hidden;
-	o.seed = 41;
-	const auto a = makeSyntheticChamberRun(o);
-	o.seed = 42;
-	const auto b = makeSyntheticChamberRun(o);
-	return {a.series, b.series};
+	return {makeSyntheticChamberRun(20, 41, hidden).series, makeSyntheticChamberRun(20, 42, hidden).series};
 }
 }  // namespace
 

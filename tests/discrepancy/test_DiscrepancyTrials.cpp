@@ -16,18 +16,8 @@ class ProofTrials : public ::testing::TestWithParam<std::string>
 
 TEST_P(ProofTrials, HiddenEffectNamedAtRatios1And3)
 {
-	Tally all;
-	for (double ratio : {1.0, 3.0})
-	{
-		TrialSpec spec;
-		spec.hidden = {GetParam()};
-		spec.ratios = {ratio};
-		const auto t = runSeeds(spec, 10, 100);
-		print(GetParam() + " @" + std::to_string(int(ratio)), t);
-		all.trials += t.trials;
-		all.named += t.named;
-		all.gap_ok += t.gap_ok;
-	}
+	const Tally all =
+		ratios1And3(GetParam(), [&](double ratio) { return runSeeds(hiddenSpec({GetParam()}, {ratio}), 10, 100); });
 	EXPECT_GE(all.named, all.trials - 1) << "named " << all.named << "/" << all.trials << " (target >= 95 %)";
 	EXPECT_GE(all.gap_ok, all.trials - 1) << "gap target met " << all.gap_ok << "/" << all.trials;
 }
@@ -49,9 +39,7 @@ TEST(ProofTrialsConfounders, NamedDespiteConfounders)
 	{
 		const auto t = runSeeds(spec, 10, 300);
 		print(what, t);
-		all.trials += t.trials;
-		all.named += t.named;
-		all.gap_ok += t.gap_ok;
+		all += t;
 	}
 	// 5 % of the full count (6 scenarios x 10 seeds = 60) may miss: 3 (also on a FOG_TRIAL_SEEDS subset)
 	EXPECT_GE(all.named, all.trials - 3) << all.named << "/" << all.trials;
@@ -97,19 +85,13 @@ class ProofTrialsSimulator : public ::testing::TestWithParam<std::string>
 
 TEST_P(ProofTrialsSimulator, HiddenEffectNamedAtRatios1And3)
 {
-	Tally all;
-	for (double ratio : {1.0, 3.0})
-	{
+	const Tally all = ratios1And3("sim " + GetParam(), [&](double ratio) {
 		SimTrialSpec spec;
 		spec.hidden = GetParam();
 		spec.ratio = ratio;
 		spec.rate_hz = kSimTrialRate_hz;
-		const auto t = runSimSeeds(spec, 10, 200);
-		print("sim " + GetParam() + " @" + std::to_string(int(ratio)), t);
-		all.trials += t.trials;
-		all.named += t.named;
-		all.gap_ok += t.gap_ok;
-	}
+		return runSimSeeds(spec, 10, 200);
+	});
 	EXPECT_GE(all.named, all.trials - 1) << "named " << all.named << "/" << all.trials << " (target >= 95 %)";
 	EXPECT_GE(all.gap_ok, all.trials - 1) << "gap target met " << all.gap_ok << "/" << all.trials;
 }

@@ -28,9 +28,7 @@ const CandidateTest* find(const SelectionResult& s, const std::string& id)
 
 TEST(EffectSelector, CandidatesSpannedByTheModelAreSkipped)
 {
-	SyntheticRunOptions o;
-	o.dt_s = 30;
-	const auto r = makeSyntheticChamberRun(o);
+	const auto r = makeSyntheticChamberRun(30);
 	// M3 on the inner/outer means contains dT/dt and (Tin - Tout) terms
 	const auto s = select(r, "M3:Ti1,To1");
 	const auto* grad = find(s, "radial_gradient");
@@ -39,18 +37,14 @@ TEST(EffectSelector, CandidatesSpannedByTheModelAreSkipped)
 	// model with the very same columns spans it: multipoint spans shupe_rate (its dT/dt terms)
 	const auto mp = select(r, "multipoint");
 	ASSERT_NE(find(mp, "shupe_rate"), nullptr);
-	EXPECT_EQ(find(mp, "shupe_rate")->status, "spanned");
-	EXPECT_EQ(find(mp, "radial_gradient")->status, "spanned");
-	EXPECT_EQ(find(mp, "gradient_rate")->status, "spanned");
+	EXPECT_EQ(find(mp, "shupe_rate")->status, CandidateStatus::Spanned);
+	EXPECT_EQ(find(mp, "radial_gradient")->status, CandidateStatus::Spanned);
+	EXPECT_EQ(find(mp, "gradient_rate")->status, CandidateStatus::Spanned);
 }
 
 TEST(EffectSelector, NamesRadialGradientAndResidualFallsToNoiseLevel)
 {
-	SyntheticRunOptions o;
-	o.dt_s = 20;
-	o.seed = 11;
-	o.hidden["radial_gradient"] = 3.0;
-	const auto r = makeSyntheticChamberRun(o);
+	const auto r = makeSyntheticChamberRun(20, 11, {{"radial_gradient", 3.0}});
 	const auto s = select(r, "static:3");
 	ASSERT_FALSE(s.named.empty());
 	EXPECT_EQ(s.named.front().id, "radial_gradient");
@@ -78,10 +72,7 @@ TEST(EffectSelector, NamesRadialGradientAndResidualFallsToNoiseLevel)
 
 TEST(EffectSelector, NothingMissingNamesNothing)
 {
-	SyntheticRunOptions o;
-	o.dt_s = 20;
-	o.seed = 5;
-	const auto r = makeSyntheticChamberRun(o);
+	const auto r = makeSyntheticChamberRun(20, 5);
 	const auto s = select(r, "static:3");
 	EXPECT_TRUE(s.named.empty());
 	EXPECT_EQ(s.model.effects.size(), 0u);
@@ -90,13 +81,8 @@ TEST(EffectSelector, NothingMissingNamesNothing)
 
 TEST(EffectSelector, ConfirmationRunConfirmsARealEffect)
 {
-	SyntheticRunOptions o;
-	o.dt_s = 20;
-	o.hidden["magnetic"] = 2.0;
-	o.seed = 21;
-	const auto r1 = makeSyntheticChamberRun(o);
-	o.seed = 22;
-	const auto r2 = makeSyntheticChamberRun(o);
+	const auto r1 = makeSyntheticChamberRun(20, 21, {{"magnetic", 2.0}});
+	const auto r2 = makeSyntheticChamberRun(20, 22, {{"magnetic", 2.0}});
 	const auto sig1 = computeRunSignals(r1.series), sig2 = computeRunSignals(r2.series);
 	const auto spec = resolveBaseModel("static:3", r1.series);
 	auto s = selectMissingEffects(sig1, buildBaseDesign(spec, r1.series, sig1));
@@ -114,18 +100,12 @@ TEST(EffectSelector, ConfirmationRunConfirmsARealEffect)
 // effect present in both runs stays named.
 TEST(EffectSelector, UnconfirmedEffectIsReportedNotAdded)
 {
-	SyntheticRunOptions o;
-	o.dt_s = 20;
-	o.hidden["magnetic"] = 2.0;
-	o.seed = 21;
-	const auto r1 = makeSyntheticChamberRun(o);
+	const auto r1 = makeSyntheticChamberRun(20, 21, {{"magnetic", 2.0}});
 	const auto spec = resolveBaseModel("static:3", r1.series);
 	const auto sig1 = computeRunSignals(r1.series);
 	const auto base1 = buildBaseDesign(spec, r1.series, sig1);
 
-	o.hidden.clear();  // the second run has no magnetic sensitivity
-	o.seed = 22;
-	const auto r2 = makeSyntheticChamberRun(o);
+	const auto r2 = makeSyntheticChamberRun(20, 22);  // the second run has no magnetic sensitivity
 	const auto sig2 = computeRunSignals(r2.series);
 	auto s = selectMissingEffects(sig1, base1);
 	ASSERT_EQ(s.named.size(), 1u);
@@ -139,8 +119,7 @@ TEST(EffectSelector, UnconfirmedEffectIsReportedNotAdded)
 	ASSERT_EQ(s.coef_after.size(), s.coef_before.size());
 	EXPECT_LT((s.residual_after - s.residual_before).cwiseAbs().maxCoeff(), 1e-9);
 
-	o.hidden["magnetic"] = 2.0;  // present in both runs: stays
-	const auto r3 = makeSyntheticChamberRun(o);
+	const auto r3 = makeSyntheticChamberRun(20, 22, {{"magnetic", 2.0}});  // present in both runs: stays
 	const auto sig3 = computeRunSignals(r3.series);
 	auto s3 = selectMissingEffects(sig1, base1);
 	confirmOnRun(s3, sig3, buildBaseDesign(spec, r3.series, sig3));
@@ -152,9 +131,7 @@ TEST(EffectSelector, UnconfirmedEffectIsReportedNotAdded)
 
 TEST(EffectSelector, RejectsTooFewSamples)
 {
-	SyntheticRunOptions o;
-	o.dt_s = 20;
-	auto r = makeSyntheticChamberRun(o);
+	auto r = makeSyntheticChamberRun(20);
 	r.series.power.assign(r.series.size(), 0.0);  // never powered: nothing usable
 	for (std::size_t k = 0; k < 40; ++k) r.series.power[k] = 1.0;
 	const auto sig = computeRunSignals(r.series);

@@ -40,7 +40,7 @@ TEST(ForeignTrials, MonotonicCoolingNeverNamesHysteresis)
 		}
 		bool untestable = false;
 		for (const auto& c : rep.selection.rounds.front())
-			if (c.id == "hysteresis") untestable = c.status == "untestable";
+			if (c.id == "hysteresis") untestable = c.status == CandidateStatus::Untestable;
 		EXPECT_TRUE(untestable);
 	}
 }

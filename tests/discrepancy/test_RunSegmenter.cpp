@@ -23,10 +23,7 @@ TEST(RunSegmenter, LabelsTheRichProfileFromTheData)
 	// the synthetic all_conditions profile (SyntheticChamberRun.cpp, minutes): 0-30 hold 25 C (power-on),
 	// 30-95 ramp to -40, 140 step to -20, 200-220 table, 280-360 ramp 60 -> 20, 460-475 field,
 	// 510-530 power off, 530 power on
-	SyntheticRunOptions o;
-	o.dt_s = 10;
-	const auto run = makeSyntheticChamberRun(o);
-	const auto sig = computeRunSignals(run.series);
+	const auto sig = computeRunSignals(makeSyntheticChamberRun(10).series);
 	const auto segs = segmentRun(sig);
 	const double min = 60;
 	// the run starts powered: when the gyro was switched on is not in the data, so its first
@@ -53,6 +50,8 @@ TEST(RunSegmenter, LabelsTheRichProfileFromTheData)
 			if (s.band == "above 40 C") EXPECT_GE(T, 40.0 - 1e-9);
 		}
 	// the "ramp" profile: 1 C/min ramp 25 -> -40 C ending at 85 min, then a 2 h soak
+	SyntheticRunOptions o;
+	o.dt_s = 10;
 	o.profile = SyntheticProfile::Ramp;
 	const auto ramp = makeSyntheticChamberRun(o);
 	const auto rsig = computeRunSignals(ramp.series);
@@ -69,10 +68,7 @@ TEST(RunSegmenter, LabelsTheRichProfileFromTheData)
 
 TEST(RunSegmenter, RankingSaysWhereTheResidualIs)
 {
-	SyntheticRunOptions o;
-	o.dt_s = 10;
-	const auto run = makeSyntheticChamberRun(o);
-	const auto sig = computeRunSignals(run.series);
+	const auto sig = computeRunSignals(makeSyntheticChamberRun(10).series);
 	const auto segs = segmentRun(sig);
 	Eigen::VectorXd r = Eigen::VectorXd::Constant(static_cast<Eigen::Index>(sig.size()), 0.01);
 	for (const auto& s : segs)

@@ -10,10 +10,7 @@ using namespace mrpt_fog::discrepancy;
 
 TEST(SyntheticChamberRun, HiddenEffectHasTheRequestedUnexplainedShare)
 {
-	SyntheticRunOptions o;
-	o.dt_s = 20;
-	o.hidden["radial_gradient"] = 3.0;
-	const auto r = makeSyntheticChamberRun(o);
+	const auto r = makeSyntheticChamberRun(20, 1, {{"radial_gradient", 3.0}});
 	r.series.validate();
 	const auto& e = r.effect_dph.at("radial_gradient");
 	ASSERT_EQ(e.size(), r.series.size());
@@ -62,10 +59,7 @@ TEST(SyntheticChamberRun, ProfilesAndConfounders)
 
 TEST(SyntheticChamberRun, ThermistorLagIsAppliedAndReported)
 {
-	SyntheticRunOptions o;
-	o.dt_s = 20;
-	o.hidden["thermistor_lag"] = 1.0;
-	const auto r = makeSyntheticChamberRun(o);
+	const auto r = makeSyntheticChamberRun(20, 1, {{"thermistor_lag", 1.0}});
 	EXPECT_GT(r.thermistor_tau_s, 1.0);
 	EXPECT_LT(r.thermistor_tau_s, 2000.0);
 }

@@ -345,4 +345,13 @@ SyntheticRun makeSyntheticChamberRun(const SyntheticRunOptions& opt)
 	return out;
 }
 
+SyntheticRun makeSyntheticChamberRun(double dt_s, std::uint64_t seed, const std::map<std::string, double>& hidden)
+{
+	SyntheticRunOptions o;
+	o.dt_s = dt_s;
+	o.seed = seed;
+	o.hidden = hidden;
+	return makeSyntheticChamberRun(o);
+}
+
 }  // namespace mrpt_fog::discrepancy

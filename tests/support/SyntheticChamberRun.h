@@ -75,4 +75,8 @@ struct SyntheticRun
  * heat_source, which concerns temperatures and is not generated here). */
 SyntheticRun makeSyntheticChamberRun(const SyntheticRunOptions& opt);
 
+/** The usual test run in one call: the all_conditions profile sampled every dt_s, with the given
+ * seed and hidden effects (id -> effect-to-noise ratio), other options at their defaults. */
+SyntheticRun makeSyntheticChamberRun(double dt_s, std::uint64_t seed = 1, const std::map<std::string, double>& hidden = {});
+
 }  // namespace mrpt_fog::discrepancy

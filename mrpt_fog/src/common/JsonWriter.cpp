@@ -20,6 +20,13 @@ JsonValue JsonValue::array()
 	return v;
 }
 
+JsonValue JsonValue::array(std::initializer_list<JsonValue> items)
+{
+	JsonValue v = array();
+	v.items_.assign(items.begin(), items.end());
+	return v;
+}
+
 JsonValue& JsonValue::operator[](const std::string& key)
 {
 	if (kind_ == Kind::Null) kind_ = Kind::Object;

@@ -12,6 +12,17 @@ namespace mrpt_fog::discrepancy
 using Mat = Eigen::MatrixXd;
 using Vec = Eigen::VectorXd;
 
+const char* toString(CandidateStatus s)
+{
+	switch (s)
+	{
+		case CandidateStatus::Tested: return "tested";
+		case CandidateStatus::Spanned: return "spanned";
+		case CandidateStatus::Untestable: return "untestable";
+	}
+	return "?";
+}
+
 CandidateContext makeCandidateContext(const RunSignals& sig, const BaseDesign& base, const Vec& base_coef)
 {
 	CandidateContext ctx;
@@ -285,7 +296,7 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 			const auto why = cs.eff->untestable_reason(sig);
 			if (!why.empty())
 			{
-				cs.test.status = "untestable";
+				cs.test.status = CandidateStatus::Untestable;
 				cs.test.note = why;
 				report.push_back(cs.test);
 				continue;
@@ -294,7 +305,7 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 				if (spanResidual(X, cs.eff->build(ctx, th), rows) >= opt.span_tolerance) cs.thetas.push_back(th);
 			if (cs.thetas.empty())
 			{
-				cs.test.status = "spanned";
+				cs.test.status = CandidateStatus::Spanned;
 				cs.test.note = "the model already spans its terms";
 				report.push_back(cs.test);
 				continue;
@@ -312,7 +323,7 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 				}
 			}
 			cs.C = cs.eff->build(ctx, cs.theta);
-			cs.test.status = "tested";
+			cs.test.status = CandidateStatus::Tested;
 			cands.push_back(std::move(cs));
 		}
 		if (cands.empty())

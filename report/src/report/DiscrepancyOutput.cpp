@@ -71,36 +71,25 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 	const auto& sel = rep.selection;
 	JsonValue j = JsonValue::object();
 	j["model"] = rep.model_source;
-	JsonValue terms = JsonValue::array();
-	for (const auto& t : rep.base_terms) terms.push_back(t);
-	j["base_terms"] = terms;
-	JsonValue runs = JsonValue::array();
-	for (const auto& r : rep.run_labels) runs.push_back(r);
-	j["runs"] = runs;
+	j["base_terms"] = JsonValue::arrayOf(rep.base_terms);
+	j["runs"] = JsonValue::arrayOf(rep.run_labels);
 	j["verdict"] = rep.verdict();
 	JsonValue named = JsonValue::array();
 	for (const auto& ne : sel.named)
 	{
 		JsonValue e = JsonValue::object();
 		e["id"] = ne.id;
-		JsonValue ag = JsonValue::array();
-		for (const auto& a : ne.alias_group) ag.push_back(a);
-		e["alias_group"] = ag;
+		e["alias_group"] = JsonValue::arrayOf(ne.alias_group);
 		e["confidence"] = ne.confidence;
 		e["group_confidence"] = ne.group_confidence;
 		e["coefficient"] = ne.coefficient;
 		e["coefficient_unit"] = ne.coefficient_unit;
-		JsonValue ci = JsonValue::array();
-		ci.push_back(ne.ci_low);
-		ci.push_back(ne.ci_high);
-		e["ci"] = ci;
+		e["ci"] = JsonValue::array({ne.ci_low, ne.ci_high});
 		if (!ne.theta_name.empty()) e[ne.theta_name] = ne.theta;
 		e["chi2"] = ne.chi2;
 		e["p_adjusted"] = ne.p_adjusted;
 		e["delta_bic"] = ne.delta_bic;
-		JsonValue sep = JsonValue::array();
-		for (const auto& s : ne.separating_profiles) sep.push_back(s);
-		e["separating_profiles"] = sep;
+		e["separating_profiles"] = JsonValue::arrayOf(ne.separating_profiles);
 		if (ne.confirm_tested)
 		{
 			e["confirmed"] = ne.confirmed;
@@ -155,9 +144,9 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 		{
 			JsonValue e = JsonValue::object();
 			e["id"] = t.id;
-			e["status"] = t.status;
+			e["status"] = toString(t.status);
 			e["note"] = t.note;
-			if (t.status == "tested")
+			if (t.status == CandidateStatus::Tested)
 			{
 				e["chi2"] = t.chi2;
 				e["dof"] = t.dof;
@@ -169,9 +158,7 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 		}
 	j["candidates_first_round"] = cands;
 	JsonValue noise = JsonValue::object();
-	JsonValue phi = JsonValue::array();
-	for (double p : sel.ar.phi) phi.push_back(p);
-	noise["ar_phi"] = phi;
+	noise["ar_phi"] = JsonValue::arrayOf(sel.ar.phi);
 	noise["ma_theta"] = sel.ar.theta;
 	noise["long_run_variance_factor"] = sel.lrv_factor;
 	noise["outliers_excluded"] = static_cast<unsigned long>(sel.outliers);
@@ -227,7 +214,8 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 	{
 		std::string skipped;
 		for (const auto& t : sel.rounds.front())
-			if (t.status != "tested") skipped += "  " + t.id + ": " + t.status + " (" + t.note + ")\n";
+			if (t.status != CandidateStatus::Tested)
+				skipped += "  " + t.id + ": " + toString(t.status) + " (" + t.note + ")\n";
 		if (!skipped.empty()) os << "Not tested:\n" << skipped;
 	}
 	auto gapLine = [&](const RunGap& g)

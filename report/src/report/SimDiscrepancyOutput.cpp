@@ -10,6 +10,21 @@ namespace mrpt_fog::discrepancy
 {
 namespace
 {
+/** [{"name": names[i], key: values[i], ...}, ...] for the given (key, values) columns. */
+JsonValue perThermistorJson(const std::vector<std::string>& names,
+							std::initializer_list<std::pair<const char*, const std::vector<double>*>> columns)
+{
+	JsonValue th = JsonValue::array();
+	for (std::size_t i = 0; i < names.size(); ++i)
+	{
+		JsonValue e = JsonValue::object();
+		e["name"] = names[i];
+		for (const auto& [key, values] : columns) e[key] = (*values)[i];
+		th.push_back(e);
+	}
+	return th;
+}
+
 JsonValue tempGapJson(const TemperatureGap& g)
 {
 	JsonValue j = JsonValue::object();
@@ -19,24 +34,8 @@ JsonValue tempGapJson(const TemperatureGap& g)
 	a["rms_C"] = g.rms_after_C;
 	j["before"] = b;
 	j["after"] = a;
-	JsonValue th = JsonValue::array();
-	for (std::size_t i = 0; i < g.names.size(); ++i)
-	{
-		JsonValue e = JsonValue::object();
-		e["name"] = g.names[i];
-		e["rms_before_C"] = g.rms_before_per_C[i];
-		e["rms_after_C"] = g.rms_after_per_C[i];
-		th.push_back(e);
-	}
-	j["thermistors"] = th;
+	j["thermistors"] = perThermistorJson(g.names, {{"rms_before_C", &g.rms_before_per_C}, {"rms_after_C", &g.rms_after_per_C}});
 	return j;
-}
-
-JsonValue stringArray(const std::vector<std::string>& v)
-{
-	JsonValue a = JsonValue::array();
-	for (const auto& s : v) a.push_back(s);
-	return a;
 }
 
 JsonValue valuesJson(const std::vector<std::pair<std::string, double>>& v)
@@ -60,10 +59,7 @@ JsonValue ciJson(const std::vector<std::pair<std::string, double>>& values,
 					o[k] = JsonValue();
 					break;
 				}
-				JsonValue a = JsonValue::array();
-				a.push_back(v - h);
-				a.push_back(v + h);
-				o[k] = a;
+				o[k] = JsonValue::array({v - h, v + h});
 				break;
 			}
 	return o;
@@ -81,27 +77,10 @@ std::string valuesText(const std::vector<std::pair<std::string, double>>& values
 	}
 	return out;
 }
-}  // namespace
 
-JsonValue simDiscrepancyJson(const SimDiscrepancyReport& R)
+/** The temperature channel's heat-source test (HeatSourceCandidate.h). */
+JsonValue heatSourceJson(const HeatSourceResult& h, const HeatSourceConfirm& confirm)
 {
-	JsonValue j = discrepancyJson(R.report);
-	j["model_kind"] = "simulator";
-	JsonValue s = JsonValue::object();
-	s["config"] = R.config_source;
-	s["driving_input"] = R.drive;
-	if (R.report.has_confirm) s["driving_input_confirm"] = R.drive_confirm;
-	s["effects_before"] = stringArray(R.effects_before);
-	s["effects_after"] = stringArray(R.effects_after);
-	s["free_before"] = stringArray(R.free_before);
-	s["free_after"] = stringArray(R.free_after);
-	s["calibrated_before"] = valuesJson(R.calibrated_before);
-	s["calibrated_after"] = valuesJson(R.calibrated_after);
-	s["calibrated_before_ci95"] = ciJson(R.calibrated_before, R.calibrated_before_ci95_half);
-	s["calibrated_after_ci95"] = ciJson(R.calibrated_after, R.calibrated_after_ci95_half);
-	s["simulations"] = R.simulations;
-	j["simulator"] = s;
-	const auto& h = R.heat;
 	JsonValue hs = JsonValue::object();
 	hs["tested"] = h.tested;
 	hs["untestable_reason"] = h.untestable_reason;
@@ -110,10 +89,7 @@ JsonValue simDiscrepancyJson(const SimDiscrepancyReport& R)
 	{
 		hs["tau_s"] = h.tau_s;
 		hs["amplitude_C"] = h.amplitude_C;
-		JsonValue ci = JsonValue::array();
-		ci.push_back(h.ci_low_C);
-		ci.push_back(h.ci_high_C);
-		hs["ci"] = ci;
+		hs["ci"] = JsonValue::array({h.ci_low_C, h.ci_high_C});
 		hs["chi2"] = h.chi2;
 		hs["p_adjusted"] = h.p_adjusted;
 		hs["delta_bic"] = h.delta_bic;
@@ -134,42 +110,61 @@ JsonValue simDiscrepancyJson(const SimDiscrepancyReport& R)
 		hs["thermistors"] = th;
 	}
 	hs["sentence"] = h.sentence;
-	if (R.heat_confirm.tested)
+	if (confirm.tested)
 	{
-		hs["confirmed"] = R.heat_confirm.confirmed;
-		hs["confirm_p"] = R.heat_confirm.p;
+		hs["confirmed"] = confirm.confirmed;
+		hs["confirm_p"] = confirm.p;
 	}
-	j["heat_source_test"] = hs;
+	return hs;
+}
+
+/** The thermal fit (ThermalFit.h). */
+JsonValue thermalFitJson(const ThermalFit& t)
+{
+	JsonValue tf = JsonValue::object();
+	tf["rms_C"] = t.rms_C;
+	tf["threshold_C"] = t.threshold_C;
+	tf["misfit"] = t.misfit;
+	tf["worst_thermistor"] = t.worst_thermistor;
+	tf["worst_rms_C"] = t.worst_rms_C;
+	tf["max_abs_C"] = t.max_abs_C;
+	tf["max_abs_thermistor"] = t.max_abs_thermistor;
+	tf["max_abs_time_s"] = t.max_abs_time_s;
+	tf["thermistors"] = perThermistorJson(t.names, {{"rms_C", &t.rms_per_C}});
+	tf["fix"] = toString(t.fix);
+	tf["lag_share"] = t.lag_share;
+	tf["lag_tau_s"] = t.lag_tau_s;
+	tf["power_share"] = t.power_share;
+	tf["power_tau_s"] = t.power_tau_s;
+	tf["sentence"] = t.sentence;
+	return tf;
+}
+
+}  // namespace
+
+JsonValue simDiscrepancyJson(const SimDiscrepancyReport& R)
+{
+	JsonValue j = discrepancyJson(R.report);
+	j["model_kind"] = "simulator";
+	JsonValue s = JsonValue::object();
+	s["config"] = R.config_source;
+	s["driving_input"] = R.drive;
+	if (R.report.has_confirm) s["driving_input_confirm"] = R.drive_confirm;
+	s["effects_before"] = JsonValue::arrayOf(R.effects_before);
+	s["effects_after"] = JsonValue::arrayOf(R.effects_after);
+	s["free_before"] = JsonValue::arrayOf(R.free_before);
+	s["free_after"] = JsonValue::arrayOf(R.free_after);
+	s["calibrated_before"] = valuesJson(R.calibrated_before);
+	s["calibrated_after"] = valuesJson(R.calibrated_after);
+	s["calibrated_before_ci95"] = ciJson(R.calibrated_before, R.calibrated_before_ci95_half);
+	s["calibrated_after_ci95"] = ciJson(R.calibrated_after, R.calibrated_after_ci95_half);
+	s["simulations"] = R.simulations;
+	j["simulator"] = s;
+	j["heat_source_test"] = heatSourceJson(R.heat, R.heat_confirm);
 	j["temperature_gap"] = tempGapJson(R.temp_gap);
-	{
-		const ThermalFit& t = R.thermal;
-		JsonValue tf = JsonValue::object();
-		tf["rms_C"] = t.rms_C;
-		tf["threshold_C"] = t.threshold_C;
-		tf["misfit"] = t.misfit;
-		tf["worst_thermistor"] = t.worst_thermistor;
-		tf["worst_rms_C"] = t.worst_rms_C;
-		tf["max_abs_C"] = t.max_abs_C;
-		tf["max_abs_thermistor"] = t.max_abs_thermistor;
-		tf["max_abs_time_s"] = t.max_abs_time_s;
-		JsonValue th = JsonValue::array();
-		for (std::size_t i = 0; i < t.names.size(); ++i)
-		{
-			JsonValue e = JsonValue::object();
-			e["name"] = t.names[i];
-			e["rms_C"] = t.rms_per_C[i];
-			th.push_back(e);
-		}
-		tf["thermistors"] = th;
-		tf["fix"] = toString(t.fix);
-		tf["lag_share"] = t.lag_share;
-		tf["lag_tau_s"] = t.lag_tau_s;
-		tf["power_share"] = t.power_share;
-		tf["power_tau_s"] = t.power_tau_s;
-		tf["sentence"] = t.sentence;
-		j["thermal_fit"] = tf;
-		if (t.misfit) j["verdict"] = std::string("thermal model misfit (") + toString(t.fix) + "): first disagreement, no bias effect judged";
-	}
+	j["thermal_fit"] = thermalFitJson(R.thermal);
+	if (R.thermal.misfit)
+		j["verdict"] = std::string("thermal model misfit (") + toString(R.thermal.fix) + "): first disagreement, no bias effect judged";
 	if (R.drive_air_ci95_mean_C >= 0)
 	{
 		JsonValue a = JsonValue::object();

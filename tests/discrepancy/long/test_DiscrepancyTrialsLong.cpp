@@ -17,10 +17,7 @@ TEST_P(ProofTrialsLong, HiddenEffectNamedAtRatios1And3)
 {
 	for (double ratio : {1.0, 3.0})
 	{
-		TrialSpec spec;
-		spec.hidden = {GetParam()};
-		spec.ratios = {ratio};
-		const auto t = runSeeds(spec, 100, 10000);
+		const auto t = runSeeds(hiddenSpec({GetParam()}, {ratio}), 100, 10000);
 		print(GetParam() + " @" + std::to_string(int(ratio)), t);
 		EXPECT_GE(t.named, 95) << GetParam() << " ratio " << ratio;
 		EXPECT_GE(t.gap_ok, 95) << GetParam() << " ratio " << ratio;

@@ -11,6 +11,7 @@
  *   writeTextFileAtomically("out.json", j.dump());
  */
 
+#include <initializer_list>
 #include <map>
 #include <memory>
 #include <string>
@@ -43,6 +44,16 @@ class JsonValue
 
 	static JsonValue object();
 	static JsonValue array();
+	/** An array of the given items: JsonValue::array({low, high}). */
+	static JsonValue array(std::initializer_list<JsonValue> items);
+	/** An array of each element of a container (strings, numbers, ...). */
+	template <class Container>
+	static JsonValue arrayOf(const Container& items)
+	{
+		JsonValue a = array();
+		for (const auto& x : items) a.push_back(JsonValue(x));
+		return a;
+	}
 
 	/** Object member (created on first use; a Null value becomes an object). Keys keep
 	 * insertion order in the output. */

@@ -78,11 +78,21 @@ struct AugmentedModel
 /** Context for candidate columns given base-column coefficients. */
 CandidateContext makeCandidateContext(const RunSignals& sig, const BaseDesign& base, const Eigen::VectorXd& base_coef);
 
+/** What became of a candidate in a selection round. */
+enum class CandidateStatus
+{
+	Tested,  //!< fitted and judged (chi2, p, BIC below)
+	Spanned,  //!< its columns lie in the model's span: nothing to add
+	Untestable  //!< the run lacks what excites it (note says what)
+};
+/** "tested", "spanned", "untestable" (the JSON / text spelling). */
+const char* toString(CandidateStatus s);
+
 /** Status of one candidate in one selection round. */
 struct CandidateTest
 {
 	std::string id;
-	std::string status;  //!< "tested", "spanned", "untestable", "explained"
+	CandidateStatus status = CandidateStatus::Tested;
 	std::string note;  //!< why untestable / by what explained
 	double theta = 0.0;
 	double chi2 = 0.0;
