@@ -7,6 +7,9 @@
 #include <mrpt/random/RandomGenerators.h>
 #include <mrpt/slam/CMonteCarloLocalization2D.h>
 
+#include <mrpt/math/wrap2pi.h>
+
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -38,6 +41,36 @@ void applyLikelihoodOptions(mrpt::maps::COccupancyGridMap2D& grid, const MclOpti
 	lo.LF_maxCorrsDistance = static_cast<float>(3.0 * o.lf_std_hit_m);
 	lo.enableLikelihoodCache = true;
 }
+
+namespace
+{
+/** Gordon-Salmond-Smith roughening: jitter std K * E * N^(-1/3) per dimension (x, y, heading). */
+void roughen(mrpt::slam::CMonteCarloLocalization2D& pdf, double k)
+{
+	auto& parts = pdf.m_particles;
+	const std::size_t n = parts.size();
+	if (n < 2 || !(k > 0)) return;
+	const double phi0 = parts[0].d.phi;
+	double lo[3] = {parts[0].d.x, parts[0].d.y, 0.0}, hi[3] = {lo[0], lo[1], 0.0};
+	for (const auto& p : parts)
+	{
+		const double v[3] = {p.d.x, p.d.y, mrpt::math::wrapToPi(p.d.phi - phi0)};
+		for (int j = 0; j < 3; ++j)
+		{
+			lo[j] = std::min(lo[j], v[j]);
+			hi[j] = std::max(hi[j], v[j]);
+		}
+	}
+	const double c = k * std::pow(static_cast<double>(n), -1.0 / 3.0);
+	auto& rng = mrpt::random::getRandomGenerator();
+	for (auto& p : parts)
+	{
+		p.d.x += c * (hi[0] - lo[0]) * rng.drawGaussian1D_normalized();
+		p.d.y += c * (hi[1] - lo[1]) * rng.drawGaussian1D_normalized();
+		p.d.phi = mrpt::math::wrapToPi(p.d.phi + c * (hi[2] - lo[2]) * rng.drawGaussian1D_normalized());
+	}
+}
+}  // namespace
 
 MclRun runMcl(const World& world, const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& scans,
 			  const std::vector<double>& t, const std::vector<mrpt::poses::CPose2D>& odo, const mrpt::poses::CPose2D& start,
@@ -89,7 +122,15 @@ MclRun runMcl(const World& world, const std::vector<mrpt::obs::CObservation2DRan
 		sf.insert(scans[k]);
 		mrpt::bayes::CParticleFilter::TParticleFilterStats stats;
 		pf.executeOn(pdf, &acts, &sf, &stats);
-		if (stats.ESS_beforeResample < pf.m_options.BETA) ++run.resamplings;
+		if (stats.ESS_beforeResample < pf.m_options.BETA)
+		{
+			++run.resamplings;
+			if (o.roughening_k > 0)
+			{
+				roughen(pdf, o.roughening_k);
+				++run.roughenings;
+			}
+		}
 		record(t[k], scale);
 
 		// Online odometry-scale calibration at the end of each urban stretch.

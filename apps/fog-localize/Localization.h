@@ -60,6 +60,10 @@ struct MclOptions
 	double lf_std_hit_m = 1.0;  //!< likelihood-field hit std (grid 2 m)
 	unsigned lf_decimation = 1;  //!< every ray in the likelihood
 	double pow_factor = 1.0;  //!< likelihood exponent (< 1 flattens it: rays are not independent)
+	/** Roughening after each resampling (Gordon, Salmond & Smith 1993, IEE Proc. F 140(2)): every
+	 * particle gets Gaussian jitter of std K * E * N^(-1/d) per dimension, E the particles' range
+	 * (max - min) in that dimension, N the particle count, d = 3 (x, y, heading). 0 = off. */
+	double roughening_k = 0.0;
 	bool calibrate_odometry_scale = true;
 	double settle_s = 60.0;  //!< scale calibration ignores the first seconds of an urban stretch
 	double chord_s = 30.0;  //!< scale calibration compares displacements over windows of this length
@@ -71,6 +75,7 @@ struct MclRun
 	std::vector<double> yaw_std_rad;  //!< the particles' weighted heading standard deviation at each scan
 	std::vector<double> odometry_scale;  //!< scale applied at each step
 	std::size_t resamplings = 0;
+	std::size_t roughenings = 0;  //!< resamplings followed by roughening
 };
 
 /** odo: the dead-reckoned odometry pose (FOG heading + wheel distance) at each scan time.

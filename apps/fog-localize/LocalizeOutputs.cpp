@@ -84,6 +84,7 @@ std::string iniText(const std::string& gyro_name, const MclOptions& m, const Las
 	  << " minStdXY=" << g.min_std_xy_m << " m minStdPHI from " << g.heading_bias_dph << " deg/h over "
 	  << g.horizon_s << " s),\n# so [DummyOdometryParams] is not used. The increments are scaled by the odometry scale\n"
 	  << "# fog-localize's first filter seed had calibrated by then (pf-localization has no such calibration).\n"
+	  << (m.roughening_k > 0 ? "# fog-localize roughened after each resampling (--roughening-k); pf-localization does not.\n" : "")
 	  << "[LocalizationExperiment]\n"
 	  << "map_file=map.gridmap.gz\n"
 	  << "rawlog_file=localize_" << gyro_name << ".rawlog\n"
@@ -188,6 +189,7 @@ void writeOutputs(const std::string& dir, const std::string& json_path, const Lo
 	if (!r.gyros.empty())
 		for (unsigned s : r.gyros.front().seeds) j["seeds"].push_back(s);
 	j["particles"] = static_cast<unsigned long>(mcl.particles);
+	j["roughening_k"] = mcl.roughening_k;
 	JsonValue& pr = j["position_rms_m"];
 	pr = JsonValue::object();
 	for (const auto& g : r.gyros) pr[g.name] = g.summary.position_rms_m.at(StretchKind::Open);

@@ -137,6 +137,10 @@ int main(int argc, char** argv)
 									   "motion model: heading error per turned angle [ppm]", false, 2000.0, "PPM", cmd);
 		TCLAP::ValueArg<double> arg_pow("", "pow-factor", "likelihood exponent of a scan (rays are not independent)",
 										false, 1.0, "X", cmd);
+		TCLAP::ValueArg<double> arg_rough("", "roughening-k",
+										  "jitter after each resampling, std K * range * N^(-1/3) per dimension "
+										  "(Gordon-Salmond-Smith 1993 roughening; 0 = off)",
+										  false, 0.0, "K", cmd);
 		TCLAP::ValueArg<unsigned> arg_dec("", "lf-decimation", "use every N-th laser ray in the likelihood", false, 1,
 										  "N", cmd);
 		TCLAP::ValueArg<std::string> arg_fields("", "fields",
@@ -148,6 +152,7 @@ int main(int argc, char** argv)
 									 "do not calibrate the wheel odometry's distance scale on urban stretches", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-localize", kHelp)) return *rc;
 		if (arg_seeds.getValue() < 1) throw std::runtime_error("--seeds: must be >= 1");
+		if (!(arg_rough.getValue() >= 0)) throw std::runtime_error("--roughening-k: must be >= 0");
 		if (arg_particles.getValue() < 10) throw std::runtime_error("--particles: must be >= 10");
 		if (!(arg_period.getValue() >= 0.1 && arg_period.getValue() <= 10))
 			throw std::runtime_error("--scan-period-s: must be within [0.1, 10] s");
@@ -230,6 +235,7 @@ int main(int argc, char** argv)
 		mopt.motion.scale_factor_ppm = arg_sf.getValue();
 		mopt.pow_factor = arg_pow.getValue();
 		mopt.lf_decimation = arg_dec.getValue();
+		mopt.roughening_k = arg_rough.getValue();
 		mopt.calibrate_odometry_scale = !arg_noscale.getValue();
 		if (!(mopt.motion.heading_bias_dph > 0) || !(mopt.motion.horizon_s > 0) || !(mopt.motion.scale_factor_ppm >= 0) ||
 			!(mopt.pow_factor > 0 && mopt.pow_factor <= 1) || mopt.lf_decimation < 1)

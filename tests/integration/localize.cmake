@@ -36,6 +36,9 @@ if(TARGET fog-localize)
   add_test(NAME localize.fog_localize.cal_and_ratetable COMMAND fog-localize --cal x.yaml --ratetable none --out ${LOC_DIR}_bad)
   set_tests_properties(localize.fog_localize.bad_seeds localize.fog_localize.missing_drive localize.fog_localize.bad_fields
     localize.fog_localize.cal_and_ratetable PROPERTIES WILL_FAIL TRUE LABELS "localize;integration")
+  add_test(NAME localize.fog_localize.bad_roughening COMMAND fog-localize --roughening-k -1 --out ${LOC_DIR}_bad)
+  set_tests_properties(localize.fog_localize.bad_roughening PROPERTIES
+    PASS_REGULAR_EXPRESSION "--roughening-k: must be >= 0" LABELS "localize;integration")
   add_test(NAME localize.fog_localize.not_a_ratetable COMMAND fog-localize --ratetable ${FOG_SOURCE_DIR}/datasets/warmup.rawlog
     --out ${LOC_DIR}_bad)
   set_tests_properties(localize.fog_localize.not_a_ratetable PROPERTIES
