@@ -14,13 +14,8 @@ using Vec = Eigen::VectorXd;
 
 const char* toString(CandidateStatus s)
 {
-	switch (s)
-	{
-		case CandidateStatus::Tested: return "tested";
-		case CandidateStatus::Spanned: return "spanned";
-		case CandidateStatus::Untestable: return "untestable";
-	}
-	return "?";
+	static const char* const kSpelling[] = {"tested", "spanned", "untestable"};  // enumerator order
+	return kSpelling[static_cast<int>(s)];
 }
 
 CandidateContext makeCandidateContext(const RunSignals& sig, const BaseDesign& base, const Vec& base_coef)
