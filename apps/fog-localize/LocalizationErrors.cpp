@@ -133,4 +133,30 @@ std::vector<HeadingBudget> headingBudget(const std::vector<RunErrors>& seeds, co
 	return out;
 }
 
+HeadingRelevance headingRelevance(const GyroSummary& raw, const std::vector<HeadingBudget>& raw_budget,
+								  const GyroSummary& ideal, const std::vector<HeadingBudget>& ideal_budget)
+{
+	HeadingRelevance out;
+	const auto r = raw.position_rms_m.find(StretchKind::Open), i = ideal.position_rms_m.find(StretchKind::Open);
+	if (r != raw.position_rms_m.end() && i != ideal.position_rms_m.end() && r->second > 0)
+		out.ideal_to_raw_position_rms = i->second / r->second;
+	out.heading_matters = out.ideal_to_raw_position_rms <= HeadingRelevance::kMaxReachableRatio;
+	for (const HeadingBudget& hr : raw_budget)
+		for (const HeadingBudget& hi : ideal_budget)
+		{
+			if (hi.index != hr.index) continue;
+			FieldRelevance f;
+			f.index = hr.index;
+			f.raw_gyro_drift_deg = hr.gyro_drift_deg;
+			f.ideal_entry_heading_rms_deg = hi.entry_heading_rms_deg;
+			f.gyro_dominates = std::abs(hr.gyro_drift_deg) > hi.entry_heading_rms_deg;
+			if (hr.index < raw.stretches.size() && hr.index < ideal.stretches.size() &&
+				raw.stretches[hr.index].position_rms_m > 0)
+				f.ideal_to_raw_position_rms =
+					ideal.stretches[hr.index].position_rms_m / raw.stretches[hr.index].position_rms_m;
+			out.fields.push_back(f);
+		}
+	return out;
+}
+
 }  // namespace mrpt_fog::localize

@@ -9,6 +9,7 @@
 
 #include "Localization.h"
 
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -73,5 +74,36 @@ struct HeadingBudget
  * time (the same times as every run's). */
 std::vector<HeadingBudget> headingBudget(const std::vector<RunErrors>& seeds, const std::vector<Stretch>& stretches,
 										 const std::vector<double>& odometry_heading_error_deg);
+
+/** Whether the open fields can judge a gyro's heading at all ("say plainly when the map makes
+ * heading irrelevant"). A heading error's share of an open field's position error is what any
+ * gyro improvement can remove; the rest is the map-matching's (the heading and position the
+ * filter enters the field with, the same for every gyro). Two measures, both from the run:
+ * - per field, the raw gyro's own heading drift over the field against the ideal gyro's entry
+ *   heading error (RMS over seeds): below it, the field's heading error at its end is mostly
+ *   the map-matching's, whatever the gyro;
+ * - over the open fields, the ideal gyro's position RMS over the raw gyro's: the best ratio a
+ *   perfect compensation could reach. Above kMaxReachableRatio the "compensated <= 0.5x raw"
+ *   target cannot be judged on these fields: "cannot tell", never "missed by the gyro". */
+struct FieldRelevance
+{
+	std::size_t index = 0;  //!< into World::stretches
+	double raw_gyro_drift_deg = 0;  //!< raw odometry heading error change over the field
+	double ideal_entry_heading_rms_deg = 0;  //!< the map-matching's heading error at entry
+	double ideal_to_raw_position_rms = NAN;  //!< this field's ideal / raw position RMS
+	bool gyro_dominates = false;  //!< |raw drift| > ideal entry heading RMS
+};
+
+struct HeadingRelevance
+{
+	static constexpr double kMaxReachableRatio = 0.5;  //!< the issue's target ratio compensated / raw
+	double ideal_to_raw_position_rms = NAN;  //!< pooled over the open fields and seeds
+	bool heading_matters = false;  //!< ideal_to_raw_position_rms <= kMaxReachableRatio
+	std::vector<FieldRelevance> fields;
+};
+
+/** From the raw and ideal gyros' summaries and heading budgets of the same world and seeds. */
+HeadingRelevance headingRelevance(const GyroSummary& raw, const std::vector<HeadingBudget>& raw_budget,
+								  const GyroSummary& ideal, const std::vector<HeadingBudget>& ideal_budget);
 
 }  // namespace mrpt_fog::localize

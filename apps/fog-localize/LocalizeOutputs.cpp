@@ -153,6 +153,21 @@ void printSummary(const LocalizeResults& r, const World& world)
 					"%+.2f +- %.2f m (%s)\n",
 					dr.first, dr.second, verdict(dr), di.first, di.second, verdict(di));
 	}
+	const HeadingRelevance& hr = r.relevance;
+	for (const FieldRelevance& f : hr.fields)
+		std::printf("  open field #%zu: raw gyro drift %+.4f deg vs map-matching's entry heading error %.4f deg RMS "
+					"(ideal gyro): %s; ideal / raw position RMS %.2f\n",
+					f.index, f.raw_gyro_drift_deg, f.ideal_entry_heading_rms_deg,
+					f.gyro_dominates ? "the gyro's drift dominates" : "the map-matching dominates",
+					f.ideal_to_raw_position_rms);
+	if (hr.heading_matters)
+		std::printf("  heading matters on these open fields: a perfect gyro gives %.2fx the raw position RMS (<= %.1f)\n",
+					hr.ideal_to_raw_position_rms, HeadingRelevance::kMaxReachableRatio);
+	else
+		std::printf("  CANNOT TELL on these open fields: even the ideal gyro gives %.2fx the raw position RMS (> %.1f): the "
+					"map-matching's entry error, not the gyro, sets the error here, so the 'compensated <= %.1fx raw' target "
+					"cannot be judged (try --fields turns)\n",
+					hr.ideal_to_raw_position_rms, HeadingRelevance::kMaxReachableRatio, HeadingRelevance::kMaxReachableRatio);
 	(void)world;
 }
 
@@ -265,6 +280,26 @@ void writeOutputs(const std::string& dir, const std::string& json_path, const Lo
 			e["walk_rms_deg"] = h.walk_rms_deg;
 			e["end_heading_rms_deg"] = h.end_heading_rms_deg;
 			hb[g.name].push_back(e);
+		}
+	}
+	{
+		const HeadingRelevance& hrel = r.relevance;
+		JsonValue& rel = j["heading_relevance"];
+		rel = JsonValue::object();
+		rel["ideal_to_raw_position_rms"] = hrel.ideal_to_raw_position_rms;
+		rel["max_reachable_ratio"] = HeadingRelevance::kMaxReachableRatio;
+		rel["heading_matters"] = hrel.heading_matters;
+		rel["verdict"] = hrel.heading_matters ? "heading matters" : "cannot tell: the map-matching dominates";
+		rel["fields"] = JsonValue::array();
+		for (const FieldRelevance& f : hrel.fields)
+		{
+			JsonValue e = JsonValue::object();
+			e["stretch"] = static_cast<unsigned long>(f.index);
+			e["raw_gyro_drift_deg"] = f.raw_gyro_drift_deg;
+			e["ideal_entry_heading_rms_deg"] = f.ideal_entry_heading_rms_deg;
+			e["ideal_to_raw_position_rms"] = f.ideal_to_raw_position_rms;
+			e["gyro_dominates"] = f.gyro_dominates;
+			rel["fields"].push_back(e);
 		}
 	}
 	JsonValue& st = j["stretches"];

@@ -37,6 +37,7 @@ struct LocalizeResults
 	CalibrationChoice calibration;  //!< what compensated the FOG
 	double t0_s = 0, runtime_s = 0;
 	std::vector<GyroResult> gyros;  //!< raw, compensated, ideal
+	HeadingRelevance relevance;  //!< whether the open fields can judge a gyro's heading
 };
 
 void printSummary(const LocalizeResults& r, const World& world);

@@ -8,12 +8,16 @@
  *   sees corners and facades, which fix position and heading.
  * - Open (open fields): nothing within the laser's range of the road, and nothing of other
  *   stretches either: the filter dead-reckons on odometry (wheel distance + FOG heading).
- *   These are the observation-poor stretches the FOG is judged on. FieldPlacement::Straights
- *   (default) puts them on the route's longest straight roads, away from turns: a heading
- *   error's cross-track error grows with the distance driven on it, and only the gyro's bias
- *   acts there. FieldPlacement::Turns puts them on the windows of the route that turn most
- *   (sum of |heading change|): there the gyro's scale-factor error at each turn acts as well.
- *   Both are chosen by route geometry, never by any gyro's error.
+ *   These are the observation-poor stretches the FOG is judged on. FieldPlacement::Turns
+ *   (default) puts them on the windows of the route that turn most (sum of |heading change|):
+ *   there the gyro's bias and its scale-factor error at each turn act, and the raw gyro's
+ *   heading drift over a field exceeds the heading error the map-matching leaves at its entry.
+ *   FieldPlacement::Straights puts them on the route's longest straight roads, away from turns:
+ *   only the gyro's bias acts there, and on the bundled drive its drift over a straight is
+ *   below the map-matching's entry heading error, so that even the ideal gyro gives 0.86x the
+ *   raw position error (docs/localize.md): there the map makes the gyro nearly irrelevant and
+ *   fog-localize says "cannot tell" (HeadingRelevance). Both are chosen by route geometry,
+ *   never by any gyro's error.
  * - Tunnel: smooth walls 6 m either side. The laser fixes lateral position and heading but
  *   not the position along the road: here the map makes the FOG heading irrelevant (only the
  *   wheel distance matters), which fog-localize reports separately.
@@ -57,7 +61,7 @@ struct WorldOptions
 {
 	double resolution_m = 2.0;  //!< grid cell size
 	int open_stretches = 3;
-	FieldPlacement placement = FieldPlacement::Straights;
+	FieldPlacement placement = FieldPlacement::Turns;
 	double turn_field_m = 4000.0;  //!< open-field length with FieldPlacement::Turns
 	double turn_field_gap_m = 2000.0;  //!< urban road at least this long between such fields
 	double margin_m = 800.0;  //!< urban road kept at both ends of a straight holding an open stretch

@@ -49,10 +49,11 @@ What it does
      calibration used is printed and recorded in --json (calibration.{path, source,
      fitted_on, bias_model, scale_factor, description}).
   1. World: an occupancy grid (2 m cells) around the drive's true route. Urban stretches have
-     building facades both sides; the route's 3 longest straights hold open fields (nothing in
-     laser range for >= 2 km, 800 m of urban road kept at both ends); the next straight holds a
-     1.5 km tunnel (walls 6 m either side). Written as map.gridmap.gz (pf-localization's
-     map_file) and map.png.
+     building facades both sides; 3 open fields (nothing in laser range) lie on the route's 3
+     most turning 4 km windows (--fields turns, the default) or on its 3 longest straights
+     (--fields straights: >= 2 km, 800 m of urban road kept at both ends); the longest
+     remaining straight holds a 1.5 km tunnel (walls 6 m either side). Written as
+     map.gridmap.gz (pf-localization's map_file) and map.png.
   2. Sensor: a 360 deg laser (181 rays, 60 m, 5 cm noise) simulated with MRPT's
      COccupancyGridMap2D::laserScanSimulator at the true pose, one scan per --scan-period-s.
   3. Odometry per gyro: wheel distance + heading integrated from the raw, compensated and
@@ -67,6 +68,11 @@ What it does
   Heading matters only where the map does not fix it: in urban stretches and in the tunnel the
   laser fixes heading (the tunnel's walls fix heading and lateral position, not the position
   along the road); the open stretches are the figure of merit (position_rms_m in --json).
+  6. Whether the open fields can judge the gyro (heading_relevance in --json): per field, the
+     raw gyro's heading drift over it against the heading error the map-matching leaves at its
+     entry (ideal gyro); over the fields, the ideal gyro's position RMS / the raw one's, the
+     best any compensation could reach. Above 0.5 it prints CANNOT TELL: the map-matching, not
+     the gyro, sets the error (on the bundled drive's straights the ideal gyro gives 0.86x raw).
 
 Outputs in --out: map.gridmap.gz, map.png, localize_<gyro>.rawlog (actions-observations:
   CActionRobotMovement2D with the FOG motion model + CSensoryFrame with the scan),
@@ -144,10 +150,11 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<unsigned> arg_dec("", "lf-decimation", "use every N-th laser ray in the likelihood", false, 1,
 										  "N", cmd);
 		TCLAP::ValueArg<std::string> arg_fields("", "fields",
-												"where the open fields go: 'straights' (the 3 longest straights) or "
-												"'turns' (the 3 most turning 4 km windows: the gyro's scale-factor "
-												"error at each turn acts too)",
-												false, "straights", "straights|turns", cmd);
+												"where the open fields go: 'turns' (the 3 most turning 4 km windows: "
+												"the gyro's bias and its scale-factor error at each turn act) or "
+												"'straights' (the 3 longest straights: the bias only; on the bundled "
+												"drive the map-matching's entry error dominates there)",
+												false, "turns", "turns|straights", cmd);
 		TCLAP::SwitchArg arg_noscale("", "no-scale-calibration",
 									 "do not calibrate the wheel odometry's distance scale on urban stretches", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-localize", kHelp)) return *rc;
@@ -276,6 +283,11 @@ int main(int argc, char** argv)
 			gr.heading_budget = headingBudget(gr.runs, world.stretches, odo_err_deg);
 			gr.odometry = odo;
 			results.gyros.push_back(std::move(gr));
+		}
+		{
+			const GyroResult& raw = results.gyros.front();
+			const GyroResult& ideal = results.gyros.back();
+			results.relevance = headingRelevance(raw.summary, raw.heading_budget, ideal.summary, ideal.heading_budget);
 		}
 		results.runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
 		printSummary(results, world);
