@@ -368,7 +368,10 @@ int main(int argc, char** argv)
 			   << "; 'cannot tell' below 2 standard errors), compensated - ideal = "
 			   << fmt(loc.number("paired_open_rms_difference_m.compensated_minus_ideal.mean"), "%+.2f") << " +- "
 			   << fmt(loc.number("paired_open_rms_difference_m.compensated_minus_ideal.standard_error"), "%.2f") << " m ("
-			   << loc.text("paired_open_rms_difference_m.compensated_minus_ideal.verdict") << "). Map, rawlogs, "
+			   << loc.text("paired_open_rms_difference_m.compensated_minus_ideal.verdict")
+			   << "). Can these fields judge the gyro? The ideal gyro gives "
+			   << fmt(loc.number("heading_relevance.ideal_to_raw_position_rms"), "%.2f") << "x the raw position RMS: "
+			   << loc.text("heading_relevance.verdict") << ". Map, rawlogs, "
 			   << "pf-localization .ini files and plots: `localize/`; details: docs/localize.md.\n";
 		}
 		if (have_paper)
