@@ -18,6 +18,7 @@
 #include <mrpt_fog/sim/DriveRun.h>
 #include <mrpt_fog/sim/EffectRegistry.h>
 #include <mrpt_fog/sim/SimRandom.h>
+#include <mrpt_fog/sim/TriadRun.h>
 
 #include <algorithm>
 #include <chrono>
@@ -81,6 +82,15 @@ int main(int argc, char** argv)
 										   "(drive_cabin: winter cold start, the default; drive_cabin_mild; "
 										   "drive_cabin_hot) or a profile YAML file",
 										   false, "drive_cabin", "NAME|FILE.yaml", cmd);
+		TCLAP::SwitchArg triad("", "triad",
+							   "a three-axis FOG (x, y, z coils sharing one thermal network and the thermistors; per-axis "
+							   "error sensitivities and noise: docs/sim.md, Three-axis FOG). The vehicle: z up; the "
+							   "chamber: --up-axis up (the table turns about it), the other two horizontal",
+							   cmd);
+		TCLAP::ValueArg<std::string> up_axis("", "up-axis",
+											 "with --triad in the chamber: the vertical axis, about which the table "
+											 "turns (a rate-table run calibrates that axis' scale factor)",
+											 false, "z", "x|y|z", cmd);
 		TCLAP::ValueArg<std::string> json("", "json", "write figures as JSON", false, "", "F", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-sim")) return *rc;
 
@@ -100,6 +110,12 @@ int main(int argc, char** argv)
 		const bool vehicle = profile.getValue() == "drive";
 		if (cabin.isSet() && !vehicle) throw std::invalid_argument("--cabin: only with --profile drive");
 		const ChamberProfile prof = vehicle ? loadProfile(cabin.getValue()) : loadProfile(profile.getValue());
+		if (up_axis.isSet() && (!triad.getValue() || vehicle))
+			throw std::invalid_argument("--up-axis: only with --triad in the chamber (the vehicle's triad is z up)");
+		const std::string up_text = up_axis.getValue();
+		if (up_text != "x" && up_text != "y" && up_text != "z")
+			throw std::invalid_argument("--up-axis: '" + up_text + "' is not x, y or z");
+		const GyroAxis up = static_cast<GyroAxis>(up_text[0] - 'x');
 
 		const auto t0 = std::chrono::steady_clock::now();
 		FogSeries fog;
@@ -108,7 +124,7 @@ int main(int argc, char** argv)
 		std::vector<double> ideal_rate;  // vehicle: FOG_IDEAL, to report the thermal error alone
 		if (vehicle)
 		{
-			DriveOutput d = simulateDrive(prof, dev, settings);
+			DriveOutput d = triad.getValue() ? simulateTriadDrive(prof, dev, settings) : simulateDrive(prof, dev, settings);
 			fog = std::move(d.fog);
 			ideal_rate = d.fog_ideal.rate_dph[2];
 			transient_C = d.coil_transient_C;
@@ -125,7 +141,7 @@ int main(int argc, char** argv)
 		}
 		else
 		{
-			fog = simulateChamber(prof, dev, settings);
+			fog = triad.getValue() ? simulateTriadChamber(prof, dev, settings, up) : simulateChamber(prof, dev, settings);
 			if (duration.getValue() > 0) fog = truncated(fog, duration.getValue());
 		}
 		const double sim_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -148,7 +164,7 @@ int main(int argc, char** argv)
 				t_on.push_back(fog.time_s[k]);
 				// bias only: the vehicle's FOG_IDEAL (motion, Earth rate, noise) or a chamber's table rate removed
 				const double table = fog.table_rate_dph.empty() ? 0.0 : fog.table_rate_dph[k];
-				r_on.push_back(fog.rate_dph[2][k] - (vehicle ? ideal_rate[k] : table));
+				r_on.push_back(fog.rate_dph[vehicle ? 2 : static_cast<std::size_t>(up)][k] - (vehicle ? ideal_rate[k] : table));
 			}
 		std::printf("fog-sim: %s, profile %s, seed %llu, %zu samples (%.2f h at %g Hz) -> %s\n", vehicle ? "vehicle" : "chamber",
 					profile.getValue().c_str(), static_cast<unsigned long long>(settings.seed), fog.size(),
@@ -167,7 +183,7 @@ int main(int argc, char** argv)
 		{
 			const BiasStats st = biasStats(t_on, r_on, 100.0);
 			std::printf("  %s: 100 s bias stability %.4f deg/h, range %.4f deg/h, mean %.4f deg/h\n",
-						vehicle ? "thermal error (FOG - FOG_IDEAL)" : "uncompensated (powered samples, table rate removed)", st.stability_dph,
+						vehicle ? "thermal error (FOG - FOG_IDEAL)" : (fog.has_axis[0] ? "uncompensated up axis (powered samples, table rate removed)" : "uncompensated (powered samples, table rate removed)"), st.stability_dph,
 						st.range_dph, st.mean_dph);
 			const char* key = vehicle ? "thermal_error" : "uncompensated";
 			j[key]["stability_dph"] = st.stability_dph;
