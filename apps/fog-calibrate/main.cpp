@@ -7,6 +7,7 @@
 #include <mrpt_fog/common/JsonWriter.h>
 #include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/io/FogLogIO.h>
+#include <mrpt_fog/model/AxisRuns.h>
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/ScaleFactorFit.h>
@@ -108,10 +109,20 @@ WARM-UP (--warmup-run RUN, repeatable)
   The compensator adds it from each turn-on on (metadata power_on_time_s, 0 -> 1 steps). A run
   with no turn-on, a span under 600 s, or no decay resolved stops fog-calibrate with the reason.
 
+THREE AXES (--axis x|y|z|all)
+  A log with several gyro axes (rate_x/y/z_dph) is calibrated per axis, every axis the -i
+  runs share unless --axis names one; the file holds one model per axis. A rate-table run
+  serves only the axis its table turns about (metadata table_axis, default its first axis):
+  the others see a turning Earth-rate projection there and leave it out (printed). A run
+  whose metadata states the Earth rate an axis saw (earth_rate_dph.<axis>, fog-sim --triad
+  writes it from the mount) has it removed from that axis' output, so that bias holds no Earth
+  rate (earth_rate handling in_table_rate); state it for all runs of an axis or none.
+
 EXAMPLES
   fog-calibrate -i datasets/chamber_A.rawlog --model multipoint -o cal.yaml --validate datasets/chamber_B.rawlog
   fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable_A.rawlog -o cal_sf.yaml
   fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable_A.rawlog --warmup-run datasets/warmup.rawlog -o cal_full.yaml
+  fog-calibrate -i chamber3.rawlog -i rt_x.rawlog -i rt_y.rawlog -i rt_z.rawlog -o cal3.yaml   (triad, fog-sim --triad)
   fog-calibrate -i runA.csv -i runB.csv --model points:2 -o cal2.yaml --json fit.json
   fog-calibrate -i runA.csv --model M3:Ti1,To1 --selection none -o m3.yaml
 )";
@@ -202,6 +213,198 @@ std::string whyNoThermalTerm(const std::vector<FogSeries>& runs, const BiasModel
 					  span_C);
 	return b;
 }
+
+/** One axis' calibration and what its summary needs. */
+struct AxisFit
+{
+	Calibration cal;
+	ScaleFactorFitReport sf_report;
+	std::size_t run_count = 0;
+	bool table_rates = false;
+	std::string why_empty;  //!< why no thermal term was kept (empty model only)
+	std::vector<std::string> skipped;  //!< -i runs left out for this axis, with the reason
+	bool earth_rate_removed = false;
+	bool validated = false;
+};
+
+CompensationCounters validationRange(const Calibration& cal)
+{
+	CompensationCounters range;  // of the validation run, through the compensator
+	range.samples = cal.validation.samples;
+	range.temp_outside_samples = cal.validation.temp_outside_samples;
+	range.rate_outside_samples = cal.validation.rate_outside_samples;
+	range.max_temp_excursion_C = cal.validation.max_temp_excursion_C;
+	range.max_rate_excursion_C_per_s = cal.validation.max_rate_excursion_C_per_s;
+	return range;
+}
+
+void printAxis(const AxisFit& f, double tau_s, bool validated)
+{
+	const Calibration& cal = f.cal;
+	for (const auto& sk : f.skipped) std::printf("  left out: %s\n", sk.c_str());
+	const auto& m = cal.model;
+	std::printf("fog-calibrate: %zu run(s), preset %s, selection %s, rates %s\n", f.run_count, cal.preset.c_str(),
+				cal.selection.c_str(), cal.rate_estimator.describe().c_str());
+	std::printf("  model: %zu terms (%zu thermistors), ridge %g, condition number %.3g, rank %zu, %zu samples\n",
+				m.features.termCount(), m.features.thermistors().size(), m.ridge, m.condition_number,
+				m.numerical_rank, m.samples);
+	std::printf("  terms:");
+	for (std::size_t i = 1; i < m.features.termCount(); i++) std::printf(" %s", m.features.termNames()[i].c_str());
+	std::printf("\n  fallbacks: %zu (one per thermistor of the model)\n", cal.fallbacks.size());
+	const auto& st = cal.selection_stability;
+	if (st.resamples > 0)
+	{
+		std::printf("  selection stability: %.0f %% of %zu wild-bootstrap refits (new noise, same thermal history) "
+					"chose this model (held-out RMS %.4g deg/h)%s\n",
+					100.0 * st.chosen_share, st.resamples, st.chosen_held_out_rms_dph,
+					st.stable ? " (stable)"
+					: st.alternatives_equivalent
+						? ": UNSTABLE (< 90 %) among equivalent models: every alternative's held-out error is within "
+						  "one standard error of this one's (the data cannot tell them apart); alternatives:"
+						: ": UNSTABLE (< 90 %), the data do not settle the choice and the alternatives predict "
+						  "differently; alternatives:");
+		if (!st.stable)
+			for (const auto& a : st.alternatives)
+				std::printf("    %.0f %%  held-out RMS %.4g deg/h  %s\n", 100.0 * a.share, a.held_out_rms_dph,
+							a.terms.c_str());
+	}
+	if (cal.rate_gaps)
+		std::printf("  note: %zu gap(s) longer than the %g s rate window (a burst log?): temperature rates cannot "
+					"be estimated across a gap, so the samples before each restart has a rate are left out of the fit\n",
+					cal.rate_gaps, cal.rate_estimator.window_s);
+	std::printf("  tau = %g s\n", tau_s);
+	std::vector<const FitFigures*> figs{&cal.in_sample, &cal.held_out};
+	if (validated) figs.push_back(&cal.validation);
+	printFigures(figs);
+	const CompensationCounters range = validationRange(cal);
+	if (validated) std::fputs(app::outOfRangeWarning(range, cal.extrapolation).c_str(), stdout);
+	if (cal.scale_factor)
+	{
+		const auto& sf = *cal.scale_factor;
+		std::printf("  scale factor vs temperature: s(T(%s)) of order %zu from %zu table segments (|rate| %g..%g "
+					"deg/h, %zu soaks, %.2f..%.2f degC)\n",
+					sf.thermistor.c_str(), sf.order(), sf.segments, sf.table_rate_min_abs_dph,
+					sf.table_rate_max_abs_dph, f.sf_report.groups, sf.min_C, sf.max_C);
+		std::printf("    mean slope %.4g ppm/degC, 95 %% interval [%.4g, %.4g]; segment RMS in-sample %.3g ppm, "
+					"held-out (%s) %.3g ppm\n",
+					sf.slope_ppm_per_C, sf.slope_ci95_lo_ppm_per_C, sf.slope_ci95_hi_ppm_per_C, sf.rms_in_sample_ppm,
+					sf.held_out_label.c_str(), sf.rms_held_out_ppm);
+		std::printf("    interval = noise [%.4g, %.4g] widened to the slopes against each of %zu thermistor(s) "
+					"[%.4g .. %.4g] (the coil temperature the scale factor follows is read by none)\n",
+					sf.slope_noise_ci95_lo_ppm_per_C, sf.slope_noise_ci95_hi_ppm_per_C, sf.slope_thermistors,
+					sf.slope_thermistor_min_ppm_per_C, sf.slope_thermistor_max_ppm_per_C);
+		std::printf("    candidates (held-out RMS [ppm]):");
+		for (const auto& c : f.sf_report.candidates) std::printf(" %s/%d:%.3g", c.thermistor.c_str(), c.order, c.rms_held_out_ppm);
+		std::printf("\n");
+	}
+	if (cal.warmup)
+	{
+		const auto& w = *cal.warmup;
+		std::printf("  warm-up: %.4g +- %.2g deg/h x exp(-t / (%.4g +- %.2g s)) from %zu turn-on(s) over %.0f s; "
+					"residual RMS %.4g -> %.4g deg/h\n",
+					w.amplitude_dph, w.amplitude_std_dph, w.tau_s, w.tau_std_s, w.turn_ons, w.fitted_span_s,
+					w.rms_before_dph, w.rms_after_dph);
+	}
+	if (!cal.scale_factor && f.table_rates)
+		std::printf("  scale factor: not fitted (--scale-factor off): table samples used as bias samples\n");
+}
+
+JsonValue axisJson(const AxisFit& f, double tau_s, bool validated)
+{
+	const Calibration& cal = f.cal;
+	const auto& m = cal.model;
+	const CompensationCounters range = validationRange(cal);
+	JsonValue j = JsonValue::object();
+	j["preset"] = cal.preset;
+	j["selection"] = cal.selection;
+	j["rate_estimator"] = cal.rate_estimator.describe();
+	j["tau_s"] = tau_s;
+	j["terms"] = static_cast<unsigned long>(m.features.termCount());
+	JsonValue& names = j["term_names"] = JsonValue::array();
+	for (const auto& n : m.features.termNames()) names.push_back(n);
+	j["condition_number"] = m.condition_number;
+	j["ridge"] = m.ridge;
+	j["samples"] = static_cast<unsigned long>(m.samples);
+	j["in_sample"] = figuresJson(cal.in_sample);
+	j["held_out"] = figuresJson(cal.held_out);
+	if (validated)
+	{
+		j["validation"] = figuresJson(cal.validation);
+		j["validation"]["out_of_range"] = app::outOfRangeJson(range, cal.extrapolation);
+	}
+	j["extrapolation"] = toString(cal.extrapolation);
+	j["rate_gaps"] = static_cast<unsigned long>(cal.rate_gaps);
+	const auto& st = cal.selection_stability;
+	JsonValue& sj = j["selection_stability"] = JsonValue::object();
+	sj["resamples"] = static_cast<unsigned long>(st.resamples);
+	sj["chosen_share"] = st.chosen_share;
+	sj["stable"] = st.stable;
+	sj["chosen_held_out_rms_dph"] = st.chosen_held_out_rms_dph;
+	sj["held_out_se_mse"] = st.held_out_se_mse;
+	sj["alternatives_equivalent"] = st.alternatives_equivalent;
+	JsonValue& alts = sj["alternatives"] = JsonValue::array();
+	for (const auto& a : st.alternatives)
+	{
+		JsonValue aj = JsonValue::object();
+		aj["terms"] = a.terms;
+		aj["share"] = a.share;
+		aj["held_out_rms_dph"] = a.held_out_rms_dph;
+		alts.push_back(aj);
+	}
+	JsonValue& ts = sj["term_share"] = JsonValue::object();
+	for (const auto& [t, v] : st.term_share) ts[t] = v;
+	if (cal.scale_factor)
+	{
+		const auto& sf = *cal.scale_factor;
+		JsonValue& js = j["scale_factor"];
+		js["thermistor"] = sf.thermistor;
+		js["order"] = static_cast<unsigned long>(sf.order());
+		js["slope_ppm_per_C"] = sf.slope_ppm_per_C;
+		js["slope_ci95_ppm_per_C"] = JsonValue::array();
+		js["slope_ci95_ppm_per_C"].push_back(sf.slope_ci95_lo_ppm_per_C);
+		js["slope_ci95_ppm_per_C"].push_back(sf.slope_ci95_hi_ppm_per_C);
+		js["slope_noise_ci95_ppm_per_C"] = JsonValue::array();
+		js["slope_noise_ci95_ppm_per_C"].push_back(sf.slope_noise_ci95_lo_ppm_per_C);
+		js["slope_noise_ci95_ppm_per_C"].push_back(sf.slope_noise_ci95_hi_ppm_per_C);
+		js["slope_thermistor_range_ppm_per_C"] = JsonValue::array();
+		js["slope_thermistor_range_ppm_per_C"].push_back(sf.slope_thermistor_min_ppm_per_C);
+		js["slope_thermistor_range_ppm_per_C"].push_back(sf.slope_thermistor_max_ppm_per_C);
+		js["slope_thermistors"] = static_cast<unsigned long>(sf.slope_thermistors);
+		js["min_C"] = sf.min_C;
+		js["max_C"] = sf.max_C;
+		js["table_rate_min_abs_dph"] = sf.table_rate_min_abs_dph;
+		js["table_rate_max_abs_dph"] = sf.table_rate_max_abs_dph;
+		js["segments"] = static_cast<unsigned long>(sf.segments);
+		js["soaks"] = static_cast<unsigned long>(f.sf_report.groups);
+		js["rms_in_sample_ppm"] = sf.rms_in_sample_ppm;
+		js["rms_held_out_ppm"] = sf.rms_held_out_ppm;
+		js["held_out_label"] = sf.held_out_label;
+		JsonValue& cands = js["candidates"] = JsonValue::array();
+		for (const auto& c : f.sf_report.candidates)
+		{
+			JsonValue o = JsonValue::object();
+			o["thermistor"] = c.thermistor;
+			o["order"] = static_cast<long>(c.order);
+			o["rms_held_out_ppm"] = c.rms_held_out_ppm;
+			cands.push_back(o);
+		}
+	}
+	if (cal.warmup)
+	{
+		const auto& w = *cal.warmup;
+		JsonValue& jw = j["warmup"];
+		jw["amplitude_dph"] = w.amplitude_dph;
+		jw["amplitude_std_dph"] = w.amplitude_std_dph;
+		jw["tau_s"] = w.tau_s;
+		jw["tau_std_s"] = w.tau_std_s;
+		jw["turn_ons"] = static_cast<unsigned long>(w.turn_ons);
+		jw["fitted_span_s"] = w.fitted_span_s;
+		jw["rms_before_dph"] = w.rms_before_dph;
+		jw["rms_after_dph"] = w.rms_after_dph;
+	}
+	if (f.earth_rate_removed) j["earth_rate"] = "removed from the bias (runs' metadata earth_rate_dph)";
+	return j;
+}
 }  // namespace
 
 int main(int argc, char** argv)
@@ -245,6 +448,10 @@ int main(int argc, char** argv)
 									   "Do not screen thermistor readings (stuck / spike / out of range -> dropout) "
 									   "before fitting (the screening fog-compensate runs)",
 									   cmd);
+		TCLAP::ValueArg<std::string> arg_axis("", "axis",
+											  "Gyro axis to calibrate: x, y, z, or all (default: every axis the -i runs "
+											  "share; one model per axis in one file)",
+											  false, "all", "x|y|z|all", cmd);
 		TCLAP::SwitchArg arg_allow_empty("", "allow-empty-model",
 										 "Write the calibration even when the fit selects no thermal term (a constant "
 										 "bias only); without it that is an error saying why",
@@ -282,230 +489,153 @@ int main(int argc, char** argv)
 			return s;
 		};
 		for (const auto& path : arg_in.getValue()) runs.push_back(screened(readFogLog(path, arg_label.getValue()), path));
-		const bool fit_sf = arg_sf.getValue() == "auto" && hasTableRates(runs);
-		if (fit_sf) opt.table_samples = TableSamples::Exclude;
-		Calibration cal = fitCalibration(runs, arg_model.getValue(), opt, arg_in.getValue());
-		ScaleFactorFitReport sf_report;
-		if (fit_sf)
+
+		// The axes to calibrate: --axis, else every axis the -i runs share.
+		std::vector<GyroAxis> axes;
+		if (arg_axis.getValue() == "all" || arg_axis.getValue().empty())
 		{
-			try
-			{
-				cal.scale_factor = fitScaleFactor(runs, cal, {}, &sf_report, arg_in.getValue());
-			}
-			catch (const ScaleFactorFitError& e)
-			{
-				throw std::runtime_error(std::string(e.what()) +
-										 "; the runs apply table rates, so a bias-only calibration would be wrong "
-										 "there (give --scale-factor off to fit the bias alone anyway)");
-			}
+			axes = commonAxes(runs);
+			if (axes.empty()) throw std::invalid_argument("the -i runs share no gyro axis; give --axis");
 		}
-		// What the summary needs from the runs, then the runs are freed before the warm-up and
-		// validation runs are read (memory: one log at a time, issue 14).
-		const std::size_t run_count = runs.size();
-		const bool table_rates = hasTableRates(runs);
-		const std::string why_empty =
-			cal.model.features.thermistors().empty() ? whyNoThermalTerm(runs, cal.model) : std::string();
+		else if (arg_axis.getValue() == "x" || arg_axis.getValue() == "y" || arg_axis.getValue() == "z")
+			axes.push_back(static_cast<GyroAxis>(arg_axis.getValue()[0] - 'x'));
+		else
+			throw std::invalid_argument("--axis: '" + arg_axis.getValue() + "' is not x, y, z or all");
+		const bool several = axes.size() > 1;
+
+		std::vector<AxisFit> fits;
+		for (std::size_t ia = 0; ia < axes.size(); ia++)
+		{
+			const GyroAxis axis = axes[ia];
+			const std::string who = several ? std::string("axis ") + axisLetter(axis) + ": " : std::string();
+			AxisRunSet set = runsForAxis(runs, arg_in.getValue(), axis, ia + 1 == axes.size());
+			if (set.runs.empty())
+			{
+				std::string why;
+				for (const auto& sk : set.skipped) why += "; " + sk;
+				throw std::invalid_argument(who + "no -i run serves axis " + std::string(1, axisLetter(axis)) + why);
+			}
+			AxisFit f;
+			f.skipped = set.skipped;
+			f.earth_rate_removed = set.earth_rate_removed;
+			FitOptions aopt = opt;
+			const bool fit_sf = arg_sf.getValue() == "auto" && hasTableRates(set.runs);
+			if (fit_sf) aopt.table_samples = TableSamples::Exclude;
+			f.cal = fitCalibration(set.runs, arg_model.getValue(), aopt, set.labels);
+			if (set.earth_rate_removed) f.cal.earth_rate = EarthRateHandling::InTableRate;
+			if (fit_sf)
+			{
+				try
+				{
+					f.cal.scale_factor = fitScaleFactor(set.runs, f.cal, {}, &f.sf_report, set.labels);
+				}
+				catch (const ScaleFactorFitError& e)
+				{
+					throw std::runtime_error(who + e.what() +
+											 "; the runs apply table rates, so a bias-only calibration would be wrong "
+											 "there (give --scale-factor off to fit the bias alone anyway)");
+				}
+			}
+			// What the summary needs from the runs, then they are freed before the warm-up and
+			// validation runs are read (memory: one log at a time, issue 14).
+			f.run_count = set.runs.size();
+			f.table_rates = hasTableRates(set.runs);
+			if (f.cal.model.features.thermistors().empty()) f.why_empty = whyNoThermalTerm(set.runs, f.cal.model);
+			fits.push_back(std::move(f));
+		}
 		std::vector<FogSeries>().swap(runs);
 		if (!arg_warm.getValue().empty())
 		{
 			std::vector<FogSeries> warm;
 			for (const auto& path : arg_warm.getValue())
 				warm.push_back(screened(readFogLog(path, arg_label.getValue()), path));
-			try
+			for (std::size_t ia = 0; ia < fits.size(); ia++)
 			{
-				cal.warmup = fitWarmup(warm, cal, {}, nullptr, arg_warm.getValue());
-			}
-			catch (const WarmupFitError& e)
-			{
-				throw std::runtime_error(std::string(e.what()) + " (--warmup-run)");
+				Calibration& cal = fits[ia].cal;
+				AxisRunSet set = runsForAxis(warm, arg_warm.getValue(), cal.axis, ia + 1 == fits.size());
+				const std::string who = several ? std::string("axis ") + axisLetter(cal.axis) + ": " : std::string();
+				if (set.earth_rate_removed != fits[ia].earth_rate_removed)
+					throw std::runtime_error(who + "--warmup-run: the warm-up runs " +
+											 (set.earth_rate_removed ? "state" : "do not state") +
+											 " the Earth rate (metadata earth_rate_dph) and the -i runs " +
+											 (set.earth_rate_removed ? "do not" : "do"));
+				try
+				{
+					if (set.runs.empty()) throw WarmupFitError("no warm-up run has this axis");
+					cal.warmup = fitWarmup(set.runs, cal, {}, nullptr, set.labels);
+				}
+				catch (const WarmupFitError& e)
+				{
+					throw std::runtime_error(who + e.what() + " (--warmup-run)");
+				}
 			}
 		}
 		if (!arg_val.getValue().empty())
 		{
-			const FogSeries val = screened(readFogLog(arg_val.getValue(), arg_label.getValue()), arg_val.getValue());
-			cal.validation = evaluateCalibration(cal, val, "validation run " + arg_val.getValue(), opt.tau_s);
+			std::vector<FogSeries> val{screened(readFogLog(arg_val.getValue(), arg_label.getValue()), arg_val.getValue())};
+			for (std::size_t ia = 0; ia < fits.size(); ia++)
+			{
+				Calibration& cal = fits[ia].cal;
+				AxisRunSet set = runsForAxis(val, {arg_val.getValue()}, cal.axis, ia + 1 == fits.size());
+				if (set.runs.empty())
+				{
+					cal.validation.label = "validation run " + arg_val.getValue() + ": " + set.skipped.front();
+					continue;
+				}
+				if (set.earth_rate_removed != fits[ia].earth_rate_removed)
+					throw std::runtime_error(arg_val.getValue() + ": --validate run and -i runs disagree on stating the "
+											 "Earth rate (metadata earth_rate_dph." +
+											 std::string(1, axisLetter(cal.axis)) + ")");
+				cal.validation =
+					evaluateCalibration(cal, set.runs.front(), "validation run " + arg_val.getValue(), opt.tau_s);
+				fits[ia].validated = true;
+			}
 		}
 		else
-			cal.validation.label = "validation run (none given)";
-		if (cal.model.features.thermistors().empty())
+			for (auto& f : fits) f.cal.validation.label = "validation run (none given)";
+		for (const auto& f : fits)
 		{
-			const std::string& why = why_empty;
-			if (!arg_allow_empty.getValue())
-				throw std::runtime_error("the fitted model has no thermal term (a constant bias only): " + why +
-										 "; nothing written (--allow-empty-model writes it anyway)");
-			std::fprintf(stderr, "fog-calibrate: warning: the fitted model has no thermal term (a constant bias only): %s\n",
-						 why.c_str());
+			const Calibration& cal = f.cal;
+			const std::string who = several ? std::string("axis ") + axisLetter(cal.axis) + ": " : std::string();
+			if (cal.model.features.thermistors().empty())
+			{
+				if (!arg_allow_empty.getValue())
+					throw std::runtime_error(who + "the fitted model has no thermal term (a constant bias only): " +
+											 f.why_empty + "; nothing written (--allow-empty-model writes it anyway)");
+				std::fprintf(stderr,
+							 "fog-calibrate: warning: %sthe fitted model has no thermal term (a constant bias only): %s\n",
+							 who.c_str(), f.why_empty.c_str());
+			}
+			else if (cal.held_out.valid && !(cal.held_out.stability_dph < 0.99 * cal.held_out.raw_stability_dph))
+				std::fprintf(stderr,
+							 "fog-calibrate: warning: %sthe thermal terms lower the held-out stability by less than 1 %% "
+							 "(%.4g -> %.4g deg/h): the model compensates nothing these runs can show\n",
+							 who.c_str(), cal.held_out.raw_stability_dph, cal.held_out.stability_dph);
 		}
-		else if (cal.held_out.valid && !(cal.held_out.stability_dph < 0.99 * cal.held_out.raw_stability_dph))
-			std::fprintf(stderr,
-						 "fog-calibrate: warning: the thermal terms lower the held-out stability by less than 1 %% "
-						 "(%.4g -> %.4g deg/h): the model compensates nothing these runs can show\n",
-						 cal.held_out.raw_stability_dph, cal.held_out.stability_dph);
-		saveCalibrationYaml(cal, arg_out.getValue());
+		CalibrationSet cal_set;
+		for (const auto& f : fits) cal_set.axes.push_back(f.cal);
+		saveCalibrationSet(cal_set, arg_out.getValue());
 
-		const auto& m = cal.model;
-		std::printf("fog-calibrate: %zu run(s), preset %s, selection %s, rates %s\n", run_count, cal.preset.c_str(),
-					cal.selection.c_str(), cal.rate_estimator.describe().c_str());
-		std::printf("  model: %zu terms (%zu thermistors), ridge %g, condition number %.3g, rank %zu, %zu samples\n",
-					m.features.termCount(), m.features.thermistors().size(), m.ridge, m.condition_number,
-					m.numerical_rank, m.samples);
-		std::printf("  terms:");
-		for (std::size_t i = 1; i < m.features.termCount(); i++) std::printf(" %s", m.features.termNames()[i].c_str());
-		std::printf("\n  fallbacks: %zu (one per thermistor of the model)\n", cal.fallbacks.size());
-		const auto& st = cal.selection_stability;
-		if (st.resamples > 0)
+		for (const auto& f : fits)
 		{
-			std::printf("  selection stability: %.0f %% of %zu wild-bootstrap refits (new noise, same thermal history) "
-						"chose this model (held-out RMS %.4g deg/h)%s\n",
-						100.0 * st.chosen_share, st.resamples, st.chosen_held_out_rms_dph,
-						st.stable ? " (stable)"
-						: st.alternatives_equivalent
-							? ": UNSTABLE (< 90 %) among equivalent models: every alternative's held-out error is within "
-							  "one standard error of this one's (the data cannot tell them apart); alternatives:"
-							: ": UNSTABLE (< 90 %), the data do not settle the choice and the alternatives predict "
-							  "differently; alternatives:");
-			if (!st.stable)
-				for (const auto& a : st.alternatives)
-					std::printf("    %.0f %%  held-out RMS %.4g deg/h  %s\n", 100.0 * a.share, a.held_out_rms_dph,
-								a.terms.c_str());
+			if (several)
+				std::printf("axis %c%s:\n", axisLetter(f.cal.axis),
+							f.earth_rate_removed ? " (the runs' stated Earth rate removed from the bias)" : "");
+			printAxis(f, opt.tau_s, f.validated);
 		}
-		if (cal.rate_gaps)
-			std::printf("  note: %zu gap(s) longer than the %g s rate window (a burst log?): temperature rates cannot "
-						"be estimated across a gap, so the samples before each restart has a rate are left out of the fit\n",
-						cal.rate_gaps, cal.rate_estimator.window_s);
-		std::printf("  tau = %g s\n", opt.tau_s);
-		std::vector<const FitFigures*> figs{&cal.in_sample, &cal.held_out};
-		if (!arg_val.getValue().empty()) figs.push_back(&cal.validation);
-		printFigures(figs);
-		CompensationCounters range;  // of the validation run, through the compensator
-		range.samples = cal.validation.samples;
-		range.temp_outside_samples = cal.validation.temp_outside_samples;
-		range.rate_outside_samples = cal.validation.rate_outside_samples;
-		range.max_temp_excursion_C = cal.validation.max_temp_excursion_C;
-		range.max_rate_excursion_C_per_s = cal.validation.max_rate_excursion_C_per_s;
-		if (!arg_val.getValue().empty()) std::fputs(app::outOfRangeWarning(range, cal.extrapolation).c_str(), stdout);
-		if (cal.scale_factor)
-		{
-			const auto& sf = *cal.scale_factor;
-			std::printf("  scale factor vs temperature: s(T(%s)) of order %zu from %zu table segments (|rate| %g..%g "
-						"deg/h, %zu soaks, %.2f..%.2f degC)\n",
-						sf.thermistor.c_str(), sf.order(), sf.segments, sf.table_rate_min_abs_dph,
-						sf.table_rate_max_abs_dph, sf_report.groups, sf.min_C, sf.max_C);
-			std::printf("    mean slope %.4g ppm/degC, 95 %% interval [%.4g, %.4g]; segment RMS in-sample %.3g ppm, "
-						"held-out (%s) %.3g ppm\n",
-						sf.slope_ppm_per_C, sf.slope_ci95_lo_ppm_per_C, sf.slope_ci95_hi_ppm_per_C, sf.rms_in_sample_ppm,
-						sf.held_out_label.c_str(), sf.rms_held_out_ppm);
-			std::printf("    interval = noise [%.4g, %.4g] widened to the slopes against each of %zu thermistor(s) "
-						"[%.4g .. %.4g] (the coil temperature the scale factor follows is read by none)\n",
-						sf.slope_noise_ci95_lo_ppm_per_C, sf.slope_noise_ci95_hi_ppm_per_C, sf.slope_thermistors,
-						sf.slope_thermistor_min_ppm_per_C, sf.slope_thermistor_max_ppm_per_C);
-			std::printf("    candidates (held-out RMS [ppm]):");
-			for (const auto& c : sf_report.candidates) std::printf(" %s/%d:%.3g", c.thermistor.c_str(), c.order, c.rms_held_out_ppm);
-			std::printf("\n");
-		}
-		if (cal.warmup)
-		{
-			const auto& w = *cal.warmup;
-			std::printf("  warm-up: %.4g +- %.2g deg/h x exp(-t / (%.4g +- %.2g s)) from %zu turn-on(s) over %.0f s; "
-						"residual RMS %.4g -> %.4g deg/h\n",
-						w.amplitude_dph, w.amplitude_std_dph, w.tau_s, w.tau_std_s, w.turn_ons, w.fitted_span_s,
-						w.rms_before_dph, w.rms_after_dph);
-		}
-		if (!cal.scale_factor && table_rates)
-			std::printf("  scale factor: not fitted (--scale-factor off): table samples used as bias samples\n");
 		std::fputs(screening_text.c_str(), stdout);
 		std::printf("  wrote %s\n", arg_out.getValue().c_str());
 
 		if (!arg_json.getValue().empty())
 		{
 			JsonValue j = JsonValue::object();
-			j["preset"] = cal.preset;
-			j["selection"] = cal.selection;
-			j["rate_estimator"] = cal.rate_estimator.describe();
-			j["tau_s"] = opt.tau_s;
-			j["terms"] = static_cast<unsigned long>(m.features.termCount());
-			JsonValue& names = j["term_names"] = JsonValue::array();
-			for (const auto& n : m.features.termNames()) names.push_back(n);
-			j["condition_number"] = m.condition_number;
-			j["ridge"] = m.ridge;
-			j["samples"] = static_cast<unsigned long>(m.samples);
-			j["in_sample"] = figuresJson(cal.in_sample);
-			j["held_out"] = figuresJson(cal.held_out);
-			if (!arg_val.getValue().empty())
+			if (several)
 			{
-				j["validation"] = figuresJson(cal.validation);
-				j["validation"]["out_of_range"] = app::outOfRangeJson(range, cal.extrapolation);
+				JsonValue& ja = j["axes"] = JsonValue::object();
+				for (const auto& f : fits) ja[std::string(1, axisLetter(f.cal.axis))] = axisJson(f, opt.tau_s, f.validated);
 			}
-			j["extrapolation"] = toString(cal.extrapolation);
-			j["rate_gaps"] = static_cast<unsigned long>(cal.rate_gaps);
-			const auto& st = cal.selection_stability;
-			JsonValue& sj = j["selection_stability"] = JsonValue::object();
-			sj["resamples"] = static_cast<unsigned long>(st.resamples);
-			sj["chosen_share"] = st.chosen_share;
-			sj["stable"] = st.stable;
-			sj["chosen_held_out_rms_dph"] = st.chosen_held_out_rms_dph;
-			sj["held_out_se_mse"] = st.held_out_se_mse;
-			sj["alternatives_equivalent"] = st.alternatives_equivalent;
-			JsonValue& alts = sj["alternatives"] = JsonValue::array();
-			for (const auto& a : st.alternatives)
-			{
-				JsonValue aj = JsonValue::object();
-				aj["terms"] = a.terms;
-				aj["share"] = a.share;
-				aj["held_out_rms_dph"] = a.held_out_rms_dph;
-				alts.push_back(aj);
-			}
-			JsonValue& ts = sj["term_share"] = JsonValue::object();
-			for (const auto& [t, v] : st.term_share) ts[t] = v;
-			if (cal.scale_factor)
-			{
-				const auto& sf = *cal.scale_factor;
-				JsonValue& js = j["scale_factor"];
-				js["thermistor"] = sf.thermistor;
-				js["order"] = static_cast<unsigned long>(sf.order());
-				js["slope_ppm_per_C"] = sf.slope_ppm_per_C;
-				js["slope_ci95_ppm_per_C"] = JsonValue::array();
-				js["slope_ci95_ppm_per_C"].push_back(sf.slope_ci95_lo_ppm_per_C);
-				js["slope_ci95_ppm_per_C"].push_back(sf.slope_ci95_hi_ppm_per_C);
-				js["slope_noise_ci95_ppm_per_C"] = JsonValue::array();
-				js["slope_noise_ci95_ppm_per_C"].push_back(sf.slope_noise_ci95_lo_ppm_per_C);
-				js["slope_noise_ci95_ppm_per_C"].push_back(sf.slope_noise_ci95_hi_ppm_per_C);
-				js["slope_thermistor_range_ppm_per_C"] = JsonValue::array();
-				js["slope_thermistor_range_ppm_per_C"].push_back(sf.slope_thermistor_min_ppm_per_C);
-				js["slope_thermistor_range_ppm_per_C"].push_back(sf.slope_thermistor_max_ppm_per_C);
-				js["slope_thermistors"] = static_cast<unsigned long>(sf.slope_thermistors);
-				js["min_C"] = sf.min_C;
-				js["max_C"] = sf.max_C;
-				js["table_rate_min_abs_dph"] = sf.table_rate_min_abs_dph;
-				js["table_rate_max_abs_dph"] = sf.table_rate_max_abs_dph;
-				js["segments"] = static_cast<unsigned long>(sf.segments);
-				js["soaks"] = static_cast<unsigned long>(sf_report.groups);
-				js["rms_in_sample_ppm"] = sf.rms_in_sample_ppm;
-				js["rms_held_out_ppm"] = sf.rms_held_out_ppm;
-				js["held_out_label"] = sf.held_out_label;
-				JsonValue& cands = js["candidates"] = JsonValue::array();
-				for (const auto& c : sf_report.candidates)
-				{
-					JsonValue o = JsonValue::object();
-					o["thermistor"] = c.thermistor;
-					o["order"] = static_cast<long>(c.order);
-					o["rms_held_out_ppm"] = c.rms_held_out_ppm;
-					cands.push_back(o);
-				}
-			}
-			if (cal.warmup)
-			{
-				const auto& w = *cal.warmup;
-				JsonValue& jw = j["warmup"];
-				jw["amplitude_dph"] = w.amplitude_dph;
-				jw["amplitude_std_dph"] = w.amplitude_std_dph;
-				jw["tau_s"] = w.tau_s;
-				jw["tau_std_s"] = w.tau_std_s;
-				jw["turn_ons"] = static_cast<unsigned long>(w.turn_ons);
-				jw["fitted_span_s"] = w.fitted_span_s;
-				jw["rms_before_dph"] = w.rms_before_dph;
-				jw["rms_after_dph"] = w.rms_after_dph;
-			}
+			else
+				j = axisJson(fits.front(), opt.tau_s, fits.front().validated);
 			j["calibration"] = arg_out.getValue();
 			writeTextFileAtomically(arg_json.getValue(), j.dump());
 		}

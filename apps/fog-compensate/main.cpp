@@ -52,6 +52,11 @@ OUTPUT (by extension of -o)
             CObservationRawDAQ '<label>_THERMISTORS' (thermistors [degC], NaN = dropout).
   .csv      time_s, raw_rate_<a>_dph, bias_<a>_dph, compensated_rate_<a>_dph, flags,
             temp_<name>_C...  flags: 1 fallback, 2 no model, 4 clamped, 8 rate warm-up.
+            With a calibration of several axes: the four columns per axis (flags_<a>).
+
+SEVERAL AXES
+  Every axis in the calibration file is compensated with its own model (a calibration axis
+  missing from the log is an error); log axes without a calibration are written raw (said).
   Power-off rows (power 0, empty rate cell): the thermistors keep feeding the rate estimator,
   no compensated rate is written (empty cells; no IMU rate in the rawlog), and the number of
   turn-on events (power back to 1) is printed.
@@ -66,17 +71,23 @@ EXAMPLES
 class CompensatedCsvWriter
 {
    public:
-	CompensatedCsvWriter(const std::string& path, const FogSeries& layout, char axis, const std::string& cal_path)
+	CompensatedCsvWriter(const std::string& path, const FogSeries& layout, const std::vector<char>& axes,
+						 const std::string& cal_path)
 		: out_(path), gz_(out_.writePath(), false, 6, path)
 	{
 		std::ostringstream o;
 		o << "# sensor: " << layout.sensor_label << "\n# compensated_by: fog-compensate\n# calibration: " << cal_path << "\n";
-		o << "time_s,raw_rate_" << axis << "_dph,bias_" << axis << "_dph,compensated_rate_" << axis << "_dph,flags";
+		o << "time_s";
+		for (char axis : axes)
+			o << ",raw_rate_" << axis << "_dph,bias_" << axis << "_dph,compensated_rate_" << axis << "_dph,flags"
+			  << (axes.size() > 1 ? std::string("_") + axis : std::string());
 		for (const auto& t : layout.thermistors) o << ",temp_" << t.name << "_C";
 		o << "\n";
 		gz_.write(o.str());
 	}
-	void write(double t, double raw, const Compensator::Output& r, const std::vector<double>& temps)
+	/** raw[i] and r[i]: the i-th calibrated axis. */
+	void write(double t, const std::vector<double>& raw, const std::vector<Compensator::Output>& r,
+			   const std::vector<double>& temps)
 	{
 		// gyro off (power 0, no rate sample): raw and compensated cells empty, the bias kept
 		auto cell = [&](double v, bool comma = true) {
@@ -85,10 +96,13 @@ class CompensatedCsvWriter
 		};
 		row_.clear();
 		cell(t, false);
-		cell(raw);
-		row_ += ',' + io::formatNumber(r.bias_dph);
-		cell(r.compensated_dph);
-		row_ += ',' + std::to_string(static_cast<int>(r.flags));
+		for (std::size_t i = 0; i < r.size(); i++)
+		{
+			cell(raw[i]);
+			row_ += ',' + io::formatNumber(r[i].bias_dph);
+			cell(r[i].compensated_dph);
+			row_ += ',' + std::to_string(static_cast<int>(r[i].flags));
+		}
 		for (double v : temps) cell(v);
 		row_ += '\n';
 		gz_.write(row_);
@@ -129,35 +143,48 @@ int main(int argc, char** argv)
 			throw std::runtime_error("output '" + out + "': unknown file type '" + ext + "' (expected .rawlog or .csv)");
 		requireSafeOutputs({{"-i", arg_in.getValue()}, {"--cal", arg_cal.getValue()}},
 						   {{"-o", out}, {"--json", arg_json.getValue()}});
-		const Calibration cal = loadCalibrationYaml(arg_cal.getValue());
+		const CalibrationSet cals = loadCalibrationSet(arg_cal.getValue());
 
 		// Sample by sample: read, screen, compensate, write. Memory does not grow with the log.
 		FogLogReader reader(arg_in.getValue(), arg_label.getValue());
 		const FogSeries& layout = reader.header();
-		const int axis_index = static_cast<int>(cal.axis);
-		const char axis = axisLetter(cal.axis);
 		const auto withInput = [&](const std::exception& e) {
 			return std::runtime_error(arg_in.getValue() + " with " + arg_cal.getValue() + ": " + e.what());
 		};
-		if (!layout.has_axis[axis_index])
-			throw withInput(std::invalid_argument(std::string("the log has no ") + axis + " axis, which the calibration is for"));
-		std::unique_ptr<Compensator> comp;
-		try
+		// One compensator per calibrated axis (all in the file); other axes of the log pass raw.
+		std::vector<int> axis_index;
+		std::vector<char> axis_letter;
+		std::vector<std::unique_ptr<Compensator>> comps;
+		bool any_warmup = false;
+		for (const Calibration& cal : cals.axes)
 		{
-			comp = std::make_unique<Compensator>(cal, layout.thermistors);
+			const char axis = axisLetter(cal.axis);
+			if (!layout.has_axis[static_cast<int>(cal.axis)])
+				throw withInput(std::invalid_argument(std::string("the log has no ") + axis + " axis, which the calibration is for"));
+			axis_index.push_back(static_cast<int>(cal.axis));
+			axis_letter.push_back(axis);
+			try
+			{
+				comps.push_back(std::make_unique<Compensator>(cal, layout.thermistors));
+			}
+			catch (const std::invalid_argument& e)
+			{
+				throw withInput(e);
+			}
+			any_warmup |= static_cast<bool>(cal.warmup);
 		}
-		catch (const std::invalid_argument& e)
-		{
-			throw withInput(e);
-		}
+		std::string uncalibrated;
+		for (int a = 0; a < 3; a++)
+			if (layout.has_axis[a] && !cals.forAxis(static_cast<GyroAxis>(a)))
+				uncalibrated += std::string(uncalibrated.empty() ? "" : ", ") + axisLetter(static_cast<GyroAxis>(a));
 		const bool screen = !arg_no_screen.getValue();
 		ThermistorHealth health(layout.thermistorCount());
 		std::unique_ptr<FogLogWriter> rawlog_out;
 		std::unique_ptr<CompensatedCsvWriter> csv_out;
-		if (ext == ".csv") csv_out = std::make_unique<CompensatedCsvWriter>(out, layout, axis, arg_cal.getValue());
+		if (ext == ".csv") csv_out = std::make_unique<CompensatedCsvWriter>(out, layout, axis_letter, arg_cal.getValue());
 		else rawlog_out = std::make_unique<FogLogWriter>(out, layout, RawlogForm::Stock);
 		// Turn-ons for the warm-up term (as compensate() does): before the log, and 0 -> 1 power steps.
-		if (cal.warmup)
+		if (any_warmup)
 		{
 			const std::string meta = layout.metadataValue("power_on_time_s");
 			if (!meta.empty())
@@ -166,29 +193,35 @@ int main(int argc, char** argv)
 				const double t_on = std::strtod(meta.c_str(), &end);
 				if (!std::isfinite(t_on) || *end != '\0')
 					throw withInput(std::invalid_argument("metadata power_on_time_s: '" + meta + "' is not a time [s]"));
-				comp->notePowerOn(t_on);
+				for (std::size_t i = 0; i < comps.size(); i++)
+					if (cals.axes[i].warmup) comps[i]->notePowerOn(t_on);
 			}
 		}
 		app::Progress progress("fog-compensate", arg_quiet.getValue());
 		FogSample x;
-		std::vector<double> temps;
+		std::vector<double> temps, raw(comps.size());
+		std::vector<Compensator::Output> r(comps.size());
 		std::size_t gyro_off_rows = 0, turn_ons = 0;
 		double prev_power = NAN;
 		while (reader.next(x))
 		{
 			temps = x.temp_C;  // the output keeps the temperatures as read
 			if (screen) health.step(x.time_s, temps.data());
-			if (cal.warmup && x.power == 1.0 && prev_power == 0.0) comp->notePowerOn(x.time_s);
-			const double raw = x.rate_dph[axis_index];
-			const Compensator::Output r = comp->step(x.time_s, raw, temps.data());
+			const bool turn_on = x.power == 1.0 && prev_power == 0.0;
+			for (std::size_t i = 0; i < comps.size(); i++)
+			{
+				if (turn_on && cals.axes[i].warmup) comps[i]->notePowerOn(x.time_s);
+				raw[i] = x.rate_dph[axis_index[i]];
+				r[i] = comps[i]->step(x.time_s, raw[i], temps.data());
+			}
 			if (csv_out) csv_out->write(x.time_s, raw, r, x.temp_C);
 			else
 			{
-				x.rate_dph[axis_index] = r.compensated_dph;
+				for (std::size_t i = 0; i < comps.size(); i++) x.rate_dph[axis_index[i]] = r[i].compensated_dph;
 				rawlog_out->write(x);
 			}
 			if (x.power == 0.0) gyro_off_rows++;
-			if (x.power == 1.0 && prev_power == 0.0) turn_ons++;
+			if (turn_on) turn_ons++;
 			prev_power = x.power;
 			progress.update(reader.samplesRead(), reader.fileBytesRead(), reader.fileBytes());
 		}
@@ -204,26 +237,39 @@ int main(int argc, char** argv)
 				const auto& c = health.counters(i);
 				screening.rejected_readings += c.out_of_range + c.spike + c.stuck;
 			}
-		const auto& k = comp->counters();
-		std::printf("fog-compensate: %s -> %s (%zu samples, axis %c)\n", arg_in.getValue().c_str(), out.c_str(),
-					k.samples, axis);
-		std::printf("  fallback model used: %zu samples; no model (>= 2 thermistors missing): %zu samples\n",
-					k.fallback_samples, k.no_model_samples);
-		std::printf("  clamped to the calibrated range: %zu samples (%zu signal values); rate warm-up: %zu samples; "
-					"model switches: %zu\n",
-					k.clamped_samples, k.clamped_signals, k.warmup_samples, k.model_switches);
+		const bool several = comps.size() > 1;
+		std::printf("fog-compensate: %s -> %s (%zu samples, axis %s)\n", arg_in.getValue().c_str(), out.c_str(),
+					comps.front()->counters().samples,
+					several ? (std::string(axis_letter.begin(), axis_letter.end()) + " (one model each)").c_str()
+							: std::string(1, axis_letter.front()).c_str());
+		if (!uncalibrated.empty())
+			std::printf("  axis %s: not in the calibration, written raw\n", uncalibrated.c_str());
+		for (std::size_t i = 0; i < comps.size(); i++)
+		{
+			const auto& k = comps[i]->counters();
+			const std::string ind = several ? "    " : "  ";
+			if (several) std::printf("  axis %c:\n", axis_letter[i]);
+			std::printf("%sfallback model used: %zu samples; no model (>= 2 thermistors missing): %zu samples\n",
+						ind.c_str(), k.fallback_samples, k.no_model_samples);
+			std::printf("%sclamped to the calibrated range: %zu samples (%zu signal values); rate warm-up: %zu samples; "
+						"model switches: %zu\n",
+						ind.c_str(), k.clamped_samples, k.clamped_signals, k.warmup_samples, k.model_switches);
+		}
 		if (reader.hasPower())
 			std::printf("  gyro off: %zu rows (bias tracked on the thermistors, no compensated sample where the rate "
 						"is empty); turn-on events: %zu\n",
 						gyro_off_rows, turn_ons);
 		std::fputs(app::screeningText(screening, screen).c_str(), stdout);
-		std::fputs(app::outOfRangeWarning(k, cal.extrapolation).c_str(), stdout);
+		for (std::size_t i = 0; i < comps.size(); i++)
+			std::fputs(app::outOfRangeWarning(comps[i]->counters(), cals.axes[i].extrapolation).c_str(), stdout);
 		if (!arg_json.getValue().empty())
 		{
 			JsonValue j = JsonValue::object();
 			j["input"] = arg_in.getValue();
 			j["calibration"] = arg_cal.getValue();
 			j["output"] = out;
+			const auto& k = comps.front()->counters();
+			const Calibration& cal = cals.axes.front();
 			j["samples"] = static_cast<unsigned long>(k.samples);
 			j["fallback_samples"] = static_cast<unsigned long>(k.fallback_samples);
 			j["no_model_samples"] = static_cast<unsigned long>(k.no_model_samples);
@@ -235,6 +281,22 @@ int main(int argc, char** argv)
 			j["turn_on_events"] = static_cast<unsigned long>(turn_ons);
 			j["screening"] = app::screeningJson(screening, screen);
 			j["out_of_range"] = app::outOfRangeJson(k, cal.extrapolation);
+			if (several)  // the counters above are the first calibrated axis'; every axis here
+			{
+				JsonValue& ja = j["axes"] = JsonValue::object();
+				for (std::size_t i = 0; i < comps.size(); i++)
+				{
+					const auto& c = comps[i]->counters();
+					JsonValue& a = ja[std::string(1, axis_letter[i])] = JsonValue::object();
+					a["samples"] = static_cast<unsigned long>(c.samples);
+					a["fallback_samples"] = static_cast<unsigned long>(c.fallback_samples);
+					a["no_model_samples"] = static_cast<unsigned long>(c.no_model_samples);
+					a["clamped_samples"] = static_cast<unsigned long>(c.clamped_samples);
+					a["warmup_samples"] = static_cast<unsigned long>(c.warmup_samples);
+					a["model_switches"] = static_cast<unsigned long>(c.model_switches);
+					a["out_of_range"] = app::outOfRangeJson(c, cals.axes[i].extrapolation);
+				}
+			}
 			writeTextFileAtomically(arg_json.getValue(), j.dump());
 		}
 		return app::kExitOk;

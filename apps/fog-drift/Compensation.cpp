@@ -15,9 +15,9 @@ namespace mrpt_fog::drift
 std::vector<double> compensatedRate_dph(const FogSeries& fog, const Calibration& cal, const std::string& cal_path,
 										bool screen_thermistors)
 {
-	if (cal.axis != GyroAxis::Z)
+	if (!fog.has_axis[static_cast<std::size_t>(cal.axis)])
 		throw std::runtime_error(cal_path + ": calibration is for axis " + std::string(1, axisLetter(cal.axis)) +
-								 "; fog-drift compensates the vertical (z) gyro");
+								 ", which the drive's FOG does not have");
 	// The compensated column alone (compensate() returns five: memory, issue 14).
 	std::vector<double> rate;
 	CompensationCounters c;

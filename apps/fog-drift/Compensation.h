@@ -14,11 +14,11 @@
 
 namespace mrpt_fog::drift
 {
-/** Compensated z-axis rate [deg/h], one value per sample of fog, with the z-axis calibration
- * `cal` read from `cal_path` (named in messages). With `screen_thermistors` the thermistor
- * readings are screened first (stuck / spike / out of range -> dropout, see
- * ThermistorHealth.h; a summary is printed). Throws on a calibration for another axis or a
- * layout mismatch (message names the file). */
+/** Compensated rate of the calibration's axis [deg/h], one value per sample of fog, with the
+ * calibration `cal` read from `cal_path` (named in messages). With `screen_thermistors` the
+ * thermistor readings are screened first (stuck / spike / out of range -> dropout, see
+ * ThermistorHealth.h; a summary is printed). Throws on a log without that axis or a layout
+ * mismatch (message names the file). */
 std::vector<double> compensatedRate_dph(const FogSeries& fog, const Calibration& cal, const std::string& cal_path,
 										bool screen_thermistors);
 /** The same with the file's z-axis calibration loaded from cal_path. */

@@ -59,6 +59,13 @@ JsonValue driveJson(const DriveEvaluation& e, const DriftContext& ctx)
 	JsonValue& r = j["ratios"] = JsonValue::object();
 	for (const auto& kv : tab)
 		if (kv.first.rfind("ratio.", 0) == 0) r[kv.first.substr(6)] = std::isfinite(kv.second) ? JsonValue(kv.second) : JsonValue();
+	if (e.three_axis)  // the triad's attitude and per-axis figures (driveFigureTable keys)
+	{
+		JsonValue& t3 = j["three_axis"] = JsonValue::object();
+		for (const auto& kv : tab)
+			if (kv.first.rfind("roll_", 0) == 0 || kv.first.rfind("pitch_", 0) == 0 || kv.first.rfind("rate_error_", 0) == 0)
+				t3[kv.first] = std::isfinite(kv.second) ? JsonValue(kv.second) : JsonValue();
+	}
 	if (!e.figures.empty())
 	{
 		const auto& f = e.figures.begin()->second;

@@ -5,10 +5,12 @@
 
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/obs/Units.h>
+#include <mrpt_fog_nav/Rotation.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace mrpt_fog::drift
@@ -25,22 +27,37 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 	HeadingOptions hopt = st.heading;
 	hopt.latitude_deg = e.latitude_deg;
 
-	auto run = [&](const std::string& name, const std::vector<double>& t, const std::vector<double>& rate) {
-		e.results.push_back(deadReckonVariant(t, rate, e.drive, hopt));
+	const FogSeries& fog = e.drive.fog;
+	const bool triad_log = fog.has_axis[0] && fog.has_axis[1] && fog.has_axis[2];
+	std::optional<CalibrationSet> cals;
+	if (!st.cal_path.empty()) cals = loadCalibrationSet(st.cal_path);
+	const bool cal_all = cals && cals->forAxis(GyroAxis::X) && cals->forAxis(GyroAxis::Y) && cals->forAxis(GyroAxis::Z);
+	const bool ideal_triad = !e.drive.fog_ideal || (e.drive.fog_ideal->has_axis[0] && e.drive.fog_ideal->has_axis[1] &&
+													e.drive.fog_ideal->has_axis[2]);
+	e.three_axis = triad_log && (!cals || cal_all) && ideal_triad;
+	if (triad_log && !e.three_axis)
+		e.three_axis_note = cals && !cal_all ? "the calibration does not cover x, y and z: the vertical gyro alone"
+											 : "FOG_IDEAL is not a triad: the vertical gyro alone";
+
+	auto run = [&](const std::string& name, const std::vector<double>& t, const std::array<const std::vector<double>*, 3>& r) {
+		e.results.push_back(e.three_axis ? deadReckonVariant(t, *r[0], *r[1], *r[2], e.drive, hopt)
+										 : deadReckonVariant(t, *r[2], e.drive, hopt));
 		e.variants.emplace_back(name, e.results.back().trajectory);
 	};
-	// The heading gyro is the vertical (z) axis; x/y axes of a triad are not used (planar drive).
-	auto verticalRate = [&](const FogSeries& s) -> const std::vector<double>& {
+	// The heading gyro is the vertical (z) axis; a triad's x / y enter the 3-D strapdown.
+	auto rates = [&](const FogSeries& s) -> std::array<const std::vector<double>*, 3> {
 		if (!s.has_axis[2])
 			throw std::runtime_error(path + ": FOG '" + s.sensor_label +
 									 "' has no z (vertical) axis; fog-drift integrates the vertical gyro");
-		return s.rate_dph[2];
+		return {&s.rate_dph[0], &s.rate_dph[1], &s.rate_dph[2]};
 	};
-	const std::vector<double> t_fog = absoluteTimes(e.drive.fog);
-	run("raw", t_fog, verticalRate(e.drive.fog));
-	if (!st.cal_path.empty())
+	const std::vector<double> t_fog = absoluteTimes(fog);
+	run("raw", t_fog, rates(fog));
+	std::array<std::vector<double>, 3> comp;
+	if (cals)
 	{
-		const Calibration cal = loadCalibrationYaml(st.cal_path, GyroAxis::Z);
+		const Calibration* zcal = cals->forAxis(GyroAxis::Z);
+		if (!zcal) throw std::runtime_error(st.cal_path + ": axes: no calibration for axis z (the heading gyro)");
 		double cal_lat_deg = e.latitude_deg;
 		e.calibration_latitude_source = "drive";
 		if (st.cal_latitude_deg)
@@ -48,23 +65,84 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 			cal_lat_deg = *st.cal_latitude_deg;
 			e.calibration_latitude_source = "option";
 		}
-		else if (std::isfinite(cal.latitude_deg))
+		else if (std::isfinite(zcal->latitude_deg))
 		{
-			cal_lat_deg = cal.latitude_deg;
+			cal_lat_deg = zcal->latitude_deg;
 			e.calibration_latitude_source = "calibration";
 		}
 		if (!(std::abs(cal_lat_deg) <= 90)) throw std::runtime_error("--cal-latitude-deg: must be within [-90, 90]");
-		const bool bias_holds_earth = !st.cal_no_earth_rate && cal.earth_rate == EarthRateHandling::InBias;
+		const bool bias_holds_earth = !st.cal_no_earth_rate && zcal->earth_rate == EarthRateHandling::InBias;
 		if (bias_holds_earth) e.calibration_earth_rate_dph = units::kEarthRate_dph * std::sin(cal_lat_deg * units::kDegToRad);
-		std::vector<double> comp = compensatedRate_dph(e.drive.fog, cal, st.cal_path, st.screen_thermistors);
+		if (e.three_axis && bias_holds_earth)
+			throw std::runtime_error(st.cal_path +
+									 ": the bias holds the Earth rate of the calibration mount (earth_rate handling "
+									 "in_bias), which is unknown for the horizontal axes: calibrate a triad from runs "
+									 "that state it (metadata earth_rate_dph.<axis>, fog-sim --triad writes it)");
+		for (const GyroAxis a : {GyroAxis::X, GyroAxis::Y, GyroAxis::Z})
+		{
+			const Calibration* c = cals->forAxis(a);
+			const std::size_t i = static_cast<std::size_t>(a);
+			if (c && (e.three_axis || a == GyroAxis::Z))
+				comp[i] = compensatedRate_dph(fog, *c, st.cal_path, st.screen_thermistors);
+			else
+				comp[i] = fog.rate_dph[i];  // not integrated (vertical gyro alone) or absent
+		}
 		// The compensated rate lacks the Earth rate the bias held; the strapdown removes the
 		// drive's own: add the first back so that it is not removed twice. Scale factor: the
 		// bias (hence its Earth rate) is removed before the division, so the Earth rate goes
 		// back unscaled.
-		for (double& r : comp) r += e.calibration_earth_rate_dph;
-		run("compensated", t_fog, comp);
+		for (double& r : comp[2]) r += e.calibration_earth_rate_dph;
+		run("compensated", t_fog, {&comp[0], &comp[1], &comp[2]});
 	}
-	if (e.drive.fog_ideal) run("ideal", absoluteTimes(*e.drive.fog_ideal), verticalRate(*e.drive.fog_ideal));
+	if (e.drive.fog_ideal) run("ideal", absoluteTimes(*e.drive.fog_ideal), rates(*e.drive.fog_ideal));
+
+	if (e.three_axis)
+	{
+		for (std::size_t v = 0; v < e.results.size(); v++)
+		{
+			const VariantResult& r = e.results[v];
+			AttitudeFigures af;
+			double sr = 0, sp = 0;
+			for (std::size_t k = 0; k < r.t_s.size(); k++)
+			{
+				const auto q = nav::interpolate(e.drive.truth, r.t_s[k]).q_nb.normalized();
+				const double dr = std::abs(nav::wrapToPi(r.roll_rad[k] - rollOf(q))) * units::kRadToDeg;
+				const double dp = std::abs(nav::wrapToPi(r.pitch_rad[k] - pitchOf(q))) * units::kRadToDeg;
+				sr += dr * dr, sp += dp * dp;
+				af.roll_error_max_deg = std::max(af.roll_error_max_deg, dr);
+				af.pitch_error_max_deg = std::max(af.pitch_error_max_deg, dp);
+				af.roll_error_final_deg = dr, af.pitch_error_final_deg = dp;
+			}
+			const double n = static_cast<double>(std::max<std::size_t>(r.t_s.size(), 1));
+			af.roll_error_rms_deg = std::sqrt(sr / n);
+			af.pitch_error_rms_deg = std::sqrt(sp / n);
+			e.attitude[e.variants[v].first] = af;
+		}
+		if (e.drive.fog_ideal)
+		{
+			const FogSeries& ideal = *e.drive.fog_ideal;
+			const auto rmsVsIdeal = [&](const std::array<const std::vector<double>*, 3>& r) {
+				std::array<double, 3> out{};
+				for (std::size_t a = 0; a < 3; a++)
+				{
+					double s2 = 0;
+					std::size_t n = 0;
+					for (std::size_t k = 0; k < r[a]->size() && k < ideal.rate_dph[a].size(); k++)
+					{
+						const double d = (*r[a])[k] - ideal.rate_dph[a][k];
+						if (fog.gyroOn(k) && std::isfinite(d)) s2 += d * d, n++;
+					}
+					out[a] = n ? std::sqrt(s2 / static_cast<double>(n)) : std::numeric_limits<double>::quiet_NaN();
+				}
+				return out;
+			};
+			if (ideal.size() == fog.size())
+			{
+				e.rate_error_rms_dph["raw"] = rmsVsIdeal(rates(fog));
+				if (cals) e.rate_error_rms_dph["compensated"] = rmsVsIdeal({&comp[0], &comp[1], &comp[2]});
+			}
+		}
+	}
 
 	e.report = nav::computeDriftReport(e.drive.truth, e.variants);
 	e.segments = nav::segmentDrive(e.drive.truth, st.figures);
@@ -113,11 +191,36 @@ std::map<std::string, double> driveFigureTable(const DriveEvaluation& e)
 		t["heading_drift_between_turns_dph." + n] = has ? it->second.heading_drift_between_turns_dph : nan;
 		t["turn_scale_factor_ppm." + n] = has ? it->second.turn_scale_factor_ppm : nan;
 	}
+	if (e.three_axis)
+		for (const char* name : {"raw", "compensated", "ideal"})
+		{
+			const auto it = e.attitude.find(name);
+			const bool has = it != e.attitude.end();
+			const std::string n(name);
+			t["roll_error_rms_deg." + n] = has ? it->second.roll_error_rms_deg : nan;
+			t["roll_error_max_deg." + n] = has ? it->second.roll_error_max_deg : nan;
+			t["roll_error_final_deg." + n] = has ? it->second.roll_error_final_deg : nan;
+			t["pitch_error_rms_deg." + n] = has ? it->second.pitch_error_rms_deg : nan;
+			t["pitch_error_max_deg." + n] = has ? it->second.pitch_error_max_deg : nan;
+			t["pitch_error_final_deg." + n] = has ? it->second.pitch_error_final_deg : nan;
+			const auto jt = e.rate_error_rms_dph.find(name);
+			if (n != "ideal")
+				for (std::size_t a = 0; a < 3; a++)
+					t[std::string("rate_error_rms_dph.") + "xyz"[a] + "." + n] = jt != e.rate_error_rms_dph.end() ? jt->second[a] : nan;
+		}
 	const auto ratio = [&](const std::string& a, const std::string& b) { return std::abs(t[a]) / std::abs(t[b]); };
 	t["ratio.heading_rms_compensated_over_raw"] = ratio("heading_error_rms_deg.compensated", "heading_error_rms_deg.raw");
 	t["ratio.heading_rms_compensated_over_ideal"] = ratio("heading_error_rms_deg.compensated", "heading_error_rms_deg.ideal");
 	t["ratio.drift_between_turns_compensated_over_raw"] =
 		ratio("heading_drift_between_turns_dph.compensated", "heading_drift_between_turns_dph.raw");
+	if (e.three_axis)
+	{
+		for (const char* a : {"x", "y", "z"})
+			t[std::string("ratio.rate_error_") + a + "_compensated_over_raw"] =
+				ratio(std::string("rate_error_rms_dph.") + a + ".compensated", std::string("rate_error_rms_dph.") + a + ".raw");
+		t["ratio.roll_rms_compensated_over_ideal"] = ratio("roll_error_rms_deg.compensated", "roll_error_rms_deg.ideal");
+		t["ratio.pitch_rms_compensated_over_ideal"] = ratio("pitch_error_rms_deg.compensated", "pitch_error_rms_deg.ideal");
+	}
 	return t;
 }
 

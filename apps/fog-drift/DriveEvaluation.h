@@ -14,6 +14,7 @@
 #include <mrpt_fog_nav/DriftReport.h>
 #include <mrpt_fog_nav/HeadingFigures.h>
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -32,6 +33,13 @@ struct DriveSettings
 	nav::HeadingFigureOptions figures;
 };
 
+/** Attitude errors of a triad variant against the truth (3-D strapdown) [deg]. */
+struct AttitudeFigures
+{
+	double roll_error_rms_deg = 0, roll_error_max_deg = 0, roll_error_final_deg = 0;
+	double pitch_error_rms_deg = 0, pitch_error_max_deg = 0, pitch_error_final_deg = 0;
+};
+
 struct DriveEvaluation
 {
 	std::string input;
@@ -44,6 +52,14 @@ struct DriveEvaluation
 	nav::DriftReport report;
 	nav::DriveSegments segments;
 	std::map<std::string, nav::HeadingFigures> figures;  //!< by variant name
+	/** Triad FOG (x, y, z) and a calibration of all three axes (or none): the 3-D strapdown
+	 * (heading = its yaw), attitude figures and per-axis rate errors below. */
+	bool three_axis = false;
+	std::string three_axis_note;  //!< why a triad log was not run in 3-D ("" otherwise)
+	std::map<std::string, AttitudeFigures> attitude;  //!< by variant name (three_axis only)
+	/** RMS of (variant - ideal) per axis x, y, z over the powered samples [deg/h]: the thermal
+	 * error left on each axis (raw, compensated; three_axis only). */
+	std::map<std::string, std::array<double, 3>> rate_error_rms_dph;
 };
 
 /** Throws std::runtime_error naming the file on any problem. */

@@ -13,10 +13,28 @@
 
 namespace mrpt_fog::drift
 {
-VariantResult deadReckonVariant(const std::vector<double>& t_s, const std::vector<double>& rate_dph,
-								const DriveData& drive, const HeadingOptions& options)
+double rollOf(const Eigen::Quaterniond& q_nb)
 {
-	if (t_s.size() != rate_dph.size() || t_s.size() < 2)
+	const Eigen::Matrix3d R = q_nb.toRotationMatrix();
+	return std::atan2(R(2, 1), R(2, 2));
+}
+
+double pitchOf(const Eigen::Quaterniond& q_nb)
+{
+	const Eigen::Matrix3d R = q_nb.toRotationMatrix();
+	return -std::asin(std::clamp(R(2, 0), -1.0, 1.0));
+}
+
+namespace
+{
+/** x, y null: the vertical gyro alone (VerticalOnly); else the triad (ThreeAxis). */
+VariantResult deadReckonImpl(const std::vector<double>& t_s, const std::vector<double>* rate_x_dph,
+							 const std::vector<double>* rate_y_dph, const std::vector<double>& rate_dph,
+							 const DriveData& drive, const HeadingOptions& options)
+{
+	const bool triad = rate_x_dph && rate_y_dph;
+	if (t_s.size() != rate_dph.size() || t_s.size() < 2 ||
+		(triad && (rate_x_dph->size() != t_s.size() || rate_y_dph->size() != t_s.size())))
 		throw std::runtime_error("gyro series: sizes differ or fewer than 2 samples");
 	const auto& odo = drive.odometry;
 	const double t0 = std::max({t_s.front(), odo.t_s.front(), drive.truth.front().t_s});
@@ -27,9 +45,9 @@ VariantResult deadReckonVariant(const std::vector<double>& t_s, const std::vecto
 	so.latitude_rad = options.latitude_deg * units::kDegToRad;
 	so.use_transport_rate = options.transport_rate;
 	so.sampling = options.sampling;
-	nav::StrapdownAttitude att(so, nav::StrapdownAttitude::Mode::VerticalOnly);
+	nav::StrapdownAttitude att(so, triad ? nav::StrapdownAttitude::Mode::ThreeAxis : nav::StrapdownAttitude::Mode::VerticalOnly);
 	const nav::TrajectoryPoint start = nav::interpolate(drive.truth, t0);
-	att.initialize(t0, nav::quatFromYawPitchRoll(start.yaw_rad, 0, 0));
+	att.initialize(t0, triad ? start.q_nb.normalized() : nav::quatFromYawPitchRoll(start.yaw_rad, 0, 0));
 	nav::AttitudeTrack track;
 	track.push_back(t0, att.attitude());
 
@@ -48,7 +66,7 @@ VariantResult deadReckonVariant(const std::vector<double>& t_s, const std::vecto
 	{
 		if (t_s[k] < t0 || (t_s[k] == t0 && options.sampling == nav::RateSampling::IntervalAverage)) continue;
 		if (t_s[k] > t_end) break;
-		if (!std::isfinite(rate_dph[k]))
+		if (!std::isfinite(rate_dph[k]) || (triad && !(std::isfinite((*rate_x_dph)[k]) && std::isfinite((*rate_y_dph)[k]))))
 			throw std::runtime_error("gyro rate is not finite at sample " + std::to_string(k) + " (t = " +
 									 std::to_string(t_s[k]) + " s; a heading cannot be integrated while the gyro is off)");
 		const double w = rate_dph[k] * units::kDegPerHourToRadPerSec;
@@ -58,7 +76,16 @@ VariantResult deadReckonVariant(const std::vector<double>& t_s, const std::vecto
 			const double v = speedAt(t_s[k]), yaw = att.yaw();
 			vel = Eigen::Vector3d(v * std::cos(yaw), v * std::sin(yaw), 0.0);
 		}
-		att.updateRateZ(t_s[k], w, vel);
+		if (triad)
+		{
+			const Eigen::Vector3d wb((*rate_x_dph)[k] * units::kDegPerHourToRadPerSec,
+									 (*rate_y_dph)[k] * units::kDegPerHourToRadPerSec, w);
+			att.updateRate(t_s[k], wb, vel);
+			out.roll_rad.push_back(rollOf(att.attitude()));
+			out.pitch_rad.push_back(pitchOf(att.attitude()));
+		}
+		else
+			att.updateRateZ(t_s[k], w, vel);
 		if (t_s[k] > track.backTime()) track.push_back(t_s[k], att.attitude());
 		out.t_s.push_back(t_s[k]);
 		out.yaw_rate_rad_s.push_back(w - earth_up);
@@ -78,6 +105,20 @@ VariantResult deadReckonVariant(const std::vector<double>& t_s, const std::vecto
 	const nav::TrajectoryPoint p0 = nav::interpolate(drive.truth, ot.front());
 	out.trajectory = nav::deadReckon2D(ot.front(), p0.x_m, p0.y_m, nav::odometryFromPoses2D(ot, ox, oy, op), track);
 	return out;
+}
+}  // namespace
+
+VariantResult deadReckonVariant(const std::vector<double>& t_s, const std::vector<double>& rate_dph,
+								const DriveData& drive, const HeadingOptions& options)
+{
+	return deadReckonImpl(t_s, nullptr, nullptr, rate_dph, drive, options);
+}
+
+VariantResult deadReckonVariant(const std::vector<double>& t_s, const std::vector<double>& rate_x_dph,
+								const std::vector<double>& rate_y_dph, const std::vector<double>& rate_z_dph,
+								const DriveData& drive, const HeadingOptions& options)
+{
+	return deadReckonImpl(t_s, &rate_x_dph, &rate_y_dph, rate_z_dph, drive, options);
 }
 
 }  // namespace mrpt_fog::drift

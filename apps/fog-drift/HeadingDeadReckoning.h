@@ -5,7 +5,10 @@
  * One gyro variant through the navigation chain: vertical FOG rate [deg/h] ->
  * StrapdownAttitude (VerticalOnly, Earth rate at the drive's latitude removed) -> heading ->
  * DeadReckoning2D with the wheel odometry distances. Starts from the truth pose (position and
- * heading) at the first common time, as an aligned vehicle would. */
+ * heading) at the first common time, as an aligned vehicle would.
+ * With a triad (x, y and z rates): StrapdownAttitude ThreeAxis (the full Earth rate removed),
+ * started from the truth attitude; the heading for dead reckoning is the 3-D attitude's yaw,
+ * and roll and pitch are kept for the attitude figures. */
 
 #include "DriveData.h"
 
@@ -28,11 +31,21 @@ struct VariantResult
 	nav::Trajectory trajectory;  //!< dead-reckoned, at odometry times
 	std::vector<double> t_s;  //!< gyro sample times used
 	std::vector<double> yaw_rate_rad_s;  //!< gyro rate with the Earth rate removed (for the rawlog)
+	std::vector<double> roll_rad, pitch_rad;  //!< triad only: the attitude at t_s
 };
 
 /** t_s: absolute sample times [s]; rate_dph: vertical gyro output [deg/h] (same size).
  * Throws std::runtime_error when the gyro, odometry and truth do not overlap in time. */
 VariantResult deadReckonVariant(const std::vector<double>& t_s, const std::vector<double>& rate_dph,
 								const DriveData& drive, const HeadingOptions& options);
+
+/** The same for a triad: rate_x/y/z_dph [deg/h] (body x forward, y left, z up). */
+VariantResult deadReckonVariant(const std::vector<double>& t_s, const std::vector<double>& rate_x_dph,
+								const std::vector<double>& rate_y_dph, const std::vector<double>& rate_z_dph,
+								const DriveData& drive, const HeadingOptions& options);
+
+/** Roll and pitch [rad] of q_nb (yaw-pitch-roll convention of nav::quatFromYawPitchRoll). */
+double rollOf(const Eigen::Quaterniond& q_nb);
+double pitchOf(const Eigen::Quaterniond& q_nb);
 
 }  // namespace mrpt_fog::drift

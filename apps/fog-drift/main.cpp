@@ -43,6 +43,15 @@ WHAT IT SHOWS
   Turns and straights are found on the truth's yaw rate (> 1 deg/s turn, < 0.2 deg/s for
   >= 30 s straight).
 
+THREE-AXIS FOG (a triad: rate_x/y/z_dph, fog-sim --profile drive --triad)
+  With a calibration of all three axes (or none), each gyro variant runs the 3-D strapdown
+  (ThreeAxis: the full Earth rate removed, started from the true attitude); the heading
+  figures above then come from its yaw, and per variant it adds the roll and pitch errors
+  (RMS, max, final) and per axis the thermal error left, RMS of (gyro - ideal) [deg/h]
+  (JSON: three_axis). The calibration must not hold the Earth rate of its mount
+  (earth_rate handling in_table_rate: fog-calibrate on runs stating earth_rate_dph.<axis>).
+  A calibration of z alone: the vertical gyro alone, as for a single-axis FOG.
+
 SEVERAL DRIVES
   Repeat -i: every drive's figures, then the median, quartiles and range of each figure and of
   the ratios compensated/raw (heading RMS, drift between turns) and compensated/ideal (heading
@@ -166,6 +175,23 @@ int main(int argc, char** argv)
 							f.heading_error_max_deg, f.heading_error_final_deg, f.heading_drift_between_turns_dph,
 							f.turn_scale_factor_ppm, v.position_error_final_m);
 			}
+			if (!e.three_axis_note.empty()) std::printf("  triad FOG: %s\n", e.three_axis_note.c_str());
+			if (e.three_axis)
+			{
+				std::printf("  3-D strapdown (triad x, y, z; full Earth rate removed): attitude errors [deg] and thermal "
+							"error left per axis (RMS of gyro - ideal) [deg/h]\n");
+				std::printf("  %-12s %10s %10s %10s %10s %10s %10s %10s %10s %10s\n", "gyro", "roll RMS", "roll max",
+							"roll fin.", "pitch RMS", "pitch max", "pitch fin.", "x [dph]", "y [dph]", "z [dph]");
+				for (const auto& v : rep.variants)
+				{
+					const auto& a = e.attitude.at(v.name);
+					const auto it = e.rate_error_rms_dph.find(v.name);
+					const auto cell = [&](std::size_t i) { return it == e.rate_error_rms_dph.end() ? NAN : it->second[i]; };
+					std::printf("  %-12s %10.5f %10.5f %10.5f %10.5f %10.5f %10.5f %10.4f %10.4f %10.4f\n", v.name.c_str(),
+								a.roll_error_rms_deg, a.roll_error_max_deg, a.roll_error_final_deg, a.pitch_error_rms_deg,
+								a.pitch_error_max_deg, a.pitch_error_final_deg, cell(0), cell(1), cell(2));
+				}
+			}
 			tables.push_back(drift::driveFigureTable(e));
 			if (!cal.getValue().empty())
 			{
@@ -184,7 +210,8 @@ int main(int argc, char** argv)
 			for (const auto& kv : tables.front())
 			{
 				std::vector<double> v;
-				for (const auto& t : tables) v.push_back(t.at(kv.first));
+				for (const auto& t : tables)  // a figure some drives lack (a triad among single-axis drives): NaN
+					v.push_back(t.count(kv.first) ? t.at(kv.first) : NAN);
 				over[kv.first] = drift::spreadOf(v);
 			}
 			std::printf("fog-drift: over %zu drives: median [quartiles] (min .. max)\n", evals.size());
