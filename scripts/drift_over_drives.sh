@@ -10,7 +10,8 @@
 # air conditioning to 22 C), plus the bundled datasets/drive.rawlog. SEEDS="..." and
 # CABINS="..." override the lists. Seeds 1-3 were used to choose the calibration recipe
 # (docs/nav.md); the figures in docs/nav.md and README come from SEEDS="11 12 13 14 15 16 17 18 19",
-# held out of every choice.
+# held out of every choice. TRIAD=1: three-axis FOG drives (fog-sim --triad; the bundled
+# single-axis drive is then left out) for a calibration of x, y and z (scripts/triad_calibration.sh).
 set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 CAL=${1:?usage: drift_over_drives.sh CAL.yaml OUT_DIR [BUILD_DIR]}
@@ -24,9 +25,9 @@ i=0
 for seed in $SEEDS; do
 	cabin=${CABINS[$((i % ${#CABINS[@]}))]}
 	f="$OUT/drive_seed${seed}_${cabin}.rawlog"
-	"$BUILD/apps/fog-sim" --profile drive --cabin "$cabin" --seed "$seed" -o "$f" >/dev/null
+	"$BUILD/apps/fog-sim" --profile drive --cabin "$cabin" --seed "$seed" ${TRIAD:+--triad} -o "$f" >/dev/null
 	inputs+=(-i "$f")
 	i=$((i + 1))
 done
-if [ -z "${NO_BUNDLED:-}" ]; then inputs+=(-i "$ROOT/datasets/drive.rawlog"); fi
+if [ -z "${NO_BUNDLED:-}" ] && [ -z "${TRIAD:-}" ]; then inputs+=(-i "$ROOT/datasets/drive.rawlog"); fi
 "$BUILD/apps/fog-drift" "${inputs[@]}" --cal "$CAL" --json "$OUT/drives.json"

@@ -57,8 +57,8 @@ struct DriveEvaluation
 	bool three_axis = false;
 	std::string three_axis_note;  //!< why a triad log was not run in 3-D ("" otherwise)
 	std::map<std::string, AttitudeFigures> attitude;  //!< by variant name (three_axis only)
-	/** RMS of (variant - ideal) per axis x, y, z over the powered samples [deg/h]: the thermal
-	 * error left on each axis (raw, compensated; three_axis only). */
+	/** Per axis x, y, z: RMS of the 100 s block means of (variant - ideal) over the powered
+	 * samples [deg/h]: the thermal error left on each axis (raw, compensated; three_axis only). */
 	std::map<std::string, std::array<double, 3>> rate_error_rms_dph;
 };
 

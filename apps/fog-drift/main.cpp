@@ -47,7 +47,8 @@ THREE-AXIS FOG (a triad: rate_x/y/z_dph, fog-sim --profile drive --triad)
   With a calibration of all three axes (or none), each gyro variant runs the 3-D strapdown
   (ThreeAxis: the full Earth rate removed, started from the true attitude); the heading
   figures above then come from its yaw, and per variant it adds the roll and pitch errors
-  (RMS, max, final) and per axis the thermal error left, RMS of (gyro - ideal) [deg/h]
+  (RMS, max, final) and per axis the thermal error left, RMS of the 100 s means of
+  (gyro - ideal) [deg/h]
   (JSON: three_axis). The calibration must not hold the Earth rate of its mount
   (earth_rate handling in_table_rate: fog-calibrate on runs stating earth_rate_dph.<axis>).
   A calibration of z alone: the vertical gyro alone, as for a single-axis FOG.
@@ -179,7 +180,7 @@ int main(int argc, char** argv)
 			if (e.three_axis)
 			{
 				std::printf("  3-D strapdown (triad x, y, z; full Earth rate removed): attitude errors [deg] and thermal "
-							"error left per axis (RMS of gyro - ideal) [deg/h]\n");
+							"error left per axis (RMS of 100 s means of gyro - ideal) [deg/h]\n");
 				std::printf("  %-12s %10s %10s %10s %10s %10s %10s %10s %10s %10s\n", "gyro", "roll RMS", "roll max",
 							"roll fin.", "pitch RMS", "pitch max", "pitch fin.", "x [dph]", "y [dph]", "z [dph]");
 				for (const auto& v : rep.variants)

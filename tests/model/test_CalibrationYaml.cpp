@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "SyntheticCoil.h"
@@ -247,6 +248,58 @@ TEST(CalibrationYaml, Version1FileLoadsAndCompensatesAsBefore)
 	EXPECT_NE(v2.find("version: 2"), std::string::npos);
 	const Calibration back = calibrationFromYaml(v2, "v2.yaml");
 	EXPECT_EQ(compensate(back, b).compensated_dph, now.compensated_dph);
+}
+
+// A version 2 file written before three-axis calibration existed (main 94910e2: bias + scale
+// factor + warm-up from the bundled datasets, tests/data/model/cal_v2_full_A.yaml) still loads
+// and compensates exactly as that program's fog-compensate did on coil_B (stored beside it),
+// and writing it again gives the same text.
+TEST(CalibrationYaml, Version2FileFromBeforeTheTriadLoadsAndCompensatesAsBefore)
+{
+	std::ifstream f(dataPath("cal_v2_full_A.yaml"));
+	const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+	const Calibration v2 = calibrationFromYaml(text, "cal_v2_full_A.yaml");
+	EXPECT_EQ(v2.axis, GyroAxis::Z);
+	EXPECT_TRUE(v2.scale_factor.has_value());
+	EXPECT_TRUE(v2.warmup.has_value());
+	EXPECT_EQ(calibrationToYaml(v2), text);
+	std::ifstream in(dataPath("comp_v2_coil_B.csv"));
+	ASSERT_TRUE(in.good());
+	std::vector<double> time_old, bias_old, comp_old;
+	std::string line;
+	while (std::getline(in, line))
+	{
+		if (line.empty() || line[0] == '#' || line[0] == 't') continue;
+		std::stringstream ss(line);
+		std::string cell;
+		std::vector<std::string> cells;
+		while (std::getline(ss, cell, ',')) cells.push_back(cell);
+		ASSERT_GE(cells.size(), 4u);
+		time_old.push_back(std::stod(cells[0]));
+		bias_old.push_back(std::stod(cells[2]));
+		comp_old.push_back(std::stod(cells[3]));
+	}
+	const FogSeries b = readFogLog(dataPath("coil_B.csv"));
+	const CompensatedSeries now = compensate(v2, b);
+	ASSERT_EQ(now.time_s.size(), time_old.size());
+	for (std::size_t k = 0; k < time_old.size(); k++)
+	{
+		ASSERT_EQ(now.time_s[k], time_old[k]);
+		ASSERT_EQ(now.bias_dph[k], bias_old[k]) << k;
+		ASSERT_EQ(now.compensated_dph[k], comp_old[k]) << k;
+	}
+	// a set of three such axes (x, y, z) round-trips, each axis compensating as the original
+	CalibrationSet set;
+	for (GyroAxis a : {GyroAxis::X, GyroAxis::Y, GyroAxis::Z})
+	{
+		Calibration c = v2;
+		c.axis = a;
+		set.axes.push_back(c);
+	}
+	const CalibrationSet back = calibrationSetFromYaml(calibrationSetToYaml(set), "set.yaml");
+	ASSERT_EQ(back.axes.size(), 3u);
+	EXPECT_EQ(back.axes[1].axis, GyroAxis::Y);
+	EXPECT_EQ(calibrationSetToYaml(back), calibrationSetToYaml(set));
 }
 
 // The optional sections round-trip exactly; absent they stay absent.
