@@ -440,6 +440,10 @@ int main(int argc, char** argv)
 											"auto (default): fit the scale factor vs temperature from table-rate "
 											"segments when a run has them; off: bias only",
 											false, "auto", "auto|off", cmd);
+		TCLAP::ValueArg<std::string> arg_sf_temp("", "sf-temperature",
+												 "Temperature the scale factor is modelled in: thermistor (default: the "
+												 "best single thermistor by held-out error) or mean (of all thermistors)",
+												 false, "thermistor", "thermistor|mean", cmd);
 		TCLAP::MultiArg<std::string> arg_warm("", "warmup-run",
 											  "Run holding a turn-on (cold start) to fit the warm-up term; repeatable; "
 											  "not used in the bias fit",
@@ -502,6 +506,10 @@ int main(int argc, char** argv)
 		else
 			throw std::invalid_argument("--axis: '" + arg_axis.getValue() + "' is not x, y, z or all");
 		const bool several = axes.size() > 1;
+		if (arg_sf_temp.getValue() != "thermistor" && arg_sf_temp.getValue() != "mean")
+			throw std::invalid_argument("--sf-temperature: '" + arg_sf_temp.getValue() + "' is not thermistor or mean");
+		ScaleFactorFitOptions sf_opt;
+		sf_opt.thermistor_mean = arg_sf_temp.getValue() == "mean";
 
 		std::vector<AxisFit> fits;
 		for (std::size_t ia = 0; ia < axes.size(); ia++)
@@ -527,7 +535,7 @@ int main(int argc, char** argv)
 			{
 				try
 				{
-					f.cal.scale_factor = fitScaleFactor(set.runs, f.cal, {}, &f.sf_report, set.labels);
+					f.cal.scale_factor = fitScaleFactor(set.runs, f.cal, sf_opt, &f.sf_report, set.labels);
 				}
 				catch (const ScaleFactorFitError& e)
 				{

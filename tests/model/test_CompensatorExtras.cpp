@@ -3,6 +3,7 @@
 // temperature, checked against the closed form applied to the bias-only compensator's output.
 #include <gtest/gtest.h>
 #include <mrpt_fog/model/Calibration.h>
+#include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/Compensator.h>
 
 #include <cmath>
@@ -121,4 +122,34 @@ TEST(CompensatorExtras, TurnOnFromThePowerColumnAndHeldScaleFactor)
 	other.scale_factor = linearSf(20.0);
 	other.scale_factor->thermistor = "Tx";
 	EXPECT_THROW(compensate(other, e), std::invalid_argument);
+}
+
+// A scale factor in the mean of several thermistors (fog-calibrate --sf-temperature mean):
+// s from (Ti1 + To1) / 2, closed form on the bias-only output; it round-trips through the file.
+TEST(CompensatorExtras, ScaleFactorInTheMeanOfThermistors)
+{
+	FogSeries b = fogtest::makeCoilRun("B", 74);
+	for (auto& r : b.rate_dph[2]) r += 3600.0;
+	const CompensatedSeries plain = compensate(biasOnly(), b);
+	Calibration cal = biasOnly();
+	cal.scale_factor = linearSf(20.0);
+	cal.scale_factor->thermistor = "mean";
+	cal.scale_factor->thermistors = {"Ti1", "To1"};
+	cal.scale_factor->covariance_ppm2 = Eigen::MatrixXd::Identity(2, 2);  // the file needs one
+	const CompensatedSeries out = compensate(cal, b);
+	const int i1 = b.thermistorIndex("Ti1"), o1 = b.thermistorIndex("To1");
+	for (std::size_t k = 0; k < b.size(); k++)
+	{
+		const double T = std::min(60.0, std::max(-40.0, 0.5 * (b.temp_C[i1][k] + b.temp_C[o1][k])));
+		const double expect = (plain.raw_dph[k] - plain.bias_dph[k]) / (1 + 1e-6 * (100.0 + 20.0 * (T - 10.0)));
+		ASSERT_NEAR(out.compensated_dph[k], expect, 1e-9 * std::abs(expect)) << k;
+	}
+	const Calibration back = calibrationFromYaml(calibrationToYaml(cal), "mean.yaml");
+	ASSERT_TRUE(back.scale_factor.has_value());
+	EXPECT_EQ(back.scale_factor->thermistors, cal.scale_factor->thermistors);
+	EXPECT_EQ(compensate(back, b).compensated_dph, out.compensated_dph);
+	// a listed thermistor outside the layout is a field error
+	std::string text = calibrationToYaml(cal);
+	text.replace(text.find("thermistors: [\"Ti1\", \"To1\"]"), 27, "thermistors: [\"Ti1\", \"Tx9\"]");
+	EXPECT_THROW(calibrationFromYaml(text, "bad.yaml"), std::invalid_argument);
 }

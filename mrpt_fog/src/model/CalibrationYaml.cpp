@@ -80,6 +80,12 @@ void writeScaleFactor(std::ostringstream& o, const ScaleFactorModel& m, const st
 {
 	o << ind << "scale_factor:  # omega = (raw - bias) / (1 + 1e-6 s_ppm), s_ppm = sum coef_ppm[k] z^k\n";
 	o << ind << "  thermistor: " << str(m.thermistor) << "\n";
+	if (!m.thermistors.empty())  // optional: the model reads the mean of these
+	{
+		o << ind << "  thermistors: [";
+		for (std::size_t i = 0; i < m.thermistors.size(); i++) o << (i ? ", " : "") << str(m.thermistors[i]);
+		o << "]  # T = mean of these readings\n";
+	}
 	o << ind << "  centre_C: " << num(m.centre_C) << "  # z = (clamp(T, min_C, max_C) - centre_C) / scale_C\n";
 	o << ind << "  scale_C: " << num(m.scale_C) << "\n";
 	o << ind << "  min_C: " << num(m.min_C) << "  # calibrated range: T is clamped to [min_C, max_C]\n";
@@ -381,6 +387,12 @@ ScaleFactorModel readScaleFactor(const Reader& rd, const yaml& n, const std::str
 {
 	ScaleFactorModel m;
 	m.thermistor = rd.text(n, "thermistor", path);
+	if (n.has("thermistors"))  // optional: the mean of these thermistors ("thermistor: mean")
+	{
+		for (const auto& t : rd.seq(n, "thermistors", path)) m.thermistors.push_back(yaml(t).as<std::string>());
+		if (m.thermistors.empty()) rd.fail(path + ".thermistors", "must name at least one thermistor");
+		if (m.thermistor != "mean") rd.fail(path + ".thermistor", "must be \"mean\" when thermistors is given");
+	}
 	const char* why = "a temperature [degC] no coil reaches";
 	m.centre_C = rd.bounded(n, "centre_C", path, -kMaxSignal_C, kMaxSignal_C, why);
 	m.scale_C = rd.bounded(n, "scale_C", path, -kMaxSignal_C, kMaxSignal_C, why);
@@ -713,6 +725,13 @@ CalibrationSet parseCalibrationYaml(const std::string& text, const std::string& 
 			cal.scale_factor = readScaleFactor(rd, a["scale_factor"], p + ".scale_factor");
 			bool found = false;
 			for (const auto& t : cal.layout) found |= t.name == cal.scale_factor->thermistor;
+			for (const auto& name : cal.scale_factor->thermistors)
+			{
+				bool listed = false;
+				for (const auto& t : cal.layout) listed |= t.name == name;
+				if (!listed) rd.fail(p + ".scale_factor.thermistors", "'" + name + "' is not in sensor.thermistors");
+			}
+			if (!cal.scale_factor->thermistors.empty()) found = true;
 			if (!found)
 				rd.fail(p + ".scale_factor.thermistor",
 						"'" + cal.scale_factor->thermistor + "' is not in sensor.thermistors");

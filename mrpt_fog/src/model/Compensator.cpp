@@ -205,11 +205,14 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 	if (cal.scale_factor)
 	{
 		sf_ = cal.scale_factor;
-		for (std::size_t i = 0; i < layout.size(); i++)
-			if (layout[i].name == sf_->thermistor) sf_col_ = static_cast<int>(i);
-		if (sf_col_ < 0)
-			throw std::invalid_argument("calibration's scale-factor model reads thermistor " + sf_->thermistor +
+		const auto column = [&](const std::string& name) {
+			for (std::size_t i = 0; i < layout.size(); i++)
+				if (layout[i].name == name) return static_cast<int>(i);
+			throw std::invalid_argument("calibration's scale-factor model reads thermistor " + name +
 										", which the data layout lacks; data layout: " + describeLayout(layout));
+		};
+		if (sf_->thermistors.empty()) sf_col_ = column(sf_->thermistor);
+		for (const auto& name : sf_->thermistors) sf_cols_.push_back(column(name));
 		sf_initial_ppm_ = sf_ppm_ = sf_->evaluate_ppm(sf_->centre_C);
 	}
 	warmup_ = cal.warmup;
@@ -245,7 +248,18 @@ void Compensator::notePowerOn(double time_s) { power_on_s_ = time_s; }
 	double r = raw_dph - out.bias_dph;
 	if (sf_)
 	{
-		const double T = temp_C[sf_col_];
+		double T = NAN;
+		if (sf_col_ >= 0)
+			T = temp_C[sf_col_];
+		else
+		{
+			// the mean of the valid readings; none valid: the value held from before
+			double sum = 0;
+			int n = 0;
+			for (int c : sf_cols_)
+				if (!std::isnan(temp_C[c])) sum += temp_C[c], n++;
+			if (n > 0 && n == static_cast<int>(sf_cols_.size())) T = sum / n;
+		}
 		if (!std::isnan(T)) sf_ppm_ = sf_->evaluate_ppm(T);
 		r /= 1.0 + 1e-6 * sf_ppm_;
 	}

@@ -203,7 +203,13 @@ ScaleFactorModel fitScaleFactor(const std::vector<FogSeries>& runs, const Calibr
 		for (std::size_t i = 0; i < segs.size(); i++) z[i] = (segs[i].temp_C[th] - centre) / scale;
 		return z;
 	};
-	for (std::size_t th = 0; th < nt; th++)
+	// thermistor_mean: one more temperature column, the mean of the thermistors, the only candidate
+	if (opt.thermistor_mean)
+		for (auto& g : segs)
+			g.temp_C.push_back(std::accumulate(g.temp_C.begin(), g.temp_C.begin() + static_cast<std::ptrdiff_t>(nt), 0.0) /
+							   static_cast<double>(nt));
+	const auto candName = [&](std::size_t th) { return th < nt ? bias_cal.layout[th].name : std::string("mean"); };
+	for (std::size_t th = opt.thermistor_mean ? nt : 0; th < (opt.thermistor_mean ? nt + 1 : nt); th++)
 	{
 		double c, sc, lo, hi;
 		const std::vector<double> z = zOf(th, c, sc, lo, hi);
@@ -228,7 +234,7 @@ ScaleFactorModel fitScaleFactor(const std::vector<FogSeries>& runs, const Calibr
 					}
 			}
 			const double cv = std::sqrt(sse / static_cast<double>(segs.size()));
-			rep.candidates.push_back({bias_cal.layout[th].name, order, cv});
+			rep.candidates.push_back({candName(th), order, cv});
 			all.push_back({th, order, cv});
 		}
 	}
@@ -272,7 +278,9 @@ ScaleFactorModel fitScaleFactor(const std::vector<FogSeries>& runs, const Calibr
 	};
 	ScaleFactorModel m;
 	const ThermFit own = fitOn(pick.therm);
-	m.thermistor = bias_cal.layout[pick.therm].name;
+	m.thermistor = candName(pick.therm);
+	if (pick.therm == nt)
+		for (const auto& t : bias_cal.layout) m.thermistors.push_back(t.name);
 	m.centre_C = own.centre;
 	m.scale_C = own.scale;
 	m.min_C = own.lo;
@@ -285,7 +293,7 @@ ScaleFactorModel fitScaleFactor(const std::vector<FogSeries>& runs, const Calibr
 	m.slope_ci95_lo_ppm_per_C = m.slope_noise_ci95_lo_ppm_per_C;
 	m.slope_ci95_hi_ppm_per_C = m.slope_noise_ci95_hi_ppm_per_C;
 	m.slope_thermistor_min_ppm_per_C = m.slope_thermistor_max_ppm_per_C = own.slope;
-	m.slope_thermistors = 1;
+	m.slope_thermistors = pick.therm < nt ? 1 : 0;  // the mean of the thermistors is not one of them
 	for (std::size_t th = 0; th < nt; th++)
 	{
 		if (th == pick.therm) continue;

@@ -165,6 +165,7 @@ class Compensator
 	bool extras_ = false;  // a scale-factor or warm-up model is present
 	std::optional<ScaleFactorModel> sf_;
 	int sf_col_ = -1;  // layout column of the scale-factor thermistor
+	std::vector<int> sf_cols_;  // or the columns whose mean it reads (ScaleFactorModel::thermistors)
 	double sf_ppm_ = 0, sf_initial_ppm_ = 0;  // held value; value before any valid reading
 	std::optional<WarmupModel> warmup_;
 	double power_on_s_ = std::numeric_limits<double>::quiet_NaN();

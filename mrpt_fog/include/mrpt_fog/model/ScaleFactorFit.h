@@ -55,6 +55,12 @@ struct ScaleFactorFitOptions
 	double min_span_C = 10.0;  //!< narrowest temperature span accepted [degC]
 	int max_order = 3;  //!< highest polynomial order tried (<= 5)
 	double prefer_simpler = 0.05;  //!< a simpler candidate within this relative held-out RMS wins
+	/** true: the model reads the mean of all the layout's thermistors (the only temperature
+	 * candidate; orders chosen as above) instead of the best single thermistor. At soaks every
+	 * thermistor reads the same, so the held-out error cannot choose between them; in a transient
+	 * the mean of inner and outer readings is nearer the coil's mean temperature, which the
+	 * scale factor follows (docs/nav.md, error budget). */
+	bool thermistor_mean = false;
 };
 
 /** One rate-table segment as the fit saw it (returned for reports and tests). */

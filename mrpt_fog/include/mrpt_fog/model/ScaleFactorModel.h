@@ -21,7 +21,10 @@ namespace mrpt_fog
 {
 struct ScaleFactorModel
 {
-	std::string thermistor;  //!< the temperature the model reads
+	std::string thermistor;  //!< the temperature the model reads ("mean" with `thermistors`)
+	/** Non-empty: the model reads the mean of these thermistors' readings (the valid ones), and
+	 * `thermistor` is "mean" (fitScaleFactor with ScaleFactorFitOptions::thermistor_mean). */
+	std::vector<std::string> thermistors;
 	double centre_C = 0.0;  //!< normalisation centre [degC]
 	double scale_C = 1.0;  //!< normalisation half-width [degC] (> 0)
 	double min_C = 0.0, max_C = 0.0;  //!< calibrated temperature range [degC] (inputs clamped to it)
