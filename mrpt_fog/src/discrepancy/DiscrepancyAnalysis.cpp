@@ -227,10 +227,13 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 	rep.base_terms = base1.names;
 	rep.selection = selectMissingEffects(sig1, base1, opt.selection);
 	rep.cannot_tell = informationShortfall(sig1, runs[0], opt);
-	if (rep.cannot_tell.empty() && !rep.selection.named.empty() && !rep.selection.ar.phi.empty())
+	if (rep.cannot_tell.empty() && !rep.selection.named.empty() && !rep.selection.ar_after.phi.empty())
 	{
-		// slow bias wander: a run a few correlation times long cannot tell a drift from an effect
-		const double phi = rep.selection.ar.phi.front();
+		// slow bias wander: a run a few correlation times long cannot tell a drift from an effect.
+		// Judged on what is left AFTER the named effects (their GLS noise model): the first
+		// round's residual still holds the very effects being named, whose slow signatures
+		// (e.g. a scale-factor excursion over a rate-table segment) would read as wander.
+		const double phi = rep.selection.ar_after.phi.front();
 		if (phi > 0 && phi < 1)
 		{
 			const double corr_s = -sig1.dt_s / std::log(phi);

@@ -469,6 +469,7 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 			}
 		}
 		res.named.push_back(ne);
+		res.ar_after = gB.ar;
 		res.rounds.push_back(report);
 		excluded.push_back(ne.id);
 		if (ne.id == "thermistor_lag") res.model.lag_base_coef = fit.coef.head(base.X.cols());

@@ -162,6 +162,9 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 	noise["ma_theta"] = sel.ar.theta;
 	noise["long_run_variance_factor"] = sel.lrv_factor;
 	noise["outliers_excluded"] = static_cast<unsigned long>(sel.outliers);
+	// the noise model left after the named effects (judges the slow-wander guard rail)
+	noise["ar_phi_after_named"] = JsonValue::arrayOf(sel.ar_after.phi);
+	noise["ma_theta_after_named"] = sel.ar_after.theta;
 	j["noise_model"] = noise;
 	j["gap"] = runGapJson(rep.gap, rep.tau_s);
 	if (rep.has_confirm) j["gap_confirm"] = runGapJson(rep.gap_confirm, rep.tau_s);

@@ -135,6 +135,9 @@ struct SelectionResult
 	std::vector<unsigned char> fit_rows;  //!< usable and not an outlier
 	std::size_t outliers = 0;
 	ArNoiseModel ar;  //!< noise model of the first round
+	/** Noise model of the model with every named effect (the last named effect's GLS fit); empty
+	 * when nothing was named. What is left after the named effects is what may wander. */
+	ArNoiseModel ar_after;
 	double lrv_factor = 1.0;
 	Eigen::VectorXd coef_before;  //!< base fit
 	Eigen::VectorXd coef_after;  //!< augmented fit
