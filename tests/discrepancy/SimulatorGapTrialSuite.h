@@ -116,7 +116,7 @@ inline FogSeries simulateRun(const sim::FogDevice& d, const sim::EffectSet& effe
 }
 
 /** The configuration under test for hidden effect `hidden` (size knob k): CORE minus it, default
- * device with WRONG starting values: elasto-optic 0.05 (truth 0.07), winding asymmetry 1.5 m (2),
+ * device with WRONG starting values: elasto-optic 0.7 x the truth, winding asymmetry 0.75 x it,
  * gradient rate 0.05 (0.1), hysteresis 0.01 (0.02), warm-up 0.05 (0.1), SF 10 ppm/C (20),
  * magnetic 1e-4 (2e-4), polynomial x 0.5, electronics 2.0 W (2.5), every heat capacity x 1.1,
  * thermistor offsets 0. The Shupe gain (dn/dT, a material constant) is the truth's. */
@@ -127,8 +127,9 @@ inline SimulatorConfig baseConfig(const std::string& hidden, double k)
 	c.effects = baseEffects(hidden);
 	auto& d = c.device;
 	if (hidden == "shupe_rate") scaleEffect(d, hidden, k);
-	d.errors.radial_gradient_dph_per_C = 0.05;
-	d.winding.midpoint_offset_m = 1.5;
+	const sim::FogDevice truth = sim::FogDevice::defaultDevice();
+	d.errors.radial_gradient_dph_per_C = 0.7 * truth.errors.radial_gradient_dph_per_C;
+	d.winding.midpoint_offset_m = 0.75 * truth.winding.midpoint_offset_m;
 	d.errors.gradient_rate_dph_per_C_per_min = 0.05;
 	d.errors.hysteresis_dph = 0.01;
 	d.errors.warmup_dph = 0.05;

@@ -67,13 +67,24 @@ TEST(ThermistorStuck, StuckSensorDetectedAndTreatedAsDropout)
 		FogSeries faulty = stuckRun(i, k0, k1);
 		const double s_unscreened = faulttest::stability100_dph(compensate(cal, faulty));
 		const ThermistorHealthSettings set;
-		// when did a peer move stuck_peer_change_C from its value at k0?
+		// The detector's interval (ThermistorHealth.h) starts where the sensor's constant run began:
+		// the first reading of the run within stuck_tolerance_C of which it has stayed. That can be
+		// before k0 when the real reading was already steady there (near a turnaround).
+		std::size_t k_run = 0;
+		double run_v = faulty.temp_C[i][0];
+		for (std::size_t k = 1; k <= k0; k++)
+			if (std::abs(faulty.temp_C[i][k] - run_v) > set.stuck_tolerance_C)
+			{
+				k_run = k;
+				run_v = faulty.temp_C[i][k];
+			}
+		// when did a peer move stuck_peer_change_C from its value at the run's start?
 		std::size_t k_move = k0;
 		for (; k_move < k1; k_move++)
 		{
 			bool moved = false;
 			for (std::size_t j = 0; j < faulty.thermistorCount(); j++)
-				if (static_cast<int>(j) != i && std::abs(faulty.temp_C[j][k_move] - faulty.temp_C[j][k0]) >= set.stuck_peer_change_C) moved = true;
+				if (static_cast<int>(j) != i && std::abs(faulty.temp_C[j][k_move] - faulty.temp_C[j][k_run]) >= set.stuck_peer_change_C) moved = true;
 			if (moved) break;
 		}
 		ThermistorHealth health(faulty.thermistorCount(), set);
@@ -91,7 +102,7 @@ TEST(ThermistorStuck, StuckSensorDetectedAndTreatedAsDropout)
 		}
 		ASSERT_GT(k_detect, 0u) << name << " never detected";
 		const double latency_s = faulty.time_s[k_detect] - faulty.time_s[k0];
-		EXPECT_LE(faulty.time_s[k_detect], std::max(faulty.time_s[k_move], faulty.time_s[k0] + set.stuck_window_s) + 1.0)
+		EXPECT_LE(faulty.time_s[k_detect], std::max(faulty.time_s[k_move], faulty.time_s[k_run] + set.stuck_window_s) + 1.0)
 			<< name << " peers moved at " << faulty.time_s[k_move];
 		EXPECT_EQ(health.counters(i).stuck_events, 1u);
 		EXPECT_EQ(health.counters(i).stuck, k1 - k_detect) << name;

@@ -100,10 +100,11 @@ int readInt(const mrpt::containers::yaml& node, const std::string& key, const st
 FogDevice FogDevice::defaultDevice()
 {
 	FogDevice d;
-	// Length asymmetry of the quadrupole halves (2 m of 1500 m, a loosely trimmed coil): with
-	// errors.radial_gradient_dph_per_C, the knobs set so that the UNCOMPENSATED seed-profile
-	// figures land near the seed's (docs/sim.md, "default device").
-	d.winding.midpoint_offset_m = 2.0;
+	// Length asymmetry of the quadrupole halves (1.5 m of 1500 m, a loosely trimmed coil): with
+	// errors.radial_gradient_dph_per_C, one of the two knobs FITTED to the seed's figures by
+	// scripts/fit_seed_knobs.py (docs/sim.md, "default device"); weakly determined (0.5-2.5 m fit
+	// about as well).
+	d.winding.midpoint_offset_m = 1.5;
 	// The seed's four thermistors: inner/outer pairs at 0 and 180 deg (seed Fig. 1).
 	// Offsets: fixed values of the ~0.1 C size PHYSICS.md gives (estimate).
 	d.thermistors = {{{"Ti1", CoilSide::Inner, 0.0}, 5.0, 0.05},

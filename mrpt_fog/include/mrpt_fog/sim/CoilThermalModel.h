@@ -53,12 +53,13 @@ struct CoilThermalParams
 	// surface sits ~0.5 mm from the housing wall. Heat therefore enters mainly from outside,
 	// which gives the marked inner/outer differences of the seed's Fig. 2.
 	double hub_capacity_J_K = 30.0;  //!< light central post + cavity air (estimate)
-	/** Inner surface to the central post across the inner cavity. Default 0.01 W/K is BELOW the
-	 * physical estimate: conduction through air (k 0.026 W/(m K), ~5 mm gap, 5.4e-3 m2) 0.028 W/K
-	 * plus radiation (4 eps_eff sigma T^3 A, eps_eff 0.82 for two emissivity-0.9 surfaces, 298 K)
-	 * 0.027 W/K = 0.055 W/K. Kept at 0.01 so that the bundled datasets and figures do not move;
-	 * set `thermal: {hub_to_inner_W_K: 0.055}` for the estimate (its effect: docs/sim.md). */
-	double hub_to_inner_W_K = 0.01;
+	/** Inner surface to the central post across the ~5 mm inner cavity (physical estimate,
+	 * arithmetic in docs/sim.md): conduction through air k A / d = 0.026 W/(m K) x 5.4e-3 m2 /
+	 * 5e-3 m = 0.028 W/K, plus radiation 4 eps_eff sigma T^3 A = 4 x 0.82 x 5.67e-8 x 298^3 x
+	 * 5.4e-3 = 0.027 W/K (eps_eff 0.82 for two emissivity-0.9 surfaces), together 0.055 W/K
+	 * (A = pi x 0.09 m x 0.019 m, the inner winding surface). Was 0.01 W/K (below the physics)
+	 * until 2026-12-01. */
+	double hub_to_inner_W_K = 0.055;
 
 	double housing_capacity_J_K = 900.0;  //!< 1 kg aluminium housing (PHYSICS.md)
 	double housing_to_air_W_K = 0.5;  //!< convection hA (PHYSICS.md: ~0.5 W/K -> ~30 min)

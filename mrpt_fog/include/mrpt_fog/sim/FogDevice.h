@@ -11,7 +11,7 @@
  *
  *   latitude_deg: 40
  *   coil:    {pattern: quadrupolar, fiber_length_m: 1500, mean_diameter_m: 0.1, fiber_layers: 48,
- *             midpoint_offset_m: 1.0, layer_length_mismatch: 0, refractive_index: 1.46, dn_dT_per_K: 1e-5, expansion_per_K: 5.5e-7}
+ *             midpoint_offset_m: 1.5, layer_length_mismatch: 0, refractive_index: 1.46, dn_dT_per_K: 1e-5, expansion_per_K: 5.5e-7}
  *   thermal: {layers: 8, sectors: 8, <any CoilThermalParams field>}
  *   errors:  {constant_bias_dph, radial_gradient_dph_per_C, gradient_rate_dph_per_C_per_min,
  *             hysteresis_dph, hysteresis_span_C, warmup_dph, warmup_tau_s, sf_ppm_per_C,
@@ -37,9 +37,10 @@ namespace mrpt_fog::sim
 struct ErrorCoefficients
 {
 	double constant_bias_dph = 0.3;  //!< turn-on bias, constant (estimate)
-	/** Elasto-optic (thermal stress) bias x (Tin - Tout) [deg/h per C] (estimate; one of the two
-	 * knobs set to match the seed's uncompensated figures, docs/sim.md). */
-	double radial_gradient_dph_per_C = 0.07;
+	/** Elasto-optic (thermal stress) bias x (Tin - Tout) [deg/h per C] (no source: one of the two
+	 * knobs FITTED to the seed's uncompensated figures and its M1 figure by
+	 * scripts/fit_seed_knobs.py, docs/sim.md). */
+	double radial_gradient_dph_per_C = 0.12;
 	double gradient_rate_dph_per_C_per_min = 0.1;  //!< x d(Tin - Tout)/dt [C/min] (estimate)
 	double hysteresis_dph = 0.02;  //!< heating minus cooling offset (estimate)
 	double hysteresis_span_C = 5.0;  //!< temperature change to swap branch (1/e) (estimate)
