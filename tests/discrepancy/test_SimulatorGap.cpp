@@ -203,10 +203,12 @@ TEST(SimulatorGap, WrongProfileIsAClearError)
 // scale factor 20 ppm/C (FogDevice defaults, kTruth). Seed 1 of truthRuns, one run each. The
 // interval judged is the recalibrated simulator parameter's (SimulatorCalibration.h); for the
 // scale factor the named candidate's own coefficient is a proxy (thermistor mean x table rate,
-// the simulator uses the coil mean) and is not the simulator's parameter. Target met for the
-// magnetic effect (asserted). For the scale factor only the naming is asserted: its recalibrated
-// value, 19.94 +- 0.059 ppm/C, misses the truth 20 by 0.001 ppm/C beyond the interval (the
-// interval does not carry the reconstructed air's own uncertainty).
+// the simulator uses the coil mean) and is not the simulator's parameter. Asserted for both:
+// the recalibrated simulator parameter's interval holds the truth. For the scale factor this
+// needs the reference temperature sf_ref_C free with the slope (SimulatorGap.cpp): with it fixed
+// at 25 C the thermistors' common offset (mean -0.01 C, absorbed by the reconstructed air) biased
+// the slope to 19.94 +- 0.059 (table segments at T - 25 ~ -2.5 C; closed form -d / (T - 25)
+// predicts 19.93; docs/discrepancy-sim.md).
 // What it does NOT show: that nothing else is named. On the magnetic run a spurious
 // gradient_rate is named second (the smoothed air's error; docs/discrepancy-sim.md).
 namespace
@@ -239,7 +241,7 @@ void logDriveCell(const std::string& hidden, const std::string& param, double tr
 		if (k == param) h = x;
 	std::printf("  named %s CI [%.4g, %.4g]; recalibrated %s = %.4g +- %.2g (truth %.4g)\n", hidden.c_str(), it->ci_low,
 				it->ci_high, param.c_str(), v, h, truth);
-	if (hidden == "magnetic") EXPECT_LE(std::abs(v - truth), h) << param << " = " << v << " +- " << h;
+	EXPECT_LE(std::abs(v - truth), h) << param << " = " << v << " +- " << h;
 }
 }  // namespace
 

@@ -218,6 +218,7 @@ std::vector<ParamSlot> expandSlots(const std::vector<std::string>& free, const S
 	std::vector<ParamSlot> out;
 	auto effectOn = [&](const std::string& id)
 	{
+		if (id == "sf_ref_C") return m.effects.count("scale_factor_temp") > 0;  // the scale factor's reference
 		for (const auto& e : sim::allEffectIds())
 			if (coefficientParameterOf(e) == id) return m.effects.count(e) > 0;
 		return true;  // constant, scale, offsets
@@ -247,6 +248,7 @@ double* slotRef(SimModel& m, const ParamSlot& s)
 	if (s.id == "hysteresis_dph") return &e.hysteresis_dph;
 	if (s.id == "warmup_dph") return &e.warmup_dph;
 	if (s.id == "sf_ppm_per_C") return &e.sf_ppm_per_C;
+	if (s.id == "sf_ref_C") return &e.sf_ref_C;
 	if (s.id == "magnetic_dph_per_uT") return &e.magnetic_dph_per_uT;
 	if (s.id == "temp_poly_dph") return &e.temp_poly_dph.at(static_cast<std::size_t>(s.index));
 	if (s.id == "electronics_power_W") return &m.device.thermal.electronics_power_W;

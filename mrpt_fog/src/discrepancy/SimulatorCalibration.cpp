@@ -21,7 +21,7 @@ double fdStep(const ParamSlot& s, double v)
 	static const std::pair<const char*, double> typ[] = {
 		{"constant_bias_dph", 0.01},  {"winding_asymmetry_m", 0.05}, {"radial_gradient_dph_per_C", 1e-3},
 		{"gradient_rate_dph_per_C_per_min", 1e-3}, {"hysteresis_dph", 1e-3}, {"warmup_dph", 1e-3},
-		{"sf_ppm_per_C", 0.1},		  {"magnetic_dph_per_uT", 1e-5}, {"temp_poly_dph", 1e-5},
+		{"sf_ppm_per_C", 0.1},		  {"sf_ref_C", 0.05}, {"magnetic_dph_per_uT", 1e-5}, {"temp_poly_dph", 1e-5},
 		{"electronics_power_W", 0.05}, {"thermal_time_scale", 0.01}};
 	double t = 1e-3;
 	for (const auto& [id, h] : typ)

@@ -41,7 +41,8 @@ const std::vector<std::string>& freeParameterIds()
 	static const std::vector<std::string> ids = {
 		"constant_bias_dph",   "winding_asymmetry_m", "radial_gradient_dph_per_C", "gradient_rate_dph_per_C_per_min",
 		"hysteresis_dph",	   "warmup_dph",		  "sf_ppm_per_C",			   "magnetic_dph_per_uT",
-		"temp_poly_dph",	   "electronics_power_W", "thermal_time_scale",		   "thermistor_offsets_C"};
+		"temp_poly_dph",	   "electronics_power_W", "thermal_time_scale",		   "thermistor_offsets_C",
+		"sf_ref_C"};
 	return ids;
 }
 

@@ -131,6 +131,15 @@ SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& r
 	const SimModel model0 = simModelFromConfig(cfg);
 	SimModel startModel = model0;
 	if (drive1.source == DriveSource::MeasuredLog)
+		// From the log alone the absolute temperature is known only up to the thermistors' common
+		// offset (the reconstructed air absorbs their mean; ChamberReconstruction.h), so the scale
+		// factor's reference temperature is free with its slope: k (T - T_ref) then depends on
+		// temperature differences only. With T_ref fixed, a common offset d biases the slope by
+		// -d / (T - T_ref) over the table segments: on fog-sim `rich` (T - 25 ~ -2.5 C there) the
+		// default device's offsets (mean -0.01 C) gave 19.94 for 20 ppm/C (docs/discrepancy-sim.md).
+		// Active only when scale_factor_temp is on (expandSlots).
+		addUnique(free0, "sf_ref_C");
+	if (drive1.source == DriveSource::MeasuredLog)
 	{
 		// the air was reconstructed through the network as configured: the thermal parameters by
 		// variable projection (the air re-reconstructed for each trial), then the calibration
