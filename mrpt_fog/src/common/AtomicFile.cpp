@@ -2,6 +2,7 @@
 #include <fcntl.h>
 #include <limits.h>
 #include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt_fog/common/PathParts.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -115,14 +116,6 @@ mode_t processUmask()
 }
 
 std::string errnoText(int e) { return std::strerror(e); }
-
-std::string dirOf(const std::string& path)
-{
-	const auto slash = path.find_last_of('/');
-	if (slash == std::string::npos) return ".";
-	if (slash == 0) return "/";
-	return path.substr(0, slash);
-}
 
 /** Where the bytes for `path` must go: the path itself, or a symlink's final target. */
 std::string resolveOutput(const std::string& path)

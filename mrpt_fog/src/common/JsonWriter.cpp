@@ -13,6 +13,13 @@ JsonValue JsonValue::object()
 	return v;
 }
 
+JsonValue JsonValue::object(std::initializer_list<std::pair<std::string, JsonValue>> members)
+{
+	JsonValue v = object();
+	v.members_.assign(members.begin(), members.end());
+	return v;
+}
+
 JsonValue JsonValue::array()
 {
 	JsonValue v;
@@ -68,10 +75,35 @@ static void appendEscaped(std::string& out, const std::string& s)
 	out += '"';
 }
 
+namespace
+{
+/** An array or object: `open`, one indented line per element (writeElement(i)), `close`;
+ * "[]" / "{}" when empty. */
+template <class WriteElement>
+void appendContainer(std::string& out, int indent, std::size_t count, char open, char close, WriteElement writeElement)
+{
+	if (count == 0)
+	{
+		out += open;
+		out += close;
+		return;
+	}
+	const std::string pad(static_cast<size_t>(indent + 2), ' ');
+	out += open;
+	out += '\n';
+	for (size_t i = 0; i < count; i++)
+	{
+		out += pad;
+		writeElement(i);
+		out += i + 1 < count ? ",\n" : "\n";
+	}
+	out += std::string(static_cast<size_t>(indent), ' ');
+	out += close;
+}
+}  // namespace
+
 void JsonValue::dumpTo(std::string& out, int indent) const
 {
-	const std::string pad(static_cast<size_t>(indent + 2), ' ');
-	const std::string padEnd(static_cast<size_t>(indent), ' ');
 	switch (kind_)
 	{
 		case Kind::Null: out += "null"; break;
@@ -90,36 +122,14 @@ void JsonValue::dumpTo(std::string& out, int indent) const
 		}
 		case Kind::String: appendEscaped(out, string_); break;
 		case Kind::Array:
-			if (items_.empty())
-			{
-				out += "[]";
-				break;
-			}
-			out += "[\n";
-			for (size_t i = 0; i < items_.size(); i++)
-			{
-				out += pad;
-				items_[i].dumpTo(out, indent + 2);
-				out += i + 1 < items_.size() ? ",\n" : "\n";
-			}
-			out += padEnd + "]";
+			appendContainer(out, indent, items_.size(), '[', ']', [&](size_t i) { items_[i].dumpTo(out, indent + 2); });
 			break;
 		case Kind::Object:
-			if (members_.empty())
-			{
-				out += "{}";
-				break;
-			}
-			out += "{\n";
-			for (size_t i = 0; i < members_.size(); i++)
-			{
-				out += pad;
+			appendContainer(out, indent, members_.size(), '{', '}', [&](size_t i) {
 				appendEscaped(out, members_[i].first);
 				out += ": ";
 				members_[i].second.dumpTo(out, indent + 2);
-				out += i + 1 < members_.size() ? ",\n" : "\n";
-			}
-			out += padEnd + "}";
+			});
 			break;
 	}
 }

@@ -1,6 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <limits.h>
 #include <mrpt_fog/common/OutputSafety.h>
+#include <mrpt_fog/common/PathParts.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -14,20 +15,6 @@ namespace mrpt_fog
 namespace
 {
 std::string describe(const FileArg& f) { return f.option + " '" + f.path + "'"; }
-
-std::string dirOf(const std::string& path)
-{
-	const auto slash = path.find_last_of('/');
-	if (slash == std::string::npos) return ".";
-	if (slash == 0) return "/";
-	return path.substr(0, slash);
-}
-
-std::string baseOf(const std::string& path)
-{
-	const auto slash = path.find_last_of('/');
-	return slash == std::string::npos ? path : path.substr(slash + 1);
-}
 
 /** A key naming the file a path will be written to: "dev:ino" of an existing file, else the
  * resolved directory + name (symlinks followed). */

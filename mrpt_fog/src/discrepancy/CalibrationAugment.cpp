@@ -130,14 +130,9 @@ namespace
 {
 JsonValue figures(const FitFigures& f)
 {
-	JsonValue j = JsonValue::object();
-	j["label"] = f.label;
-	j["samples"] = static_cast<unsigned long>(f.samples);
-	j["rms_dph"] = f.rms_dph;
-	j["stability_dph"] = f.stability_dph;
-	j["range_dph"] = f.range_dph;
-	j["tau_s"] = f.tau_s;
-	return j;
+	return JsonValue::object({{"label", f.label}, {"samples", static_cast<unsigned long>(f.samples)},
+							  {"rms_dph", f.rms_dph}, {"stability_dph", f.stability_dph},
+							  {"range_dph", f.range_dph}, {"tau_s", f.tau_s}});
 }
 }  // namespace
 
@@ -163,25 +158,12 @@ JsonValue augmentedCalibrationJson(const AugmentedCalibration& aug, const std::s
 {
 	JsonValue j = JsonValue::object();
 	j["path"] = path;
-	JsonValue added = JsonValue::array();
-	for (const auto& a : aug.added_terms) added.push_back(a);
-	j["added_terms"] = added;
-	JsonValue nw = JsonValue::array();
-	for (const auto& [id, why] : aug.not_written)
-	{
-		JsonValue e = JsonValue::object();
-		e["id"] = id;
-		e["reason"] = why;
-		nw.push_back(e);
-	}
-	j["not_written"] = nw;
+	j["added_terms"] = JsonValue::arrayOf(aug.added_terms);
+	j["not_written"] = JsonValue::arrayOf(
+		aug.not_written, [](const auto& nw) { return JsonValue::object({{"id", nw.first}, {"reason", nw.second}}); });
 	if (aug.has_confirm)
-	{
-		JsonValue c = JsonValue::object();
-		c["before"] = figures(aug.before);
-		c["after"] = figures(aug.after);
-		j["confirm_through_compensator"] = c;
-	}
+		j["confirm_through_compensator"] =
+			JsonValue::object({{"before", figures(aug.before)}, {"after", figures(aug.after)}});
 	return j;
 }
 

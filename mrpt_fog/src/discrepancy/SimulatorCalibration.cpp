@@ -1,4 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/common/GoldenSection.h>
 #include <mrpt_fog/discrepancy/SimulatorCalibration.h>
 #include <mrpt_fog/discrepancy/WhitenedRegression.h>
 
@@ -332,38 +333,16 @@ ProjectedThermal projectThermalOnLogDrive(const SimModel& start, const std::vect
 		}
 		return n > 0 ? std::sqrt(ss / n) : INFINITY;
 	};
-	auto golden = [&](auto set, double lo, double hi)
-	{
-		const double g = (std::sqrt(5.0) - 1) / 2;
-		double a = lo, b = hi, c = b - g * (b - a), d = a + g * (b - a);
-		SimModel mc = out.model, md = out.model;
-		set(mc, c);
-		set(md, d);
-		double fc = objective(mc), fd = objective(md);
-		for (int it = 0; it < 12; ++it)
-		{
-			if (fc < fd)
-			{
-				b = d;
-				d = c;
-				fd = fc;
-				c = b - g * (b - a);
-				mc = out.model;
-				set(mc, c);
-				fc = objective(mc);
-			}
-			else
-			{
-				a = c;
-				c = d;
-				fc = fd;
-				d = a + g * (b - a);
-				md = out.model;
-				set(md, d);
-				fd = objective(md);
-			}
-		}
-		set(out.model, fc < fd ? c : d);
+	// one parameter set to its best value on [lo, hi], the others held
+	auto golden = [&](auto set, double lo, double hi) {
+		const double best = goldenSectionMinimum(
+			[&](double x) {
+				SimModel m = out.model;
+				set(m, x);
+				return objective(m);
+			},
+			lo, hi, 12);
+		set(out.model, best);
 	};
 	const bool scaleFree = std::find(free.begin(), free.end(), "thermal_time_scale") != free.end();
 	const bool powerFree = std::find(free.begin(), free.end(), "electronics_power_W") != free.end() &&

@@ -1,4 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/common/GoldenSection.h>
 #include <mrpt_fog/discrepancy/WhitenedRegression.h>
 
 #include <algorithm>
@@ -200,34 +201,6 @@ double remlObjective(const Eigen::MatrixXd& X, const Eigen::VectorXd& y, const s
 	return dof * std::log(std::max(rss, 1e-300) / dof) + logdet + double(starts) * std::log(armaVarianceRatio(m));
 }
 
-/** Golden-section minimum of f on [a, b]. */
-template <class F>
-double golden(F f, double a, double b, int iters)
-{
-	const double g = 0.6180339887498949;
-	double c = b - g * (b - a), d = a + g * (b - a);
-	double fc = f(c), fd = f(d);
-	for (int i = 0; i < iters; ++i)
-	{
-		if (fc < fd)
-		{
-			b = d;
-			d = c;
-			fd = fc;
-			c = b - g * (b - a);
-			fc = f(c);
-		}
-		else
-		{
-			a = c;
-			c = d;
-			fc = fd;
-			d = a + g * (b - a);
-			fd = f(d);
-		}
-	}
-	return fc < fd ? c : d;
-}
 }  // namespace
 
 ArNoiseModel fitNoiseReml(const Eigen::MatrixXd& X, const Eigen::VectorXd& y, const std::vector<std::size_t>& rows,
@@ -268,8 +241,8 @@ ArNoiseModel fitNoiseReml(const Eigen::MatrixXd& X, const Eigen::VectorXd& y, co
 	}
 	for (int pass = 0; pass < 2; ++pass)
 	{
-		phi = golden([&](double p) { return remlObjective(X, y, rows, block, p, theta); }, lo, hi, 14);
-		theta = golden([&](double t) { return remlObjective(X, y, rows, block, phi, t); }, tlo, thi, 12);
+		phi = goldenSectionMinimum([&](double p) { return remlObjective(X, y, rows, block, p, theta); }, lo, hi, 14);
+		theta = goldenSectionMinimum([&](double t) { return remlObjective(X, y, rows, block, phi, t); }, tlo, thi, 12);
 	}
 	ArNoiseModel m;
 	m.phi = {phi};

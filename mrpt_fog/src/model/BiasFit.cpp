@@ -230,37 +230,6 @@ std::vector<StreamingQr> trainingSets(std::vector<StreamingQr>& folds)
 	return train;
 }
 
-std::vector<double> crossValidatedRms(std::vector<StreamingQr>& folds, std::vector<StreamingQr>& train,
-									  const std::vector<int>& cols, const std::vector<double>& ridges, double rcond)
-{
-	if (train.size() != folds.size()) throw std::invalid_argument("crossValidatedRms: one training set per fold needed");
-	std::vector<double> sse(ridges.size(), 0.0);
-	std::vector<bool> bad(ridges.size(), false);
-	double rows = 0;
-	for (std::size_t f = 0; f < folds.size(); f++)
-	{
-		if (folds[f].count() == 0 || train[f].count() == 0) continue;
-		const CentredSystem s = centre(train[f], cols);
-		const bool deficient = rankOf(s, rcond) < cols.size() || s.zero_variance;
-		for (std::size_t r = 0; r < ridges.size(); r++)
-		{
-			if (ridges[r] == 0 && deficient)
-			{
-				bad[r] = true;
-				continue;
-			}
-			const Eigen::VectorXd beta = solveCentred(s, ridges[r], rcond, train[f].yRef());
-			sse[r] += residualSumOfSquares(folds[f], cols, beta);
-		}
-		rows += static_cast<double>(folds[f].count());
-	}
-	std::vector<double> out(ridges.size(), std::numeric_limits<double>::infinity());
-	if (rows <= 0) return out;
-	for (std::size_t r = 0; r < ridges.size(); r++)
-		if (!bad[r]) out[r] = std::sqrt(sse[r] / rows);
-	return out;
-}
-
 std::vector<std::vector<double>> crossValidatedFoldSse(std::vector<StreamingQr>& folds, std::vector<StreamingQr>& train,
 													   const std::vector<int>& cols, const std::vector<double>& ridges,
 													   double rcond)
@@ -284,6 +253,31 @@ std::vector<std::vector<double>> crossValidatedFoldSse(std::vector<StreamingQr>&
 		}
 	}
 	return sse;
+}
+
+std::vector<double> crossValidatedRms(std::vector<StreamingQr>& folds, std::vector<StreamingQr>& train,
+									  const std::vector<int>& cols, const std::vector<double>& ridges, double rcond)
+{
+	if (train.size() != folds.size()) throw std::invalid_argument("crossValidatedRms: one training set per fold needed");
+	const std::vector<std::vector<double>> sse = crossValidatedFoldSse(folds, train, cols, ridges, rcond);
+	double rows = 0;
+	for (std::size_t f = 0; f < folds.size(); f++)
+		if (folds[f].count() != 0 && train[f].count() != 0) rows += static_cast<double>(folds[f].count());
+	std::vector<double> out(ridges.size(), std::numeric_limits<double>::infinity());
+	if (rows <= 0) return out;
+	for (std::size_t r = 0; r < ridges.size(); r++)
+	{
+		double total = 0;
+		bool deficient = false;  // rank-deficient without a ridge in some fold: no figure
+		for (std::size_t f = 0; f < folds.size(); f++)
+			if (folds[f].count() != 0 && train[f].count() != 0)
+			{
+				deficient = deficient || sse[r][f] == std::numeric_limits<double>::infinity();
+				total += sse[r][f];
+			}
+		if (!deficient) out[r] = std::sqrt(total / rows);
+	}
+	return out;
 }
 
 std::vector<double> crossValidatedRms(std::vector<StreamingQr>& folds, const std::vector<int>& cols,

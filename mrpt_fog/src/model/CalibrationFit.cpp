@@ -1,4 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/common/EnumNames.h>
 #include <mrpt_fog/metrics/BiasMetrics.h>
 #include <mrpt_fog/model/BiasFit.h>
 #include <mrpt_fog/model/Calibration.h>
@@ -67,21 +68,15 @@ double BiasModel::edgeSlope(std::size_t s, bool upper) const
 	return slope / nm.scale;
 }
 
-const char* toString(ExtrapolationPolicy p)
-{
-	switch (p)
-	{
-		case ExtrapolationPolicy::Clamp: return "clamp";
-		case ExtrapolationPolicy::Linear: return "linear";
-		default: return "polynomial";
-	}
-}
+constexpr EnumName<ExtrapolationPolicy> kExtrapolationPolicies[] = {{ExtrapolationPolicy::Clamp, "clamp"},
+																	   {ExtrapolationPolicy::Linear, "linear"},
+																	   {ExtrapolationPolicy::Polynomial, "polynomial"}};
+
+const char* toString(ExtrapolationPolicy p) { return nameIn(kExtrapolationPolicies, p, "polynomial"); }
 
 ExtrapolationPolicy extrapolationPolicyFromString(const std::string& text)
 {
-	if (text == "clamp") return ExtrapolationPolicy::Clamp;
-	if (text == "linear") return ExtrapolationPolicy::Linear;
-	if (text == "polynomial") return ExtrapolationPolicy::Polynomial;
+	if (const auto p = valueIn(kExtrapolationPolicies, text)) return *p;
 	throw std::invalid_argument("extrapolation policy '" + text + "': use clamp, linear or polynomial");
 }
 
@@ -514,6 +509,35 @@ void statsInto(FitFigures& f, const std::vector<double>& t, const std::vector<do
 		f.stability_dph = f.range_dph = f.raw_stability_dph = f.raw_range_dph = std::numeric_limits<double>::quiet_NaN();
 	}
 }
+
+/** The calibration runs laid end to end on one time axis, a one-window (tau_s) gap between runs:
+ * the columns statsInto() computes the figures on, of exact size (memory: three columns). */
+struct ConcatenatedRuns
+{
+	std::vector<double> t, raw, comp;
+	double offset_s = 0;
+	explicit ConcatenatedRuns(std::size_t total_samples)
+	{
+		t.reserve(total_samples);
+		raw.reserve(total_samples);
+		comp.reserve(total_samples);
+	}
+	/** Appends run r; compensated(k) is its compensated rate at sample k [deg/h] (NaN: none),
+	 * called with k ascending. */
+	template <class Compensated>
+	void append(const PreparedRun& r, double tau_s, Compensated&& compensated)
+	{
+		const double t0 = r.s->time_s.front();
+		for (std::size_t k = 0; k < r.s->size(); k++)
+		{
+			t.push_back(offset_s + r.s->time_s[k] - t0);
+			raw.push_back(r.y(k));
+			comp.push_back(compensated(k));
+		}
+		offset_s = t.back() + tau_s;
+	}
+	void figuresInto(FitFigures& f, double tau_s) const { statsInto(f, t, raw, comp, tau_s); }
+};
 }  // namespace
 
 Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string& preset_text, const FitOptions& opt,
@@ -978,15 +1002,10 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	std::size_t total_samples = 0;
 	for (const auto& r : runs) total_samples += r.size();
 	{
-		std::vector<double> t, raw, comp;
-		t.reserve(total_samples);
-		raw.reserve(total_samples);
-		comp.reserve(total_samples);
-		double offset = 0;
+		ConcatenatedRuns all(total_samples);
 		for (std::size_t ri = 0; ri < runs.size(); ri++)
 		{
 			const auto& r = prep[ri];
-			const double t0 = r.s->time_s.front();
 			std::vector<double> bias;
 			if (opt.rate_estimator.kind == "causal")
 				bias = compensatedBias_dph(cal, *r.s);
@@ -1005,16 +1024,12 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 						bias[k] = cal.model.evaluate(mv.data(), cal.extrapolation);
 					}
 			}
-			for (std::size_t k = 0; k < r.s->size(); k++)
-			{
-				t.push_back(offset + r.s->time_s[k] - t0);
-				raw.push_back(r.y(k));
-				comp.push_back(r.ok[k] ? r.y(k) - bias[k] : std::numeric_limits<double>::quiet_NaN());
-			}
-			offset = t.back() + opt.tau_s;  // runs concatenated with a one-window gap
+			all.append(r, opt.tau_s, [&](std::size_t k) {
+				return r.ok[k] ? r.y(k) - bias[k] : std::numeric_limits<double>::quiet_NaN();
+			});
 		}
 		cal.in_sample.label = "in-sample";
-		statsInto(cal.in_sample, t, raw, comp, opt.tau_s);
+		all.figuresInto(cal.in_sample, opt.tau_s);
 	}
 	// Held-out figures: every fold predicted by the chosen model fitted on the other folds.
 	{
@@ -1028,39 +1043,26 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 			coef[fo] = solveBiasFit(train, cols, best.ridge).coef_dph;
 			has[fo] = true;
 		}
-		std::vector<double> t, raw, comp;
-		t.reserve(total_samples);
-		raw.reserve(total_samples);
-		comp.reserve(total_samples);
-		double offset = 0;
+		ConcatenatedRuns all(total_samples);
 		for (std::size_t ri = 0; ri < prep.size(); ri++)
 		{
 			const auto& r = prep[ri];
-			const double t0 = r.s->time_s.front();
 			RowCursor cur(r);
-			for (std::size_t k = 0; k < r.s->size(); k++)
-			{
+			all.append(r, opt.tau_s, [&](std::size_t k) {
 				const std::size_t fo = foldOf(ri, k);
-				double c = std::numeric_limits<double>::quiet_NaN();
-				if (r.ok[k] && has[fo])
-				{
-					rowSignals(cur, fs, k, temp, rate, values);
-					fs.features(values.data(), f.data(), false);
-					double pred = 0;
-					for (std::size_t j = 0; j < cols.size(); j++) pred += coef[fo][static_cast<Eigen::Index>(j)] * f[cols[j]];
-					c = r.y(k) - pred;
-				}
-				t.push_back(offset + r.s->time_s[k] - t0);
-				raw.push_back(r.y(k));
-				comp.push_back(c);
-			}
-			offset = t.back() + opt.tau_s;
+				if (!r.ok[k] || !has[fo]) return std::numeric_limits<double>::quiet_NaN();
+				rowSignals(cur, fs, k, temp, rate, values);
+				fs.features(values.data(), f.data(), false);
+				double pred = 0;
+				for (std::size_t j = 0; j < cols.size(); j++) pred += coef[fo][static_cast<Eigen::Index>(j)] * f[cols[j]];
+				return r.y(k) - pred;
+			});
 		}
 		cal.held_out.label = by_run      ? "held-out (leave-one-run-out, " + std::to_string(nfolds) + " runs)"
 							 : by_regime ? "held-out (leave-regime-out, " + std::to_string(regime_segments) + " regimes in " +
 											   std::to_string(nfolds) + " folds)"
 										 : "held-out (blocked " + std::to_string(nfolds) + "-fold)";
-		statsInto(cal.held_out, t, raw, comp, opt.tau_s);
+		all.figuresInto(cal.held_out, opt.tau_s);
 	}
 	return cal;
 }

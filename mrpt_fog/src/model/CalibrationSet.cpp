@@ -1,4 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/common/EnumNames.h>
 #include <mrpt_fog/model/Calibration.h>
 
 #include <cmath>
@@ -8,20 +9,14 @@
 
 namespace mrpt_fog
 {
-const char* toString(EarthRateHandling h)
-{
-	switch (h)
-	{
-		case EarthRateHandling::InBias: return "in_bias";
-		case EarthRateHandling::InTableRate: return "in_table_rate";
-	}
-	return "in_bias";
-}
+constexpr EnumName<EarthRateHandling> kEarthRateHandlings[] = {{EarthRateHandling::InBias, "in_bias"},
+																 {EarthRateHandling::InTableRate, "in_table_rate"}};
+
+const char* toString(EarthRateHandling h) { return nameIn(kEarthRateHandlings, h, "in_bias"); }
 
 EarthRateHandling earthRateHandlingFromString(const std::string& text)
 {
-	if (text == "in_bias") return EarthRateHandling::InBias;
-	if (text == "in_table_rate") return EarthRateHandling::InTableRate;
+	if (const auto h = valueIn(kEarthRateHandlings, text)) return *h;
 	throw std::invalid_argument("'" + text + "' is not in_bias or in_table_rate");
 }
 

@@ -235,6 +235,17 @@ void Compensator::reset()
 
 void Compensator::notePowerOn(double time_s) { power_on_s_ = time_s; }
 
+void Compensator::notePowerOnFromMetadata(const FogSeries& log)
+{
+	const std::string meta = log.metadataValue("power_on_time_s");
+	if (meta.empty()) return;
+	char* end = nullptr;
+	const double t_on = std::strtod(meta.c_str(), &end);
+	if (!std::isfinite(t_on) || *end != '\0')
+		throw std::invalid_argument("metadata power_on_time_s: '" + meta + "' is not a time [s]");
+	notePowerOn(t_on);
+}
+
 [[gnu::noinline]] void Compensator::delayCompensateRates(double time_s, const double* temp_C)
 {
 	half_tracker_.push(time_s, temp_C);
@@ -465,15 +476,7 @@ CompensationCounters compensateChunks(const Calibration& cal, const FogSeries& s
 	std::vector<std::size_t> turn_on;  // sample indices, ascending
 	if (cal.warmup)
 	{
-		const std::string meta = series.metadataValue("power_on_time_s");
-		if (!meta.empty())
-		{
-			char* end = nullptr;
-			const double t_on = std::strtod(meta.c_str(), &end);
-			if (!std::isfinite(t_on) || *end != '\0')
-				throw std::invalid_argument("metadata power_on_time_s: '" + meta + "' is not a time [s]");
-			comp.notePowerOn(t_on);
-		}
+		comp.notePowerOnFromMetadata(series);
 		turn_on = series.turnOnSamples();
 	}
 	std::size_t next_on = 0;
@@ -515,26 +518,30 @@ CompensatedSeries compensate(const Calibration& cal, const FogSeries& series)
 	return out;
 }
 
-std::vector<double> compensatedBias_dph(const Calibration& cal, const FogSeries& series, CompensationCounters* counters)
+namespace
 {
-	std::vector<double> bias(series.size());
+/// One output field of every sample, e.g. `&Compensator::Output::bias_dph`.
+std::vector<double> compensatedField(const Calibration& cal, const FogSeries& series, CompensationCounters* counters,
+	double Compensator::Output::*field)
+{
+	std::vector<double> values(series.size());
 	const CompensationCounters c =
 		compensateChunks(cal, series, [&](std::size_t k0, std::size_t m, const Compensator::Output* res) {
-			for (std::size_t j = 0; j < m; j++) bias[k0 + j] = res[j].bias_dph;
+			for (std::size_t j = 0; j < m; j++) values[k0 + j] = res[j].*field;
 		});
 	if (counters) *counters = c;
-	return bias;
+	return values;
+}
+}  // namespace
+
+std::vector<double> compensatedBias_dph(const Calibration& cal, const FogSeries& series, CompensationCounters* counters)
+{
+	return compensatedField(cal, series, counters, &Compensator::Output::bias_dph);
 }
 
 std::vector<double> compensatedRate_dph(const Calibration& cal, const FogSeries& series, CompensationCounters* counters)
 {
-	std::vector<double> rate(series.size());
-	const CompensationCounters c =
-		compensateChunks(cal, series, [&](std::size_t k0, std::size_t m, const Compensator::Output* res) {
-			for (std::size_t j = 0; j < m; j++) rate[k0 + j] = res[j].compensated_dph;
-		});
-	if (counters) *counters = c;
-	return rate;
+	return compensatedField(cal, series, counters, &Compensator::Output::compensated_dph);
 }
 
 }  // namespace mrpt_fog

@@ -1,4 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/common/EnumNames.h>
 #include <mrpt_fog/obs/FogSeries.h>
 
 #include <algorithm>
@@ -9,23 +10,16 @@
 
 namespace mrpt_fog
 {
-const char* toString(CoilSide side)
-{
-	switch (side)
-	{
-		case CoilSide::Inner: return "inner";
-		case CoilSide::Outer: return "outer";
-		default: return "other";
-	}
-}
+constexpr EnumName<CoilSide> kCoilSides[] = {
+	{CoilSide::Inner, "inner"}, {CoilSide::Outer, "outer"}, {CoilSide::Other, "other"}};
+
+const char* toString(CoilSide side) { return nameIn(kCoilSides, side, "other"); }
 
 CoilSide coilSideFromString(const std::string& text)
 {
 	std::string t = text;
 	std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return std::tolower(c); });
-	if (t == "inner") return CoilSide::Inner;
-	if (t == "outer") return CoilSide::Outer;
-	if (t == "other") return CoilSide::Other;
+	if (const auto side = valueIn(kCoilSides, t)) return *side;
 	throw std::invalid_argument("coil side must be inner, outer or other, got '" + text + "'");
 }
 

@@ -1,4 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/common/EnumNames.h>
 #include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog/sim/CoilWinding.h>
 
@@ -7,23 +8,16 @@
 
 namespace mrpt_fog::sim
 {
-const char* toString(WindingPattern p)
-{
-	switch (p)
-	{
-		case WindingPattern::Helical: return "helical";
-		case WindingPattern::Dipolar: return "dipolar";
-		case WindingPattern::Quadrupolar: return "quadrupolar";
-		default: return "octupolar";
-	}
-}
+constexpr EnumName<WindingPattern> kWindingPatterns[] = {{WindingPattern::Helical, "helical"},
+														   {WindingPattern::Dipolar, "dipolar"},
+														   {WindingPattern::Quadrupolar, "quadrupolar"},
+														   {WindingPattern::Octupolar, "octupolar"}};
+
+const char* toString(WindingPattern p) { return nameIn(kWindingPatterns, p, "octupolar"); }
 
 WindingPattern windingPatternFromString(const std::string& s)
 {
-	if (s == "helical") return WindingPattern::Helical;
-	if (s == "dipolar") return WindingPattern::Dipolar;
-	if (s == "quadrupolar") return WindingPattern::Quadrupolar;
-	if (s == "octupolar") return WindingPattern::Octupolar;
+	if (const auto p = valueIn(kWindingPatterns, s)) return *p;
 	throw std::invalid_argument("winding must be helical, dipolar, quadrupolar or octupolar, got '" + s + "'");
 }
 

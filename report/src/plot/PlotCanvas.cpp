@@ -27,6 +27,16 @@ LinePlot& PlotCanvas::addPanel(double height_weight)
 	return panels_.back();
 }
 
+LinePlot& PlotCanvas::addPanel(double height_weight, const std::string& x_label, const std::string& y_label,
+							   const std::string& title)
+{
+	LinePlot& p = addPanel(height_weight);
+	p.x_axis.label = x_label;
+	p.y_axis.label = y_label;
+	p.title = title;
+	return p;
+}
+
 cv::Rect PlotCanvas::panelRect(std::size_t i) const
 {
 	if (i >= panels_.size()) throw std::out_of_range("plot panel index out of range");

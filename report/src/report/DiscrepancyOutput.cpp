@@ -99,45 +99,23 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 	}
 	j["named_effects"] = named;
 	// named on the analysed run, not confirmed on the second run: reported, not added
-	JsonValue unconfirmed = JsonValue::array();
-	for (const auto& ne : sel.not_confirmed)
-	{
-		JsonValue e = JsonValue::object();
-		e["id"] = ne.id;
-		e["p_adjusted"] = ne.p_adjusted;
-		e["coefficient"] = ne.coefficient;
-		e["coefficient_unit"] = ne.coefficient_unit;
-		e["confirm_p"] = ne.confirm_p;
-		unconfirmed.push_back(e);
-	}
-	j["not_confirmed"] = unconfirmed;
-	JsonValue rejected = JsonValue::array();
-	for (const auto& r : rep.rejected)
-	{
-		JsonValue e = JsonValue::object();
-		e["id"] = r.id;
-		e["reason"] = r.reason;
-		rejected.push_back(e);
-	}
-	j["not_named"] = rejected;
+	j["not_confirmed"] = JsonValue::arrayOf(sel.not_confirmed, [](const auto& ne) {
+		return JsonValue::object({{"id", ne.id}, {"p_adjusted", ne.p_adjusted}, {"coefficient", ne.coefficient},
+								  {"coefficient_unit", ne.coefficient_unit}, {"confirm_p", ne.confirm_p}});
+	});
+	j["not_named"] = JsonValue::arrayOf(
+		rep.rejected, [](const auto& r) { return JsonValue::object({{"id", r.id}, {"reason", r.reason}}); });
 	j["cannot_tell"] = rep.cannot_tell;
 	j["where"] = rep.gap.ranking_before.sentence;
 	JsonValue segs = JsonValue::array();
 	int rank = 1;
 	for (const auto& s : rep.gap.segments) segs.push_back(segmentJson(s, rank++));
 	j["segments"] = segs;
-	JsonValue groups = JsonValue::array();
-	for (const auto& g : rep.gap.ranking_before.groups)
-	{
-		JsonValue e = JsonValue::object();
-		e["description"] = g.description;
-		e["rms_dph"] = g.rms_dph;
-		e["energy_share"] = g.energy_share;
-		e["time_share"] = g.time_share;
-		e["segments"] = static_cast<unsigned long>(g.segments);
-		groups.push_back(e);
-	}
-	j["segment_groups"] = groups;
+	j["segment_groups"] = JsonValue::arrayOf(rep.gap.ranking_before.groups, [](const auto& g) {
+		return JsonValue::object({{"description", g.description}, {"rms_dph", g.rms_dph},
+								  {"energy_share", g.energy_share}, {"time_share", g.time_share},
+								  {"segments", static_cast<unsigned long>(g.segments)}});
+	});
 	JsonValue cands = JsonValue::array();
 	if (!sel.rounds.empty())
 		for (const auto& t : sel.rounds.front())

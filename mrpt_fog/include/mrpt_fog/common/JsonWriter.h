@@ -15,6 +15,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mrpt_fog
@@ -43,6 +44,8 @@ class JsonValue
 	JsonValue(std::string v) : kind_(Kind::String), string_(std::move(v)) {}
 
 	static JsonValue object();
+	/** An object of the given members, in this order: JsonValue::object({{"id", id}, {"rms_dph", r}}). */
+	static JsonValue object(std::initializer_list<std::pair<std::string, JsonValue>> members);
 	static JsonValue array();
 	/** An array of the given items: JsonValue::array({low, high}). */
 	static JsonValue array(std::initializer_list<JsonValue> items);
@@ -52,6 +55,14 @@ class JsonValue
 	{
 		JsonValue a = array();
 		for (const auto& x : items) a.push_back(JsonValue(x));
+		return a;
+	}
+	/** An array of toJson(x) for each element x of a container, in order. */
+	template <class Container, class ToJson>
+	static JsonValue arrayOf(const Container& items, ToJson&& toJson)
+	{
+		JsonValue a = array();
+		for (const auto& x : items) a.push_back(toJson(x));
 		return a;
 	}
 

@@ -110,6 +110,9 @@ class Compensator
 	/** A turn-on of the gyro at time_s [s]: the warm-up term (if the calibration has one) runs
 	 * from there. Without any call no warm-up term is added (the turn-on time is unknown). */
 	void notePowerOn(double time_s);
+	/** notePowerOn() at the turn-on the log's metadata `power_on_time_s` names, if it has one;
+	 * throws std::invalid_argument when that value is not a time [s]. */
+	void notePowerOnFromMetadata(const FogSeries& log);
 	/** Forgets the state (rates, counters, the turn-on, the held scale factor). */
 	void reset();
 	/** The build of the per-sample code in use: "avx2" or "portable". */

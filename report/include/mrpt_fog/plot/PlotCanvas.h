@@ -28,6 +28,9 @@ class PlotCanvas
 
 	/** Adds a panel below the previous ones; heights are shared in proportion to weight (> 0). */
 	LinePlot& addPanel(double height_weight = 1.0);
+	/** The same, with its axis labels (units in them, e.g. "time [s]") and title set. */
+	LinePlot& addPanel(double height_weight, const std::string& x_label, const std::string& y_label,
+					   const std::string& title = "");
 	LinePlot& panel(std::size_t i) { return panels_.at(i); }
 	std::size_t panelCount() const { return panels_.size(); }
 
