@@ -46,13 +46,11 @@ JsonValue screeningJson(const ThermistorScreening& s, bool enabled)
 	for (std::size_t i = 0; i < s.names.size(); i++)
 	{
 		const auto& c = s.counters[i];
-		JsonValue& t = th[s.names[i]];
-		t["stuck"] = static_cast<unsigned long>(c.stuck);
-		t["stuck_events"] = static_cast<unsigned long>(c.stuck_events);
-		t["spike"] = static_cast<unsigned long>(c.spike);
-		t["out_of_range"] = static_cast<unsigned long>(c.out_of_range);
-		t["dropout"] = static_cast<unsigned long>(c.dropout);
-		t["level_changes"] = static_cast<unsigned long>(c.level_changes);
+		th[s.names[i]] = JsonValue::object(
+			{{"stuck", static_cast<unsigned long>(c.stuck)}, {"stuck_events", static_cast<unsigned long>(c.stuck_events)},
+			 {"spike", static_cast<unsigned long>(c.spike)}, {"out_of_range", static_cast<unsigned long>(c.out_of_range)},
+			 {"dropout", static_cast<unsigned long>(c.dropout)},
+			 {"level_changes", static_cast<unsigned long>(c.level_changes)}});
 	}
 	return j;
 }

@@ -335,22 +335,13 @@ JsonValue axisJson(const AxisFit& f, double tau_s, bool validated)
 	j["extrapolation"] = toString(cal.extrapolation);
 	j["rate_gaps"] = static_cast<unsigned long>(cal.rate_gaps);
 	const auto& st = cal.selection_stability;
-	JsonValue& sj = j["selection_stability"] = JsonValue::object();
-	sj["resamples"] = static_cast<unsigned long>(st.resamples);
-	sj["chosen_share"] = st.chosen_share;
-	sj["stable"] = st.stable;
-	sj["chosen_held_out_rms_dph"] = st.chosen_held_out_rms_dph;
-	sj["held_out_se_mse"] = st.held_out_se_mse;
-	sj["alternatives_equivalent"] = st.alternatives_equivalent;
-	JsonValue& alts = sj["alternatives"] = JsonValue::array();
-	for (const auto& a : st.alternatives)
-	{
-		JsonValue aj = JsonValue::object();
-		aj["terms"] = a.terms;
-		aj["share"] = a.share;
-		aj["held_out_rms_dph"] = a.held_out_rms_dph;
-		alts.push_back(aj);
-	}
+	JsonValue& sj = j["selection_stability"] = JsonValue::object(
+		{{"resamples", static_cast<unsigned long>(st.resamples)}, {"chosen_share", st.chosen_share},
+		 {"stable", st.stable}, {"chosen_held_out_rms_dph", st.chosen_held_out_rms_dph},
+		 {"held_out_se_mse", st.held_out_se_mse}, {"alternatives_equivalent", st.alternatives_equivalent}});
+	sj["alternatives"] = JsonValue::arrayOf(st.alternatives, [](const auto& a) {
+		return JsonValue::object({{"terms", a.terms}, {"share", a.share}, {"held_out_rms_dph", a.held_out_rms_dph}});
+	});
 	JsonValue& ts = sj["term_share"] = JsonValue::object();
 	for (const auto& [t, v] : st.term_share) ts[t] = v;
 	if (cal.scale_factor)
@@ -379,15 +370,10 @@ JsonValue axisJson(const AxisFit& f, double tau_s, bool validated)
 		js["rms_in_sample_ppm"] = sf.rms_in_sample_ppm;
 		js["rms_held_out_ppm"] = sf.rms_held_out_ppm;
 		js["held_out_label"] = sf.held_out_label;
-		JsonValue& cands = js["candidates"] = JsonValue::array();
-		for (const auto& c : f.sf_report.candidates)
-		{
-			JsonValue o = JsonValue::object();
-			o["thermistor"] = c.thermistor;
-			o["order"] = static_cast<long>(c.order);
-			o["rms_held_out_ppm"] = c.rms_held_out_ppm;
-			cands.push_back(o);
-		}
+		js["candidates"] = JsonValue::arrayOf(f.sf_report.candidates, [](const auto& c) {
+			return JsonValue::object({{"thermistor", c.thermistor}, {"order", static_cast<long>(c.order)},
+									  {"rms_held_out_ppm", c.rms_held_out_ppm}});
+		});
 	}
 	if (cal.warmup)
 	{

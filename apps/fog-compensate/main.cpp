@@ -186,15 +186,14 @@ int main(int argc, char** argv)
 		// Turn-ons for the warm-up term (as compensate() does): before the log, and 0 -> 1 power steps.
 		if (any_warmup)
 		{
-			const std::string meta = layout.metadataValue("power_on_time_s");
-			if (!meta.empty())
+			try
 			{
-				char* end = nullptr;
-				const double t_on = std::strtod(meta.c_str(), &end);
-				if (!std::isfinite(t_on) || *end != '\0')
-					throw withInput(std::invalid_argument("metadata power_on_time_s: '" + meta + "' is not a time [s]"));
 				for (std::size_t i = 0; i < comps.size(); i++)
-					if (cals.axes[i].warmup) comps[i]->notePowerOn(t_on);
+					if (cals.axes[i].warmup) comps[i]->notePowerOnFromMetadata(layout);
+			}
+			catch (const std::invalid_argument& e)
+			{
+				throw withInput(e);
 			}
 		}
 		app::Progress progress("fog-compensate", arg_quiet.getValue());

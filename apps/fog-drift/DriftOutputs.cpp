@@ -166,10 +166,8 @@ void writeDriftPlots(const std::string& dir, const nav::Trajectory& truth, const
 
 	{
 		PlotCanvas fig(1000, 900);
-		LinePlot& p = fig.addPanel();
-		p.title = "Dead-reckoned trajectories (vertical FOG heading + wheel odometry) over the truth";
-		p.x_axis.label = "East [m]";
-		p.y_axis.label = "North [m]";
+		LinePlot& p = fig.addPanel(1.0, "East [m]", "North [m]",
+								   "Dead-reckoned trajectories (vertical FOG heading + wheel odometry) over the truth");
 		for (const auto& [name, traj] : variants)
 		{
 			PlotSeries s{name, {}, {}, colourOf(name), 1};
@@ -192,13 +190,8 @@ void writeDriftPlots(const std::string& dir, const nav::Trajectory& truth, const
 	}
 	{
 		PlotCanvas fig(1000, 700);
-		LinePlot& p = fig.addPanel(2.0);
-		p.title = "Heading error vs truth";
-		p.x_axis.label = "time [s]";
-		p.y_axis.label = "heading error [deg]";
-		LinePlot& q = fig.addPanel(1.0);
-		q.x_axis.label = "time [s]";
-		q.y_axis.label = "position error [m]";
+		LinePlot& p = fig.addPanel(2.0, "time [s]", "heading error [deg]", "Heading error vs truth");
+		LinePlot& q = fig.addPanel(1.0, "time [s]", "position error [m]");
 		for (const auto& v : report.variants)
 		{
 			PlotSeries s{v.name, {}, v.heading_error_deg, colourOf(v.name), 2};

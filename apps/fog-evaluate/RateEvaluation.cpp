@@ -35,21 +35,16 @@ RateEvaluation evaluateRate(const std::vector<double>& time_s, const std::vector
 
 JsonValue toJson(const RateEvaluation& e)
 {
-	JsonValue j = JsonValue::object();
-	j["stability_dph"] = e.stats.stability_dph;
-	j["range_dph"] = e.stats.range_dph;
-	j["raw_peak_to_peak_dph"] = e.stats.raw_peak_to_peak_dph;
-	j["mean_dph"] = e.stats.mean_dph;
-	j["window_count"] = e.stats.window_count;
-	j["empty_window_count"] = e.stats.empty_window_count;
-	j["samples_used"] = e.stats.samples_used;
-	j["dropped_tail_s"] = e.stats.dropped_tail_s;
-	j["arw_dpsh"] = e.terms.arw_dpsh;
-	j["bias_instability_dph"] = e.terms.bias_instability_dph;
-	j["rrw_dphsh"] = e.terms.rrw_dphsh;
-	j["quantization_arcsec"] = e.terms.quantization_arcsec;
-	j["allan_period_s"] = e.allan_period_s;
-	j["allan_samples"] = e.allan_samples;
+	const BiasStats& st = e.stats;
+	const AllanNoiseTerms& nt = e.terms;
+	JsonValue j = JsonValue::object(
+		{{"stability_dph", st.stability_dph}, {"range_dph", st.range_dph},
+		 {"raw_peak_to_peak_dph", st.raw_peak_to_peak_dph}, {"mean_dph", st.mean_dph},
+		 {"window_count", st.window_count}, {"empty_window_count", st.empty_window_count},
+		 {"samples_used", st.samples_used}, {"dropped_tail_s", st.dropped_tail_s}, {"arw_dpsh", nt.arw_dpsh},
+		 {"bias_instability_dph", nt.bias_instability_dph}, {"rrw_dphsh", nt.rrw_dphsh},
+		 {"quantization_arcsec", nt.quantization_arcsec}, {"allan_period_s", e.allan_period_s},
+		 {"allan_samples", e.allan_samples}});
 	JsonValue taus = JsonValue::array(), adevs = JsonValue::array();
 	for (const auto& p : e.allan)
 	{
