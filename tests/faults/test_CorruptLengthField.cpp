@@ -9,6 +9,7 @@
 
 #include "FaultRun.h"
 #include "support/AddressSpaceLimit.h"
+#include "support/ChildProcess.h"
 
 using namespace mrpt_fog;
 
@@ -22,28 +23,22 @@ std::string dataFile(const std::string& name) { return std::string(FOG_SOURCE_DI
  * 1 = read without error, 2 = FogIoError without the file name, 3 = another exception. */
 int readInSmallMachine(const std::string& path)
 {
-	const pid_t pid = ::fork();
-	if (pid == 0)
-	{
+	return fogtest::exitCodeInChild([&] {
 		fogtest::limitAddressSpace(std::size_t(1) << 30);
-		int code = 1;
 		try
 		{
 			(void)readFogRawlog(path);
 		}
 		catch (const FogIoError& e)
 		{
-			code = std::string(e.what()).find(path) != std::string::npos ? 0 : 2;
+			return std::string(e.what()).find(path) != std::string::npos ? 0 : 2;
 		}
 		catch (...)
 		{
-			code = 3;
+			return 3;
 		}
-		::_exit(code);
-	}
-	int status = 0;
-	::waitpid(pid, &status, 0);
-	return WIFEXITED(status) ? WEXITSTATUS(status) : 100 + WTERMSIG(status);
+		return 1;
+	});
 }
 }  // namespace
 

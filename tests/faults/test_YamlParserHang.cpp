@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "FaultRun.h"
+#include "support/ChildProcess.h"
 
 using namespace mrpt_fog;
 
@@ -19,28 +20,22 @@ namespace
  * the source; 1: loaded; 2: another exception; 100 + signal: killed (hang) or crashed. */
 int loadInChild(const std::string& text)
 {
-	const pid_t pid = ::fork();
-	if (pid == 0)
-	{
+	return fogtest::exitCodeInChild([&] {
 		::alarm(20);
-		int code = 1;
 		try
 		{
 			(void)calibrationFromYaml(text, "hang.yaml");
 		}
 		catch (const std::invalid_argument& e)
 		{
-			code = std::string(e.what()).find("hang.yaml") != std::string::npos ? 0 : 2;
+			return std::string(e.what()).find("hang.yaml") != std::string::npos ? 0 : 2;
 		}
 		catch (...)
 		{
-			code = 2;
+			return 2;
 		}
-		::_exit(code);
-	}
-	int status = 0;
-	::waitpid(pid, &status, 0);
-	return WIFEXITED(status) ? WEXITSTATUS(status) : 100 + WTERMSIG(status);
+		return 1;
+	});
 }
 }  // namespace
 
@@ -83,9 +78,9 @@ TEST(YamlParserHang, SimulatorYamlFilesRefuseInvalidUtf8)
 		std::ofstream f(path, std::ios::binary);
 		f << "%\xd5\n";
 	}
-	const pid_t pid = ::fork();
-	if (pid == 0)
-	{
+	// exit 0: both refused naming the file; bits 1/2/4: loaded / another message / another
+	// exception; 100 + signal: killed by the alarm (hang) or crashed
+	EXPECT_EQ(fogtest::exitCodeInChild([&] {
 		::alarm(20);
 		int code = 0;
 		for (int which = 0; which < 2; which++)
@@ -105,11 +100,8 @@ TEST(YamlParserHang, SimulatorYamlFilesRefuseInvalidUtf8)
 				code |= 4;
 			}
 		}
-		::_exit(code);
-	}
-	int status = 0;
-	::waitpid(pid, &status, 0);
-	ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status) << " (hang or crash)";
-	EXPECT_EQ(WEXITSTATUS(status), 0);
+		return code;
+	}),
+			  0);
 	std::remove(path.c_str());
 }

@@ -8,12 +8,21 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <functional>
 #include <string>
 
 namespace iotest
 {
 inline std::string dataFile(const std::string& name) { return std::string(FOG_TEST_DATA_DIR) + "/io/" + name; }
+
+/** The bytes of a file ("" when it cannot be read). */
+inline std::string slurp(const std::string& path)
+{
+	std::ifstream f(path, std::ios::binary);
+	return std::string(std::istreambuf_iterator<char>(f), {});
+}
 
 /** A fresh scratch directory per test (removed at the end). */
 class ScratchDir

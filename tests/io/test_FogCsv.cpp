@@ -13,14 +13,10 @@
 using namespace mrpt_fog;
 using iotest::dataFile;
 using iotest::ioErrorOf;
+using iotest::slurp;
 
 namespace
 {
-std::string slurp(const std::string& path)
-{
-	std::ifstream f(path, std::ios::binary);
-	return std::string(std::istreambuf_iterator<char>(f), {});
-}
 void spit(const std::string& path, const std::string& text)
 {
 	std::ofstream f(path, std::ios::binary);

@@ -27,15 +27,10 @@
 using namespace mrpt_fog;
 using iotest::dataFile;
 using iotest::ioErrorOf;
+using iotest::slurp;
 
 namespace
 {
-std::string slurp(const std::string& path)
-{
-	std::ifstream f(path, std::ios::binary);
-	return std::string(std::istreambuf_iterator<char>(f), {});
-}
-
 /** A synthetic chamber-like series with known values (10 Hz, dropouts, all optional fields). */
 FogSeries makeSeries(const std::string& label, std::size_t n, double epoch_s = 1700000000.0)
 {

@@ -29,11 +29,13 @@ std::string replaced(std::string s, const std::string& from, const std::string& 
 	if (p != std::string::npos) s.replace(p, from.size(), to);
 	return s;
 }
-std::string errorOf2(const std::string& text)
+/** The std::invalid_argument message of parse(text, "cal.yaml"), or "" when it parses. */
+template <class Parse>
+std::string parseError(Parse parse, const std::string& text)
 {
 	try
 	{
-		calibrationSetFromYaml(text, "cal.yaml");
+		parse(text, "cal.yaml");
 	}
 	catch (const std::invalid_argument& e)
 	{
@@ -41,17 +43,13 @@ std::string errorOf2(const std::string& text)
 	}
 	return "";
 }
+std::string errorOf2(const std::string& text)
+{
+	return parseError([](const std::string& t, const std::string& src) { calibrationSetFromYaml(t, src); }, text);
+}
 std::string errorOf(const std::string& text)
 {
-	try
-	{
-		calibrationFromYaml(text, "cal.yaml");
-	}
-	catch (const std::invalid_argument& e)
-	{
-		return e.what();
-	}
-	return "";
+	return parseError([](const std::string& t, const std::string& src) { calibrationFromYaml(t, src); }, text);
 }
 }  // namespace
 

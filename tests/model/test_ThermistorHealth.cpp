@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <mrpt_fog/model/ThermistorHealth.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -29,6 +30,16 @@ std::vector<bool> stuckFlags(double dt_s, std::size_t n, A a, B b, const Thermis
 	}
 	return out;
 }
+
+/** The inner thermistor ramps at 0.01 degC/s from 25 degC and freezes at freeze_s (the outer
+ * one keeps moving): expects no flag before sample first_flagged and a Stuck flag from there on. */
+void expectStuckFrom(double dt_s, std::size_t n, double freeze_s, std::size_t first_flagged)
+{
+	const auto frozen = [&](double t) { return 25.0 + 0.01 * std::min(t, freeze_s); };
+	const auto outer = [](double t) { return 20.0 + 0.03 * t; };
+	const auto flags = stuckFlags(dt_s, n, frozen, outer);
+	for (std::size_t k = 0; k < n; k++) EXPECT_EQ(flags[k], k >= first_flagged) << "sample " << k;
+}
 }  // namespace
 
 // A slow (0.1 Hz) quantised log at a temperature turnaround: the inner thermistor sits on one
@@ -46,24 +57,10 @@ TEST(ThermistorHealth, SlowLogTurnaroundIsNotStuck)
 // The same slow log with the inner thermistor frozen from sample 30: flagged once it has held
 // its value for stuck_min_samples (10) readings = 90 s after freezing at 0.1 Hz (the 30 s window
 // alone would have allowed 30 s), and from then on until the end.
-TEST(ThermistorHealth, SlowLogStuckNeedsMinSamples)
-{
-	const auto frozen = [](double t) { return t < 300.0 ? 25.0 + 0.01 * t : 28.0; };
-	const auto outer = [](double t) { return 20.0 + 0.03 * t; };
-	const auto flags = stuckFlags(10.0, 100, frozen, outer);
-	for (std::size_t k = 0; k < 39; k++) EXPECT_FALSE(flags[k]) << "sample " << k;
-	for (std::size_t k = 39; k < 100; k++) EXPECT_TRUE(flags[k]) << "sample " << k;
-}
+TEST(ThermistorHealth, SlowLogStuckNeedsMinSamples) { expectStuckFrom(10.0, 100, 300.0, 39); }
 
 // At 1 Hz the 30 s window is the binding condition: frozen at t = 100 s, flagged at t = 130 s.
-TEST(ThermistorHealth, FastLogStuckAfterWindow)
-{
-	const auto frozen = [](double t) { return t < 100.0 ? 25.0 + 0.01 * t : 26.0; };
-	const auto outer = [](double t) { return 20.0 + 0.03 * t; };
-	const auto flags = stuckFlags(1.0, 200, frozen, outer);
-	for (std::size_t k = 0; k < 130; k++) EXPECT_FALSE(flags[k]) << "sample " << k;
-	for (std::size_t k = 130; k < 200; k++) EXPECT_TRUE(flags[k]) << "sample " << k;
-}
+TEST(ThermistorHealth, FastLogStuckAfterWindow) { expectStuckFrom(1.0, 200, 100.0, 130); }
 
 TEST(ThermistorHealth, BadSettingsNameTheField)
 {

@@ -33,17 +33,23 @@ CObservationFOG::Ptr makeSample()
 	o->powerOn = false;
 	return o;
 }
+
+/** `o` written as an object (class name, version, payload) into buf, which is then rewound. */
+void writeObject(mrpt::io::CMemoryStream& buf, const CObservationFOG& o)
+{
+	mrpt_fog::registerAllClasses_mrpt_fog();
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << o;
+	buf.Seek(0);
+}
 }  // namespace
 
 TEST(CObservationFOG, SerializeRoundTrip_v0)
 {
-	mrpt_fog::registerAllClasses_mrpt_fog();
 	const auto o = makeSample();
 	mrpt::io::CMemoryStream buf;
-	auto arch = mrpt::serialization::archiveFrom(buf);
-	arch << *o;
-	buf.Seek(0);
-	auto obj = arch.ReadObject();
+	writeObject(buf, *o);
+	auto obj = mrpt::serialization::archiveFrom(buf).ReadObject();
 	auto r = std::dynamic_pointer_cast<CObservationFOG>(obj);
 	ASSERT_TRUE(r);
 	EXPECT_EQ(r->sensorLabel, "FOG1");
@@ -71,11 +77,8 @@ TEST(CObservationFOG, SerializeRoundTrip_v0)
 
 TEST(CObservationFOG, UnknownVersionThrows)
 {
-	mrpt_fog::registerAllClasses_mrpt_fog();
-	const auto o = makeSample();
 	mrpt::io::CMemoryStream buf;
-	auto arch = mrpt::serialization::archiveFrom(buf);
-	arch << *o;
+	writeObject(buf, *makeSample());
 	// Object layout: [class-name header][version byte][payload]. Patch the version byte.
 	auto* data = static_cast<uint8_t*>(const_cast<void*>(buf.getRawBufferData()));
 	const std::string name = "mrpt_fog::CObservationFOG";
@@ -90,8 +93,7 @@ TEST(CObservationFOG, UnknownVersionThrows)
 	ASSERT_NE(pos, std::string::npos);
 	ASSERT_EQ(data[pos], 0u);  // current version
 	data[pos] = 99;
-	buf.Seek(0);
-	EXPECT_ANY_THROW(arch.ReadObject());
+	EXPECT_ANY_THROW(mrpt::serialization::archiveFrom(buf).ReadObject());
 }
 
 TEST(CObservationFOG, RatesInRadPerSec)
@@ -167,10 +169,9 @@ TEST(CObservationFOG, GyroOffHasNoRateSampleButKeepsTheThermistors)
 	auto o = makeSample();  // power off
 	o->rate_dph[2] = std::nan("");
 	mrpt::io::CMemoryStream buf;
-	auto arch = mrpt::serialization::archiveFrom(buf);
-	arch << *o;
-	buf.Seek(0);
+	writeObject(buf, *o);
 	CObservationFOG back;
+	auto arch = mrpt::serialization::archiveFrom(buf);
 	arch >> back;
 	EXPECT_TRUE(std::isnan(back.rate_dph[2]));
 	EXPECT_FALSE(back.powerOn);

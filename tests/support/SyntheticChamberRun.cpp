@@ -1,6 +1,8 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include "support/SyntheticChamberRun.h"
 
+#include <mrpt_fog/common/EnumNames.h>
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -131,13 +133,10 @@ double unexplainedRms(const std::vector<double>& v, const std::vector<double>& T
 
 const char* toString(SyntheticProfile p)
 {
-	switch (p)
-	{
-		case SyntheticProfile::Ramp: return "ramp";
-		case SyntheticProfile::LongRamp: return "long_ramp";
-		case SyntheticProfile::AllConditions: break;
-	}
-	return "all_conditions";
+	static constexpr EnumName<SyntheticProfile> kNames[] = {{SyntheticProfile::Ramp, "ramp"},
+															{SyntheticProfile::LongRamp, "long_ramp"},
+															{SyntheticProfile::AllConditions, "all_conditions"}};
+	return nameIn(kNames, p, "all_conditions");
 }
 
 SyntheticRun makeSyntheticChamberRun(const SyntheticRunOptions& opt)
