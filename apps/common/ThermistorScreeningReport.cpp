@@ -19,6 +19,30 @@ ThermistorScreening screenInPlace(FogSeries& series, bool enabled)
 	return screenThermistors(series);
 }
 
+std::function<void(double, double*, std::size_t)> StreamScreening::hook()
+{
+	if (!enabled_) return {};
+	return [this](double t, double* temp_C, std::size_t n) {
+		if (!health_) health_ = std::make_unique<ThermistorHealth>(n);
+		health_->step(t, temp_C);
+	};
+}
+
+ThermistorScreening StreamScreening::result(const FogRun& run) const
+{
+	ThermistorScreening out;
+	if (!enabled_) return out;
+	const auto& th = run.header().thermistors;
+	for (std::size_t i = 0; i < th.size(); i++)
+	{
+		out.names.push_back(th[i].name);
+		const ThermistorHealthCounters c = health_ ? health_->counters(i) : ThermistorHealthCounters{};
+		out.counters.push_back(c);
+		out.rejected_readings += c.out_of_range + c.spike + c.stuck;
+	}
+	return out;
+}
+
 std::string screeningText(const ThermistorScreening& s, bool enabled)
 {
 	if (!enabled) return "  thermistor screening: off (--no-screening)\n";

@@ -8,7 +8,10 @@
 
 #include <mrpt_fog/common/JsonWriter.h>
 #include <mrpt_fog/model/ThermistorHealth.h>
+#include <mrpt_fog/obs/FogRun.h>
 
+#include <functional>
+#include <memory>
 #include <string>
 
 namespace mrpt_fog::app
@@ -22,6 +25,23 @@ FogSeries screenedForCompensation(const FogSeries& in, bool enabled, ThermistorS
  * (fog-calibrate, fog-evaluate, fog-discrepancy): the same screening fog-compensate runs, so that
  * one log gives the same figures through every program. */
 ThermistorScreening screenInPlace(FogSeries& series, bool enabled);
+
+/** The same screening sample by sample, for a log read as a stream (readFogRun's `each`):
+ *   StreamScreening sc(enabled);
+ *   FogRun run = readFogRun(path, label, sc.hook());
+ *   ThermistorScreening counts = sc.result();                   // all 0 when disabled */
+class StreamScreening
+{
+   public:
+	explicit StreamScreening(bool enabled) : enabled_(enabled) {}
+	std::function<void(double, double*, std::size_t)> hook();
+	/** The counts, named after the run's thermistors (call after reading). */
+	ThermistorScreening result(const FogRun& run) const;
+
+   private:
+	bool enabled_;
+	std::unique_ptr<ThermistorHealth> health_;
+};
 
 /** One line per thermistor with a rejected reading ("  thermistor T3: stuck 412 samples (1
  * event), spike 0, out of range 0"); "  thermistor screening: all readings accepted" when

@@ -163,7 +163,7 @@ JsonValue figuresJson(const FitFigures& f)
 
 /** Why a fit selected no thermal term, from the runs themselves (issue 14: such a calibration
  * used to be written silently as "1 terms (0 thermistors)"). */
-std::string whyNoThermalTerm(const std::vector<FogSeries>& runs, const BiasModel& m)
+std::string whyNoThermalTerm(const std::vector<FogRun>& runs, const BiasModel& m)
 {
 	std::size_t samples = 0;
 	double span_C = 0.0;
@@ -172,26 +172,26 @@ std::string whyNoThermalTerm(const std::vector<FogSeries>& runs, const BiasModel
 	for (const auto& r : runs)
 	{
 		samples += r.size();
-		for (std::size_t i = 0; i < r.thermistorCount(); i++)
-		{
-			double lo = INFINITY, hi = -INFINITY;
-			for (double t : r.temp_C[i])
-				if (std::isfinite(t)) lo = std::min(lo, t), hi = std::max(hi, t);
-			if (hi - lo > span_C) span_C = hi - lo, span_name = r.thermistors[i].name;
-		}
-		if (!r.table_rate_dph.empty())
-		{
-			double tlo = INFINITY, thi = -INFINITY, rlo = INFINITY, rhi = -INFINITY;
-			const auto& rate = r.primaryRate_dph();
-			for (std::size_t k = 0; k < r.size(); k++)
+		const std::size_t nt = r.header().thermistorCount();
+		std::vector<double> lo(nt, INFINITY), hi(nt, -INFINITY);
+		double tlo = INFINITY, thi = -INFINITY, rlo = INFINITY, rhi = -INFINITY;
+		r.forEachChunk([&](const FogSeries& c, std::size_t) {
+			for (std::size_t i = 0; i < nt; i++)
+				for (double t : c.temp_C[i])
+					if (std::isfinite(t)) lo[i] = std::min(lo[i], t), hi[i] = std::max(hi[i], t);
+			if (c.table_rate_dph.empty()) return;
+			const auto& rate = c.primaryRate_dph();
+			for (std::size_t k = 0; k < c.size(); k++)
 			{
-				if (!std::isfinite(r.table_rate_dph[k]) || !std::isfinite(rate[k])) continue;
-				tlo = std::min(tlo, r.table_rate_dph[k]), thi = std::max(thi, r.table_rate_dph[k]);
-				const double res = rate[k] - r.table_rate_dph[k];
+				if (!std::isfinite(c.table_rate_dph[k]) || !std::isfinite(rate[k])) continue;
+				tlo = std::min(tlo, c.table_rate_dph[k]), thi = std::max(thi, c.table_rate_dph[k]);
+				const double res = rate[k] - c.table_rate_dph[k];
 				rlo = std::min(rlo, res), rhi = std::max(rhi, res);
 			}
-			if (thi >= tlo) table_range = std::max(table_range, thi - tlo), residual_range = std::max(residual_range, rhi - rlo);
-		}
+		});
+		for (std::size_t i = 0; i < nt; i++)
+			if (hi[i] - lo[i] > span_C) span_C = hi[i] - lo[i], span_name = r.header().thermistors[i].name;
+		if (thi >= tlo) table_range = std::max(table_range, thi - tlo), residual_range = std::max(residual_range, rhi - rlo);
 	}
 	char b[400];
 	if (samples < 100 || m.samples < 100)
@@ -469,16 +469,38 @@ int main(int argc, char** argv)
 
 		if (arg_sf.getValue() != "auto" && arg_sf.getValue() != "off")
 			throw std::invalid_argument("--scale-factor: '" + arg_sf.getValue() + "' is not auto or off");
-		std::vector<FogSeries> runs;
 		const bool screen = !arg_no_screen.getValue();
 		std::string screening_text;
-		const auto screened = [&](FogSeries s, const std::string& path) {
-			std::vector<double>().swap(s.field_uT);  // the fit does not read the magnetic field (memory)
-			const ThermistorScreening sc = app::screenInPlace(s, screen);
-			if (!screen || sc.rejected_readings > 0) screening_text += "  " + path + ":\n" + app::screeningText(sc, screen);
-			return s;
+		// Each log is read once into a run spilled to a temporary file (memory independent of the
+		// log's length, issue 14), screened on the way as fog-compensate screens it.
+		const auto readScreened = [&](const std::string& path) {
+			app::StreamScreening sc(screen);
+			FogRun run = readFogRun(path, arg_label.getValue(), sc.hook());
+			const ThermistorScreening counts = sc.result(run);
+			if (!screen || counts.rejected_readings > 0) screening_text += "  " + path + ":\n" + app::screeningText(counts, screen);
+			return run;
 		};
-		for (const auto& path : arg_in.getValue()) runs.push_back(screened(readFogLog(path, arg_label.getValue()), path));
+		// The scale-factor and warm-up fits take their runs in memory (rate-table and turn-on runs).
+		const auto inMemory = [](const std::vector<FogRun>& rs) {
+			std::vector<FogSeries> out;
+			for (const auto& r : rs)
+			{
+				out.push_back(r.load());
+				std::vector<double>().swap(out.back().field_uT);  // not read by these fits (memory)
+			}
+			return out;
+		};
+		const auto hasTableRates = [](const std::vector<FogRun>& rs) {  // chunk by chunk
+			bool any = false;
+			for (const auto& r : rs)
+				r.forEachChunk([&](const FogSeries& c, std::size_t) {
+					for (std::size_t k = 0; k < c.table_rate_dph.size() && !any; k++)
+						any = c.table_rate_dph[k] != 0.0 && c.gyroOn(k);
+				});
+			return any;
+		};
+		std::vector<FogRun> runs;
+		for (const auto& path : arg_in.getValue()) runs.push_back(readScreened(path));
 
 		// The axes to calibrate: --axis, else every axis the -i runs share.
 		std::vector<GyroAxis> axes;
@@ -502,7 +524,7 @@ int main(int argc, char** argv)
 		{
 			const GyroAxis axis = axes[ia];
 			const std::string who = several ? std::string("axis ") + axisLetter(axis) + ": " : std::string();
-			AxisRunSet set = runsForAxis(runs, arg_in.getValue(), axis, ia + 1 == axes.size());
+			AxisRunViews set = runsForAxis(runs, arg_in.getValue(), axis);
 			if (set.runs.empty())
 			{
 				std::string why;
@@ -515,13 +537,13 @@ int main(int argc, char** argv)
 			FitOptions aopt = opt;
 			const bool fit_sf = arg_sf.getValue() == "auto" && hasTableRates(set.runs);
 			if (fit_sf) aopt.table_samples = TableSamples::Exclude;
-			f.cal = fitCalibration(set.runs, arg_model.getValue(), aopt, set.labels);
+			f.cal = fitCalibrationRuns(set.runs, arg_model.getValue(), aopt, set.labels);
 			if (set.earth_rate_removed) f.cal.earth_rate = EarthRateHandling::InTableRate;
 			if (fit_sf)
 			{
 				try
 				{
-					f.cal.scale_factor = fitScaleFactor(set.runs, f.cal, sf_opt, &f.sf_report, set.labels);
+					f.cal.scale_factor = fitScaleFactor(inMemory(set.runs), f.cal, sf_opt, &f.sf_report, set.labels);
 				}
 				catch (const ScaleFactorFitError& e)
 				{
@@ -537,16 +559,15 @@ int main(int argc, char** argv)
 			if (f.cal.model.features.thermistors().empty()) f.why_empty = whyNoThermalTerm(set.runs, f.cal.model);
 			fits.push_back(std::move(f));
 		}
-		std::vector<FogSeries>().swap(runs);
+		std::vector<FogRun>().swap(runs);
 		if (!arg_warm.getValue().empty())
 		{
-			std::vector<FogSeries> warm;
-			for (const auto& path : arg_warm.getValue())
-				warm.push_back(screened(readFogLog(path, arg_label.getValue()), path));
+			std::vector<FogRun> warm;
+			for (const auto& path : arg_warm.getValue()) warm.push_back(readScreened(path));
 			for (std::size_t ia = 0; ia < fits.size(); ia++)
 			{
 				Calibration& cal = fits[ia].cal;
-				AxisRunSet set = runsForAxis(warm, arg_warm.getValue(), cal.axis, ia + 1 == fits.size());
+				AxisRunViews set = runsForAxis(warm, arg_warm.getValue(), cal.axis);
 				const std::string who = several ? std::string("axis ") + axisLetter(cal.axis) + ": " : std::string();
 				if (set.earth_rate_removed != fits[ia].earth_rate_removed)
 					throw std::runtime_error(who + "--warmup-run: the warm-up runs " +
@@ -556,7 +577,7 @@ int main(int argc, char** argv)
 				try
 				{
 					if (set.runs.empty()) throw WarmupFitError("no warm-up run has this axis");
-					cal.warmup = fitWarmup(set.runs, cal, {}, nullptr, set.labels);
+					cal.warmup = fitWarmup(inMemory(set.runs), cal, {}, nullptr, set.labels);
 				}
 				catch (const WarmupFitError& e)
 				{
@@ -566,11 +587,12 @@ int main(int argc, char** argv)
 		}
 		if (!arg_val.getValue().empty())
 		{
-			std::vector<FogSeries> val{screened(readFogLog(arg_val.getValue(), arg_label.getValue()), arg_val.getValue())};
+			std::vector<FogRun> val;
+			val.push_back(readScreened(arg_val.getValue()));
 			for (std::size_t ia = 0; ia < fits.size(); ia++)
 			{
 				Calibration& cal = fits[ia].cal;
-				AxisRunSet set = runsForAxis(val, {arg_val.getValue()}, cal.axis, ia + 1 == fits.size());
+				AxisRunViews set = runsForAxis(val, {arg_val.getValue()}, cal.axis);
 				if (set.runs.empty())
 				{
 					cal.validation.label = "validation run " + arg_val.getValue() + ": " + set.skipped.front();

@@ -18,8 +18,8 @@ bool sameFile(const std::string& a, const std::string& b)
 }
 }  // namespace
 
-CompensationResult compensateWithCalibration(const std::string& cal_path, const std::string& log_path,
-											 const FogSeries& series)
+CompensationResult compensateWithCalibration(const std::string& cal_path, const std::string& log_path, const FogRun& run,
+											 const CompensationSink& sink)
 {
 	const Calibration cal = loadCalibrationYaml(cal_path);
 	CompensationResult r;
@@ -27,16 +27,12 @@ CompensationResult compensateWithCalibration(const std::string& cal_path, const 
 	r.extrapolation = cal.extrapolation;
 	try
 	{
-		r.compensated_dph = compensatedRate_dph(cal, series, &r.counters);
+		r.counters = compensateRun(cal, run, sink);
 	}
 	catch (const std::exception& e)
 	{
 		throw std::invalid_argument(cal_path + ": cannot compensate this log: " + e.what());
 	}
-	if (r.compensated_dph.size() != series.size())
-		throw std::runtime_error(cal_path + ": the compensator returned " +
-								 std::to_string(r.compensated_dph.size()) + " samples for " +
-								 std::to_string(series.size()));
 	for (const auto& run : cal.runs)
 		if (run == log_path || sameFile(run, log_path)) r.in_sample = true;
 	return r;

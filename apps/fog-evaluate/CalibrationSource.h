@@ -10,9 +10,6 @@ namespace mrpt_fog::evaluate
 {
 struct CompensationResult
 {
-	/** Compensated rate of the calibrated axis [deg/h] (the raw rate is the series' column of
-	 * that axis); one column, not compensate()'s five (memory, issue 14). */
-	std::vector<double> compensated_dph;
 	CompensationCounters counters;
 	GyroAxis axis = GyroAxis::Z;  //!< the calibrated axis
 	/** The evaluated log is one of the calibration's runs: the figures are in-sample. */
@@ -21,9 +18,10 @@ struct CompensationResult
 };
 
 /** Loads the calibration YAML at cal_path and runs the causal compensator (model/Compensator.h)
- * over the series read from log_path. Throws (naming the file) when the calibration cannot be
- * loaded, and std::invalid_argument on a layout mismatch (from the compensator). */
-CompensationResult compensateWithCalibration(const std::string& cal_path, const std::string& log_path,
-											 const FogSeries& series);
+ * over the run read from log_path, chunk by chunk, passing its outputs to `sink` (memory
+ * independent of the log's length, issue 14). Throws (naming the file) when the calibration
+ * cannot be loaded, and std::invalid_argument on a layout mismatch (from the compensator). */
+CompensationResult compensateWithCalibration(const std::string& cal_path, const std::string& log_path, const FogRun& run,
+											 const CompensationSink& sink);
 
 }  // namespace mrpt_fog::evaluate

@@ -33,6 +33,30 @@ RateEvaluation evaluateRate(const std::vector<double>& time_s, const std::vector
 	return e;
 }
 
+RateEvaluation evaluateRate(const RowSpill& rows, std::size_t col, double tau_s)
+{
+	RateEvaluation e;
+	e.stats = biasStats(
+		[&](const RecordVisitor& f) {
+			rows.forEachBlock([&](const double* r, std::size_t n, std::size_t) {
+				for (std::size_t j = 0; j < n; j++) f(r[j * rows.width()], r[j * rows.width() + col]);
+			});
+		},
+		tau_s);
+	RowSpill uniform(1);
+	const UniformRecord u = resampleUniform(rows, 0, col, uniform);
+	e.allan_period_s = u.period_s;
+	e.allan_samples = uniform.rows();
+	e.allan_segments = u.segments;
+	if (uniform.rows() >= 4)
+	{
+		// At least 4 clusters per point: with fewer the estimate is too noisy to be worth showing.
+		e.allan = allanDeviationOverlapping(uniform, u.period_s, octaveClusterSizes(uniform.rows(), 4));
+		e.terms = allanNoiseTerms(e.allan);
+	}
+	return e;
+}
+
 JsonValue toJson(const RateEvaluation& e)
 {
 	const BiasStats& st = e.stats;

@@ -7,6 +7,8 @@
  * terms (metrics/AllanNoiseTerms.h), and their JSON form. */
 
 #include <mrpt_fog/common/JsonWriter.h>
+#include <mrpt_fog/common/RowSpill.h>
+#include <mrpt_fog/metrics/AllanDeviation.h>
 #include <mrpt_fog/metrics/AllanNoiseTerms.h>
 #include <mrpt_fog/metrics/BiasMetrics.h>
 #include <mrpt_fog/obs/FogSeries.h>
@@ -25,6 +27,10 @@ struct RateEvaluation
 	std::size_t allan_samples = 0;  //!< samples in that resample (longest gap-free segment)
 	std::size_t allan_segments = 0;  //!< gap-free segments found in the record
 };
+
+/** Figures of column `col` (the bias [deg/h]) of (time, bias...) rows, read in passes: the same
+ * numbers as evaluateRate() on the columns, with memory independent of the record's length. */
+RateEvaluation evaluateRate(const RowSpill& rows, std::size_t col, double tau_s);
 
 /** The gyro bias of a series: primary-axis rate minus the applied table rate (when the log has
  * that column), NaN while the gyro is powered off (power column 0). [deg/h] */

@@ -73,52 +73,79 @@ int main(int argc, char** argv)
 
 		const std::string path = in.getValue();
 		requireSafeOutputs({{"-i", path}, {"--cal", cal.getValue()}}, {{"--json", json.getValue()}});
-		FogSeries series = readFogLog(path, label.getValue());
-		// The screening fog-compensate runs (stuck / spike / out of range -> dropout), so that a log
-		// gives the same compensated figures here and there.
-		const ThermistorScreening screening = app::screenInPlace(series, !no_screen.getValue());
-		try
-		{
-			series.validate();
-		}
-		catch (const std::invalid_argument& e)
-		{
-			throw std::invalid_argument(path + ": " + e.what());
-		}
-		if (series.size() < 2) throw std::invalid_argument(path + ": fewer than 2 samples");
+		// The log is read once into a run spilled to a temporary file, screened on the way as
+		// fog-compensate screens it (so that a log gives the same compensated figures here and
+		// there); the figures are computed in passes (memory independent of the log's length, issue 14).
+		app::StreamScreening screener(!no_screen.getValue());
+		const FogRun run = readFogRun(path, label.getValue(), screener.hook());
+		const ThermistorScreening screening = screener.result(run);
+		if (run.size() < 2) throw std::invalid_argument(path + ": fewer than 2 samples");
 
 		// With --cal the compensator works on the calibrated axis, and the raw figures are of that
-		// same axis; without it, of the log's primary axis.
+		// same axis; without it, of the log's primary axis. Rows: time, raw bias [, compensated
+		// bias] (bias = rate minus table rate, NaN while the gyro is off).
+		const bool with_cal = !cal.getValue().empty();
 		std::unique_ptr<CompensationResult> comp_series;
-		if (!cal.getValue().empty())
-			comp_series =
-				std::make_unique<CompensationResult>(compensateWithCalibration(cal.getValue(), path, series));
-		const std::vector<double>& raw_rate =
-			comp_series ? series.rate_dph[static_cast<int>(comp_series->axis)] : series.primaryRate_dph();
-		const char axis = axisLetter(comp_series ? comp_series->axis : series.primaryAxis());
-		std::vector<double> comp_bias;
-		if (comp_series) comp_bias = biasOf(series, std::move(comp_series->compensated_dph));
-		const std::vector<double> raw_bias = biasOf(series, raw_rate);
-		// Memory (issue 14): the magnetic field and the temperatures were the compensator's input;
-		// nothing reads the field again, nor the temperatures without plots.
-		std::vector<double>().swap(series.field_uT);
-		if (plots.getValue().empty())
-			for (auto& c : series.temp_C) std::vector<double>().swap(c);
+		RowSpill rows(with_cal ? 3 : 2);
+		const auto biasAt = [](const FogSeries& c, std::size_t j, double rate) {
+			if (!c.table_rate_dph.empty()) rate -= c.table_rate_dph[j];
+			if (!c.power.empty() && c.power[j] == 0.0) rate = NAN;
+			return rate;
+		};
+		if (with_cal)
+		{
+			GyroAxis cal_axis = GyroAxis::Z;
+			comp_series = std::make_unique<CompensationResult>(compensateWithCalibration(
+				cal.getValue(), path, run,
+				[&](const FogSeries& c, std::size_t, std::size_t j0, std::size_t m, const Compensator::Output* out) {
+					for (std::size_t j = j0; j < j0 + m; j++)
+					{
+						const double row[3] = {c.time_s[j], 0.0, biasAt(c, j, out[j - j0].compensated_dph)};
+						rows.push(row);
+					}
+				}));
+			cal_axis = comp_series->axis;
+			// The raw column of the same rows (a second pass over the run).
+			RowSpill with_raw(3);
+			RowSpill::Reader rd(rows);
+			const int a = static_cast<int>(cal_axis);
+			run.forEachChunk([&](const FogSeries& c, std::size_t) {
+				for (std::size_t j = 0; j < c.size(); j++)
+				{
+					const double* r = rd.next();
+					const double row[3] = {r[0], biasAt(c, j, c.rate_dph[a][j]), r[2]};
+					with_raw.push(row);
+				}
+			});
+			rows = std::move(with_raw);
+		}
+		else
+		{
+			const int a = static_cast<int>(run.header().primaryAxis());
+			run.forEachChunk([&](const FogSeries& c, std::size_t) {
+				for (std::size_t j = 0; j < c.size(); j++)
+				{
+					const double row[2] = {c.time_s[j], biasAt(c, j, c.rate_dph[a][j])};
+					rows.push(row);
+				}
+			});
+		}
+		const char axis = axisLetter(comp_series ? comp_series->axis : run.header().primaryAxis());
 		RateEvaluation raw;
 		std::unique_ptr<RateEvaluation> comp;
 		try
 		{
-			raw = evaluateRate(series.time_s, raw_bias, tau_s);
-			if (comp_series) comp = std::make_unique<RateEvaluation>(evaluateRate(series.time_s, comp_bias, tau_s));
+			raw = evaluateRate(rows, 1, tau_s);
+			if (comp_series) comp = std::make_unique<RateEvaluation>(evaluateRate(rows, 2, tau_s));
 		}
 		catch (const std::invalid_argument& e)
 		{
 			throw std::invalid_argument(path + ": " + e.what());
 		}
 
-		const double duration_s = series.time_s.back() - series.time_s.front();
+		const double duration_s = run.backTime_s() - run.frontTime_s();
 		std::printf("fog-evaluate: %s: %zu samples, %.1f s, axis %c, tau %g s (%zu windows, tail %.1f s dropped)\n",
-					path.c_str(), series.size(), duration_s, axis, tau_s,
+					path.c_str(), run.size(), duration_s, axis, tau_s,
 					raw.stats.window_count, raw.stats.dropped_tail_s);
 		std::printf("  %-30s %14s%s\n", "", "raw",
 					!comp ? "" : comp_series->in_sample ? "  compensated*" : "    compensated");
@@ -150,6 +177,19 @@ int main(int argc, char** argv)
 		std::vector<std::string> figures;
 		if (!plots.getValue().empty())
 		{
+			// The plots draw the whole record: it is loaded into memory (grows with the log).
+			FogSeries series = run.load();
+			std::vector<double>().swap(series.field_uT);
+			std::vector<double> raw_bias, comp_bias;
+			raw_bias.reserve(rows.rows());
+			if (comp) comp_bias.reserve(rows.rows());
+			rows.forEachBlock([&](const double* r, std::size_t n, std::size_t) {
+				for (std::size_t j = 0; j < n; j++)
+				{
+					raw_bias.push_back(r[j * rows.width() + 1]);
+					if (comp) comp_bias.push_back(r[j * rows.width() + 2]);
+				}
+			});
 			PlotInputs pin;
 			pin.series = &series;
 			pin.raw_bias_dph = &raw_bias;
@@ -165,7 +205,7 @@ int main(int argc, char** argv)
 		{
 			JsonValue j = JsonValue::object();
 			j["input"] = path;
-			j["samples"] = series.size();
+			j["samples"] = run.size();
 			j["duration_s"] = duration_s;
 			j["axis"] = std::string(1, axis);
 			j["tau_s"] = tau_s;

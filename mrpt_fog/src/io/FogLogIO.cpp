@@ -1,6 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/io/FogLogIO.h>
+#include <mrpt_fog/io/FogLogReader.h>
 #include <mrpt_fog/obs/FogSeriesConversion.h>
 
 namespace mrpt_fog
@@ -51,4 +52,43 @@ std::vector<mrpt::obs::CObservation::Ptr> stockObservationsForRawlog(const FogSe
 	return out;
 }
 
+}  // namespace mrpt_fog
+
+namespace mrpt_fog
+{
+FogRun readFogRun(const std::string& path, const std::string& fog_label,
+				  const std::function<void(double, double*, std::size_t)>& each)
+{
+	FogLogReader reader(path, fog_label);
+	const FogSeries& h = reader.header();
+	if (kindOf(path) != LogKind::Rawlog && !fog_label.empty() && h.sensor_label != fog_label)
+		throw FogIoError(path + ": the CSV holds sensor '" + h.sensor_label + "', not '" + fog_label + "'");
+	FogRun run(h, reader.hasTableRate(), reader.hasField(), reader.hasPower());
+	FogSeries chunk = emptySeriesLike(h);
+	std::size_t k0 = 0;
+	const auto store = [&]() {
+		try
+		{
+			chunk.validate();
+		}
+		catch (const std::exception& e)
+		{
+			std::string msg = e.what();
+			if (k0 > 0) msg += " (sample numbers counted from sample " + std::to_string(k0) + ")";
+			throw FogIoError(path + ": sensor '" + chunk.sensor_label + "': " + msg);
+		}
+		for (std::size_t j = 0; j < chunk.size(); j++) run.append(chunk, j);
+		k0 += chunk.size();
+		chunk.resize(0);
+	};
+	FogSample x;
+	while (reader.next(x))
+	{
+		if (each) each(x.time_s, x.temp_C.data(), x.temp_C.size());
+		appendSample(chunk, x, reader);
+		if (chunk.size() == FogRun::kChunkSamples) store();
+	}
+	if (chunk.size() > 0 || k0 == 0) store();
+	return run;
+}
 }  // namespace mrpt_fog

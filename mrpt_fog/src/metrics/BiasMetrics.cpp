@@ -4,26 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
 namespace mrpt_fog
 {
-namespace
-{
-void checkTimes(const std::vector<double>& time_s)
-{
-	for (std::size_t k = 0; k < time_s.size(); k++)
-	{
-		if (!std::isfinite(time_s[k]))
-			throw std::invalid_argument("time_s[" + std::to_string(k) + "] is not finite");
-		if (k > 0 && !(time_s[k] > time_s[k - 1]))
-			throw std::invalid_argument(
-				"time_s is not strictly increasing at sample " + std::to_string(k) + " (" +
-				formatValue("%g", time_s[k - 1]) + " s then " + formatValue("%g", time_s[k]) + " s)");
-	}
-}
-}  // namespace
 
 double medianSampleInterval_s(const std::vector<double>& time_s)
 {
@@ -40,64 +27,136 @@ BiasStats biasStats(const std::vector<double>& time_s, const std::vector<double>
 	if (time_s.size() != rate_dph.size())
 		throw std::invalid_argument("time_s has " + std::to_string(time_s.size()) + " samples but rate_dph has " +
 									std::to_string(rate_dph.size()));
+	return biasStats(
+		[&](const RecordVisitor& f) {
+			for (std::size_t k = 0; k < time_s.size(); k++) f(time_s[k], rate_dph[k]);
+		},
+		tau_s);
+}
+
+double medianSampleInterval_s(const RecordPass& pass)
+{
+	// Exact order statistic dt[(n - 1) / 2] (what nth_element gives on the n - 1 intervals) by a
+	// radix selection over the bits of the (positive) intervals: four passes of 16 bits, 65 536
+	// counters, whatever the record's length.
+	std::size_t count = 0;
+	pass([&](double, double) { count++; });
+	if (count < 2) throw std::invalid_argument("need at least 2 samples to find the sample interval");
+	std::size_t rank = (count - 1) / 2;
+	std::uint64_t prefix = 0;
+	std::vector<std::size_t> hist(1u << 16);
+	for (int digit = 3; digit >= 0; digit--)
+	{
+		std::fill(hist.begin(), hist.end(), 0);
+		const int shift = 16 * digit;
+		const std::uint64_t high_mask = digit == 3 ? 0 : ~std::uint64_t{0} << (shift + 16);
+		bool first = true;
+		double prev = 0;
+		pass([&](double t, double) {
+			if (!first)
+			{
+				const double dt = t - prev;
+				std::uint64_t bits;
+				std::memcpy(&bits, &dt, sizeof bits);
+				bits ^= (bits >> 63) ? ~std::uint64_t{0} : (std::uint64_t{1} << 63);  // order as unsigned
+				if ((bits & high_mask) == prefix) hist[(bits >> shift) & 0xffff]++;
+			}
+			first = false;
+			prev = t;
+		});
+		std::size_t b = 0;
+		while (rank >= hist[b]) rank -= hist[b++];
+		prefix |= static_cast<std::uint64_t>(b) << shift;
+	}
+	const std::uint64_t bits = (prefix >> 63) ? prefix ^ (std::uint64_t{1} << 63) : ~prefix;
+	double v;
+	std::memcpy(&v, &bits, sizeof v);
+	return v;
+}
+
+BiasStats biasStats(const RecordPass& pass, double tau_s)
+{
 	if (!std::isfinite(tau_s) || tau_s <= 0)
 		throw std::invalid_argument("tau_s must be a positive number of seconds, got " + formatValue("%g", tau_s));
-	checkTimes(time_s);
-	if (time_s.size() < 2) throw std::invalid_argument("need at least 2 samples, got " + std::to_string(time_s.size()));
-
-	BiasStats s;
-	s.tau_s = tau_s;
-	const double t0 = time_s.front();
-	const double dt = medianSampleInterval_s(time_s);
-	const double covered_s = time_s.back() - t0 + dt;
-	// Complete windows; the small tolerance keeps an exact multiple (e.g. 1000 samples at 1 Hz,
-	// tau 100 s) from losing its last window to rounding.
-	const auto n_windows = static_cast<std::size_t>(std::floor(covered_s / tau_s + 1e-9));
-	s.dropped_tail_s = std::max(0.0, covered_s - static_cast<double>(n_windows) * tau_s);
-
-	double raw_min = INFINITY, raw_max = -INFINITY;
-	for (double r : rate_dph)
+	// Pass 1: the times (finite, strictly increasing), count, first and last, raw extremes.
+	std::size_t n = 0;
+	double t0 = 0, t_last = 0, raw_min = INFINITY, raw_max = -INFINITY;
+	pass([&](double t, double r) {
+		if (!std::isfinite(t)) throw std::invalid_argument("time_s[" + std::to_string(n) + "] is not finite");
+		if (n > 0 && !(t > t_last))
+			throw std::invalid_argument("time_s is not strictly increasing at sample " + std::to_string(n) + " (" +
+										formatValue("%g", t_last) + " s then " + formatValue("%g", t) + " s)");
+		if (n == 0) t0 = t;
+		t_last = t;
+		n++;
 		if (std::isfinite(r))
 		{
 			raw_min = std::min(raw_min, r);
 			raw_max = std::max(raw_max, r);
 		}
+	});
+	if (n < 2) throw std::invalid_argument("need at least 2 samples, got " + std::to_string(n));
+
+	BiasStats s;
+	s.tau_s = tau_s;
+	const double dt = medianSampleInterval_s(pass);
+	const double covered_s = t_last - t0 + dt;
+	// Complete windows; the small tolerance keeps an exact multiple (e.g. 1000 samples at 1 Hz,
+	// tau 100 s) from losing its last window to rounding.
+	const auto n_windows = static_cast<std::size_t>(std::floor(covered_s / tau_s + 1e-9));
+	s.dropped_tail_s = std::max(0.0, covered_s - static_cast<double>(n_windows) * tau_s);
 	s.raw_peak_to_peak_dph = raw_max >= raw_min ? raw_max - raw_min : NAN;
 
-	// Walk the samples once; runs of empty windows (gaps, or a tau shorter than the sample
-	// interval) are skipped in one step, so the cost is O(samples) whatever tau is.
-	std::size_t k = 0, w = 0;
-	while (w < n_windows && k < time_s.size())
-	{
-		const double w_end = t0 + static_cast<double>(w + 1) * tau_s;
-		if (time_s[k] >= w_end)
-		{
-			auto next = static_cast<std::size_t>(std::floor((time_s[k] - t0) / tau_s));
-			if (next <= w) next = w + 1;
-			while (next > w + 1 && t0 + static_cast<double>(next) * tau_s > time_s[k]) next--;
-			while (t0 + static_cast<double>(next + 1) * tau_s <= time_s[k]) next++;
-			next = std::min(next, n_windows);
-			s.empty_window_count += next - w;
-			w = next;
-			continue;
-		}
-		double sum = 0;
-		std::size_t n = 0;
-		for (; k < time_s.size() && time_s[k] < w_end; k++)
-			if (std::isfinite(rate_dph[k]))
-			{
-				sum += rate_dph[k];
-				n++;
-			}
-		if (n == 0) s.empty_window_count++;
+	// Pass 2: the window averages, sample by sample; runs of empty windows (gaps, or a tau shorter
+	// than the sample interval) are skipped in one step, so the cost is O(samples) whatever tau is.
+	std::size_t w = 0, wn = 0;
+	bool open = false;  // window w has started collecting samples
+	double sum = 0;
+	const auto close = [&]() {
+		if (wn == 0) s.empty_window_count++;
 		else
 		{
 			s.window_center_s.push_back(t0 + (static_cast<double>(w) + 0.5) * tau_s);
-			s.window_mean_dph.push_back(sum / static_cast<double>(n));
-			s.samples_used += n;
+			s.window_mean_dph.push_back(sum / static_cast<double>(wn));
+			s.samples_used += wn;
 		}
 		w++;
-	}
+		open = false;
+	};
+	pass([&](double t, double r) {
+		while (w < n_windows)
+		{
+			const double w_end = t0 + static_cast<double>(w + 1) * tau_s;
+			if (!open)
+			{
+				if (t >= w_end)
+				{
+					auto next = static_cast<std::size_t>(std::floor((t - t0) / tau_s));
+					if (next <= w) next = w + 1;
+					while (next > w + 1 && t0 + static_cast<double>(next) * tau_s > t) next--;
+					while (t0 + static_cast<double>(next + 1) * tau_s <= t) next++;
+					next = std::min(next, n_windows);
+					s.empty_window_count += next - w;
+					w = next;
+					continue;
+				}
+				open = true;
+				sum = 0;
+				wn = 0;
+			}
+			if (t < w_end)
+			{
+				if (std::isfinite(r))
+				{
+					sum += r;
+					wn++;
+				}
+				return;
+			}
+			close();
+		}
+	});
+	if (open) close();
 	s.empty_window_count += n_windows - w;
 	s.window_count = s.window_mean_dph.size();
 	if (s.window_count < 2)

@@ -104,4 +104,57 @@ AxisRunSet runsForAxis(std::vector<FogSeries>& runs, const std::vector<std::stri
 	return set;
 }
 
+std::vector<GyroAxis> commonAxes(const std::vector<FogRun>& runs)
+{
+	std::vector<FogSeries> headers;
+	for (const auto& r : runs) headers.push_back(r.header());
+	return commonAxes(headers);
+}
+
+AxisRunViews runsForAxis(const std::vector<FogRun>& runs, const std::vector<std::string>& labels, GyroAxis axis)
+{
+	// The choice is made on the headers (metadata, axes) and on whether a run applies table
+	// rates (one pass); the samples are then seen through axis views.
+	std::vector<FogSeries> heads;
+	for (const auto& r : runs)
+	{
+		FogSeries h = r.header();
+		h.table_rate_dph.clear();
+		h.power.clear();
+		bool applies = false;
+		r.forEachChunk([&](const FogSeries& c, std::size_t) {
+			if (!applies) applies = appliesTableRates(c);
+		});
+		if (applies)  // one sample that applies a table rate stands for the run
+		{
+			h.time_s.assign(1, 0.0);
+			h.table_rate_dph.assign(1, 1.0);
+			for (auto& col : h.temp_C) col.assign(1, 0.0);
+			for (int a = 0; a < 3; a++)
+				if (h.has_axis[a]) h.rate_dph[a].assign(1, 0.0);
+		}
+		else
+			h.field_uT.clear();
+		heads.push_back(std::move(h));
+	}
+	AxisRunSet set = runsForAxis(heads, labels, axis, true);
+	AxisRunViews out;
+	out.axis = axis;
+	out.skipped = set.skipped;
+	out.earth_rate_removed = set.earth_rate_removed;
+	const std::string key = "earth_rate_dph." + letter(axis);
+	std::size_t r = 0;  // the kept runs, in order
+	for (const auto& label : set.labels)
+		for (; r < runs.size(); r++)
+			if ((r < labels.size() ? labels[r] : "run " + std::to_string(r + 1)) == label && runs[r].header().has_axis[static_cast<std::size_t>(axis)])
+			{
+				const std::string e = runs[r].header().metadataValue(key);
+				out.runs.push_back(runs[r].axisView(axis, e.empty() ? 0.0 : std::strtod(e.c_str(), nullptr)));
+				out.labels.push_back(label);
+				r++;
+				break;
+			}
+	return out;
+}
+
 }  // namespace mrpt_fog

@@ -5,6 +5,7 @@
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/model/Compensator.h>
 #include <mrpt_fog/model/ModelPreset.h>
+#include <mrpt_fog/common/RowSpill.h>
 
 #include <algorithm>
 #include <functional>
@@ -93,12 +94,13 @@ const std::vector<double> kRidgeGrid = {0.0, 1e-9, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3,
 
 /** One calibration run prepared for the fit: which samples are usable, the bias and the
  * thermistor rates. Memory does not grow with the log beyond one bit per sample (issue 14): the
- * bias is computed from the series when asked (y()), and the causal rates are recomputed in each
+ * run is read in chunks (obs/FogRun.h: in memory, or spilled to a temporary file), the bias is
+ * computed from the chunk when asked (y()), and the causal rates are recomputed in each
  * sequential pass by a RowCursor (the tracker is deterministic: the same numbers as storing
  * them); only the non-causal estimator (savgol, studies) stores its rates. */
 struct PreparedRun
 {
-	const FogSeries* s = nullptr;
+	const FogRun* run = nullptr;
 	std::vector<int> col;  // layout column of each feature-set thermistor
 	int axis = 0;
 	bool exclude_table = false;
@@ -106,17 +108,20 @@ struct PreparedRun
 	std::vector<std::vector<double>> rate;  // [thermistor][sample] degC/s (non-causal estimator only)
 	std::vector<bool> ok;  // usable sample
 	std::size_t usable = 0;
-	/** Bias sample k [deg/h]: gyro minus table rate; NaN for a table sample left out of the fit. */
-	double y(std::size_t k) const
+	/** Bias of sample j of chunk c [deg/h]: gyro minus table rate; NaN for a table sample left
+	 * out of the fit. */
+	double y(const FogSeries& c, std::size_t j) const
 	{
-		const double table = s->table_rate_dph.empty() ? 0.0 : s->table_rate_dph[k];
+		const double table = c.table_rate_dph.empty() ? 0.0 : c.table_rate_dph[j];
 		if (exclude_table && table != 0.0) return std::numeric_limits<double>::quiet_NaN();
-		return s->rate_dph[axis][k] - table;
+		return c.rate_dph[axis][j] - table;
 	}
 };
 
-/** Sequential access to a prepared run's per-thermistor temperatures and rates: row(k) with k
- * ascending (gaps allowed: skipped samples still go through the rate tracker). */
+/** Sequential access to a prepared run's per-thermistor temperatures and rates: row(c, k0, k)
+ * with k ascending (gaps allowed: skipped samples still go through the rate tracker); c is the
+ * chunk holding sample k (its first sample is k0), and endChunk() must be called at the end of
+ * every chunk (the samples not asked for go through the tracker). */
 class RowCursor
 {
    public:
@@ -130,27 +135,37 @@ class RowCursor
 	{
 	}
 	/** Temperatures and rates of sample k (k >= the previous k). */
-	void row(std::size_t k, double* temp, double* rate)
+	void row(const FogSeries& c, std::size_t k0, std::size_t k, double* temp, double* rate)
 	{
 		const std::size_t nt = r_.col.size();
 		if (causal_)
 		{
-			for (; next_ <= k; next_++)
-			{
-				for (std::size_t i = 0; i < nt; i++) x_[i] = r_.s->temp_C[r_.col[i]][next_];
-				tracker_.push(r_.s->time_s[next_], x_.data());
-				if (order2_) half_.push(r_.s->time_s[next_], x_.data());
-			}
+			pushTo(c, k0, k + 1);
 			// order 2 (delay-compensated): the same two trackers and formula as the compensator
 			for (std::size_t i = 0; i < nt; i++)
-				rate[i] = order2_ ? CausalRateTracker::extrapolatedRate(tracker_, half_, i, r_.s->time_s[k]) : tracker_.rate(i);
+				rate[i] = order2_ ? CausalRateTracker::extrapolatedRate(tracker_, half_, i, c.time_s[k - k0]) : tracker_.rate(i);
 		}
 		else
 			for (std::size_t i = 0; i < nt; i++) rate[i] = r_.rate[i][k];
-		for (std::size_t i = 0; i < nt; i++) temp[i] = r_.s->temp_C[r_.col[i]][k];
+		for (std::size_t i = 0; i < nt; i++) temp[i] = c.temp_C[r_.col[i]][k - k0];
+	}
+	void endChunk(const FogSeries& c, std::size_t k0)
+	{
+		if (causal_) pushTo(c, k0, k0 + c.size());
 	}
 
    private:
+	void pushTo(const FogSeries& c, std::size_t k0, std::size_t end)
+	{
+		const std::size_t nt = r_.col.size();
+		for (; next_ < end; next_++)
+		{
+			const std::size_t j = next_ - k0;
+			for (std::size_t i = 0; i < nt; i++) x_[i] = c.temp_C[r_.col[i]][j];
+			tracker_.push(c.time_s[j], x_.data());
+			if (order2_) half_.push(c.time_s[j], x_.data());
+		}
+	}
 	const PreparedRun& r_;
 	bool causal_, order2_;
 	CausalRateTracker tracker_, half_;
@@ -158,42 +173,60 @@ class RowCursor
 	std::size_t next_ = 0;
 };
 
-PreparedRun prepare(const FogSeries& s, const ThermalFeatureSet& fs, const RateEstimatorSettings& est, GyroAxis axis,
+/** One pass over a prepared run: f(c, k0, j) for every sample (k = k0 + j), then the cursor (if
+ * any) is told the chunk ended. */
+template <class F>
+void forEachSample(const PreparedRun& r, RowCursor* cur, F&& f)
+{
+	r.run->forEachChunk([&](const FogSeries& c, std::size_t k0) {
+		for (std::size_t j = 0; j < c.size(); j++) f(c, k0, j);
+		if (cur) cur->endChunk(c, k0);
+	});
+}
+
+PreparedRun prepare(const FogRun& s, const ThermalFeatureSet& fs, const RateEstimatorSettings& est, GyroAxis axis,
 					TableSamples table)
 {
 	PreparedRun r;
-	r.s = &s;
+	r.run = &s;
 	const std::size_t n = s.size(), nt = fs.thermistors().size();
-	for (const auto& name : fs.thermistors()) r.col.push_back(s.thermistorIndex(name));
+	for (const auto& name : fs.thermistors()) r.col.push_back(s.header().thermistorIndex(name));
 	r.axis = static_cast<int>(axis);
 	// A table sample is not a bias sample (nor in the raw figures) when excluded.
 	r.exclude_table = table == TableSamples::Exclude;
 	r.est = est;
 	if (est.kind != "causal")
 	{
+		// The centred estimator needs whole columns (studies only: memory grows with the run).
+		FogSeries loaded;
+		const FogSeries* whole = s.inMemory();
+		if (!whole)
+		{
+			loaded = s.load();
+			whole = &loaded;
+		}
 		auto e = makeRateEstimator(est);
 		r.rate.resize(nt);
-		for (std::size_t i = 0; i < nt; i++) r.rate[i] = e->estimate(s.time_s, s.temp_C[r.col[i]]);
+		for (std::size_t i = 0; i < nt; i++) r.rate[i] = e->estimate(whole->time_s, whole->temp_C[r.col[i]]);
 	}
 	// The same multi-channel tracker as the compensator (RowCursor): identical numbers.
 	RowCursor cur(r);
 	std::vector<double> temp(nt), rate(nt);
 	r.ok.assign(n, true);
-	for (std::size_t k = 0; k < n; k++)
-	{
-		cur.row(k, temp.data(), rate.data());
-		bool ok = std::isfinite(r.y(k)) && (s.power.empty() || s.power[k] != 0.0);
+	forEachSample(r, &cur, [&](const FogSeries& c, std::size_t k0, std::size_t j) {
+		cur.row(c, k0, k0 + j, temp.data(), rate.data());
+		bool ok = std::isfinite(r.y(c, j)) && (c.power.empty() || c.power[j] != 0.0);
 		for (std::size_t i = 0; i < nt && ok; i++) ok = std::isfinite(temp[i]) && std::isfinite(rate[i]);
-		r.ok[k] = ok;
+		r.ok[k0 + j] = ok;
 		r.usable += ok;
-	}
+	});
 	return r;
 }
 
-void rowSignals(RowCursor& cur, const ThermalFeatureSet& fs, std::size_t k, std::vector<double>& temp,
-				std::vector<double>& rate, std::vector<double>& values)
+void rowSignals(RowCursor& cur, const ThermalFeatureSet& fs, const FogSeries& c, std::size_t k0, std::size_t j,
+				std::vector<double>& temp, std::vector<double>& rate, std::vector<double>& values)
 {
-	cur.row(k, temp.data(), rate.data());
+	cur.row(c, k0, k0 + j, temp.data(), rate.data());
 	fs.signalValues(temp.data(), rate.data(), values.data());
 }
 
@@ -377,69 +410,85 @@ class NestedSelection
 	std::map<std::size_t, std::vector<Choice>> memo_;
 };
 
+/** A regime segment [t0, t1] of a run and its class (0 cooling, 1 soak, 2 heating). */
+struct RegimeSegment
+{
+	double t0, t1;
+	int cls;
+};
+
 /** Regime folds of one run: each sample's regime (cooling, soak, heating by the mean rate of the
  * thermistors against regime_rate_C_per_min), contiguous runs shorter than min_regime_s merged
- * into the previous one; regime segment j is fold j mod max_folds. Returns one fold per sample
- * (-1 for unusable samples) and the segment count through *segments. */
-std::vector<int> regimeFolds(const PreparedRun& r, double threshold_C_per_min, double min_regime_s,
-							 std::size_t max_folds, double window_s, std::size_t* segments)
+ * into the previous one; regime segment j is fold j mod max_folds (RegimeFoldCursor). Returns the
+ * merged segments (memory: the segments, not the samples). */
+std::vector<RegimeSegment> regimeSegments(const PreparedRun& r, double threshold_C_per_min, double min_regime_s,
+										  double window_s)
 {
 	// The regime is a property of the run, not of the model: the rate of the mean of ALL the
 	// run's thermistors (finite readings), whatever thermistors the preset uses.
-	const std::size_t n = r.s->size();
 	// The mean temperature's rate, sample by sample (CausalRateEstimator's numbers, no columns).
 	CausalRateTracker tracker(1, window_s);
 	const double thr = threshold_C_per_min / 60.0;
-	// Segments: [start time, class]; short ones take the class of the one before.
-	struct Seg
-	{
-		double t0, t1;
-		int cls;
-	};
-	std::vector<Seg> segs;
-	for (std::size_t k = 0; k < n; k++)
-	{
-		double sum = 0, mean_C = std::numeric_limits<double>::quiet_NaN();
-		int cnt = 0;
-		for (const auto& col : r.s->temp_C)
-			if (std::isfinite(col[k]))
-			{
-				sum += col[k];
-				cnt++;
-			}
-		if (cnt == static_cast<int>(r.s->temp_C.size()) && cnt > 0) mean_C = sum / cnt;
-		tracker.push(r.s->time_s[k], &mean_C);
-		const double m = std::isnan(mean_C) ? std::numeric_limits<double>::quiet_NaN() : tracker.rate(0);
-		if (!r.ok[k] || !std::isfinite(m)) continue;
-		const int cls = m > thr ? 2 : (m < -thr ? 0 : 1);
-		const double t = r.s->time_s[k];
-		if (segs.empty() || segs.back().cls != cls) segs.push_back({t, t, cls});
-		segs.back().t1 = t;
-	}
-	std::vector<Seg> merged;
-	for (const Seg& s : segs)
-	{
+	// Segments: [start time, class]; short ones take the class of the one before. Each finished
+	// segment is merged at once (the merge only looks at the last merged segment).
+	std::vector<RegimeSegment> merged;
+	const auto merge = [&](const RegimeSegment& s) {
 		if (!merged.empty() && (s.t1 - s.t0 < min_regime_s || merged.back().cls == s.cls))
 			merged.back().t1 = s.t1;
 		else if (merged.empty() || s.t1 - s.t0 >= min_regime_s)
 			merged.push_back(s);
-	}
+	};
+	bool has_seg = false;
+	RegimeSegment seg{0, 0, 0};
+	forEachSample(r, nullptr, [&](const FogSeries& c, std::size_t k0, std::size_t j) {
+		double sum = 0, mean_C = std::numeric_limits<double>::quiet_NaN();
+		int cnt = 0;
+		for (const auto& col : c.temp_C)
+			if (std::isfinite(col[j]))
+			{
+				sum += col[j];
+				cnt++;
+			}
+		if (cnt == static_cast<int>(c.temp_C.size()) && cnt > 0) mean_C = sum / cnt;
+		tracker.push(c.time_s[j], &mean_C);
+		const double m = std::isnan(mean_C) ? std::numeric_limits<double>::quiet_NaN() : tracker.rate(0);
+		if (!r.ok[k0 + j] || !std::isfinite(m)) return;
+		const int cls = m > thr ? 2 : (m < -thr ? 0 : 1);
+		const double t = c.time_s[j];
+		if (!has_seg || seg.cls != cls)
+		{
+			if (has_seg) merge(seg);
+			seg = {t, t, cls};
+			has_seg = true;
+		}
+		seg.t1 = t;
+	});
+	if (has_seg) merge(seg);
 	if (merged.size() >= 2 && merged.front().t1 - merged.front().t0 < min_regime_s)
 	{
 		merged[1].t0 = merged.front().t0;
 		merged.erase(merged.begin());
 	}
-	*segments = merged.size();
-	std::vector<int> fold(n, -1);
-	std::size_t j = 0;
-	for (std::size_t k = 0; k < n; k++)
-	{
-		if (!r.ok[k]) continue;
-		while (j + 1 < merged.size() && r.s->time_s[k] > merged[j].t1) j++;
-		fold[k] = static_cast<int>(j % max_folds);
-	}
-	return fold;
+	return merged;
 }
+
+/** The fold of each usable sample of a pass, in time order: regime segment j is fold
+ * j mod max_folds. */
+class RegimeFoldCursor
+{
+   public:
+	RegimeFoldCursor(const std::vector<RegimeSegment>& merged, std::size_t max_folds) : m_(merged), max_(max_folds) {}
+	std::size_t fold(double t)
+	{
+		while (j_ + 1 < m_.size() && t > m_[j_].t1) j_++;
+		return j_ % max_;
+	}
+
+   private:
+	const std::vector<RegimeSegment>& m_;
+	std::size_t max_;
+	std::size_t j_ = 0;
+};
 
 std::string runName(const std::vector<std::string>& labels, std::size_t i)
 {
@@ -476,27 +525,37 @@ BiasModel makeModel(StreamingQr& total, const ThermalFeatureSet& fs, const Choic
 	return m;
 }
 
-void statsInto(FitFigures& f, const std::vector<double>& t, const std::vector<double>& raw, const std::vector<double>& comp,
-			   double tau_s)
+/** The figures of (time, raw, compensated) rows (column 0, 1, 2), read in passes. */
+void statsInto(FitFigures& f, const RowSpill& rows, double tau_s)
 {
 	f.tau_s = tau_s;
+	const auto column = [&](std::size_t col) -> RecordPass {
+		return [&rows, col](const RecordVisitor& v) {
+			rows.forEachBlock([&](const double* r, std::size_t n, std::size_t) {
+				for (std::size_t j = 0; j < n; j++) v(r[3 * j], r[3 * j + col]);
+			});
+		};
+	};
+	const RecordPass comp = column(2), raw = column(1);
 	double sum = 0, sum2 = 0;
 	std::size_t n = 0;
-	for (double v : comp)
+	comp([&](double, double v) {
 		if (std::isfinite(v))
 		{
 			sum += v;
 			n++;
 		}
+	});
 	if (n == 0) return;
 	const double mean = sum / static_cast<double>(n);
-	for (double v : comp)
+	comp([&](double, double v) {
 		if (std::isfinite(v)) sum2 += (v - mean) * (v - mean);
+	});
 	f.samples = n;
 	f.rms_dph = std::sqrt(sum2 / static_cast<double>(n));
 	try
 	{
-		const BiasStats cs = biasStats(t, comp, tau_s), rs = biasStats(t, raw, tau_s);
+		const BiasStats cs = biasStats(comp, tau_s), rs = biasStats(raw, tau_s);
 		f.stability_dph = cs.stability_dph;
 		f.range_dph = cs.range_dph;
 		f.raw_stability_dph = rs.stability_dph;
@@ -511,36 +570,33 @@ void statsInto(FitFigures& f, const std::vector<double>& t, const std::vector<do
 }
 
 /** The calibration runs laid end to end on one time axis, a one-window (tau_s) gap between runs:
- * the columns statsInto() computes the figures on, of exact size (memory: three columns). */
+ * the (time, raw, compensated) rows statsInto() computes the figures on, in a RowSpill (memory
+ * independent of the runs' length). */
 struct ConcatenatedRuns
 {
-	std::vector<double> t, raw, comp;
-	double offset_s = 0;
-	explicit ConcatenatedRuns(std::size_t total_samples)
+	RowSpill rows{3};
+	double offset_s = 0, t0 = 0;
+	void beginRun(const PreparedRun& r) { t0 = r.run->frontTime_s(); }
+	/** A sample at time t of the run: its bias (raw) and compensated rate (NaN: none) [deg/h]. */
+	void push(double t, double raw, double comp)
 	{
-		t.reserve(total_samples);
-		raw.reserve(total_samples);
-		comp.reserve(total_samples);
+		const double row[3] = {offset_s + t - t0, raw, comp};
+		rows.push(row);
 	}
-	/** Appends run r; compensated(k) is its compensated rate at sample k [deg/h] (NaN: none),
-	 * called with k ascending. */
-	template <class Compensated>
-	void append(const PreparedRun& r, double tau_s, Compensated&& compensated)
-	{
-		const double t0 = r.s->time_s.front();
-		for (std::size_t k = 0; k < r.s->size(); k++)
-		{
-			t.push_back(offset_s + r.s->time_s[k] - t0);
-			raw.push_back(r.y(k));
-			comp.push_back(compensated(k));
-		}
-		offset_s = t.back() + tau_s;
-	}
-	void figuresInto(FitFigures& f, double tau_s) const { statsInto(f, t, raw, comp, tau_s); }
+	void endRun(const PreparedRun& r, double tau_s) { offset_s = offset_s + r.run->backTime_s() - t0 + tau_s; }
+	void figuresInto(FitFigures& f, double tau_s) const { statsInto(f, rows, tau_s); }
 };
 }  // namespace
 
-Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string& preset_text, const FitOptions& opt,
+Calibration fitCalibration(const std::vector<FogSeries>& series, const std::string& preset_text, const FitOptions& opt,
+						   const std::vector<std::string>& labels)
+{
+	std::vector<FogRun> runs;
+	for (const auto& s : series) runs.emplace_back(s);
+	return fitCalibrationRuns(runs, preset_text, opt, labels);
+}
+
+Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::string& preset_text, const FitOptions& opt,
 						   const std::vector<std::string>& labels)
 {
 	if (runs.empty()) throw std::invalid_argument("fit: no calibration runs given");
@@ -564,11 +620,11 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 			throw std::invalid_argument(runName(labels, i) + ": " + e.what());
 		}
 		if (runs[i].empty()) throw std::invalid_argument(runName(labels, i) + ": no samples");
-		if (i > 0 && !runs[i].sameLayout(runs[0]))
+		if (i > 0 && !runs[i].header().sameLayout(runs[0].header()))
 			throw std::invalid_argument(runName(labels, i) + " has another sensor layout (thermistors or axes) than " +
 										runName(labels, 0));
 	}
-	const FogSeries& first = runs[0];
+	const FogSeries& first = runs[0].header();
 	const GyroAxis axis = opt.axis ? *opt.axis : first.primaryAxis();
 	if (!first.has_axis[static_cast<int>(axis)])
 		throw std::invalid_argument(runName(labels, 0) + " has no " + axisLetter(axis) + " axis to calibrate");
@@ -614,17 +670,16 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	for (const auto& r : prep)
 	{
 		RowCursor cur(r);
-		for (std::size_t k = 0; k < r.s->size(); k++)
-		{
-			if (!r.ok[k]) continue;
-			rowSignals(cur, fs, k, temp, rate, values);
+		forEachSample(r, &cur, [&](const FogSeries& c, std::size_t k0, std::size_t j) {
+			if (!r.ok[k0 + j]) return;
+			rowSignals(cur, fs, c, k0, j, temp, rate, values);
 			for (std::size_t s = 0; s < ns; s++)
 			{
 				lo[s] = std::min(lo[s], values[s]);
 				hi[s] = std::max(hi[s], values[s]);
 			}
-			ysum += r.y(k);
-		}
+			ysum += r.y(c, j);
+		});
 	}
 	const double y_ref = ysum / static_cast<double>(usable);
 	if (candidates_added)  // a physics candidate without variation (e.g. two identical readings) is left out
@@ -691,13 +746,12 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	for (const auto& r : prep)
 	{
 		RowCursor cur(r);
-		for (std::size_t k = 0; k < r.s->size(); k++)
-		{
-			if (!r.ok[k]) continue;
-			rowSignals(cur, fs, k, temp, rate, values);
+		forEachSample(r, &cur, [&](const FogSeries& c, std::size_t k0, std::size_t j) {
+			if (!r.ok[k0 + j]) return;
+			rowSignals(cur, fs, c, k0, j, temp, rate, values);
 			fs.features(values.data(), f.data(), false);
-			for (std::size_t j = 0; j < f.size(); j++) fsum[j] += f[j];
-		}
+			for (std::size_t q = 0; q < f.size(); q++) fsum[q] += f[q];
+		});
 	}
 	std::vector<double> x_ref(fs.termCount());
 	for (std::size_t j = 0; j < x_ref.size(); j++) x_ref[j] = fsum[j] / static_cast<double>(usable);
@@ -705,24 +759,24 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	// Pass 2: streaming QR factor per fold. Folds: one per run when several runs are given;
 	// else whole thermal regimes of the run (FoldScheme::Regimes), or interleaved time blocks.
 	const bool by_run = runs.size() >= 2;
-	std::vector<int> regime_fold;
+	std::vector<RegimeSegment> regimes;
 	std::size_t regime_segments = 0;
 	if (!by_run && opt.fold_scheme == FoldScheme::Regimes)
 	{
-		regime_fold = regimeFolds(prep[0], opt.regime_rate_C_per_min, opt.min_regime_s, opt.max_regime_folds,
-								  opt.rate_estimator.window_s, &regime_segments);
-		if (regime_segments < 3) regime_fold.clear();  // a single soak or ramp: blocks instead
+		regimes = regimeSegments(prep[0], opt.regime_rate_C_per_min, opt.min_regime_s, opt.rate_estimator.window_s);
+		regime_segments = regimes.size();
+		if (regime_segments < 3) regimes.clear();  // a single soak or ramp: blocks instead
 	}
-	const bool by_regime = !regime_fold.empty();
+	const bool by_regime = !regimes.empty();
 	const std::size_t nfolds =
 		by_run ? runs.size() : (by_regime ? std::min(regime_segments, opt.max_regime_folds) : opt.folds);
 	FoldSet folds;
 	folds.held_out.assign(nfolds, StreamingQr(fs.termCount(), y_ref, x_ref));
-	const auto foldOf = [&](std::size_t run, std::size_t k) -> std::size_t {
+	// The fold of a usable sample at time t of run `run` (passes in time order: the regime cursor).
+	const auto foldOf = [&](std::size_t run, double t, RegimeFoldCursor& regime) -> std::size_t {
 		if (by_run) return run;
-		if (by_regime) return static_cast<std::size_t>(std::max(0, regime_fold[k]));
-		const auto& t = runs[0].time_s;
-		const double u = (t[k] - t.front()) / (t.back() - t.front() + 1e-300);
+		if (by_regime) return regime.fold(t);
+		const double u = (t - runs[0].frontTime_s()) / (runs[0].backTime_s() - runs[0].frontTime_s() + 1e-300);
 		const std::size_t nblocks = nfolds * opt.blocks_per_fold;
 		return std::min(nblocks - 1, static_cast<std::size_t>(u * static_cast<double>(nblocks))) % nfolds;
 	};
@@ -734,26 +788,26 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	for (std::size_t ri = 0; ri < prep.size(); ri++)
 	{
 		const auto& r = prep[ri];
-		const auto& t = r.s->time_s;
+		const double t_front = r.run->frontTime_s(), t_back = r.run->backTime_s();
 		RowCursor cur(r);
-		for (std::size_t k = 0; k < r.s->size(); k++)
-		{
-			if (!r.ok[k]) continue;
-			rowSignals(cur, fs, k, temp, rate, values);
+		RegimeFoldCursor regime(regimes, opt.max_regime_folds);
+		forEachSample(r, &cur, [&](const FogSeries& c, std::size_t k0, std::size_t j) {
+			if (!r.ok[k0 + j]) return;
+			rowSignals(cur, fs, c, k0, j, temp, rate, values);
 			fs.features(values.data(), f.data(), false);
-			const std::size_t fold = foldOf(ri, k);
-			const double y = r.y(k);
+			const std::size_t fold = foldOf(ri, c.time_s[j], regime);
+			const double y = r.y(c, j);
 			folds.held_out[fold].add(f.data(), y);
 			if (resample)
 			{
-				const double u = (t[k] - t.front()) / (t.back() - t.front() + 1e-300);
+				const double u = (c.time_s[j] - t_front) / (t_back - t_front + 1e-300);
 				const std::size_t b = ri * kStabilityBlocks +
 									  std::min(kStabilityBlocks - 1, static_cast<std::size_t>(u * kStabilityBlocks));
 				auto it = units.find({fold, b});
 				if (it == units.end()) it = units.emplace(std::make_pair(fold, b), StreamingQr(fs.termCount(), y_ref, x_ref)).first;
 				it->second.add(f.data(), y);
 			}
-		}
+		});
 	}
 	StreamingQr total(fs.termCount(), y_ref, x_ref);
 	for (auto& fo : folds.held_out) total.merge(fo);
@@ -977,11 +1031,26 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	Calibration cal;
 	cal.selection_stability = stability;
 	for (const auto& r : runs)
-		for (std::size_t k = 1; k < r.size(); k++) cal.rate_gaps += r.time_s[k] - r.time_s[k - 1] > opt.rate_estimator.window_s;
+	{
+		bool first_sample = true;
+		double prev_t = 0;
+		r.forEachChunk([&](const FogSeries& c, std::size_t) {
+			for (double t : c.time_s)
+			{
+				if (!first_sample) cal.rate_gaps += t - prev_t > opt.rate_estimator.window_s;
+				first_sample = false;
+				prev_t = t;
+			}
+		});
+	}
 	cal.sensor_label = first.sensor_label;
 	cal.axis = axis;
 	cal.layout = first.thermistors;
-	cal.latitude_deg = commonLatitude_deg(runs);
+	{
+		std::vector<FogSeries> headers;
+		for (const auto& r : runs) headers.push_back(r.header());
+		cal.latitude_deg = commonLatitude_deg(headers);
+	}
 	cal.preset = preset_text;
 	cal.selection = opt.selection;
 	cal.rate_estimator = opt.rate_estimator;
@@ -997,36 +1066,43 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 	}
 
 	// In-sample figures: the calibration runs through the real-time compensator (only when the
-	// model can run in real time), else through the fitted feature set directly.
-	// Columns of exact size (memory: three columns of the runs, issue 14).
-	std::size_t total_samples = 0;
-	for (const auto& r : runs) total_samples += r.size();
+	// model can run in real time), else through the fitted feature set directly. The (time, raw,
+	// compensated) rows go to a RowSpill (memory independent of the runs' length, issue 14).
+	constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 	{
-		ConcatenatedRuns all(total_samples);
+		ConcatenatedRuns all;
 		for (std::size_t ri = 0; ri < runs.size(); ri++)
 		{
 			const auto& r = prep[ri];
-			std::vector<double> bias;
+			all.beginRun(r);
+			const auto put = [&](const FogSeries& c, std::size_t k0, std::size_t j, double bias) {
+				const double y = r.y(c, j);
+				all.push(c.time_s[j], y, r.ok[k0 + j] ? y - bias : kNaN);
+			};
 			if (opt.rate_estimator.kind == "causal")
-				bias = compensatedBias_dph(cal, *r.s);
+				compensateRun(cal, *r.run,
+							  [&](const FogSeries& c, std::size_t k0, std::size_t j0, std::size_t m,
+								  const Compensator::Output* out) {
+								  for (std::size_t j = 0; j < m; j++) put(c, k0, j0 + j, out[j].bias_dph);
+							  });
 			else
 			{
-				bias.assign(r.s->size(), std::numeric_limits<double>::quiet_NaN());
 				RowCursor cur(r);
-				for (std::size_t k = 0; k < r.s->size(); k++)
-					if (r.ok[k])
+				std::vector<double> mv(cal.model.features.signals().size());
+				forEachSample(r, &cur, [&](const FogSeries& c, std::size_t k0, std::size_t j) {
+					double bias = kNaN;
+					if (r.ok[k0 + j])
 					{
-						rowSignals(cur, fs, k, temp, rate, values);
-						std::vector<double> mv(cal.model.features.signals().size());
+						rowSignals(cur, fs, c, k0, j, temp, rate, values);
 						for (std::size_t s = 0; s < mv.size(); s++)
 							for (std::size_t q = 0; q < ns; q++)
 								if (fs.signals()[q] == cal.model.features.signals()[s]) mv[s] = values[q];
-						bias[k] = cal.model.evaluate(mv.data(), cal.extrapolation);
+						bias = cal.model.evaluate(mv.data(), cal.extrapolation);
 					}
+					put(c, k0, j, bias);
+				});
 			}
-			all.append(r, opt.tau_s, [&](std::size_t k) {
-				return r.ok[k] ? r.y(k) - bias[k] : std::numeric_limits<double>::quiet_NaN();
-			});
+			all.endRun(r, opt.tau_s);
 		}
 		cal.in_sample.label = "in-sample";
 		all.figuresInto(cal.in_sample, opt.tau_s);
@@ -1043,20 +1119,30 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 			coef[fo] = solveBiasFit(train, cols, best.ridge).coef_dph;
 			has[fo] = true;
 		}
-		ConcatenatedRuns all(total_samples);
+		ConcatenatedRuns all;
 		for (std::size_t ri = 0; ri < prep.size(); ri++)
 		{
 			const auto& r = prep[ri];
+			all.beginRun(r);
 			RowCursor cur(r);
-			all.append(r, opt.tau_s, [&](std::size_t k) {
-				const std::size_t fo = foldOf(ri, k);
-				if (!r.ok[k] || !has[fo]) return std::numeric_limits<double>::quiet_NaN();
-				rowSignals(cur, fs, k, temp, rate, values);
-				fs.features(values.data(), f.data(), false);
-				double pred = 0;
-				for (std::size_t j = 0; j < cols.size(); j++) pred += coef[fo][static_cast<Eigen::Index>(j)] * f[cols[j]];
-				return r.y(k) - pred;
+			RegimeFoldCursor regime(regimes, opt.max_regime_folds);
+			forEachSample(r, &cur, [&](const FogSeries& c, std::size_t k0, std::size_t j) {
+				double comp = kNaN;
+				if (r.ok[k0 + j])
+				{
+					const std::size_t fo = foldOf(ri, c.time_s[j], regime);
+					if (has[fo])
+					{
+						rowSignals(cur, fs, c, k0, j, temp, rate, values);
+						fs.features(values.data(), f.data(), false);
+						double pred = 0;
+						for (std::size_t q = 0; q < cols.size(); q++) pred += coef[fo][static_cast<Eigen::Index>(q)] * f[cols[q]];
+						comp = r.y(c, j) - pred;
+					}
+				}
+				all.push(c.time_s[j], r.y(c, j), comp);
 			});
+			all.endRun(r, opt.tau_s);
 		}
 		cal.held_out.label = by_run      ? "held-out (leave-one-run-out, " + std::to_string(nfolds) + " runs)"
 							 : by_regime ? "held-out (leave-regime-out, " + std::to_string(regime_segments) + " regimes in " +
@@ -1069,18 +1155,29 @@ Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string
 
 FitFigures evaluateCalibration(const Calibration& cal, const FogSeries& series, const std::string& label, double tau_s)
 {
-	// The bias column alone, the compensated rate in its place (memory: two columns, issue 14).
-	CompensationCounters counters;
-	std::vector<double> comp = compensatedBias_dph(cal, series, &counters);
+	return evaluateCalibration(cal, FogRun(series), label, tau_s);
+}
+
+FitFigures evaluateCalibration(const Calibration& cal, const FogRun& run, const std::string& label, double tau_s)
+{
+	// (time, raw, compensated) rows in a RowSpill (memory independent of the run's length, issue 14).
+	const int axis = static_cast<int>(cal.axis);
+	RowSpill rows(3);
+	const CompensationCounters counters = compensateRun(
+		cal, run, [&](const FogSeries& c, std::size_t, std::size_t j0, std::size_t m, const Compensator::Output* out) {
+			for (std::size_t j = j0; j < j0 + m; j++)
+			{
+				double raw = c.rate_dph[axis][j];
+				if (!c.table_rate_dph.empty()) raw -= c.table_rate_dph[j];
+				const double comp = (c.power.empty() || c.power[j] != 0.0) ? raw - out[j - j0].bias_dph
+																		  : std::numeric_limits<double>::quiet_NaN();
+				const double row[3] = {c.time_s[j], raw, comp};
+				rows.push(row);
+			}
+		});
 	FitFigures f;
 	f.label = label;
-	std::vector<double> raw(series.rate_dph[static_cast<int>(cal.axis)]);
-	if (!series.table_rate_dph.empty())
-		for (std::size_t k = 0; k < raw.size(); k++) raw[k] -= series.table_rate_dph[k];
-	for (std::size_t k = 0; k < raw.size(); k++)
-		comp[k] = (series.power.empty() || series.power[k] != 0.0) ? raw[k] - comp[k]
-																	: std::numeric_limits<double>::quiet_NaN();
-	statsInto(f, series.time_s, raw, comp, tau_s);
+	statsInto(f, rows, tau_s);
 	f.temp_outside_samples = counters.temp_outside_samples;
 	f.rate_outside_samples = counters.rate_outside_samples;
 	f.max_temp_excursion_C = counters.max_temp_excursion_C;

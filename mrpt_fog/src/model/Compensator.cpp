@@ -460,43 +460,60 @@ Compensator::Output Compensator::stepFixed(double time_s, double raw_dph, const 
 
 namespace
 {
-/** compensate()'s loop: the series through a Compensator in chunks of rows; sink(k0, m, res)
- * receives the outputs of rows k0..k0+m-1. Returns the counters. */
+/** compensate()'s loop over a series: sink(k0, m, res) receives the outputs of rows k0..k0+m-1. */
 template <class Sink>
 CompensationCounters compensateChunks(const Calibration& cal, const FogSeries& series, Sink&& sink)
 {
-	series.validate();
-	const int axis = static_cast<int>(cal.axis);
-	if (!series.has_axis[axis])
-		throw std::invalid_argument(std::string("the log has no ") + axisLetter(cal.axis) +
-									" axis, which the calibration is for");
-	Compensator comp(cal, series.thermistors);
-	const std::size_t n = series.size();
-	// Turn-ons (only the warm-up term needs them): before the log, and 0 -> 1 power steps.
-	std::vector<std::size_t> turn_on;  // sample indices, ascending
-	if (cal.warmup)
-	{
-		comp.notePowerOnFromMetadata(series);
-		turn_on = series.turnOnSamples();
-	}
-	std::size_t next_on = 0;
-	// The batch form of step() over chunks of rows (the series stores columns).
-	const std::size_t nt = series.thermistorCount(), stride = std::max<std::size_t>(nt, 1), chunk = 4096;
-	std::vector<double> rows(chunk * stride);
-	std::vector<Compensator::Output> res(chunk);
-	for (std::size_t k0 = 0, m = 0; k0 < n; k0 += m)
-	{
-		if (next_on < turn_on.size() && turn_on[next_on] == k0) comp.notePowerOn(series.time_s[turn_on[next_on++]]);
-		m = std::min(chunk, n - k0);
-		if (next_on < turn_on.size()) m = std::min(m, turn_on[next_on] - k0);  // stop at the next turn-on
-		for (std::size_t j = 0; j < m; j++)
-			for (std::size_t i = 0; i < nt; i++) rows[j * stride + i] = series.temp_C[i][k0 + j];
-		comp.stepBatch(m, series.time_s.data() + k0, series.rate_dph[axis].data() + k0, rows.data(), stride, res.data());
-		sink(k0, m, res.data());
-	}
-	return comp.counters();
+	return compensateRun(cal, FogRun(series),
+						 [&](const FogSeries&, std::size_t k0, std::size_t j0, std::size_t m, const Compensator::Output* res) {
+							 sink(k0 + j0, m, res);
+						 });
 }
 }  // namespace
+
+CompensationCounters compensateRun(const Calibration& cal, const FogRun& run, const CompensationSink& sink)
+{
+	run.validate();
+	const FogSeries& h = run.header();
+	const int axis = static_cast<int>(cal.axis);
+	if (!h.has_axis[axis])
+		throw std::invalid_argument(std::string("the log has no ") + axisLetter(cal.axis) +
+									" axis, which the calibration is for");
+	Compensator comp(cal, h.thermistors);
+	// Turn-ons (only the warm-up term needs them): before the log, and 0 -> 1 power steps.
+	if (cal.warmup)
+	{
+		comp.notePowerOnFromMetadata(h);
+	}
+	double prev_power = 1.0;  // sample 0 is never a turn-on
+	// The batch form of step() over blocks of rows (the series stores columns).
+	const std::size_t nt = h.thermistorCount(), stride = std::max<std::size_t>(nt, 1), block = 4096;
+	std::vector<double> rows(block * stride);
+	std::vector<Compensator::Output> res(block);
+	run.forEachChunk([&](const FogSeries& c, std::size_t k0) {
+		const std::size_t n = c.size();
+		const bool warm = cal.warmup && !c.power.empty();
+		const auto turnOn = [&](std::size_t j) { return c.power[j] != 0.0 && (j > 0 ? c.power[j - 1] : prev_power) == 0.0; };
+		for (std::size_t j0 = 0, m = 0; j0 < n; j0 += m)
+		{
+			if (warm && turnOn(j0)) comp.notePowerOn(c.time_s[j0]);
+			m = std::min(block, n - j0);
+			if (warm)  // stop at the next turn-on
+				for (std::size_t j = j0 + 1; j < j0 + m; j++)
+					if (turnOn(j))
+					{
+						m = j - j0;
+						break;
+					}
+			for (std::size_t j = 0; j < m; j++)
+				for (std::size_t i = 0; i < nt; i++) rows[j * stride + i] = c.temp_C[i][j0 + j];
+			comp.stepBatch(m, c.time_s.data() + j0, c.rate_dph[axis].data() + j0, rows.data(), stride, res.data());
+			sink(c, k0, j0, m, res.data());
+		}
+		if (!c.power.empty() && n > 0) prev_power = c.power[n - 1];
+	});
+	return comp.counters();
+}
 
 CompensatedSeries compensate(const Calibration& cal, const FogSeries& series)
 {

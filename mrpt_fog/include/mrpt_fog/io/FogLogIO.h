@@ -11,9 +11,11 @@
  * intact. */
 
 #include <mrpt/obs/CObservation.h>
+#include <mrpt_fog/obs/FogRun.h>
 #include <mrpt_fog/obs/FogSeries.h>
 
 #include <cstddef>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -69,6 +71,15 @@ void writeFogCsv(const std::string& path, const FogSeries& series);
 
 /** Reads by extension: .rawlog -> readFogRawlog(path, fog_label).fog; .csv/.csv.gz -> CSV. */
 FogSeries readFogLog(const std::string& path, const std::string& fog_label = "");
+
+/** Reads a log by extension into a FogRun spilled to an unlinked temporary file (obs/FogRun.h,
+ * common/RowSpill.h): the same samples and checks as readFogLog() (the series' invariants are
+ * checked chunk by chunk), with memory that does not grow with the log; observations of other
+ * sensors are dropped. `each` (optional) sees, and may change, every sample before it is stored
+ * (e.g. the thermistor screening); it receives the sample's time and its thermistor_count
+ * temperatures. */
+FogRun readFogRun(const std::string& path, const std::string& fog_label = "",
+				  const std::function<void(double time_s, double* temp_C, std::size_t thermistor_count)>& each = {});
 
 /** Writes by extension (.rawlog or .csv/.csv.gz). */
 void writeFogLog(const std::string& path, const FogSeries& series);

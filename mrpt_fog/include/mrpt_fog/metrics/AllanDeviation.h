@@ -17,6 +17,8 @@
  * record with irregular timestamps or dropouts.
  */
 
+#include <mrpt_fog/common/RowSpill.h>
+
 #include <cstddef>
 #include <vector>
 
@@ -70,5 +72,20 @@ struct UniformRecord
 };
 UniformRecord resampleUniform(const std::vector<double>& time_s, const std::vector<double>& value,
 							  double period_s = 0, double max_gap_s = 0);
+
+
+// ---- The same for records longer than memory (issue 14): read from a RowSpill in passes. ----
+
+/** resampleUniform() of columns time_col / value_col of `rows`: the same numbers, the resampled
+ * values appended to `out` (width 1; UniformRecord::value stays empty). Memory independent of
+ * the record's length. */
+UniformRecord resampleUniform(const RowSpill& rows, std::size_t time_col, std::size_t value_col, RowSpill& out,
+							  double period_s = 0, double max_gap_s = 0);
+
+/** allanDeviation(y, tau0_s, cluster_sizes, AllanKind::Overlapping) of a record held in a RowSpill
+ * of width 1: the same numbers, bit for bit. Memory: a ring of the phase for cluster sizes up to
+ * 65 536 (2 MB), beyond that three readers of the spill per cluster size. */
+std::vector<AllanPoint> allanDeviationOverlapping(const RowSpill& y, double tau0_s,
+												  const std::vector<std::size_t>& cluster_sizes);
 
 }  // namespace mrpt_fog

@@ -26,6 +26,7 @@
  */
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace mrpt_fog
@@ -52,6 +53,18 @@ struct BiasStats
  * finite or not strictly increasing (names the sample index), or fewer than 2 windows with data
  * fit in the run ("tau longer than the run"): stability needs at least 2 averages. */
 BiasStats biasStats(const std::vector<double>& time_s, const std::vector<double>& rate_dph, double tau_s = 100.0);
+
+/** A record read in passes (issue 14: logs longer than memory): each call of a RecordPass calls
+ * the visitor with (time [s], value) for every sample, in order, the same values each time. */
+using RecordVisitor = std::function<void(double time_s, double value)>;
+using RecordPass = std::function<void(const RecordVisitor&)>;
+
+/** biasStats() of a record read in passes (four to seven passes; memory: the window averages and
+ * 65 536 counters). The same numbers, bit for bit, as the vector form, which calls it. */
+BiasStats biasStats(const RecordPass& pass, double tau_s = 100.0);
+
+/** medianSampleInterval_s() of a record read in passes (five passes, exact). */
+double medianSampleInterval_s(const RecordPass& pass);
 
 /** Median of the positive sample intervals [s] (the nominal sampling period of an irregular
  * record). Throws std::invalid_argument with fewer than 2 samples. */

@@ -18,6 +18,7 @@
  * Each returned series holds axis a alone (the other rate columns dropped), so every single-axis
  * fit (fitCalibration, fitScaleFactor, fitWarmup, evaluateCalibration) applies unchanged. */
 
+#include <mrpt_fog/obs/FogRun.h>
 #include <mrpt_fog/obs/FogSeries.h>
 
 #include <string>
@@ -47,5 +48,20 @@ std::vector<GyroAxis> commonAxes(const std::vector<FogSeries>& runs);
  * value that is not a finite number. */
 AxisRunSet runsForAxis(std::vector<FogSeries>& runs, const std::vector<std::string>& labels, GyroAxis axis,
 					   bool consume = false);
+
+/** runsForAxis() of runs read in passes (obs/FogRun.h; issue 14): the same choice and messages,
+ * each kept run a FogRun::axisView() sharing the samples (nothing copied). */
+struct AxisRunViews
+{
+	GyroAxis axis = GyroAxis::Z;
+	std::vector<FogRun> runs;
+	std::vector<std::string> labels;
+	std::vector<std::string> skipped;
+	bool earth_rate_removed = false;
+};
+AxisRunViews runsForAxis(const std::vector<FogRun>& runs, const std::vector<std::string>& labels, GyroAxis axis);
+
+/** commonAxes() of runs read in passes. */
+std::vector<GyroAxis> commonAxes(const std::vector<FogRun>& runs);
 
 }  // namespace mrpt_fog

@@ -40,6 +40,7 @@
 #include <mrpt_fog/model/ScaleFactorModel.h>
 #include <mrpt_fog/model/ThermalFeatureSet.h>
 #include <mrpt_fog/model/WarmupModel.h>
+#include <mrpt_fog/obs/FogRun.h>
 #include <mrpt_fog/obs/FogSeries.h>
 
 #include <Eigen/Dense>
@@ -269,6 +270,11 @@ struct CalibrationSet
  * model. */
 Calibration fitCalibration(const std::vector<FogSeries>& runs, const std::string& preset, const FitOptions& options = {},
 						   const std::vector<std::string>& run_labels = {});
+/** fitCalibration() over runs read in sequential passes (obs/FogRun.h: e.g. spilled to a temporary
+ * file by readFogRun()): the same numbers, with memory that does not grow with the runs' length
+ * (one bit per sample; the non-causal savgol estimator loads each run's columns). */
+Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::string& preset, const FitOptions& options = {},
+						   const std::vector<std::string>& run_labels = {});
 
 /** The latitude [deg] in the runs' `latitude_deg` metadata when every run states the same one,
  * else NaN (unknown). */
@@ -277,5 +283,7 @@ double commonLatitude_deg(const std::vector<FogSeries>& runs);
 /** Runs the compensator over a series (e.g. a validation run) and returns labelled figures. */
 FitFigures evaluateCalibration(const Calibration& cal, const FogSeries& series, const std::string& label,
 							   double tau_s = 100.0);
+/** The same over a run read in sequential passes (memory independent of its length). */
+FitFigures evaluateCalibration(const Calibration& cal, const FogRun& run, const std::string& label, double tau_s = 100.0);
 
 }  // namespace mrpt_fog

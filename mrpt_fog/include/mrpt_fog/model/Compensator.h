@@ -38,9 +38,11 @@
 
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/model/RateEstimator.h>
+#include <mrpt_fog/obs/FogRun.h>
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
@@ -190,6 +192,15 @@ struct CompensatedSeries
  * `power_on_time_s` (time_s of the turn-on that precedes or starts the log) and every 0 -> 1
  * step of its power column. */
 CompensatedSeries compensate(const Calibration& cal, const FogSeries& series);
+
+/** Receives the compensator's outputs for samples j0 .. j0 + m - 1 of `chunk` (run samples
+ * k0 + j0 ..). */
+using CompensationSink = std::function<void(const FogSeries& chunk, std::size_t k0, std::size_t j0, std::size_t m,
+											const Compensator::Output* out)>;
+
+/** compensate() over a run read chunk by chunk (obs/FogRun.h: memory independent of its length):
+ * the same numbers, passed to `sink`; returns the counters. */
+CompensationCounters compensateRun(const Calibration& cal, const FogRun& run, const CompensationSink& sink);
 
 /** The bias column of compensate() alone (the same numbers; memory: one column, for the
  * programs that only need the estimated bias), with the counters through `counters`. */
