@@ -2,6 +2,7 @@
 /* The fit and the figures over runs read in chunks from a temporary file (obs/FogRun.h, issue 14)
  * give the same numbers, bit for bit, as over the same runs in memory. */
 #include <gtest/gtest.h>
+#include <mrpt_fog/model/AxisRuns.h>
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/model/Compensator.h>
 
@@ -108,4 +109,46 @@ TEST(CalibrationStreaming, SeveralRunsBlocksAndSavgolGiveTheSameCalibration)
 	std::vector<FogRun> one;
 	one.push_back(spilled(a));
 	expectSameCalibration(fitCalibration(std::vector<FogSeries>{a}, "M2:Ti1", o), fitCalibrationRuns(one, "M2:Ti1", o));
+}
+
+// runsForAxis() on spilled runs: the same runs kept and skipped, and each kept run's samples (one
+// axis, the stated Earth rate subtracted where the gyro is on) equal the series form's.
+TEST(CalibrationStreaming, AxisViewsEqualTheSeriesRunsForAxis)
+{
+	FogSeries a = fogtest::makeCoilRun("A", 11);
+	a.has_axis = {{true, false, true}};
+	a.rate_dph[0] = a.rate_dph[2];
+	for (auto& r : a.rate_dph[0]) r = 0.5 * r - 3.0;
+	a.power.assign(a.size(), 1.0);
+	for (std::size_t k = 100; k < 200; k++) a.power[k] = 0.0;
+	a.setMetadata("earth_rate_dph.x", "7.25");
+	a.setMetadata("earth_rate_dph.z", "-1.5");
+	FogSeries b = a;  // a rate-table run turning about z: left out for x
+	b.table_rate_dph.assign(b.size(), 0.0);
+	for (std::size_t k = 5000; k < 6000; k++) b.table_rate_dph[k] = 10.0;
+	b.setMetadata("table_axis", "z");
+	std::vector<FogRun> runs;
+	runs.push_back(spilled(a));
+	runs.push_back(spilled(b));
+	for (GyroAxis ax : {GyroAxis::X, GyroAxis::Z})
+	{
+		std::vector<FogSeries> series{a, b};
+		const AxisRunSet want = runsForAxis(series, {"a", "b"}, ax);
+		const AxisRunViews got = runsForAxis(runs, {"a", "b"}, ax);
+		EXPECT_EQ(want.labels, got.labels);
+		EXPECT_EQ(want.skipped, got.skipped);
+		EXPECT_EQ(want.earth_rate_removed, got.earth_rate_removed);
+		ASSERT_EQ(want.runs.size(), got.runs.size());
+		for (std::size_t r = 0; r < want.runs.size(); r++)
+		{
+			const FogSeries loaded = got.runs[r].load();
+			EXPECT_EQ(loaded.has_axis, want.runs[r].has_axis);
+			for (int x = 0; x < 3; x++)
+			{
+				ASSERT_EQ(loaded.rate_dph[x].size(), want.runs[r].rate_dph[x].size());
+				for (std::size_t k = 0; k < loaded.rate_dph[x].size(); k++)
+					ASSERT_TRUE(same(loaded.rate_dph[x][k], want.runs[r].rate_dph[x][k])) << x << " " << k;
+			}
+		}
+	}
 }
