@@ -34,8 +34,11 @@ int main(int argc, char** argv)
 		TCLAP::MultiArg<std::string> measured("", "measured", "measured run (.rawlog, .csv, .csv.gz); give 1 or 2",
 											  true, "FILE", cmd);
 		TCLAP::ValueArg<std::string> model("", "model",
-										   "bias model to test: preset (multipoint, M1..M4[:...], points:K, "
-										   "static:P[:NAME]) or calibration YAML; refitted on the measured run",
+										   "bias model to test, built as fog-compensate runs it: a preset (multipoint, "
+										   "M1..M4[:...], points:K, terms:...) fitted on the first run with fog-calibrate's "
+										   "defaults, or a calibration YAML as is (its terms, normalisation, rate estimator, "
+										   "extrapolation); coefficients refitted on the measured run. static:P[:NAME]: a "
+										   "polynomial in one thermistor / their mean (synthetic proof trials)",
 										   false, "", "PRESET|CAL.yaml");
 		TCLAP::ValueArg<std::string> sim("", "sim", "simulator configuration to test (device, effects, free parameters, optional profile; see docs/discrepancy-sim.md); its free parameters are calibrated to the measured run. Without a profile (in SIM.yaml or the run metadata sim.profile) the simulator is driven from the log alone: power, table rate and field columns, chamber air reconstructed from the thermistors; a thermistor misfit above 0.1 C RMS is reported as the first disagreement and no bias effect is named on top of it", false, "",
 										 "SIM.yaml");
@@ -49,6 +52,12 @@ int main(int argc, char** argv)
 			"compensator (--model only)",
 			false, "", "OUT.yaml", cmd);
 		TCLAP::ValueArg<double> alpha("", "alpha", "family-wise significance level (Holm)", false, 0.005, "P", cmd);
+		TCLAP::ValueArg<std::string> scale_factor(
+			"", "scale-factor",
+			"with a preset: auto (default, as fog-calibrate) fits the scale factor versus temperature from the "
+			"first run's table segments into the model under test; off tests a bias-only calibration "
+			"(fog-calibrate --scale-factor off)",
+			false, "auto", "auto|off", cmd);
 		TCLAP::ValueArg<std::string> label("", "fog-label", "FOG sensor label in a rawlog with several", false, "",
 										   "LABEL", cmd);
 		TCLAP::SwitchArg no_screen("", "no-screening",
@@ -60,6 +69,8 @@ int main(int argc, char** argv)
 		if (measured.getValue().size() > 2)
 			throw std::runtime_error("--measured given " + std::to_string(measured.getValue().size()) +
 									 " times: at most two runs (the first is analysed, the second confirms)");
+		if (scale_factor.getValue() != "auto" && scale_factor.getValue() != "off")
+			throw std::runtime_error("--scale-factor: '" + scale_factor.getValue() + "' is not auto or off");
 		if (!(alpha.getValue() > 0 && alpha.getValue() < 0.5))
 			throw std::runtime_error("--alpha " + std::to_string(alpha.getValue()) + ": must be in (0, 0.5)");
 		if (plots.isSet())
@@ -86,6 +97,8 @@ int main(int argc, char** argv)
 		}
 		discrepancy::DiscrepancyOptions opt;
 		opt.selection.alpha = alpha.getValue();
+		opt.scale_factor = scale_factor.getValue() == "off" ? discrepancy::ScaleFactorFitting::Off
+															 : discrepancy::ScaleFactorFitting::Auto;
 		discrepancy::DiscrepancyReport rep;
 		JsonValue doc;
 		std::string text;
@@ -129,7 +142,7 @@ int main(int argc, char** argv)
 			{
 				aug = discrepancy::augmentCalibration(model.getValue(), rep.selection.named, runs[0],
 													  runs.size() == 2 ? &runs[1] : nullptr,
-													  runs.size() == 2 ? labels[1] : std::string());
+													  runs.size() == 2 ? labels[1] : std::string(), opt.scale_factor);
 			}
 			catch (const std::invalid_argument& e)
 			{

@@ -1,6 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <gtest/gtest.h>
 #include <mrpt_fog/discrepancy/BaseModelDesign.h>
+#include <mrpt_fog/model/Compensator.h>
 #include "support/SyntheticChamberRun.h"
 
 #include <cmath>
@@ -16,7 +17,7 @@ struct Fixture
 	RunSignals sig;
 	Fixture()
 	{
-		run = makeSyntheticChamberRun(30);
+		run = makeSyntheticChamberRun(10);  // the default causal estimator (order 2) needs >= 2 samples in 30 s
 		sig = computeRunSignals(run.series);
 	}
 };
@@ -36,17 +37,86 @@ TEST(BaseModelDesign, StaticPresetColumns)
 	EXPECT_NEAR(d.X(k, 3), x * x * x, 1e-12);
 }
 
-TEST(BaseModelDesign, ModelRoomPresetsResolve)
+TEST(BaseModelDesign, ModelRoomPresetsAreTheCalibrationsSelectedTerms)
 {
+	// a preset is fitted by the calibration code (fog-calibrate's defaults); its selected terms
+	// are the columns (+ constant + table nuisance)
 	Fixture f;
-	const auto mp = buildBaseDesign(resolveBaseModel("multipoint", f.run.series), f.run.series, f.sig);
-	// 4 thermistors x (5 temperature + 3 rate terms) + constant + table nuisance
-	EXPECT_EQ(mp.X.cols(), 4 * 8 + 2);
-	EXPECT_EQ(mp.max_static_order, 5);
-	const auto m2 = buildBaseDesign(resolveBaseModel("M2:Ti1", f.run.series), f.run.series, f.sig);
-	EXPECT_EQ(m2.X.cols(), 1 + 5 + 3 + 1);
-	const auto m4 = buildBaseDesign(resolveBaseModel("M4:Ti1,To1", f.run.series), f.run.series, f.sig);
-	EXPECT_EQ(m4.max_static_order, 0);
+	for (const char* preset : {"multipoint", "M2:Ti1", "M4:Ti1,To1"})
+	{
+		const auto cal = calibrationUnderTest(preset, f.run.series);
+		const auto d = buildBaseDesign(resolveBaseModel(preset, f.run.series), f.run.series, f.sig);
+		auto expected = cal.model.features.termNames();
+		expected.push_back("table_rate*1e-6");
+		EXPECT_EQ(d.names, expected) << preset;
+	}
+}
+
+TEST(BaseModelDesign, MainModelOnlyFitsTheSameMainModel)
+{
+	// the analysis skips the fallbacks and the stability refits: the main model must not change
+	Fixture f;
+	const auto full = calibrationUnderTest("M2:Ti1", f.run.series, FitScope::Full);
+	const auto main = calibrationUnderTest("M2:Ti1", f.run.series, FitScope::MainModelOnly);
+	EXPECT_EQ(full.model.features.termNames(), main.model.features.termNames());
+	ASSERT_EQ(full.model.coef_dph.size(), main.model.coef_dph.size());
+	for (std::size_t i = 0; i < full.model.coef_dph.size(); ++i)
+		EXPECT_DOUBLE_EQ(full.model.coef_dph[i], main.model.coef_dph[i]);
+	EXPECT_FALSE(full.fallbacks.empty());
+	EXPECT_TRUE(main.fallbacks.empty());
+}
+
+TEST(BaseModelDesign, ColumnsAreWhatTheCompensatorEvaluates)
+{
+	// one model path: the base columns times the calibration's coefficients are the bias the
+	// compensator computes (independent code: the compiled kernel), sample by sample, inside
+	// and outside the calibrated range (a second run 8 C warmer: tangent continuation)
+	Fixture f;
+	auto warmer = makeSyntheticChamberRun(10, 2);
+	for (auto& col : warmer.series.temp_C)
+		for (auto& v : col) v += 8.0;
+	const auto sigW = computeRunSignals(warmer.series);
+	for (const auto* run : {&f.run.series, &warmer.series})
+	{
+		const auto& sig = run == &f.run.series ? f.sig : sigW;
+		const auto cal = calibrationUnderTest("M2:Ti1", f.run.series);
+		const auto d = buildBaseDesign(resolveBaseModel("M2:Ti1", f.run.series), *run, sig);
+		const auto comp = compensate(cal, *run);
+		std::size_t checked = 0, outside = 0;
+		for (std::size_t k = 0; k < run->size(); ++k)
+		{
+			if (!std::isfinite(comp.bias_dph[k]) || !d.defined[k]) continue;
+			double b = 0;
+			for (std::size_t t = 0; t < cal.model.coef_dph.size(); ++t)
+				b += cal.model.coef_dph[t] * d.X(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(t));
+			EXPECT_NEAR(b, comp.bias_dph[k], 1e-9 * (1 + std::fabs(comp.bias_dph[k]))) << k;
+			++checked;
+			outside += comp.flags[k] != 0;
+		}
+		EXPECT_GT(checked, run->size() / 2);
+		if (run == &warmer.series) EXPECT_GT(outside, 100u);  // flagged outside the calibrated range
+	}
+}
+
+TEST(BaseModelDesign, RowsWithoutARateEstimateAreNotDefined)
+{
+	// the causal estimator has no rate before two samples in its window: the first row of the
+	// log is undefined and leaves the usable rows; every other row of this gap-free run is defined
+	Fixture f;
+	const auto d = buildBaseDesign(resolveBaseModel("M2:Ti1", f.run.series), f.run.series, f.sig);
+	ASSERT_EQ(d.defined.size(), f.run.series.size());
+	EXPECT_EQ(d.defined.front(), 0);
+	std::size_t undefined = 0, usableUndefined = 0;
+	for (std::size_t k = 0; k < d.defined.size(); ++k)
+	{
+		undefined += !d.defined[k];
+		usableUndefined += !d.defined[k] && f.sig.usable[k];
+	}
+	EXPECT_LE(undefined, 2u);
+	auto sig = f.sig;
+	EXPECT_EQ(restrictToDefinedRows(sig, d), usableUndefined);
+	for (std::size_t k = 0; k < d.defined.size(); ++k)
+		if (!d.defined[k]) EXPECT_EQ(sig.usable[k], 0) << k;
 }
 
 TEST(BaseModelDesign, BadPresetsThrow)

@@ -58,5 +58,31 @@ TEST(CalibrationAugment, NothingAddableLeavesTheCalibrationUnchanged)
 	EXPECT_EQ(aug.augmented.model.features.termNames(), aug.base.model.features.termNames());
 	EXPECT_EQ(aug.augmented.model.coef_dph, aug.base.model.coef_dph);
 	ASSERT_EQ(aug.not_written.size(), 1u);
-	EXPECT_NE(aug.not_written[0].second.find("no compensator term"), std::string::npos);
+	EXPECT_NE(aug.not_written[0].second.find("no magnetic-field input"), std::string::npos);
+}
+
+TEST(CalibrationAugment, ScaleFactorTempBecomesTheCalibrationsScaleFactorModel)
+{
+	// a bias-only calibration under test (fog-calibrate --scale-factor off) and a hidden scale
+	// factor linear in the coil's mean temperature (ratio 3): the named effect is written as the
+	// calibration's scale factor versus temperature, fitted by the scale-factor code (issue 12)
+	fogtest::LumpedCoilOptions o1, o2;
+	o2.seed = 2;
+	o1.hidden["scale_factor_temp"] = o2.hidden["scale_factor_temp"] = 3.0;
+	const auto r1 = fogtest::makeLumpedCoilRun(o1), r2 = fogtest::makeLumpedCoilRun(o2);
+	NamedEffect sf;
+	sf.id = "scale_factor_temp";
+	const auto aug = augmentCalibration("M2:Ca@3/1", {sf}, r1.series, &r2.series, "run2", ScaleFactorFitting::Off);
+	EXPECT_FALSE(aug.base.scale_factor.has_value());
+	ASSERT_TRUE(aug.augmented.scale_factor.has_value());
+	EXPECT_GE(aug.augmented.scale_factor->order(), 1u);
+	ASSERT_EQ(aug.added_terms.size(), 1u);
+	EXPECT_EQ(aug.added_terms[0].rfind("scale_factor(", 0), 0u) << aug.added_terms[0];
+	EXPECT_TRUE(aug.not_written.empty());
+	// the truth is linear in the coil's mean temperature: the slope against any thermistor has
+	// the sign of the hidden effect's (positive: (M - 25) x rate x 1e-6 x a positive scale)
+	EXPECT_GT(aug.augmented.scale_factor->slope_ppm_per_C, 0.0);
+	std::printf("through the compensator on run 2: RMS %.4f -> %.4f deg/h (noise RMS %.4f), slope %.3f ppm/C\n",
+				aug.before.rms_dph, aug.after.rms_dph, r2.noise_rms_dph, aug.augmented.scale_factor->slope_ppm_per_C);
+	EXPECT_LT(aug.after.rms_dph, aug.before.rms_dph);
 }

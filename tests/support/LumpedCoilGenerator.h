@@ -46,9 +46,10 @@
  *    turn-on, no table, no field); "short" (20 min at 25 C, a 0.4 C wiggle: too little
  *    information for any naming).
  *
- * Seeds: development and tuning used seeds 1..20 only. kHeldOutSeedFirst.. (9001..9100) were
- * kept out of tuning: the figures in docs/discrepancy-foreign.md on them were run once, at the
- * end, and reported as they came.
+ * Seeds: development and tuning used seeds 1..20. 9001..9100 were held out in session 3 and
+ * run once; after that their null failures were examined and the held-out guard rail was
+ * built on them, so they count as tuning seeds now. kHeldOutSeedFirst.. (9101..9200) are the
+ * fresh held-out block (issue 13, session 5): untouched while tuning, run once at the end.
  */
 
 #include <mrpt_fog/obs/FogSeries.h>
@@ -61,7 +62,7 @@
 namespace fogtest
 {
 constexpr std::uint64_t kTuningSeedLast = 20;  //!< seeds 1..20: development and tuning
-constexpr std::uint64_t kHeldOutSeedFirst = 9001;  //!< 9001..9100: kept out of tuning
+constexpr std::uint64_t kHeldOutSeedFirst = 9101;  //!< 9101..9200: kept out of tuning (9001..9100: used)
 constexpr std::uint64_t kHeldOutSeedCount = 100;
 
 struct LumpedCoilOptions

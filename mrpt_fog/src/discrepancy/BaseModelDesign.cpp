@@ -2,7 +2,10 @@
 #include <mrpt_fog/discrepancy/BaseModelDesign.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/ModelPreset.h>
+#include <mrpt_fog/model/RateEstimator.h>
+#include <mrpt_fog/model/ScaleFactorFit.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -18,14 +21,58 @@ bool endsWith(const std::string& s, const std::string& suffix)
 double finiteOr0(double v) { return std::isfinite(v) ? v : 0.0; }
 }  // namespace
 
-BaseModelSpec resolveBaseModel(const std::string& text, const FogSeries& run)
+Calibration calibrationUnderTest(const std::string& text, const FogSeries& run, FitScope scope, ScaleFactorFitting sf)
+{
+	if (endsWith(text, ".yaml") || endsWith(text, ".yml")) return loadCalibrationYaml(text);
+	FitOptions fo;  // fog-calibrate's defaults
+	if (scope == FitScope::MainModelOnly)
+	{
+		fo.fallbacks = false;  // one model per thermistor left out: not the main model
+		fo.stability_resamples = 0;  // refits that measure the choice's stability, not change it
+	}
+	// runs with table rates: as fog-calibrate, table samples serve the scale-factor fit, not the
+	// bias fit; when the table segments cannot support a scale-factor fit the bias-only
+	// calibration stands (fog-calibrate --scale-factor off)
+	const bool table = sf == ScaleFactorFitting::Auto && hasTableRates({run});
+	if (table) fo.table_samples = TableSamples::Exclude;
+	Calibration cal = fitCalibration({run}, text, fo);
+	if (table)
+	{
+		try
+		{
+			cal.scale_factor = fitScaleFactor({run}, cal);
+		}
+		catch (const ScaleFactorFitError&)
+		{
+		}
+	}
+	return cal;
+}
+
+BaseModelSpec resolveBaseModel(const std::string& text, const FogSeries& run, ScaleFactorFitting sf)
 {
 	BaseModelSpec s;
 	s.source = text;
-	if (endsWith(text, ".yaml") || endsWith(text, ".yml"))
+	const bool yaml = endsWith(text, ".yaml") || endsWith(text, ".yml");
+	if (!yaml && text.rfind("static:", 0) != 0)
 	{
-		const Calibration cal = loadCalibrationYaml(text);
+		parseModelPreset(text, run.thermistors);  // a bad preset is named before any fitting
+		const Calibration cal = calibrationUnderTest(text, run, FitScope::MainModelOnly, sf);
 		s.terms = cal.model.features.terms();
+		s.features = cal.model.features;
+		s.rate_estimator = cal.rate_estimator;
+		s.extrapolation = cal.extrapolation;
+		s.scale_factor = cal.scale_factor;
+		return s;
+	}
+	if (yaml)
+	{
+		const Calibration cal = calibrationUnderTest(text, run);
+		s.terms = cal.model.features.terms();
+		s.features = cal.model.features;
+		s.rate_estimator = cal.rate_estimator;
+		s.extrapolation = cal.extrapolation;
+		s.scale_factor = cal.scale_factor;
 		for (const auto& t : s.terms)
 			if (!t.constant)
 				for (const auto* name : {&t.signal.a, &t.signal.b})
@@ -59,10 +106,64 @@ BaseModelSpec resolveBaseModel(const std::string& text, const FogSeries& run)
 		s.terms = {ThermalTerm::constantTerm()};
 		return s;
 	}
-	const ModelPreset p = parseModelPreset(text, run.thermistors);
-	s.terms = presetFeatures(p).terms();
-	return s;
+	throw std::logic_error("resolveBaseModel: unreachable");
 }
+
+namespace
+{
+/** The calibration's feature columns (constant excluded) as the compensator evaluates them:
+ * its rate estimator over every sample of the log (power-off rows included: the thermistors
+ * keep logging), its normalisation, outside the calibrated range its extrapolation policy
+ * (Linear: each term z^k continued along its tangent at the edge, so that the bias, a linear
+ * combination of the columns, is continued along its tangent as BiasModel::evaluate does). */
+std::vector<std::vector<double>> compensatorColumns(const BaseModelSpec& spec, const FogSeries& run,
+													std::vector<unsigned char>& defined)
+{
+	const auto& fs = spec.features;
+	const std::size_t n = run.size(), nt = fs.thermistors().size(), ns = fs.signals().size(), nf = fs.termCount();
+	std::vector<int> colOf;
+	for (const auto& name : fs.thermistors())
+	{
+		const int i = run.thermistorIndex(name);
+		if (i < 0) throw std::invalid_argument("base model uses thermistor '" + name + "', absent from the run");
+		colOf.push_back(i);
+	}
+	const auto estimator = makeRateEstimator(spec.rate_estimator);
+	std::vector<std::vector<double>> rate_C_s(nt);
+	for (std::size_t i = 0; i < nt; ++i) rate_C_s[i] = estimator->estimate(run.time_s, run.temp_C[static_cast<std::size_t>(colOf[i])]);
+	std::vector<std::vector<double>> cols(nf, std::vector<double>(n, 0.0));
+	std::vector<double> temp(nt), r(nt), values(ns), f(nf);
+	const bool clampOrTangent = spec.extrapolation != ExtrapolationPolicy::Polynomial;
+	defined.assign(n, 1);
+	for (std::size_t k = 0; k < n; ++k)
+	{
+		for (std::size_t i = 0; i < nt; ++i)
+		{
+			temp[i] = run.temp_C[static_cast<std::size_t>(colOf[i])][k];
+			r[i] = rate_C_s[i][k];
+		}
+		fs.signalValues(temp.data(), r.data(), values.data());
+		fs.features(values.data(), f.data(), clampOrTangent);
+		if (spec.extrapolation == ExtrapolationPolicy::Linear)
+			for (std::size_t t = 1; t < nf; ++t)
+			{
+				const auto& nm = fs.normalisation()[static_cast<std::size_t>(fs.termSignal(t))];
+				const double v = values[static_cast<std::size_t>(fs.termSignal(t))];
+				const double edge = v < nm.min ? nm.min : v > nm.max ? nm.max : v;
+				if (edge == v) continue;
+				const int p = fs.terms()[t].power;
+				const double z = (edge - nm.centre) / nm.scale;
+				f[t] += p * std::pow(z, p - 1) * (v - edge) / nm.scale;
+			}
+		for (std::size_t t = 1; t < nf; ++t)
+		{
+			if (!std::isfinite(f[t])) defined[k] = 0;
+			cols[t][k] = f[t];
+		}
+	}
+	return cols;
+}
+}  // namespace
 
 BaseDesign buildBaseDesign(const BaseModelSpec& spec, const FogSeries& run, const RunSignals& sig)
 {
@@ -95,39 +196,22 @@ BaseDesign buildBaseDesign(const BaseModelSpec& spec, const FogSeries& run, cons
 		d.max_static_order = spec.static_order;
 		d.static_temp_C = T;
 	}
-	for (const auto& t : spec.terms)
+	d.defined.assign(n, 1);
+	const bool calibrationColumns = spec.static_order == 0;
+	if (calibrationColumns)
 	{
-		if (t.constant) continue;
-		const auto& sg = t.signal;
-		const std::size_t a = thermistor(sg.a);
-		std::vector<double> v(n);
-		switch (sg.kind)
+		auto fc = compensatorColumns(spec, run, d.defined);
+		const auto& fs = spec.features;
+		for (std::size_t t = 1; t < fs.termCount(); ++t)
 		{
-			case SignalKind::Temp:
-				for (std::size_t j = 0; j < n; ++j) v[j] = scaledTemp(sig.thermistor_C[a][j]);
-				break;
-			case SignalKind::Rate: v = sig.dthermistor_dt_Cpm[a]; break;
-			case SignalKind::Diff:
+			const auto& term = fs.terms()[t];
+			const bool isStatic = term.signal.kind == SignalKind::Temp;
+			add(std::move(fc[t]), term.name(), isStatic);
+			if (isStatic)
 			{
-				const std::size_t b = thermistor(sg.b);
-				for (std::size_t j = 0; j < n; ++j) v[j] = sig.thermistor_C[a][j] - sig.thermistor_C[b][j];
-				break;
+				if (d.static_temp_C.empty()) d.static_temp_C = sig.thermistor_C[thermistor(term.signal.a)];
+				d.max_static_order = std::max(d.max_static_order, term.power);
 			}
-			case SignalKind::DiffRate:
-			{
-				const std::size_t b = thermistor(sg.b);
-				for (std::size_t j = 0; j < n; ++j) v[j] = sig.dthermistor_dt_Cpm[a][j] - sig.dthermistor_dt_Cpm[b][j];
-				break;
-			}
-		}
-		std::vector<double> c(n);
-		for (std::size_t j = 0; j < n; ++j) c[j] = std::pow(finiteOr0(v[j]), t.power);
-		const bool isStatic = sg.kind == SignalKind::Temp;
-		add(std::move(c), t.name(), isStatic);
-		if (isStatic)
-		{
-			if (d.static_temp_C.empty()) d.static_temp_C = sig.thermistor_C[a];
-			d.max_static_order = std::max(d.max_static_order, t.power);
 		}
 	}
 	if (d.static_temp_C.empty()) d.static_temp_C = sig.temp_mean_C;
@@ -136,12 +220,42 @@ BaseDesign buildBaseDesign(const BaseModelSpec& spec, const FogSeries& run, cons
 		std::vector<double> c(sig.table_rate_dph);
 		for (auto& v : c) v *= 1e-6;
 		add(std::move(c), "table_rate*1e-6", false);
+		// the calibration's scale factor versus temperature, as the compensator applies it
+		// (to first order: bias + 1e-6 s_ppm(T) x rate): one column per power z^k, k >= 1
+		if (spec.scale_factor && spec.scale_factor->order() >= 1)
+		{
+			const auto& sf = *spec.scale_factor;
+			const std::size_t ti = thermistor(sf.thermistor);
+			for (std::size_t p = 1; p <= sf.order(); ++p)
+			{
+				std::vector<double> col(n);
+				for (std::size_t j = 0; j < n; ++j)
+				{
+					const double T = std::min(std::max(sig.thermistor_C[ti][j], sf.min_C), sf.max_C);
+					col[j] = sig.table_rate_dph[j] * 1e-6 * std::pow((T - sf.centre_C) / sf.scale_C, static_cast<double>(p));
+				}
+				add(std::move(col), "table_rate*1e-6*s(" + sf.thermistor + ")^" + std::to_string(p), false);
+			}
+		}
 	}
 	d.X.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(cols.size()));
 	for (std::size_t c = 0; c < cols.size(); ++c)
 		for (std::size_t j = 0; j < n; ++j)
 			d.X(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(c)) = cols[c][j];
 	return d;
+}
+
+std::size_t restrictToDefinedRows(RunSignals& sig, const BaseDesign& base)
+{
+	std::size_t removed = 0;
+	for (std::size_t k = 0; k < sig.size() && k < base.defined.size(); ++k)
+		if (!base.defined[k] && sig.usable[k])
+		{
+			sig.usable[k] = 0;
+			sig.block[k] = -1;
+			++removed;
+		}
+	return removed;
 }
 
 }  // namespace mrpt_fog::discrepancy

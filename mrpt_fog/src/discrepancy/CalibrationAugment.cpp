@@ -2,6 +2,12 @@
 #include <mrpt_fog/discrepancy/CalibrationAugment.h>
 #include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
+#include <mrpt_fog/model/ScaleFactorFit.h>
+#include <mrpt_fog/model/Compensator.h>
+#include <mrpt_fog/metrics/BiasMetrics.h>
+
+#include <cmath>
+#include <limits>
 
 #include <algorithm>
 #include <optional>
@@ -11,31 +17,71 @@ namespace mrpt_fog::discrepancy
 {
 namespace
 {
-bool endsWith(const std::string& s, const std::string& suffix)
-{
-	return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 std::string firstOnSide(const FogSeries& run, CoilSide side)
 {
 	for (const auto& t : run.thermistors)
 		if (t.side == side) return t.name;
 	return {};
 }
+/** Figures of a calibration run through the compensator on a series: evaluateCalibration (the
+ * bias column) when it has no scale-factor model; with one, the compensated rate fog-compensate
+ * outputs (bias and scale factor applied) minus the applied table rate, with the same
+ * definitions (RMS about the mean over powered samples, stability and range of tau-s averages). */
+FitFigures throughCompensator(const Calibration& cal, const FogSeries& series, const std::string& label)
+{
+	const double tau_s = 100.0;
+	if (!cal.scale_factor) return evaluateCalibration(cal, series, label, tau_s);
+	std::vector<double> comp = compensatedRate_dph(cal, series);
+	std::vector<double> raw(series.rate_dph[static_cast<int>(cal.axis)]);
+	for (std::size_t k = 0; k < raw.size(); ++k)
+	{
+		const double table = series.table_rate_dph.empty() ? 0.0 : series.table_rate_dph[k];
+		const bool on = series.power.empty() || series.power[k] != 0.0;
+		raw[k] -= table;
+		comp[k] = on ? comp[k] - table : std::numeric_limits<double>::quiet_NaN();
+	}
+	FitFigures f;
+	f.label = label;
+	f.tau_s = tau_s;
+	double sum = 0, sum2 = 0;
+	std::size_t n = 0;
+	for (double v : comp)
+		if (std::isfinite(v))
+		{
+			sum += v;
+			++n;
+		}
+	if (n == 0) return f;
+	const double mean = sum / static_cast<double>(n);
+	for (double v : comp)
+		if (std::isfinite(v)) sum2 += (v - mean) * (v - mean);
+	f.samples = n;
+	f.rms_dph = std::sqrt(sum2 / static_cast<double>(n));
+	try
+	{
+		const BiasStats cs = biasStats(series.time_s, comp, tau_s), rs = biasStats(series.time_s, raw, tau_s);
+		f.stability_dph = cs.stability_dph;
+		f.range_dph = cs.range_dph;
+		f.raw_stability_dph = rs.stability_dph;
+		f.raw_range_dph = rs.range_dph;
+		f.valid = true;
+	}
+	catch (const std::invalid_argument&)
+	{
+		f.stability_dph = f.range_dph = f.raw_stability_dph = f.raw_range_dph = std::numeric_limits<double>::quiet_NaN();
+	}
+	return f;
+}
 }  // namespace
 
-Calibration calibrationUnderTest(const std::string& text, const FogSeries& run)
-{
-	if (endsWith(text, ".yaml") || endsWith(text, ".yml")) return loadCalibrationYaml(text);
-	return fitCalibration({run}, text);
-}
-
 AugmentedCalibration augmentCalibration(const std::string& text, const std::vector<NamedEffect>& named,
-										const FogSeries& run, const FogSeries* confirm, const std::string& confirm_label)
+										const FogSeries& run, const FogSeries* confirm, const std::string& confirm_label,
+										ScaleFactorFitting sf)
 {
 	AugmentedCalibration out;
-	out.base = calibrationUnderTest(text, run);
+	out.base = calibrationUnderTest(text, run, FitScope::Full, sf);
 	std::optional<WarmupModel> warmup;
+	bool refit_scale_factor = false;
 	std::vector<std::string> terms;
 	for (const auto& n : out.base.model.features.termNames())
 		if (n != "1") terms.push_back(n);
@@ -69,6 +115,8 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 		}
 		else if (ne.id == "temp_poly_order" && p < 5)
 			for (int k = p + 1; k <= std::min(p + 2, 5); ++k) add("T(" + S + ")^" + std::to_string(k));
+		else if (ne.id == "scale_factor_temp" && hasTableRates({run}))
+			refit_scale_factor = true;
 		else if (ne.id == "warmup" && ne.theta > 0 && !run.power.empty() && run.power.front() == 0.0)
 		{
 			// calibration v2 warm-up term (the compensator adds it after each turn-on); only when
@@ -90,38 +138,66 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 						   : ne.id == "warmup"
 							   ? "the analysed run starts powered: the warm-up amplitude is not separated from the "
 								 "unknown earlier turn-on"
-						   : ne.id == "scale_factor_temp"
-							   ? "the candidate uses the mean of all thermistors, the calibration's scale-factor model "
-								 "one thermistor: fit it with fog-calibrate from rate-table runs"
+						   : ne.id == "scale_factor_temp" ? "the analysed run applies no table rate"
+						   : ne.id == "magnetic" ? "the compensator has no magnetic-field input (no field term in the calibration schema)"
 							   : "no compensator term for it in this calibration schema");
 	}
 	std::size_t thermal_added = 0;
 	for (const auto& t : out.added_terms) thermal_added += t.rfind("warmup", 0) == 0 ? 0 : 1;
-	if (thermal_added == 0)
+	// table samples left out of the bias fit exactly when the base did so (fog-calibrate)
+	const bool table = out.base.scale_factor.has_value() || (sf == ScaleFactorFitting::Auto && hasTableRates({run}));
+	if (thermal_added == 0 && !refit_scale_factor)
 		out.augmented = out.base;
 	else
 	{
 		std::string preset = "terms:";
 		bool first = true;
 		for (const auto& t : terms)
-			if (t.rfind("warmup", 0) != 0)
-			{
-				preset += (first ? "" : ";") + t;
-				first = false;
-			}
+		{
+			preset += (first ? "" : ";") + t;
+			first = false;
+		}
 		FitOptions fo;
 		fo.selection = "none";
 		fo.rate_estimator = out.base.rate_estimator;
-		out.augmented = fitCalibration({run}, preset, fo);
-		out.augmented.scale_factor = out.base.scale_factor;
+		fo.extrapolation = out.base.extrapolation;
+		if (table) fo.table_samples = TableSamples::Exclude;  // as calibrationUnderTest / fog-calibrate
+		out.augmented = thermal_added == 0 ? out.base : fitCalibration({run}, preset, fo);
+		out.augmented.scale_factor.reset();
 		out.augmented.warmup = out.base.warmup;
+		if (refit_scale_factor)
+		{
+			// the scale factor versus temperature by the calibration's own fit (ScaleFactorFit.h:
+			// table segments, thermistor and order chosen by leave-one-temperature-out error)
+			try
+			{
+				const ScaleFactorModel sf = fitScaleFactor({run}, out.augmented);
+				out.augmented.scale_factor = sf;
+				if (sf.order() == 0)
+					out.not_written.emplace_back(
+						"scale_factor_temp",
+						"the scale-factor fit (leave-one-temperature-out) chose order 0 on the analysed run's table "
+						"segments: no temperature dependence it can support (a constant scale-factor error written)");
+				else
+					out.added_terms.push_back("scale_factor(T(" + sf.thermistor + "), order " +
+											  std::to_string(sf.order()) + ", " + formatValue("%.4g", sf.slope_ppm_per_C) +
+											  " ppm/degC)");
+			}
+			catch (const ScaleFactorFitError& e)
+			{
+				out.augmented.scale_factor = out.base.scale_factor;
+				out.not_written.emplace_back("scale_factor_temp", std::string("the scale-factor fit refused: ") + e.what());
+			}
+		}
+		else
+			out.augmented.scale_factor = out.base.scale_factor;
 	}
 	if (warmup) out.augmented.warmup = *warmup;
 	if (confirm)
 	{
 		out.has_confirm = true;
-		out.before = evaluateCalibration(out.base, *confirm, confirm_label + " (calibration under test)");
-		out.after = evaluateCalibration(out.augmented, *confirm, confirm_label + " (with the added terms)");
+		out.before = throughCompensator(out.base, *confirm, confirm_label + " (calibration under test)");
+		out.after = throughCompensator(out.augmented, *confirm, confirm_label + " (with the added terms)");
 	}
 	return out;
 }

@@ -2,7 +2,7 @@
 /* lumped-coil-gen: writes a run of the second, independent test generator
  * (tests/support/LumpedCoilGenerator.h) as CSV, for integration tests and benches.
  *
- *   lumped-coil-gen -o run.csv [--profile lab|cooling|short] [--seed N] [--effect ID=RATIO]...
+ *   lumped-coil-gen -o run.csv [--profile lab|cooling|short] [--seed N] [--dt S] [--effect ID=RATIO]...
  */
 #include <mrpt_fog/io/FogLogIO.h>
 
@@ -29,6 +29,7 @@ int main(int argc, char** argv)
 			if (a == "-o") out = value();
 			else if (a == "--profile") opt.profile = value();
 			else if (a == "--seed") opt.seed = std::stoull(value());
+			else if (a == "--dt") opt.dt_s = std::stod(value());
 			else if (a == "--effect")
 			{
 				const std::string v = value();
@@ -38,7 +39,7 @@ int main(int argc, char** argv)
 			}
 			else if (a == "--help" || a == "-h")
 			{
-				std::puts("lumped-coil-gen -o OUT.csv [--profile lab|cooling|short] [--seed N] [--effect ID=RATIO]...\n"
+				std::puts("lumped-coil-gen -o OUT.csv [--profile lab|cooling|short] [--seed N] [--dt S] [--effect ID=RATIO]...\n"
 						  "A FOG chamber run from the lumped 3-node test generator (tests/support/LumpedCoilGenerator.h).");
 				return 0;
 			}

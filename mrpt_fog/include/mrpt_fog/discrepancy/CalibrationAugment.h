@@ -15,13 +15,17 @@
  *   temp_poly_order  T(S)^(p+1), T(S)^(p+2) (at most 5)
  *   warmup           the calibration's (v2) warm-up term: amplitude and tau as named, when the
  *                    analysed run starts with the gyro off (else the amplitude is not separable)
- * Effects without a compensator term (scale_factor_temp: the candidate's temperature is the
- * mean of all thermistors, the calibration's scale-factor model reads one; magnetic,
+ *   scale_factor_temp the scale factor versus temperature refitted by the calibration's own
+ *                    fit (ScaleFactorFit.h, issue 12: table segments of the analysed run,
+ *                    thermistor and order chosen by leave-one-temperature-out error) after the
+ *                    bias; when that fit keeps order 0 or refuses, it is listed as not written
+ * Effects without a compensator term (magnetic: the compensator has no field input;
  * hysteresis, thermistor_lag) are listed in `not_written` with the reason.
  * The base calibration: the YAML given, or fitCalibration(run, preset) with default options
  * (what fog-calibrate writes). The augmented one: the base's selected terms plus the added
  * ones, fitted by plain least squares on the same run (selection "none": the named terms are
- * kept), same rate estimator.
+ * kept), same rate estimator and extrapolation, table samples left out when the run has table
+ * rates (as fog-calibrate does).
  */
 
 #include <mrpt_fog/common/JsonWriter.h>
@@ -44,14 +48,11 @@ struct AugmentedCalibration
 	FitFigures before, after;  //!< confirmation run through the compensator (base / augmented)
 };
 
-/** The calibration under test: a calibration YAML (*.yaml, *.yml) loaded as is, or the preset
- * fitted on `run` with default options. Throws std::invalid_argument as fitCalibration does. */
-Calibration calibrationUnderTest(const std::string& preset_or_yaml, const FogSeries& run);
-
 /** Builds the augmented calibration for the named effects (see file comment). confirm may be
  * null (no before/after figures). Throws std::invalid_argument when the refit fails. */
 AugmentedCalibration augmentCalibration(const std::string& preset_or_yaml, const std::vector<NamedEffect>& named,
-										const FogSeries& run, const FogSeries* confirm, const std::string& confirm_label);
+										const FogSeries& run, const FogSeries* confirm, const std::string& confirm_label,
+										ScaleFactorFitting sf = ScaleFactorFitting::Auto);
 
 /** Readable lines (what was written, what not and why, the gap before/after). */
 std::string augmentedCalibrationText(const AugmentedCalibration& aug, const std::string& path);

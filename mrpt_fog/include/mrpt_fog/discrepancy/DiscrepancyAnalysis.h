@@ -24,12 +24,22 @@ struct DiscrepancyOptions
 	SegmentationOptions segmentation;
 	RunSignalsOptions signals;
 	double tau_s = 100.0;  //!< averaging time of the stability / range figures [s]
+	/** A preset's calibration: scale factor versus temperature fitted from table segments (as
+	 * fog-calibrate) or not (--scale-factor off). Ignored for a calibration YAML. */
+	ScaleFactorFitting scale_factor = ScaleFactorFitting::Auto;
 	// Information needed before anything is named ("cannot tell" otherwise):
 	double min_usable_s = 3600.0;  //!< usable (powered, thermistors known) time on the analysed run [s]
 	double min_temp_span_C = 3.0;  //!< span (1st..99th percentile) of the mean temperature [degC]
 	double min_span_quanta = 30.0;  //!< that span in thermistor quanta (coarse quantisation)
 	double min_wander_spans = 5.0;  //!< run length in correlation times of the residual's AR(1) part
 	double flag_rms_ratio = 1.5;  //!< a segment is flagged when its RMS >= this x the run's
+	/** With a confirmation run, an effect is named only when, with its coefficient from the
+	 * analysed run, it explains on the other run at least this x the RMS left there (the drop of
+	 * the residual's mean square >= this^2 x what remains): the smallest effect worth naming,
+	 * half the weakest effect-to-noise ratio the workflow is specified for (1, issue 13).
+	 * Smaller held-out parts may be real, but they are what slow bias wander, or the part of a
+	 * term a noisy rate estimate misses, leave behind. */
+	double min_held_out_effect_ratio = 0.5;
 };
 
 /** Residual figures of one run [deg/h]. Stability/range are NaN when the run holds fewer than
@@ -74,7 +84,8 @@ struct DiscrepancyReport
 	RunGap gap_confirm;
 	double tau_s = 100.0;
 	/** Significant effects NOT named, with the reason: fitted contribution larger than the raw
-	 * bias range (implausible), or a 95 % interval that includes zero. */
+	 * bias range (implausible), a 95 % interval that includes zero, or too small a held-out part
+	 * on the confirmation run (DiscrepancyOptions::min_held_out_effect_ratio). */
 	struct Rejected
 	{
 		std::string id, reason;
