@@ -4,11 +4,12 @@
  * profiles it never saw; per preset, the median and 90th percentile of held-out 100 s stability
  * divided by the device's noise floor.
  *
- *   bench_generalization [--seeds tuning|heldout|all] [--sector-coil N] [--rate-cap HZ] [--cases]
+ *   bench_generalization [--seeds tuning|heldout|final|all] [--sector-coil N] [--rate-cap HZ] [--cases]
  *                        [--extrapolation clamp|linear|polynomial] [--preset TEXT] [--extra PRESET]...
  *                        [--effects SEL] [--ideal-thermistors] [--oracle] [--rate-window S]
  *
- * Seeds 1..16 are the tuning devices, 17..24 were kept out of every tuning decision.
+ * Seeds 1..16 are the tuning devices, 17..24 were kept out of every tuning decision, 25..32
+ * ("final") out of everything until the end of issue 11 session 5 (all: 1..24).
  * --sector-coil N adds sector-coil devices 1..N (the independent generator). --cases prints every
  * device x profile x preset line; --extrapolation overrides every preset's policy; --preset
  * keeps the presets whose label contains TEXT (--exclude TEXT drops them); --extra adds a fixed preset
@@ -23,7 +24,9 @@
  * non-causal, delay-free Savitzky-Golay rate estimator instead (evaluated offline: no
  * compensator can run it), to measure what the causal estimator's delay costs;
  * --causal-order 1|2 sets the causal estimator's order (default 2; 1 = the delayed slope used
- * before issue 11's diagnosis). */
+ * before issue 11's diagnosis); --also-order1 adds every preset again with the order-1 estimator
+ * (label " o1") and --also-window S with a rate window of S seconds (label " wS"), on the same
+ * simulated runs. */
 #include "DeviceEnsemble.h"
 #include "GeneralizationBench.h"
 
@@ -45,6 +48,7 @@ int main(int argc, char** argv)
 	double rate_window_s = 0;
 	bool savgol = false;
 	int causal_order = 0;
+	std::vector<double> also_windows_s;
 	for (int i = 1; i < argc; i++)
 	{
 		const std::string a = argv[i];
@@ -78,6 +82,8 @@ int main(int argc, char** argv)
 		else if (a == "--rate-window" && i + 1 < argc) rate_window_s = std::atof(argv[++i]);
 		else if (a == "--savgol") savgol = true;
 		else if (a == "--causal-order" && i + 1 < argc) causal_order = std::atoi(argv[++i]);
+		else if (a == "--also-order1") also_windows_s.push_back(-1);
+		else if (a == "--also-window" && i + 1 < argc) also_windows_s.push_back(std::atof(argv[++i]));
 		else
 		{
 			std::fprintf(stderr, "bench_generalization: unknown argument '%s' (see the file comment)\n", a.c_str());
@@ -89,9 +95,11 @@ int main(int argc, char** argv)
 	if (which == "tuning" || which == "all") seeds = fogtest::tuningSeeds();
 	if (which == "heldout" || which == "all")
 		for (auto s : fogtest::heldOutSeeds()) seeds.push_back(s);
+	if (which == "final")
+		for (auto s : fogtest::finalSeeds()) seeds.push_back(s);
 	if (seeds.empty())
 	{
-		std::fprintf(stderr, "bench_generalization: --seeds must be tuning, heldout or all\n");
+		std::fprintf(stderr, "bench_generalization: --seeds must be tuning, heldout, final or all\n");
 		return 2;
 	}
 	for (auto s : seeds) list.push_back({fogtest::Generator::FogSim, s, cap, effects, ideal});
@@ -129,6 +137,26 @@ int main(int argc, char** argv)
 		}
 	if (causal_order > 0)
 		for (auto& p : presets) p.options.rate_estimator.poly_order = causal_order;
+	if (!also_windows_s.empty())  // the same presets again, each with another rate estimator (same simulated runs)
+	{
+		const std::size_t n = presets.size();
+		for (double w : also_windows_s)
+			for (std::size_t i = 0; i < n; i++)
+			{
+				fogtest::BenchPreset o = presets[i];
+				if (w < 0)
+				{
+					o.label += " o1";
+					o.options.rate_estimator.poly_order = 1;
+				}
+				else
+				{
+					o.label += " w" + std::to_string(static_cast<int>(w));
+					o.options.rate_estimator.window_s = w;
+				}
+				presets.push_back(o);
+			}
+	}
 	if (oracle)
 	{
 		const std::size_t n = presets.size();
@@ -146,9 +174,10 @@ int main(int argc, char** argv)
 	{
 		const auto r = fogtest::runBenchCase(c, presets, profiles);
 		all.insert(all.end(), r.begin(), r.end());
-		std::fprintf(stderr, "%s seed %llu done (%.1f Hz, %d thermistors)\n", fogtest::toString(c.generator),
+		std::fprintf(stderr, "%s seed %llu done (%.1f Hz, %d thermistors)%s%s\n", fogtest::toString(c.generator),
 					 static_cast<unsigned long long>(c.seed), r.empty() ? 0.0 : r[0].rate_hz,
-					 r.empty() ? 0 : r[0].thermistors);
+					 r.empty() ? 0 : r[0].thermistors, c.generator == fogtest::Generator::FogSim ? ": " : "",
+					 c.generator == fogtest::Generator::FogSim ? fogtest::drawDevice(c.seed).summary.c_str() : "");
 	}
 	if (cases)
 		for (const auto& r : all)

@@ -81,8 +81,14 @@ THERMISTOR SCREENING (--no-screening)
   (stuck, spike, out of range -> a dropout); rejected readings are counted in the summary.
 
 RATES
-  dT/dt from a causal local line over the trailing --window seconds (default 60; delay about
-  window/2), the same estimator fog-compensate runs in real time. --estimator savgol uses a
+  dT/dt from the causal estimator over the trailing --window seconds (default 60; order 2
+  extrapolates the slope to the newest sample), the same estimator fog-compensate runs in real
+  time. Without --window the window grows with the thermistors' reading quantum (the smallest
+  change between consecutive readings): 60 s x q / 0.01 degC, at least 60 s, at most 1200 s
+  (1/16 degC: 375 s), since a quantised reading's slope errs by about q / window. The
+  calibration records the window; fog-compensate uses it. Until a rate window covers half its
+  length (start of a log, each burst of a burst log, after a gap) the compensator uses the
+  calibration's rate-free start-up model (flag rate_free). --estimator savgol uses a
   centred Savitzky-Golay window instead (studies only: such a calibration cannot compensate in
   real time).
 
@@ -268,6 +274,10 @@ void printAxis(const AxisFit& f, double tau_s, bool validated)
 				std::printf("    %.0f %%  held-out RMS %.4g deg/h  %s\n", 100.0 * a.share, a.held_out_rms_dph,
 							a.terms.c_str());
 	}
+	if (cal.reading_quantum_C > kReferenceQuantum_C * (1 + 1e-6) && cal.rate_estimator.window_s > 60.0)
+		std::printf("  rate window %g s for the thermistors' reading quantum %g degC (60 s x q / 0.01 degC; "
+					"--window sets it)\n",
+					cal.rate_estimator.window_s, cal.reading_quantum_C);
 	if (cal.rate_gaps)
 		std::printf("  note: %zu gap(s) longer than the %g s rate window (a burst log?): temperature rates cannot "
 					"be estimated across a gap, so the samples before each restart has a rate are left out of the fit\n",
@@ -334,6 +344,8 @@ JsonValue axisJson(const AxisFit& f, double tau_s, bool validated)
 	}
 	j["extrapolation"] = toString(cal.extrapolation);
 	j["rate_gaps"] = static_cast<unsigned long>(cal.rate_gaps);
+	j["reading_quantum_C"] = cal.reading_quantum_C;
+	j["startup_model"] = cal.startup.has_value();
 	const auto& st = cal.selection_stability;
 	JsonValue& sj = j["selection_stability"] = JsonValue::object(
 		{{"resamples", static_cast<unsigned long>(st.resamples)}, {"chosen_share", st.chosen_share},
@@ -458,6 +470,7 @@ int main(int argc, char** argv)
 		opt.ridge = arg_ridge.getValue();
 		opt.rate_estimator.kind = arg_est.getValue();
 		opt.rate_estimator.window_s = arg_window.getValue();
+		opt.window_for_quantum = !arg_window.isSet();  // an explicit window is used as given
 		opt.rate_estimator.poly_order = opt.rate_estimator.kind == "savgol" ? arg_order.getValue() : arg_corder.getValue();
 		opt.folds = arg_folds.getValue();
 		opt.tau_s = arg_tau.getValue();

@@ -51,7 +51,8 @@ OUTPUT (by extension of -o)
             IMU_WX/WY/WZ [rad/s], mean temperature in IMU_TEMPERATURE) and a
             CObservationRawDAQ '<label>_THERMISTORS' (thermistors [degC], NaN = dropout).
   .csv      time_s, raw_rate_<a>_dph, bias_<a>_dph, compensated_rate_<a>_dph, flags,
-            temp_<name>_C...  flags: 1 fallback, 2 no model, 4 clamped, 8 rate warm-up.
+            temp_<name>_C...  flags: 1 fallback, 2 no model, 4 clamped, 8 rate warm-up,
+            16 rate-free start-up model (rates not yet estimable: start, burst, gap).
             With a calibration of several axes: the four columns per axis (flags_<a>).
 
 SEVERAL AXES
@@ -251,8 +252,9 @@ int main(int argc, char** argv)
 			std::printf("%sfallback model used: %zu samples; no model (>= 2 thermistors missing): %zu samples\n",
 						ind.c_str(), k.fallback_samples, k.no_model_samples);
 			std::printf("%sclamped to the calibrated range: %zu samples (%zu signal values); rate warm-up: %zu samples; "
-						"model switches: %zu\n",
-						ind.c_str(), k.clamped_samples, k.clamped_signals, k.warmup_samples, k.model_switches);
+						"rate-free start-up model: %zu samples; model switches: %zu\n",
+						ind.c_str(), k.clamped_samples, k.clamped_signals, k.warmup_samples, k.rate_free_samples,
+						k.model_switches);
 		}
 		if (reader.hasPower())
 			std::printf("  gyro off: %zu rows (bias tracked on the thermistors, no compensated sample where the rate "
@@ -275,6 +277,7 @@ int main(int argc, char** argv)
 			j["clamped_samples"] = static_cast<unsigned long>(k.clamped_samples);
 			j["clamped_signals"] = static_cast<unsigned long>(k.clamped_signals);
 			j["warmup_samples"] = static_cast<unsigned long>(k.warmup_samples);
+			j["rate_free_samples"] = static_cast<unsigned long>(k.rate_free_samples);
 			j["model_switches"] = static_cast<unsigned long>(k.model_switches);
 			j["gyro_off_rows"] = static_cast<unsigned long>(gyro_off_rows);
 			j["turn_on_events"] = static_cast<unsigned long>(turn_ons);

@@ -164,8 +164,9 @@ int main(int argc, char** argv)
 		if (comp_series)
 		{
 			const auto& k = comp_series->counters;
-			std::printf("  compensator: %zu fallback, %zu no-model, %zu clamped, %zu rate-warm-up samples\n",
-						k.fallback_samples, k.no_model_samples, k.clamped_samples, k.warmup_samples);
+			std::printf("  compensator: %zu fallback, %zu no-model, %zu clamped, %zu rate-warm-up, %zu rate-free start-up "
+						"samples\n",
+						k.fallback_samples, k.no_model_samples, k.clamped_samples, k.warmup_samples, k.rate_free_samples);
 			if (comp_series->in_sample)
 				std::printf("  * in-sample: this log is one of the calibration's runs\n");
 			std::fputs(app::outOfRangeWarning(k, comp_series->extrapolation).c_str(), stdout);
@@ -222,6 +223,7 @@ int main(int argc, char** argv)
 				j["compensated"]["no_model_samples"] = k.no_model_samples;
 				j["compensated"]["clamped_samples"] = k.clamped_samples;
 				j["compensated"]["rate_warmup_samples"] = k.warmup_samples;
+				j["compensated"]["rate_free_samples"] = k.rate_free_samples;
 				j["compensated"]["out_of_range"] = app::outOfRangeJson(k, comp_series->extrapolation);
 				j["screening"] = app::screeningJson(screening, !no_screen.getValue());
 				j["improvement"]["stability_ratio"] = raw.stats.stability_dph / comp->stats.stability_dph;

@@ -22,8 +22,8 @@ FogSeries withGap(double t0, double t1)
 }
 }  // namespace
 
-// Bound: a 10 min gap in the log is compensated without error: the rate windows restart (flag
-// RateWarmup right after the gap), every output is finite, and the 100 s stability of what is
+// Bound: a 10 min gap in the log is compensated without error: the rate windows restart (the
+// rate-free start-up model right after the gap, flag RateFree), every output is finite, and the 100 s stability of what is
 // left stays within 1.5x the gap-free run. Written and read back through CSV and rawlog, the gap
 // survives unchanged.
 TEST(TimeJumpAndGap, GapIsCompensatedAndRoundTrips)
@@ -34,10 +34,24 @@ TEST(TimeJumpAndGap, GapIsCompensatedAndRoundTrips)
 	ASSERT_NO_THROW(g.validate());
 	const CompensatedSeries c = compensate(cal, g);
 	const std::size_t k_after = faulttest::sampleAt(g, 4600.0);
-	// first sample after the gap: no rate yet (mean bias, NoModel); then RateWarmup for a while
-	EXPECT_TRUE(c.flags[k_after] & compflags::NoModel);
-	EXPECT_TRUE(c.flags[k_after + 1] & compflags::RateWarmup);
-	EXPECT_FALSE(c.flags[k_after - 1] & (compflags::RateWarmup | compflags::NoModel));
+	// after the gap: no rate yet, then a window shorter than half: the rate-free start-up model
+	// (flag RateFree), neither the mean bias nor the main model with a rate from a few samples
+	ASSERT_TRUE(cal.startup.has_value());
+	const std::uint8_t old_flags = compflags::NoModel | compflags::RateWarmup | compflags::Fallback;
+	for (std::size_t k : {k_after, k_after + 1})
+	{
+		EXPECT_TRUE(c.flags[k] & compflags::RateFree) << k;
+		EXPECT_FALSE(c.flags[k] & old_flags) << k;
+	}
+	EXPECT_FALSE(c.flags[k_after - 1] & (old_flags | compflags::RateFree));
+	// a calibration without the start-up model (a file written before it): as before, no rate
+	// yet (mean bias, NoModel), then RateWarmup for a while
+	Calibration old = cal;
+	old.startup.reset();
+	const CompensatedSeries c_old = compensate(old, g);
+	EXPECT_TRUE(c_old.flags[k_after] & compflags::NoModel);
+	EXPECT_TRUE(c_old.flags[k_after + 1] & compflags::RateWarmup);
+	EXPECT_FALSE(c_old.flags[k_after - 1] & (compflags::RateWarmup | compflags::NoModel));
 	for (double v : c.compensated_dph) ASSERT_TRUE(std::isfinite(v));
 	const double s = faulttest::stability100_dph(c);
 	std::cout << "10 min gap: stability " << s << " deg/h (" << s / s_clean << " x the gap-free " << s_clean << ")\n";
@@ -54,7 +68,8 @@ TEST(TimeJumpAndGap, GapIsCompensatedAndRoundTrips)
 }
 
 // A forward clock jump (+1 h from the middle on) is a gap to the compensator: no error, finite
-// output, the rates restart after the jump (NoModel, then RateWarmup), and the output before the jump is the untouched one.
+// output, the rates restart after the jump (the rate-free start-up model meanwhile), and the
+// output before the jump is the untouched one.
 TEST(TimeJumpAndGap, ForwardJumpIsAGap)
 {
 	const Calibration& cal = faulttest::calibration();
@@ -63,8 +78,8 @@ TEST(TimeJumpAndGap, ForwardJumpIsAGap)
 	const std::size_t k_jump = r.size() / 2;
 	for (std::size_t k = k_jump; k < j.size(); k++) j.time_s[k] += 3600.0;
 	const CompensatedSeries c = compensate(cal, j), c0 = compensate(cal, r);
-	EXPECT_TRUE(c.flags[k_jump] & compflags::NoModel);
-	EXPECT_TRUE(c.flags[k_jump + 1] & compflags::RateWarmup);
+	EXPECT_TRUE(c.flags[k_jump] & compflags::RateFree);  // the rate-free start-up model
+	EXPECT_TRUE(c.flags[k_jump + 1] & compflags::RateFree);
 	for (std::size_t k = 0; k < k_jump; k++) ASSERT_EQ(c.compensated_dph[k], c0.compensated_dph[k]);
 	for (double v : c.compensated_dph) ASSERT_TRUE(std::isfinite(v));
 }

@@ -113,6 +113,27 @@ TEST(CalibrationYaml, SelectionStabilityRoundTrips)
 	EXPECT_EQ(back.selection_stability.alternatives[0].held_out_rms_dph, 0.0123);
 }
 
+// The rate-free start-up model (issue 11) is stored in the bias section and read back exactly;
+// a calibration without one writes none and reads back without one; a start-up model that reads
+// a rate is refused with its field named.
+TEST(CalibrationYaml, StartupModelRoundTripsAndIsChecked)
+{
+	ASSERT_TRUE(cal().startup.has_value());
+	const Calibration back = calibrationFromYaml(calibrationToYaml(cal()), "cal.yaml");
+	ASSERT_TRUE(back.startup.has_value());
+	EXPECT_EQ(back.startup->coef_dph, cal().startup->coef_dph);
+	EXPECT_EQ(back.startup->features.termNames(), cal().startup->features.termNames());
+	Calibration none = cal();
+	none.startup.reset();
+	const std::string text = calibrationToYaml(none);
+	EXPECT_EQ(text.find("startup_model"), std::string::npos);
+	EXPECT_FALSE(calibrationFromYaml(text, "cal.yaml").startup.has_value());
+	Calibration bad = cal();
+	bad.startup = cal().model;  // reads dT/dt
+	const std::string e = errorOf(calibrationToYaml(bad));
+	EXPECT_NE(e.find("axes[0].bias.startup_model: reads the rate signal"), std::string::npos) << e;
+}
+
 // Every broken field gives "<file>: <field>: <reason>".
 TEST(CalibrationYaml, BadFilesGiveFieldErrors)
 {

@@ -54,18 +54,34 @@ TEST(Compensator, StreamingEqualsBatchModel)
 	const FogSeries A = fogtest::makeCoilRun("A", 51);
 	const CompensatedSeries c = compensate(calA(), A);
 	const auto ref = batchBias(calA().model, A, calA().rate_estimator);
-	std::size_t compared = 0;
+	ASSERT_TRUE(calA().startup.has_value());
+	const auto ref_startup = batchBias(*calA().startup, A, calA().rate_estimator);
+	// The rate-free start-up model until the rate window covers half its length: for regular
+	// samples dt apart, k + 1 samples span sqrt(12 var(t)) = dt sqrt((k + 1)^2 - 1).
+	const double dt = A.time_s[1] - A.time_s[0], half = 0.5 * calA().rate_estimator.window_s;
+	std::size_t compared = 0, startup = 0;
 	for (std::size_t k = 0; k < A.size(); k++)
 	{
-		if (std::isnan(ref[k])) continue;
-		ASSERT_NEAR(c.bias_dph[k], ref[k], 1e-9) << k;
+		const double n = static_cast<double>(k + 1);
+		const bool warming = k < 1000 && dt * std::sqrt(n * n - 1.0) < half * (1 - 1e-9);
+		ASSERT_EQ((c.flags[k] & compflags::RateFree) != 0, warming) << k;
 		ASSERT_EQ(c.compensated_dph[k], c.raw_dph[k] - c.bias_dph[k]);
+		if (warming)
+		{
+			ASSERT_NEAR(c.bias_dph[k], ref_startup[k], 1e-9) << k;
+			startup++;
+			continue;
+		}
+		ASSERT_NEAR(c.bias_dph[k], ref[k], 1e-9) << k;
 		compared++;
 	}
-	EXPECT_GT(compared, A.size() - 5);
+	EXPECT_GT(startup, 0u);
+	EXPECT_EQ(compared + startup, A.size());
 	EXPECT_EQ(c.counters.clamped_samples, 0u);
 	EXPECT_EQ(c.counters.fallback_samples, 0u);
-	EXPECT_EQ(c.counters.no_model_samples, 1u);  // the first sample has no rate yet
+	EXPECT_EQ(c.counters.no_model_samples, 0u);  // the first sample (no rate yet): the start-up model
+	EXPECT_EQ(c.counters.rate_free_samples, startup);
+	EXPECT_EQ(c.counters.warmup_samples, 0u);
 	// sample by sample through the class gives the same numbers as compensate()
 	Compensator comp(calA(), A.thermistors);
 	std::vector<double> temps(4);
@@ -76,9 +92,10 @@ TEST(Compensator, StreamingEqualsBatchModel)
 	}
 }
 
-// A thermistor dropout switches to its fallback model for exactly the dropout samples, the
-// output stays finite, and the main model returns with the sensor: one sample after its return
-// here, because the 600 s dropout emptied its 60 s rate window and a rate needs 2 samples.
+// A thermistor dropout switches to its fallback model for exactly the dropout samples and the
+// returning sensor's rate warm-up, the output stays finite, and the main model returns with the
+// sensor once its rate window (emptied by the 600 s dropout) covers half its length again: for
+// regular samples dt apart, m samples span dt sqrt(m^2 - 1).
 TEST(Compensator, DropoutUsesFallbackAndSwitchesBack)
 {
 	FogSeries B = fogtest::makeCoilRun("A", 52);
@@ -87,15 +104,19 @@ TEST(Compensator, DropoutUsesFallbackAndSwitchesBack)
 	for (std::size_t k = 6000; k < 6600; k++) B.temp_C[col][k] = std::nan("");
 	const CompensatedSeries c = compensate(calA(), B);
 	const auto fb = batchBias(*calA().fallbackFor(used), B, calA().rate_estimator);
+	const double dt = B.time_s[1] - B.time_s[0], half = 0.5 * calA().rate_estimator.window_s;
+	std::size_t back = 6600;
+	while (dt * std::sqrt(std::pow(static_cast<double>(back - 6600 + 1), 2) - 1.0) < half * (1 - 1e-9)) back++;
 	for (std::size_t k = 5000; k < 8000; k++)
 	{
-		const bool in = k >= 6000 && k <= 6600;
+		const bool in = k >= 6000 && k < back;
 		ASSERT_EQ((c.flags[k] & compflags::Fallback) != 0, in) << k;
 		ASSERT_TRUE(std::isfinite(c.compensated_dph[k]));
 		if (in) ASSERT_NEAR(c.bias_dph[k], fb[k], 1e-9) << k;
 	}
-	EXPECT_EQ(c.counters.fallback_samples, 601u);
-	EXPECT_EQ(c.counters.model_switches, 3u);  // none -> main at start, main -> fallback -> main
+	EXPECT_EQ(c.counters.fallback_samples, back - 6000);
+	// start-up -> main at start, main -> fallback -> main
+	EXPECT_EQ(c.counters.model_switches, 3u);
 	// two thermistors missing at once: no model, mean bias, flagged
 	const std::string other = calA().model.features.thermistors().back();
 	for (std::size_t k = 6100; k < 6200; k++) B.temp_C[B.thermistorIndex(other)][k] = std::nan("");
@@ -357,23 +378,67 @@ TEST(Compensator, HostileLogMatchesIndependentReference)
 		std::size_t clamped_signals = 0, fallback = 0, none = 0;
 		for (std::size_t k = 0; k < s.size(); k++)
 		{
-			const auto missing = [&](const std::string& n) {
+			const auto noReading = [&](const std::string& n) { return std::isnan(s.temp_C[s.thermistorIndex(n)][k]); };
+			const auto noRate = [&](const std::string& n) { return std::isnan(rate[s.thermistorIndex(n)][k]); };
+			// a rate window covering less than half its length: sqrt(12 var) of the times of the
+			// channel's valid samples in (t - window, t]
+			const auto warming = [&](const std::string& n) {
 				const int i = s.thermistorIndex(n);
-				return std::isnan(s.temp_C[i][k]) || std::isnan(rate[i][k]);
+				const double t = s.time_s[k], w = cal->rate_estimator.window_s;
+				double m1 = 0, m2 = 0, cnt = 0;
+				for (std::size_t j = k + 1; j-- > 0 && s.time_s[j] > t - w;)
+					if (!std::isnan(s.temp_C[i][j]))
+					{
+						m1 += s.time_s[j] - t;
+						m2 += (s.time_s[j] - t) * (s.time_s[j] - t);
+						cnt++;
+					}
+				if (cnt < 2) return true;
+				const double var = m2 / cnt - (m1 / cnt) * (m1 / cnt);
+				return 12.0 * var < 0.25 * w * w;
 			};
-			const auto readsMissing = [&](const BiasModel& m) {
-				for (const auto& n : m.features.thermistors())
-					if (missing(n)) return true;
+			const auto readsRate = [](const BiasModel& m, const std::string& n) {
+				for (const auto& sig : m.features.signals())
+					if ((sig.kind == SignalKind::Rate || sig.kind == SignalKind::DiffRate) && sig.references(n)) return true;
 				return false;
 			};
-			const BiasModel* m = &cal->model;
-			if (readsMissing(*m))
+			// a model lacks a thermistor whose reading it needs and is NaN, or whose rate it reads and is NaN
+			const auto lacking = [&](const BiasModel& m) {
+				for (const auto& n : m.features.thermistors())
+					if (noReading(n) || (readsRate(m, n) && noRate(n))) return n;
+				return std::string();
+			};
+			// with a start-up model, a model also waits for a rate it reads whose window covers
+			// less than half its length
+			const auto firstWarming = [&](const BiasModel& bm) {
+				if (!cal->startup) return std::string();
+				for (const auto& n : bm.features.thermistors())
+					if (readsRate(bm, n) && warming(n)) return n;
+				return std::string();
+			};
+			bool readings = true;
+			for (const auto& n : cal->model.features.thermistors()) readings &= !noReading(n);
+			// main unless it lacks a reading or rate or waits for one; else the fallback without
+			// the first thermistor it lacks (or waits for), if that fallback lacks nothing and
+			// waits for nothing; else the start-up model if every reading of the main model is
+			// there; else the main model if it lacks nothing, or that fallback if it lacks
+			// nothing (waiting); else none
+			const BiasModel* m = nullptr;
+			const std::string lack = lacking(cal->model), wait = firstWarming(cal->model);
+			if (lack.empty() && wait.empty())
+				m = &cal->model;
+			else
 			{
-				std::string first;
-				for (const auto& n : cal->model.features.thermistors())
-					if (first.empty() && missing(n)) first = n;
-				m = cal->fallbackFor(first);
-				if (m && readsMissing(*m)) m = nullptr;
+				const BiasModel* fb = cal->fallbackFor(lack.empty() ? wait : lack);
+				const bool fb_ok = fb && lacking(*fb).empty();
+				if (fb_ok && firstWarming(*fb).empty())
+					m = fb;
+				else if (cal->startup && readings && lacking(*cal->startup).empty())
+					m = &*cal->startup;
+				else if (lack.empty())
+					m = &cal->model;
+				else if (fb_ok)
+					m = fb;
 			}
 			double expected = cal->mean_bias_dph;
 			int clamped = 0;
@@ -389,11 +454,13 @@ TEST(Compensator, HostileLogMatchesIndependentReference)
 				expected = m->evaluate(v.data(), cal->extrapolation, &clamped);
 			}
 			ASSERT_NEAR(c.bias_dph[k], expected, 1e-9) << k;
-			ASSERT_EQ((c.flags[k] & compflags::Fallback) != 0, m && m != &cal->model) << k;
+			const bool is_startup = cal->startup && m == &*cal->startup;
+			ASSERT_EQ((c.flags[k] & compflags::Fallback) != 0, m && m != &cal->model && !is_startup) << k;
+			ASSERT_EQ((c.flags[k] & compflags::RateFree) != 0, is_startup) << k;
 			ASSERT_EQ((c.flags[k] & compflags::NoModel) != 0, m == nullptr) << k;
 			ASSERT_EQ((c.flags[k] & compflags::Clamped) != 0, clamped > 0) << k;
 			clamped_signals += static_cast<std::size_t>(clamped);
-			fallback += m && m != &cal->model;
+			fallback += m && m != &cal->model && !is_startup;
 			none += m == nullptr;
 		}
 		EXPECT_EQ(c.counters.clamped_signals, clamped_signals);

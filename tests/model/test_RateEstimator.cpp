@@ -100,6 +100,55 @@ TEST(RateEstimator, QuantisedRampWithinQuantisationBound)
 	for (int k = 60; k < 2000; k++) EXPECT_NEAR(r[k], -1.0 / 60, 0.005 * 3.0 / 60) << k;
 }
 
+// The order-2 (delay-compensated) estimate is 2 x the half-window slope - the whole-window
+// slope, so its quantisation error is bounded by 2 x 1.5 q / (W / 2) + 1.5 q / W = 7.5 q / W
+// (closed form, RateEstimator.h). With the window windowForQuantum_s gives for q, the bound is
+// the reference's (0.01 degC in 60 s) for 1/16 degC; 1 degC hits the 1200 s cap and keeps its own
+// bound. Ramps of 0.3 and 1 degC/min, 1 s samples, reading noise 0.003 degC before quantising.
+TEST(RateEstimator, OrderTwoQuantisationBoundWithQuantumWindow)
+{
+	const double ref_bound = 7.5 * kReferenceQuantum_C / 60.0;
+	for (const double q : {0.01, 1.0 / 256, 1.0 / 16, 1.0})
+		for (const double rate_C_per_min : {0.3, 1.0})
+		{
+			std::mt19937 rng(7);
+			std::normal_distribution<double> noise(0.0, 0.003);
+			std::vector<double> t, x;
+			for (int k = 0; k < 6000; k++)
+			{
+				t.push_back(k);
+				x.push_back(q * std::round((-10.0 + rate_C_per_min * k / 60.0 + noise(rng)) / q));
+			}
+			EXPECT_NEAR(readingQuantum_C(x), q, 1e-12) << q;
+			const double w = windowForQuantum_s(60.0, q);
+			EXPECT_DOUBLE_EQ(w, q <= 0.01 ? 60.0 : std::min(60.0 * q / 0.01, 1200.0)) << q;
+			const auto r = CausalRateEstimator(w, 2).estimate(t, x);
+			// the noise adds at most a few sigma of its own (0.003 degC, far below q for q >= 1/16)
+			const double bound = 7.5 * (q + 12 * 0.003) / w;  // error per reading <= q / 2 + 6 sigma
+			double worst = 0;
+			for (std::size_t k = static_cast<std::size_t>(w); k < t.size(); k++)
+				worst = std::max(worst, std::abs(r[k] - rate_C_per_min / 60.0));
+			EXPECT_LE(worst, bound) << "q " << q << " rate " << rate_C_per_min;
+			if (q > 0.01 && q < 1.0) EXPECT_LE(7.5 * q / w, ref_bound * (1 + 1e-12)) << q;
+		}
+}
+
+// readingQuantum_C: 0 for a constant column, NaN readings skipped, an unquantised noisy column
+// gives a change far below any quantum.
+TEST(RateEstimator, ReadingQuantumOfColumns)
+{
+	EXPECT_EQ(readingQuantum_C({}), 0.0);
+	EXPECT_EQ(readingQuantum_C({20.0, 20.0, 20.0}), 0.0);
+	const double nan = std::numeric_limits<double>::quiet_NaN();
+	EXPECT_DOUBLE_EQ(readingQuantum_C({20.0, nan, 20.5, 20.5, nan, 21.5}), 0.5);
+	std::mt19937 rng(3);
+	std::normal_distribution<double> noise(0.0, 0.003);
+	std::vector<double> x;
+	for (int k = 0; k < 1000; k++) x.push_back(20.0 + noise(rng));
+	EXPECT_LT(readingQuantum_C(x), 1e-4);
+	EXPECT_DOUBLE_EQ(windowForQuantum_s(60.0, readingQuantum_C(x)), 60.0);
+}
+
 TEST(RateEstimator, DropoutsAndGaps)
 {
 	std::vector<double> t, x;

@@ -596,9 +596,10 @@ Calibration fitCalibration(const std::vector<FogSeries>& series, const std::stri
 	return fitCalibrationRuns(runs, preset_text, opt, labels);
 }
 
-Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::string& preset_text, const FitOptions& opt,
+Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::string& preset_text, const FitOptions& opt_in,
 						   const std::vector<std::string>& labels)
 {
+	FitOptions opt = opt_in;  // the rate window may follow the thermistors' quantum (below)
 	if (runs.empty()) throw std::invalid_argument("fit: no calibration runs given");
 	opt.rate_estimator.validate();
 	if (opt.selection != "auto" && opt.selection != "none")
@@ -650,6 +651,27 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 		}
 		fs = ThermalFeatureSet(terms);
 	}
+
+	// Rate window for the thermistors' reading quantum (FitOptions::window_for_quantum).
+	double quantum_C = 0;
+	{
+		const auto& names = fs.thermistors();
+		std::vector<double> q(names.size(), std::numeric_limits<double>::infinity());
+		for (const auto& r : runs)  // one sequential pass per run
+		{
+			std::vector<ReadingQuantum> acc(names.size());
+			std::vector<std::size_t> col;
+			for (const auto& name : names) col.push_back(static_cast<std::size_t>(r.header().thermistorIndex(name)));
+			r.forEachChunk([&](const FogSeries& chunk, std::size_t) {
+				for (std::size_t i = 0; i < names.size(); i++)
+					for (const double v : chunk.temp_C[col[i]]) acc[i].add(v);
+			});
+			for (std::size_t i = 0; i < names.size(); i++) q[i] = std::min(q[i], acc[i].quantum_C());
+		}
+		for (const double qi : q)
+			if (std::isfinite(qi)) quantum_C = std::max(quantum_C, qi);
+	}
+	if (opt.window_for_quantum) opt.rate_estimator.window_s = windowForQuantum_s(opt.rate_estimator.window_s, quantum_C);
 
 	std::vector<PreparedRun> prep;
 	std::size_t usable = 0;
@@ -1054,6 +1076,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 	cal.preset = preset_text;
 	cal.selection = opt.selection;
 	cal.rate_estimator = opt.rate_estimator;
+	cal.reading_quantum_C = quantum_C;
 	cal.extrapolation = opt.extrapolation;
 	cal.mean_bias_dph = y_ref;
 	for (std::size_t i = 0; i < runs.size(); i++) cal.runs.push_back(runName(labels, i));
@@ -1063,6 +1086,35 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 		const auto& used = cal.model.features.thermistors();
 		for (std::size_t i = 0; i < used.size() && i < fallback_choices.size(); i++)
 			cal.fallbacks.push_back(makeModel(total, fs, fallback_choices[i], used[i], opt));
+	}
+
+	// Rate-free start-up model: the main model's orders with every rate signal left out, refitted
+	// (ridge by the same held-out error) on the same samples.
+	if (opt.startup_model)
+	{
+		std::vector<int> order = best.order;
+		bool reads_rates = false;
+		for (std::size_t s = 0; s < ns; s++)
+		{
+			const SignalKind kind = fs.signals()[s].kind;
+			if ((kind == SignalKind::Rate || kind == SignalKind::DiffRate) && order[s] > 0)
+			{
+				order[s] = 0;
+				reads_rates = true;
+			}
+		}
+		if (reads_rates)
+		{
+			try
+			{
+				cal.startup = makeModel(total, fs, scoreOrders(folds, fs, order, kRidgeGrid), "", opt);
+			}
+			catch (const std::invalid_argument&)
+			{
+				// cannot be fitted on these data (too few samples for its terms): the start-up is
+				// then compensated as without one (documented in Calibration::startup)
+			}
+		}
 	}
 
 	// In-sample figures: the calibration runs through the real-time compensator (only when the

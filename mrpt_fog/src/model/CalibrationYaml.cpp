@@ -489,6 +489,11 @@ void writeAxis(std::ostringstream& o, const Calibration& cal)
 		s.replace(ind.size() + 2, 2, "- ");
 		o << s;
 	}
+	if (cal.startup)  // optional (issue 11): used until the rates the main model reads are estimable
+	{
+		o << ind << "  startup_model:  # rate-free: used while the main model's rate windows cover < half their length\n";
+		writeModel(o, *cal.startup, ind + "    ");
+	}
 	if (cal.selection_stability.resamples > 0)  // optional (issue 11): how stable the term choice is
 	{
 		const auto& st = cal.selection_stability;
@@ -636,6 +641,20 @@ void readAxisFields(const Reader& rd, const yaml& n, const std::string& p, const
 			rd.fail(fp + ".dropped", "must name a thermistor of the main model");
 		if (m.features.references(m.dropped)) rd.fail(fp, "uses its own dropped thermistor '" + m.dropped + "'");
 		cal.fallbacks.push_back(std::move(m));
+	}
+	if (bias.has("startup_model"))  // optional (issue 11): the rate-free start-up model
+	{
+		const std::string up = at(bp, "startup_model");
+		BiasModel m = readModel(rd, rd.child(bias, "startup_model", bp), up);
+		checkLayout(m, up);
+		if (!m.dropped.empty()) rd.fail(up + ".dropped", "must be empty for the start-up model");
+		for (const auto& sig : m.features.signals())
+			if (sig.kind == SignalKind::Rate || sig.kind == SignalKind::DiffRate)
+				rd.fail(up, "reads the rate signal " + sig.name() + ": the start-up model must be rate-free");
+		for (const auto& name : m.features.thermistors())
+			if (!cal.model.features.references(name))
+				rd.fail(up, "uses thermistor '" + name + "', which the main model does not read");
+		cal.startup = std::move(m);
 	}
 	if (bias.has("selection_stability"))  // optional (issue 11)
 	{

@@ -71,6 +71,7 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 		(t ? b.t_lo : b.r_lo)[j] = nm.min;
 		(t ? b.t_hi : b.r_hi)[j] = nm.max;
 		c.uses |= 1u << ch;
+		if (!t) c.uses_rate |= 1u << ch;
 	}
 	for (std::size_t s = 0; s < fs.signals().size(); s++)
 	{
@@ -111,6 +112,7 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 			g.degree = std::max(g.degree, degree[s]);
 			c.uses |= 1u << g.a.back();
 			if (sig.isDifference()) c.uses |= 1u << g.b.back();
+			if (kind == SignalKind::DiffRate) c.uses_rate |= (1u << g.a.back()) | (1u << g.b.back());
 		}
 		if (g.a.empty()) continue;
 		g.p.assign(static_cast<std::size_t>(g.degree + 1) * g.a.size(), 0.0);
@@ -201,6 +203,18 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 		const BiasModel* fb = cal.fallbackFor(n);
 		has_fallback_.push_back(fb != nullptr);
 		models_.push_back(fb ? compile(*fb, names) : Compiled{});
+	}
+	if (cal.startup)
+	{
+		for (std::size_t s = 0; s < cal.startup->features.signals().size(); s++)
+		{
+			const SignalKind k = cal.startup->features.signals()[s].kind;
+			if (k == SignalKind::Rate || k == SignalKind::DiffRate)
+				throw std::invalid_argument("calibration's start-up model reads a rate (" +
+											cal.startup->features.signals()[s].name() + "): it must be rate-free");
+		}
+		startup_ = static_cast<int>(models_.size());
+		models_.push_back(compile(*cal.startup, names));
 	}
 	if (cal.scale_factor)
 	{

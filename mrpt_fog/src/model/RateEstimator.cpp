@@ -3,6 +3,7 @@
 #include <mrpt_fog/model/RateEstimator.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -57,6 +58,21 @@ void RateEstimatorSettings::validate() const
 									std::to_string(poly_order));
 	if (kind == "savgol" && (poly_order < 1 || poly_order > 4))
 		throw std::invalid_argument("rate estimator: savgol order must be 1..4, got " + std::to_string(poly_order));
+}
+
+double readingQuantum_C(const std::vector<double>& x)
+{
+	ReadingQuantum q;
+	for (const double v : x) q.add(v);
+	return q.quantum_C();
+}
+
+double windowForQuantum_s(double base_window_s, double quantum_C)
+{
+	// a quantum at the reference up to the round-off of decimal readings keeps the base exactly
+	if (!(quantum_C > kReferenceQuantum_C * (1 + 1e-6))) return base_window_s;
+	const double w = std::round(base_window_s * quantum_C / kReferenceQuantum_C);  // whole seconds
+	return std::max(base_window_s, std::min(w, kMaxQuantumWindow_s));
 }
 
 std::unique_ptr<RateEstimator> makeRateEstimator(const RateEstimatorSettings& s)

@@ -74,4 +74,11 @@ std::vector<std::uint64_t> heldOutSeeds()
 	return s;
 }
 
+std::vector<std::uint64_t> finalSeeds()
+{
+	std::vector<std::uint64_t> s;
+	for (std::uint64_t i = 25; i <= 32; i++) s.push_back(i);
+	return s;
+}
+
 }  // namespace fogtest

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 
@@ -191,7 +192,9 @@ double offlineStability_dph(const mrpt_fog::Calibration& cal, const mrpt_fog::Fo
 std::string describeTerms(const mrpt_fog::Calibration& cal)
 {
 	const auto names = cal.model.features.termNames();
-	std::string s = std::to_string(names.size()) + " terms:";
+	char w[48];
+	std::snprintf(w, sizeof w, "window %g s, ", cal.rate_estimator.window_s);
+	std::string s = w + std::to_string(names.size()) + " terms:";
 	for (std::size_t i = 1; i < names.size(); i++) s += " " + names[i];
 	return s;
 }

@@ -27,7 +27,8 @@
  *     error, by construction. Fallback for thermistor t: the nested choice without t.
  *     "none" fits every preset term (plain least squares, optional fixed ridge): the seed's way,
  *     which generalises badly on collinear thermistors;
- *  6. fallback models: for each thermistor of the model, the same selection without it;
+ *  6. fallback models: for each thermistor of the model, the same selection without it; and
+ *     the rate-free start-up model (Calibration::startup) when the main model reads rates;
  *  7. figures: in-sample (the fitted model, run through the causal compensator) and held-out
  *     (each fold predicted by the model fitted on the other folds), always labelled.
  *
@@ -91,6 +92,11 @@ enum class TableSamples : unsigned char
 struct FitOptions
 {
 	RateEstimatorSettings rate_estimator;  //!< default causal, 60 s window
+	/** Lengthen the rate window for coarsely quantised thermistors (issue 11): the window used is
+	 * windowForQuantum_s(rate_estimator.window_s, q) with q the largest reading quantum
+	 * (readingQuantum_C) of the preset's thermistors in the runs, recorded in the calibration.
+	 * false: rate_estimator.window_s as given (fog-calibrate --window sets it false). */
+	bool window_for_quantum = true;
 	std::string selection = "auto";  //!< "auto" (groups + ridge by held-out error) or "none"
 	double ridge = 0.0;  //!< fixed ridge for selection "none" (relative, unit-diagonal system)
 	std::size_t folds = 5;  //!< blocked folds when a single run is given (>= 2)
@@ -132,6 +138,8 @@ struct FitOptions
 	double min_temp_span_per_order_C = 0.5;  //!< T(a) of order k needs a span >= k x this [degC]
 	double tau_s = 100.0;  //!< averaging time of the stability figures [s]
 	bool fallbacks = true;  //!< fit one fallback model per thermistor
+	/** Fit the rate-free start-up model (Calibration::startup) when the main model reads rates. */
+	bool startup_model = true;
 	ExtrapolationPolicy extrapolation = ExtrapolationPolicy::Linear;  //!< recorded in the calibration
 	TableSamples table_samples = TableSamples::SubtractRate;
 	std::optional<GyroAxis> axis;  //!< the gyro axis to calibrate (default: the runs' first axis)
@@ -239,6 +247,15 @@ struct Calibration
 	ExtrapolationPolicy extrapolation = ExtrapolationPolicy::Linear;  //!< outside the calibrated range
 	BiasModel model;
 	std::vector<BiasModel> fallbacks;  //!< one per thermistor of the model
+	/** Rate-free start-up model (issue 11): the main model's temperature (and difference)
+	 * terms refitted without any rate signal. The compensator uses it while a rate the main
+	 * model reads is not yet estimable or its window covers less than half its length (the
+	 * start of a log, each burst of a burst log, after a gap longer than the window), instead
+	 * of the main model with a rate from a few samples (at 1 kHz two samples 1 ms apart and a
+	 * 0.01 degC quantum give 10 degC/s). Absent: the main model has no rate term, or a file
+	 * written before it existed (then the warm-up is compensated as before: fallback / mean
+	 * bias until 2 samples, then the main model, flagged RateWarmup). */
+	std::optional<BiasModel> startup;
 	double mean_bias_dph = 0.0;  //!< used when no model applies (>= 2 thermistors missing)
 	std::vector<std::string> runs;  //!< labels of the calibration runs
 	FitFigures in_sample, held_out, validation;
@@ -249,6 +266,10 @@ struct Calibration
 	 * estimated across a gap, so each restart's first samples (no rate yet) are left out of the
 	 * fit. Reported by fog-calibrate; not stored in the file. */
 	std::size_t rate_gaps = 0;
+	/** The largest reading quantum of the model's thermistors in the runs [degC]
+	 * (readingQuantum_C; 0 = unquantised or not measured), which set the rate window when
+	 * FitOptions::window_for_quantum. Reported by fog-calibrate; not stored in the file. */
+	double reading_quantum_C = 0;
 
 	/** Fallback model for a missing thermistor, or nullptr. */
 	const BiasModel* fallbackFor(const std::string& thermistor) const;

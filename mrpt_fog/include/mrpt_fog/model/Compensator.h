@@ -28,7 +28,13 @@
  *    policy (Calibration.h: clamp, or the default linear continuation along the edge tangent;
  *    flag Clamped, counted with the largest excursion seen): a polynomial of order > 1 is never
  *    extrapolated as such. The kernel clamps; the linear part is added on the rare path.
- *  - RateWarmup: some rate window covers less than half its length (start, after a gap).
+ *  - start-up (issue 11): while a rate the main model reads is not yet estimable or its window
+ *    covers less than half its length (start of the log, each burst, after a gap), the
+ *    calibration's rate-free start-up model is used when it has one and every temperature it
+ *    reads is present (flag RateFree, Output::model kStartupModel). A model that reads no
+ *    rate never waits for one: a missing rate is "missing" only for a model that reads it.
+ *  - RateWarmup: the model in use reads a rate whose window covers less than half its length
+ *    (calibrations without a start-up model, or a fallback during a dropout).
  * Batch compensate() is exactly the streaming loop, so batch == streaming by construction; the
  * tests also check it against an independent evaluation of the fitted feature set.
  *
@@ -56,6 +62,9 @@ constexpr std::uint8_t Fallback = 1;
 constexpr std::uint8_t NoModel = 2;
 constexpr std::uint8_t Clamped = 4;
 constexpr std::uint8_t RateWarmup = 8;
+/** The rate-free start-up model (Calibration::startup) is in use: a rate the main model reads is
+ * not yet estimable or its window covers less than half its length (start, burst, gap). */
+constexpr std::uint8_t RateFree = 16;
 }  // namespace compflags
 
 struct CompensationCounters
@@ -70,6 +79,7 @@ struct CompensationCounters
 	double max_temp_excursion_C = 0;  //!< largest distance of a temperature/difference beyond its range [degC]
 	double max_rate_excursion_C_per_s = 0;  //!< largest distance of a rate beyond its range [degC/s]
 	std::size_t warmup_samples = 0;
+	std::size_t rate_free_samples = 0;  //!< samples compensated by the rate-free start-up model
 	std::size_t model_switches = 0;  //!< changes of the model in use
 };
 
@@ -85,6 +95,8 @@ enum class KernelBuild
 class Compensator
 {
    public:
+	/** Output::model while the rate-free start-up model is in use. */
+	static constexpr int kStartupModel = -2;
 	/** layout: the thermistors of the series to be compensated, in its column order. */
 	Compensator(const Calibration& cal, const std::vector<ThermistorInfo>& layout, KernelBuild build = KernelBuild::Auto);
 	~Compensator();
@@ -98,7 +110,7 @@ class Compensator
 		double bias_dph = 0;
 		double compensated_dph = 0;
 		std::uint8_t flags = 0;
-		int model = 0;  //!< 0 main, 1 + i fallback i, -1 no model
+		int model = 0;  //!< 0 main, 1 + i fallback i, -1 no model, kStartupModel the rate-free start-up model
 	};
 	/** One sample: time [s] strictly increasing, raw gyro rate [deg/h], temperatures [degC] in
 	 * layout order (NaN = dropout). */
@@ -160,6 +172,7 @@ class Compensator
 	bool same_order_ = false;  // channel_col_[c] == c for every tracked channel
 	std::vector<Compiled> models_;  // [0] main, [1 + c] fallback without channel c (may be empty)
 	std::vector<bool> has_fallback_;
+	int startup_ = -1;  // index of the start-up model in models_, -1 none
 	CausalRateTracker tracker_;
 	bool delay_comp_ = false;  // causal estimator of order 2
 	CausalRateTracker half_tracker_;  // the last half window (order 2 only)

@@ -71,6 +71,46 @@ class RateEstimator
 	virtual std::vector<double> estimate(const std::vector<double>& time_s, const std::vector<double>& x) const = 0;
 };
 
+/** Reading quantum of a temperature column [degC]: the smallest change between consecutive
+ * valid readings (changes below 1e-9 degC ignored). A quantised thermistor changes by whole
+ * quanta (0.01, 1/16, 1 degC); unquantised noisy readings give a small value. 0 when the column
+ * never changes. O(1) memory. */
+double readingQuantum_C(const std::vector<double>& x);
+
+/** readingQuantum_C() fed one reading at a time (logs read in chunks): the same number. */
+class ReadingQuantum
+{
+   public:
+	void add(double x_C)
+	{
+		if (!std::isfinite(x_C)) return;
+		const double d = std::abs(x_C - prev_);
+		if (d > 1e-9 && d < q_) q_ = d;  // NaN prev_: false
+		prev_ = x_C;
+	}
+	/** [degC]; 0 when no two valid readings differ. */
+	double quantum_C() const { return std::isfinite(q_) ? q_ : 0.0; }
+
+   private:
+	double prev_ = std::numeric_limits<double>::quiet_NaN();
+	double q_ = std::numeric_limits<double>::infinity();
+};
+
+/** Quantum at which the default 60 s window was designed (0.01 degC; the seed's chamber logs). */
+constexpr double kReferenceQuantum_C = 0.01;
+/** Longest window windowForQuantum_s() gives [s]: the coil-housing time constants are 15-50 min,
+ * a longer window no longer follows the rates the bias responds to. */
+constexpr double kMaxQuantumWindow_s = 1200.0;
+
+/** The rate window for readings of quantum `quantum_C` (issue 11): the quantisation error of a
+ * window's slope is bounded by about 1.5 q / window (7.5 q / window for the delay-compensated
+ * order 2: its half-window slope counts twice), so the window grows in proportion to the
+ * quantum to keep the bound of the reference (`base_window_s` at kReferenceQuantum_C):
+ * base x max(1, q / 0.01 degC) rounded to whole seconds, at most kMaxQuantumWindow_s (never
+ * below base; a quantum within 1e-6 of the reference, decimal round-off, keeps base exactly). A 1/16 degC
+ * thermistor gets 375 s for a 60 s base; 0.01 and 1/256 degC keep the base. */
+double windowForQuantum_s(double base_window_s, double quantum_C);
+
 /** Builds the estimator named by settings (validated first; throws std::invalid_argument). */
 std::unique_ptr<RateEstimator> makeRateEstimator(const RateEstimatorSettings& settings);
 

@@ -46,7 +46,8 @@ struct Compensator::Compiled
 	std::vector<EdgeSignal> edges;
 	std::vector<kernel::KernelBlock> kernel;
 	std::vector<SignalGroup> groups;  // differences and their rates
-	std::uint32_t uses = 0;  // bit mask of the channels the model reads
+	std::uint32_t uses = 0;  // bit mask of the channels the model reads (temperature or rate)
+	std::uint32_t uses_rate = 0;  // the channels whose rate (or a difference's rate) it reads
 };
 
 template <std::size_t NB, int W>
@@ -92,8 +93,8 @@ template <std::size_t NC, int W>
 		for (std::size_t c = 0; c < nc; c++) all += T[c] + rate_[c];
 		any_nan = std::isnan(all);
 	}
-	std::uint32_t missing = 0;
-	if (any_nan)  // dropout (rare): zero the missing channels, never read by the model in use
+	std::uint32_t missing_t = 0, missing_r = 0;  // channels without a reading / without a rate
+	if (any_nan)  // dropout or no rate yet (rare): zero what is missing, never read by the model in use
 	{
 		if (T != temp_.data())
 		{
@@ -101,22 +102,42 @@ template <std::size_t NC, int W>
 			T = temp_.data();
 		}
 		for (std::size_t c = 0; c < nc; c++)
-			if (std::isnan(temp_[c]) || std::isnan(rate_[c]))
+		{
+			if (std::isnan(temp_[c]))
 			{
-				missing |= 1u << c;
-				temp_[c] = rate_[c] = 0.0;
+				missing_t |= 1u << c;
+				temp_[c] = 0.0;
 			}
+			if (std::isnan(rate_[c]))
+			{
+				missing_r |= 1u << c;
+				rate_[c] = 0.0;
+			}
+		}
 	}
-	// Main model unless it reads a missing channel; then the fallback without that channel if
-	// it reads no other missing channel; else none.
+	const auto lacks = [&](const Compiled& m) { return (missing_t & m.uses) | (missing_r & m.uses_rate); };
+	// With a start-up model, a rate window covering less than half its length counts as lacking
+	// too (a rate from a few samples); without one the model is used with it (flag RateWarmup).
+	const std::uint32_t warming = startup_ >= 0 ? short_span : 0;
+	// Main model unless it lacks a reading or a rate; else the fallback without the first channel
+	// it lacks, if that fallback lacks nothing; else the rate-free start-up model if every reading
+	// of the main model is there; else the main or that fallback with warming rates; else none.
 	int model = -1;
-	if ((missing & models_[0].uses) == 0)
+	const std::uint32_t lack_main = lacks(models_[0]), warm_main = warming & models_[0].uses_rate;
+	if ((lack_main | warm_main) == 0)
 		model = 0;
 	else
 	{
-		const std::uint32_t need = missing & models_[0].uses;
-		const int c = __builtin_ctz(need);
-		if (has_fallback_[c] && (missing & models_[1 + c].uses) == 0) model = 1 + c;
+		const int c = __builtin_ctz(lack_main ? lack_main : warm_main);
+		const bool fb_ok = has_fallback_[c] && lacks(models_[1 + c]) == 0;
+		if (fb_ok && (warming & models_[1 + c].uses_rate) == 0)
+			model = 1 + c;
+		else if (startup_ >= 0 && (missing_t & models_[0].uses) == 0 && lacks(models_[startup_]) == 0)
+			model = startup_;
+		else if (lack_main == 0)
+			model = 0;
+		else if (fb_ok)
+			model = 1 + c;
 	}
 	Output out;
 	int clamped = 0;
@@ -124,12 +145,13 @@ template <std::size_t NC, int W>
 	if (model >= 0)
 	{
 		out.bias_dph = evaluate<NB, W>(models_[model], T, clamped);
-		warm = (short_span & models_[model].uses) != 0;
+		warm = (short_span & models_[model].uses_rate) != 0;
 	}
 	else
 		out.bias_dph = mean_bias_dph_;
+	const bool rate_free = model == startup_ && startup_ >= 0;
 	out.compensated_dph = raw_dph - out.bias_dph;
-	out.model = model;
+	out.model = rate_free ? kStartupModel : model;
 	counters_.samples++;
 	if (model != last_model_)
 	{
@@ -147,11 +169,13 @@ template <std::size_t NC, int W>
 		out.bias_dph += outsideRange(models_[model], T);
 		out.compensated_dph = raw_dph - out.bias_dph;
 	}
-	if (model > 0) out.flags |= compflags::Fallback;
+	if (model > 0 && !rate_free) out.flags |= compflags::Fallback;
+	if (rate_free) out.flags |= compflags::RateFree;
 	if (model < 0) out.flags |= compflags::NoModel;
 	if (clamped) out.flags |= compflags::Clamped;
 	if (warm) out.flags |= compflags::RateWarmup;
-	counters_.fallback_samples += model > 0;
+	counters_.fallback_samples += model > 0 && !rate_free;
+	counters_.rate_free_samples += rate_free;
 	counters_.no_model_samples += model < 0;
 	counters_.clamped_samples += clamped > 0;
 	counters_.clamped_signals += static_cast<std::size_t>(clamped);
