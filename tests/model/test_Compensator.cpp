@@ -92,10 +92,10 @@ TEST(Compensator, StreamingEqualsBatchModel)
 	}
 }
 
-// A thermistor dropout switches to its fallback model for exactly the dropout samples and the
-// returning sensor's rate warm-up, the output stays finite, and the main model returns with the
-// sensor once its rate window (emptied by the 600 s dropout) covers half its length again: for
-// regular samples dt apart, m samples span dt sqrt(m^2 - 1).
+// A thermistor dropout switches to its fallback model for exactly the dropout samples, the
+// output stays finite, then the rate-free start-up model runs while the returning sensor's rate
+// window (emptied by the 600 s dropout) covers less than half its length, and the main model
+// returns after that: for regular samples dt apart, m samples span dt sqrt(m^2 - 1).
 TEST(Compensator, DropoutUsesFallbackAndSwitchesBack)
 {
 	FogSeries B = fogtest::makeCoilRun("A", 52);
@@ -109,14 +109,15 @@ TEST(Compensator, DropoutUsesFallbackAndSwitchesBack)
 	while (dt * std::sqrt(std::pow(static_cast<double>(back - 6600 + 1), 2) - 1.0) < half * (1 - 1e-9)) back++;
 	for (std::size_t k = 5000; k < 8000; k++)
 	{
-		const bool in = k >= 6000 && k < back;
+		const bool in = k >= 6000 && k < 6600;
 		ASSERT_EQ((c.flags[k] & compflags::Fallback) != 0, in) << k;
+		ASSERT_EQ((c.flags[k] & compflags::RateFree) != 0, k >= 6600 && k < back) << k;
 		ASSERT_TRUE(std::isfinite(c.compensated_dph[k]));
 		if (in) ASSERT_NEAR(c.bias_dph[k], fb[k], 1e-9) << k;
 	}
-	EXPECT_EQ(c.counters.fallback_samples, back - 6000);
-	// start-up -> main at start, main -> fallback -> main
-	EXPECT_EQ(c.counters.model_switches, 3u);
+	EXPECT_EQ(c.counters.fallback_samples, 600u);
+	// start-up -> main at start, main -> fallback -> start-up -> main
+	EXPECT_EQ(c.counters.model_switches, 4u);
 	// two thermistors missing at once: no model, mean bias, flagged
 	const std::string other = calA().model.features.thermistors().back();
 	for (std::size_t k = 6100; k < 6200; k++) B.temp_C[B.thermistorIndex(other)][k] = std::nan("");
@@ -418,27 +419,23 @@ TEST(Compensator, HostileLogMatchesIndependentReference)
 			};
 			bool readings = true;
 			for (const auto& n : cal->model.features.thermistors()) readings &= !noReading(n);
-			// main unless it lacks a reading or rate or waits for one; else the fallback without
-			// the first thermistor it lacks (or waits for), if that fallback lacks nothing and
-			// waits for nothing; else the start-up model if every reading of the main model is
-			// there; else the main model if it lacks nothing, or that fallback if it lacks
-			// nothing (waiting); else none
+			// main unless it lacks a reading or rate or waits for one; else, when every reading of
+			// the main model is there, the start-up model; else the fallback without the first
+			// thermistor it lacks (or waits for) if that fallback lacks nothing; else the main
+			// model if it lacks nothing (waiting); else none
 			const BiasModel* m = nullptr;
 			const std::string lack = lacking(cal->model), wait = firstWarming(cal->model);
 			if (lack.empty() && wait.empty())
 				m = &cal->model;
+			else if (cal->startup && readings && lacking(*cal->startup).empty())
+				m = &*cal->startup;
 			else
 			{
 				const BiasModel* fb = cal->fallbackFor(lack.empty() ? wait : lack);
-				const bool fb_ok = fb && lacking(*fb).empty();
-				if (fb_ok && firstWarming(*fb).empty())
+				if (fb && lacking(*fb).empty())
 					m = fb;
-				else if (cal->startup && readings && lacking(*cal->startup).empty())
-					m = &*cal->startup;
 				else if (lack.empty())
 					m = &cal->model;
-				else if (fb_ok)
-					m = fb;
 			}
 			double expected = cal->mean_bias_dph;
 			int clamped = 0;

@@ -119,25 +119,23 @@ template <std::size_t NC, int W>
 	// With a start-up model, a rate window covering less than half its length counts as lacking
 	// too (a rate from a few samples); without one the model is used with it (flag RateWarmup).
 	const std::uint32_t warming = startup_ >= 0 ? short_span : 0;
-	// Main model unless it lacks a reading or a rate; else the fallback without the first channel
-	// it lacks, if that fallback lacks nothing; else the rate-free start-up model if every reading
-	// of the main model is there; else the main or that fallback with warming rates; else none.
+	// Main model unless it lacks a reading or a rate (or, with a start-up model, waits for one);
+	// else, when every reading it needs is there (only rates lack), the rate-free start-up model;
+	// else the fallback without the first channel it lacks, if that fallback lacks nothing (its
+	// rates may still be warming up: flagged); else the main model with warming rates; else none.
 	int model = -1;
 	const std::uint32_t lack_main = lacks(models_[0]), warm_main = warming & models_[0].uses_rate;
 	if ((lack_main | warm_main) == 0)
 		model = 0;
+	else if (startup_ >= 0 && (missing_t & models_[0].uses) == 0 && lacks(models_[startup_]) == 0)
+		model = startup_;
 	else
 	{
 		const int c = __builtin_ctz(lack_main ? lack_main : warm_main);
-		const bool fb_ok = has_fallback_[c] && lacks(models_[1 + c]) == 0;
-		if (fb_ok && (warming & models_[1 + c].uses_rate) == 0)
+		if (has_fallback_[c] && lacks(models_[1 + c]) == 0)
 			model = 1 + c;
-		else if (startup_ >= 0 && (missing_t & models_[0].uses) == 0 && lacks(models_[startup_]) == 0)
-			model = startup_;
 		else if (lack_main == 0)
 			model = 0;
-		else if (fb_ok)
-			model = 1 + c;
 	}
 	Output out;
 	int clamped = 0;
