@@ -42,8 +42,9 @@ Outcome calibrateAndEvaluate(const SectorCoilParams& p, const FitOptions& o)
 // give the same model and the same held-out figure at every rate. Measured (device 1): held-out /
 // floor 1.003 / 1.021 / 1.049 / 1.058 at 0.1 / 1 / 10 / 100 Hz, the same terms at 10 and 100 Hz,
 // T^2 (0.1 Hz) and T^2, T^3 (1 Hz) added at the low rates: the same figure, not the same
-// terms (a miss of "same model", reported). Asserted: 10 and 100 Hz the same terms, every
-// held-out ratio within 25 % of the 10 Hz one.
+// terms. Asserted: what the requirement says (the same terms at 1, 10 and 100 Hz; every held-out
+// ratio within 25 % of the 10 Hz one), so this test FAILS today on the 1 Hz terms: a known miss
+// (docs/generalization.md), kept red rather than relaxed to what held.
 TEST(LabData, SectorCoilSampleRatesGiveTheSameModel)
 {
 	SectorCoilParams p = drawSectorCoil(1);
@@ -59,6 +60,7 @@ TEST(LabData, SectorCoilSampleRatesGiveTheSameModel)
 		std::printf("  %6.1f Hz: window %g s, held-out / floor on B %.3f, terms %s\n", hz, r.back().window_s,
 					r.back().ratio, r.back().terms.c_str());
 	}
+	EXPECT_EQ(r[1].terms, r[2].terms);
 	EXPECT_EQ(r[3].terms, r[2].terms);
 	for (std::size_t i = 1; i < r.size(); i++) EXPECT_NEAR(r[i].ratio, r[2].ratio, 0.25 * r[2].ratio) << rates[i];
 }
@@ -68,7 +70,8 @@ TEST(LabData, SectorCoilSampleRatesGiveTheSameModel)
 // the rate-free model (multipoint@3/0, selection none). Measured (device 1, 1 Hz): 0.01 C 1.021,
 // 1/256 C 1.036 (window 60 s both ways); 1/16 C default (375 s) 1.106 vs fixed 60 s 1.064 (4 %
 // worse: a miss on this one-thermistor device); 1 C default (1200 s) 2.06 vs fixed 7.94 vs
-// rate-free 9.08. Asserted: at 1 degC the default is better than the fixed window.
+// rate-free 9.08. Asserted: with 1/16 and 1 degC quanta the default is no worse than the fixed
+// window (2 %), so this test FAILS today at 1/16 C (4 % worse): a known miss, kept red.
 TEST(LabData, SectorCoilQuantisedThermistors)
 {
 	SectorCoilParams p = drawSectorCoil(1);
@@ -88,6 +91,6 @@ TEST(LabData, SectorCoilQuantisedThermistors)
 						  biasStats(floor.time_s, floor.primaryRate_dph(), 100.0).stability_dph;
 		std::printf("  quantum %.4g C: default (window %g s) %.3f, fixed 60 s %.3f, rate-free @3/0 %.3f\n", q, a.window_s,
 					a.ratio, b.ratio, rf);
-		if (q >= 1.0) EXPECT_LT(a.ratio, b.ratio) << q;
+		if (q >= 1.0 / 16) EXPECT_LE(a.ratio, b.ratio * 1.02) << q;
 	}
 }
