@@ -9,6 +9,23 @@
 
 namespace mrpt_fog
 {
+namespace
+{
+/** Samples of a uniform resample at period_s over a gap-free segment of length segment_s
+ * holding finite_samples samples; refuses a period that would multiply the samples (irregular
+ * timestamps). */
+std::size_t uniformSampleCount(double segment_s, double period_s, std::size_t finite_samples)
+{
+	const double count_d = std::floor(segment_s / period_s + 1e-9) + 1;
+	if (count_d > 4 * static_cast<double>(finite_samples) + 16)
+		throw std::invalid_argument("resampleUniform: a period of " + std::to_string(period_s) + " s would turn " +
+									std::to_string(finite_samples) + " samples into " +
+									std::to_string(static_cast<long long>(count_d)) +
+									": the timestamps are too irregular for a uniform resample");
+	return static_cast<std::size_t>(count_d);
+}
+}  // namespace
+
 std::vector<std::size_t> octaveClusterSizes(std::size_t n, std::size_t min_clusters)
 {
 	if (min_clusters < 2) min_clusters = 2;
@@ -127,14 +144,7 @@ UniformRecord resampleUniform(const std::vector<double>& time_s, const std::vect
 	}
 	r.t0_s = t[best_a];
 	r.period_s = period_s;
-	const double count_d = std::floor(best_len / period_s + 1e-9) + 1;
-	const double finite_in_segment = static_cast<double>(best_b - best_a + 1);
-	if (count_d > 4 * finite_in_segment + 16)
-		throw std::invalid_argument("resampleUniform: a period of " + std::to_string(period_s) + " s would turn " +
-									std::to_string(best_b - best_a + 1) + " samples into " +
-									std::to_string(static_cast<long long>(count_d)) +
-									": the timestamps are too irregular for a uniform resample");
-	const auto count = static_cast<std::size_t>(count_d);
+	const std::size_t count = uniformSampleCount(best_len, period_s, best_b - best_a + 1);
 	r.value.resize(count);
 	std::size_t j = best_a;
 	for (std::size_t i = 0; i < count; i++)
@@ -214,14 +224,7 @@ UniformRecord resampleUniform(const RowSpill& rows, std::size_t tc, std::size_t 
 	close(q - 1);
 	rec.t0_s = t_best_a;
 	rec.period_s = period_s;
-	const double count_d = std::floor(best_len / period_s + 1e-9) + 1;
-	const double finite_in_segment = static_cast<double>(best_b - best_a + 1);
-	if (count_d > 4 * finite_in_segment + 16)
-		throw std::invalid_argument("resampleUniform: a period of " + std::to_string(period_s) + " s would turn " +
-									std::to_string(best_b - best_a + 1) + " samples into " +
-									std::to_string(static_cast<long long>(count_d)) +
-									": the timestamps are too irregular for a uniform resample");
-	const auto count = static_cast<std::size_t>(count_d);
+	const std::size_t count = uniformSampleCount(best_len, period_s, best_b - best_a + 1);
 
 	// Pass 3: linear interpolation, a window of two finite samples (j, j + 1) sliding forward.
 	RowSpill::Reader reader(rows);
