@@ -143,6 +143,11 @@ TEST(HostileYaml, AbsurdNumbersRefusedWithField)
 	expectCalibrationRefused(withValue(ok, "mean_bias_dph", "1e300"), {"mean_bias_dph"});
 	expectCalibrationRefused(withValue(ok, "max", "1e9", "signals:"), {"model.signals[0].max"});
 	expectCalibrationRefused(withValue(ok, "centre", ".nan", "signals:"), {"model.signals[0].centre"});
+	// Integer fields (CI fuzzing found poly_order 1e300 converted to int: undefined behaviour).
+	expectCalibrationRefused(withValue(ok, "poly_order", "1e300"), {"rate_estimator.poly_order", "outside"});
+	expectCalibrationRefused(withValue(ok, "poly_order", "-1e19"), {"rate_estimator.poly_order", "outside"});
+	expectCalibrationRefused(withValue(ok, "poly_order", "1.5"), {"rate_estimator.poly_order", "whole number"});
+	expectCalibrationRefused(withValue(ok, "samples", "1e300"), {"samples", "outside"});
 }
 
 TEST(HostileYaml, ProfileFilesGuardedToo)

@@ -32,6 +32,7 @@ constexpr double kMaxSignalRate_Cps = 100.0;  // temperature rates [degC/s]
 constexpr double kMaxCoef_ppm = 1e5;
 constexpr const char* kPpmWhy = "a scale-factor term of more than 1e5 ppm is no FOG's";
 constexpr double kMaxWarmupTau_s = 864000.0;
+constexpr double kMaxSamples = 1e15;  // counts of samples, segments, turn-ons: far beyond any log
 
 std::string num(double v)
 {
@@ -221,6 +222,15 @@ struct Reader
 		if (v < lo || v > hi) fail(path + "." + key, num(v) + " is outside [" + num(lo) + ", " + num(hi) + "] (" + why + ")");
 		return v;
 	}
+	/** A whole number within [lo, hi] (a count or an order), else a message naming the field;
+	 * never converts an out-of-range double to an integer (undefined behaviour). */
+	std::size_t count(const yaml& n, const std::string& key, const std::string& path, double lo, double hi) const
+	{
+		const double v = finite(n, key, path);
+		if (v < lo || v > hi) fail(path + "." + key, num(v) + " is outside [" + num(lo) + ", " + num(hi) + "]");
+		if (v != std::floor(v)) fail(path + "." + key, "expected a whole number");
+		return static_cast<std::size_t>(v);
+	}
 	std::string text(const yaml& n, const std::string& key, const std::string& path) const
 	{
 		const yaml c = child(n, key, path);
@@ -317,10 +327,10 @@ BiasModel readModel(const Reader& rd, const yaml& n, const std::string& path)
 	}
 	const yaml fit = rd.child(n, "fit", path);
 	const std::string fp = path + ".fit";
-	m.samples = static_cast<std::size_t>(rd.finite(fit, "samples", fp));
+	m.samples = rd.count(fit, "samples", fp, 0, kMaxSamples);
 	m.ridge = rd.finite(fit, "ridge", fp);
 	m.condition_number = rd.number(fit, "condition_number", fp);
-	m.numerical_rank = static_cast<std::size_t>(rd.finite(fit, "numerical_rank", fp));
+	m.numerical_rank = rd.count(fit, "numerical_rank", fp, 0, kMaxSamples);
 	m.effective_dof = rd.finite(fit, "effective_dof", fp);
 	m.rms_in_sample_dph = rd.number(fit, "rms_in_sample_dph", fp);
 	m.rms_held_out_dph = rd.number(fit, "rms_held_out_dph", fp);
@@ -332,7 +342,7 @@ FitFigures readFigures(const Reader& rd, const yaml& n, const std::string& path)
 	FitFigures f;
 	f.label = rd.text(n, "label", path);
 	f.valid = rd.text(n, "valid", path) == "true";
-	f.samples = static_cast<std::size_t>(rd.finite(n, "samples", path));
+	f.samples = rd.count(n, "samples", path, 0, kMaxSamples);
 	f.tau_s = rd.number(n, "tau_s", path);
 	f.rms_dph = rd.number(n, "rms_dph", path);
 	f.stability_dph = rd.number(n, "stability_dph", path);
@@ -421,16 +431,14 @@ ScaleFactorModel readScaleFactor(const Reader& rd, const yaml& n, const std::str
 		m.slope_noise_ci95_hi_ppm_per_C = nc[1];
 		m.slope_thermistor_min_ppm_per_C = rg[0];
 		m.slope_thermistor_max_ppm_per_C = rg[1];
-		const double count = rd.bounded(n, "slope_thermistors", path, 1, 64, "a thermistor count (1..64)");
-		if (count != std::floor(count)) rd.fail(path + ".slope_thermistors", "expected a whole number");
-		m.slope_thermistors = static_cast<std::size_t>(count);
+		m.slope_thermistors = rd.count(n, "slope_thermistors", path, 1, 64);
 	}
 	const auto tr = readNumbers(rd, n, "table_rate_abs_dph", path);
 	if (tr.size() != 2) rd.fail(path + ".table_rate_abs_dph", "expected [min, max]");
 	m.table_rate_min_abs_dph = tr[0];
 	m.table_rate_max_abs_dph = tr[1];
-	m.segments = static_cast<std::size_t>(rd.finite(n, "segments", path));
-	m.samples = static_cast<std::size_t>(rd.finite(n, "samples", path));
+	m.segments = rd.count(n, "segments", path, 0, kMaxSamples);
+	m.samples = rd.count(n, "samples", path, 0, kMaxSamples);
 	m.rms_in_sample_ppm = rd.number(n, "rms_in_sample_ppm", path);
 	m.rms_held_out_ppm = rd.number(n, "rms_held_out_ppm", path);
 	m.held_out_label = rd.text(n, "held_out_label", path);
@@ -446,8 +454,8 @@ WarmupModel readWarmup(const Reader& rd, const yaml& n, const std::string& path)
 	w.amplitude_std_dph = rd.number(n, "amplitude_std_dph", path);
 	w.tau_std_s = rd.number(n, "tau_std_s", path);
 	w.fitted_span_s = rd.number(n, "fitted_span_s", path);
-	w.turn_ons = static_cast<std::size_t>(rd.finite(n, "turn_ons", path));
-	w.samples = static_cast<std::size_t>(rd.finite(n, "samples", path));
+	w.turn_ons = rd.count(n, "turn_ons", path, 0, kMaxSamples);
+	w.samples = rd.count(n, "samples", path, 0, kMaxSamples);
 	w.rms_before_dph = rd.number(n, "rms_before_dph", path);
 	w.rms_after_dph = rd.number(n, "rms_after_dph", path);
 	return w;
@@ -593,7 +601,7 @@ void readAxisFields(const Reader& rd, const yaml& n, const std::string& p, const
 	const std::string ep = at(p, "rate_estimator");
 	cal.rate_estimator.kind = rd.text(est, "kind", ep);
 	cal.rate_estimator.window_s = rd.finite(est, "window_s", ep);
-	cal.rate_estimator.poly_order = static_cast<int>(rd.finite(est, "poly_order", ep));
+	cal.rate_estimator.poly_order = static_cast<int>(rd.count(est, "poly_order", ep, 0, 64));
 	try
 	{
 		cal.rate_estimator.validate();
@@ -661,8 +669,7 @@ void readAxisFields(const Reader& rd, const yaml& n, const std::string& p, const
 		const std::string ssp = at(bp, "selection_stability");
 		const yaml ss = rd.child(bias, "selection_stability", bp);
 		auto& st = cal.selection_stability;
-		const double n = rd.bounded(ss, "resamples", ssp, 0, 1e6, "a count of refits");
-		st.resamples = static_cast<std::size_t>(n);
+		st.resamples = rd.count(ss, "resamples", ssp, 0, 1e6);
 		st.chosen_share = rd.bounded(ss, "chosen_share", ssp, 0, 1, "a share");
 		const std::string stable = rd.text(ss, "stable", ssp);
 		if (stable != "true" && stable != "false") rd.fail(ssp + ".stable", "must be true or false");
