@@ -54,7 +54,15 @@ GzReader::~GzReader()
 
 bool GzReader::fill()
 {
-	buf_pos_ = buf_len_ = 0;
+	// Keep the bytes not yet delivered (peek() asks for more than are left), append after them.
+	if (buf_pos_ > 0)
+	{
+		if (buf_pos_ < buf_len_) std::memmove(buf_.data(), buf_.data() + buf_pos_, buf_len_ - buf_pos_);
+		buf_len_ -= buf_pos_;
+		buf_pos_ = 0;
+	}
+	const std::size_t start = buf_len_;
+	if (start == buf_.size()) return false;  // full: nothing can be appended
 	for (;;)
 	{
 		if (in_pos_ == in_len_ && !file_eof_)
@@ -67,15 +75,16 @@ bool GzReader::fill()
 		}
 		if (!gzip_)
 		{
-			if (in_pos_ == in_len_) return false;
-			std::swap(in_, buf_);
-			buf_len_ = in_len_;
-			in_pos_ = in_len_ = 0;
-			return buf_len_ > 0;
+			if (in_pos_ == in_len_) return buf_len_ > start;
+			const std::size_t n = std::min(in_len_ - in_pos_, buf_.size() - buf_len_);
+			std::memcpy(buf_.data() + buf_len_, in_.data() + in_pos_, n);
+			in_pos_ += n;
+			buf_len_ += n;
+			return true;
 		}
 		if (!member_open_)
 		{
-			if (in_pos_ == in_len_ && file_eof_) return false;  // clean end after a whole member
+			if (in_pos_ == in_len_ && file_eof_) return buf_len_ > start;  // clean end after a whole member
 			if (!z_->init)
 			{
 				if (inflateInit2(&z_->s, 15 + 16) != Z_OK) throw FogIoError(path_ + ": cannot start gzip decompression");
@@ -102,7 +111,7 @@ bool GzReader::fill()
 			member_open_ = false;
 			// Padding of zeros after the last member (some tools) ends the data.
 			while (in_pos_ < in_len_ && in_[in_pos_] == 0) in_pos_++;
-			if (buf_len_ > 0) return true;
+			if (buf_len_ > start) return true;
 			continue;
 		}
 		if (rc == Z_BUF_ERROR && z_->s.avail_in == 0) continue;  // needs more input
@@ -113,6 +122,22 @@ bool GzReader::fill()
 							 " (truncated or corrupt gzip file)");
 		if (buf_len_ == buf_.size()) return true;
 	}
+}
+
+std::size_t GzReader::peek(const unsigned char*& p, std::size_t want)
+{
+	want = std::min(want, buf_.size());
+	while (buf_len_ - buf_pos_ < want)
+		if (!fill()) break;
+	p = buf_.data() + buf_pos_;
+	return buf_len_ - buf_pos_;
+}
+
+void GzReader::consume(std::size_t n)
+{
+	n = std::min(n, buf_len_ - buf_pos_);
+	buf_pos_ += n;
+	out_pos_ += n;
 }
 
 size_t GzReader::Read(void* buffer, size_t count)

@@ -1,14 +1,17 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt/core/bits_math.h>
 #include <mrpt/core/format.h>
+#include <mrpt/io/CMemoryStream.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/serialization/stl_serialization.h>
 #include <mrpt/system/datetime.h>
 #include <mrpt_fog/obs/CObservationFOG.h>
 #include <mrpt_fog/obs/Units.h>
+#include <mrpt_fog/obs/FogObservationDecode.h>
 
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <ostream>
 #include <sstream>
@@ -88,6 +91,107 @@ void CObservationFOG::serializeFrom(mrpt::serialization::CArchive& in, uint8_t v
 		default: MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
 	};
 }
+
+namespace mrpt_fog::detail
+{
+std::string serializedPoseBytes(const mrpt::poses::CPose3D& pose)
+{
+	mrpt::io::CMemoryStream mem;
+	auto arch = mrpt::serialization::archiveFrom(mem);
+	arch << pose;
+	return std::string(static_cast<const char*>(mem.getRawBufferData()), mem.getTotalBytesCount());
+}
+
+namespace
+{
+/** Bounds-checked little-endian reads from contiguous bytes (what CArchive reads on x86/ARM). */
+struct ByteCursor
+{
+	const unsigned char* p;
+	std::size_t n, at = 0;
+	bool ok = true;
+	bool has(std::size_t k)
+	{
+		ok = ok && k <= n - at;
+		return ok;
+	}
+	template <typename T>
+	T get()
+	{
+		T v{};
+		if (has(sizeof(T)))
+		{
+			std::memcpy(&v, p + at, sizeof(T));
+			at += sizeof(T);
+		}
+		return v;
+	}
+	bool string(std::string& s)
+	{
+		const auto len = get<uint32_t>();
+		if (!has(len)) return false;
+		s.assign(reinterpret_cast<const char*>(p + at), len);
+		at += len;
+		return true;
+	}
+	bool bytesEqual(const std::string& b)
+	{
+		if (!has(b.size()) || std::memcmp(p + at, b.data(), b.size()) != 0) return ok = false;
+		at += b.size();
+		return true;
+	}
+};
+constexpr char kFogClassName[] = "mrpt_fog::CObservationFOG";
+constexpr uint8_t kEndOfObject = 0x88;  // MRPT's SERIALIZATION_END_FLAG
+}  // namespace
+
+std::size_t decodeFogObservation(const unsigned char* p, std::size_t n, const SerializedPose& pose, CObservationFOG& o)
+{
+	static_assert(sizeof(double) == 8 && sizeof(mrpt::Clock::rep) == 8, "CArchive's 8-byte fields");
+	constexpr std::size_t name_len = sizeof(kFogClassName) - 1;
+	ByteCursor c{p, n};
+	// MRPT object header: 0x80 | name length, the class name, the version byte.
+	if (c.get<uint8_t>() != (0x80u | name_len) || !c.has(name_len) || std::memcmp(p + c.at, kFogClassName, name_len) != 0)
+		return 0;
+	c.at += name_len;
+	if (c.get<uint8_t>() != 0 || !c.ok) return 0;  // version 0 only
+	o.timestamp = mrpt::Clock::time_point(mrpt::Clock::duration(c.get<mrpt::Clock::rep>()));
+	if (!c.string(o.sensorLabel) || !c.bytesEqual(pose.bytes)) return 0;
+	o.sensorPose = pose.pose;
+	const auto axes = c.get<uint8_t>();
+	if (axes == 0 || axes > 7) return 0;
+	for (int a = 0; a < 3; a++)
+	{
+		o.hasAxis[a] = (axes >> a) & 1u;
+		o.rate_dph[a] = c.get<double>();
+	}
+	const auto count = c.get<uint16_t>();
+	if (!c.ok) return 0;
+	o.thermistors.resize(count);
+	o.temp_C.resize(count);
+	o.tempValid.resize(count);
+	for (std::size_t i = 0; i < count; i++)
+	{
+		if (!c.string(o.thermistors[i].name)) return 0;
+		const auto side = c.get<uint8_t>();
+		if (side > 2) return 0;
+		o.thermistors[i].side = static_cast<CoilSide>(side);
+		o.thermistors[i].angle_deg = c.get<double>();
+		o.temp_C[i] = c.get<double>();
+		if (!std::isfinite(o.thermistors[i].angle_deg)) return 0;
+		o.tempValid[i] = c.get<uint8_t>() != 0;
+	}
+	const auto flags = c.get<uint8_t>();
+	o.tableRate_dph = c.get<double>();
+	o.field_uT = c.get<double>();
+	o.hasTableRate = flags & kFlagTableRate;
+	o.hasField = flags & kFlagField;
+	o.hasPower = flags & kFlagPower;
+	o.powerOn = flags & kFlagPowerOn;
+	if (c.get<uint8_t>() != kEndOfObject || !c.ok) return 0;
+	return c.at;
+}
+}  // namespace mrpt_fog::detail
 
 double CObservationFOG::rateOf_dph(GyroAxis axis) const
 {

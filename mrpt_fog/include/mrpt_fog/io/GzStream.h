@@ -33,6 +33,12 @@ class GzReader : public mrpt::io::CStream
 	/** Up to `count` decompressed bytes; fewer only at the end of the data. Throws FogIoError on
 	 * corrupt or truncated gzip data. */
 	size_t Read(void* buffer, size_t count) override;
+	/** The next decompressed bytes without consuming them: p points at them and the return value
+	 * is how many are contiguous there, at least `want` (at most the buffer size, 256 KiB) unless
+	 * the data ends first. Valid until the next call of any other member. */
+	std::size_t peek(const unsigned char*& p, std::size_t want);
+	/** Consumes n bytes returned by peek(). */
+	void consume(std::size_t n);
 	/** True when no decompressed byte is left. */
 	bool atEnd();
 	/** Next line without its '\n' (a trailing '\r' removed). False at the end of the data.
@@ -54,7 +60,7 @@ class GzReader : public mrpt::io::CStream
 	uint64_t getPosition() const override { return out_pos_; }
 
    private:
-	bool fill();  // more decompressed bytes into buf_; false at the end
+	bool fill();  // more decompressed bytes appended to the waiting ones; false at the end (or buffer full)
 	std::string path_;
 	std::FILE* f_ = nullptr;
 	bool gzip_ = false;
