@@ -18,4 +18,12 @@ TEST(Utf8, InvalidBytesAreLocated)
 	EXPECT_EQ(firstInvalidUtf8("\xc0\xaf"), 0u);  // overlong '/'
 	EXPECT_EQ(firstInvalidUtf8("x\xe2\x82"), 1u);  // truncated 3-byte sequence
 	EXPECT_EQ(firstInvalidUtf8("\xff"), 0u);
+	// Well-formed per Unicode Table 3-7, not just lead + continuation bytes:
+	EXPECT_EQ(firstInvalidUtf8("a\xe0\x92\x96"), 1u);  // overlong 3-byte form (E0 needs A0..BF)
+	EXPECT_EQ(firstInvalidUtf8("\xed\xa0\x80"), 0u);  // UTF-16 surrogate U+D800
+	EXPECT_EQ(firstInvalidUtf8("\xf4\x90\x80\x80"), 0u);  // above U+10FFFF
+	EXPECT_EQ(firstInvalidUtf8("\xf0\x8f\xbf\xbf"), 0u);  // overlong 4-byte form
+	EXPECT_EQ(firstInvalidUtf8("\xf5\x80\x80\x80"), 0u);
+	// the boundaries themselves are valid
+	EXPECT_EQ(firstInvalidUtf8("\xe0\xa0\x80 \xed\x9f\xbf \xee\x80\x80 \xf0\x90\x80\x80 \xf4\x8f\xbf\xbf"), std::string::npos);
 }

@@ -161,6 +161,15 @@ TEST(HostileYaml, ProfileFilesGuardedToo)
 	std::remove(path.c_str());
 }
 
+// Ill-formed UTF-8 in a '%' directive line sends libfyaml into an endless loop (found by
+// fuzz_calibration_yaml: a 38-byte file, killed at the 10 s timeout); refused before parsing.
+TEST(HostileYaml, IllFormedUtf8InDirectiveRefusedNotHung)
+{
+	expectCalibrationRefused(std::string("%# mrr 0.m coef_allrange2\0\0\0_dph:\x1b-\xe0\x92\x96", 38), {"hostile.yaml", "not valid UTF-8", "byte offset 35"});
+	expectCalibrationRefused("%x \xed\xa0\x80\n", {"not valid UTF-8", "byte offset 3"});  // surrogate
+	expectCalibrationRefused("%x \xf4\x90\x80\x80\n", {"not valid UTF-8"});  // above U+10FFFF
+}
+
 // The guard does not refuse what this project writes.
 TEST(HostileYaml, RealFilesPass)
 {
