@@ -117,7 +117,8 @@ namespace
  * (Linear: each term z^k continued along its tangent at the edge, so that the bias, a linear
  * combination of the columns, is continued along its tangent as BiasModel::evaluate does). */
 std::vector<std::vector<double>> compensatorColumns(const BaseModelSpec& spec, const FogSeries& run,
-													std::vector<unsigned char>& defined)
+													std::vector<unsigned char>& defined,
+													const RunSignals* centred_rates = nullptr)
 {
 	const auto& fs = spec.features;
 	const std::size_t n = run.size(), nt = fs.thermistors().size(), ns = fs.signals().size(), nf = fs.termCount();
@@ -128,9 +129,20 @@ std::vector<std::vector<double>> compensatorColumns(const BaseModelSpec& spec, c
 		if (i < 0) throw std::invalid_argument("base model uses thermistor '" + name + "', absent from the run");
 		colOf.push_back(i);
 	}
-	const auto estimator = makeRateEstimator(spec.rate_estimator);
 	std::vector<std::vector<double>> rate_C_s(nt);
-	for (std::size_t i = 0; i < nt; ++i) rate_C_s[i] = estimator->estimate(run.time_s, run.temp_C[static_cast<std::size_t>(colOf[i])]);
+	if (centred_rates)
+		for (std::size_t i = 0; i < nt; ++i)
+		{
+			// the analysis' centred slope (RunSignals, degC/min) in place of the calibration's estimator
+			rate_C_s[i] = centred_rates->dthermistor_dt_Cpm[static_cast<std::size_t>(colOf[i])];
+			for (auto& v : rate_C_s[i]) v /= 60.0;
+		}
+	else
+	{
+		const auto estimator = makeRateEstimator(spec.rate_estimator);
+		for (std::size_t i = 0; i < nt; ++i)
+			rate_C_s[i] = estimator->estimate(run.time_s, run.temp_C[static_cast<std::size_t>(colOf[i])]);
+	}
 	std::vector<std::vector<double>> cols(nf, std::vector<double>(n, 0.0));
 	std::vector<double> temp(nt), r(nt), values(ns), f(nf);
 	const bool clampOrTangent = spec.extrapolation != ExtrapolationPolicy::Polynomial;
@@ -176,6 +188,7 @@ BaseDesign buildBaseDesign(const BaseModelSpec& spec, const FogSeries& run, cons
 		cols.push_back(std::move(c));
 		d.names.push_back(std::move(name));
 		d.is_static_temp.push_back(isStatic ? 1 : 0);
+		d.is_nuisance.push_back(0);
 	};
 	auto thermistor = [&](const std::string& name) -> std::size_t
 	{
@@ -200,18 +213,37 @@ BaseDesign buildBaseDesign(const BaseModelSpec& spec, const FogSeries& run, cons
 	const bool calibrationColumns = spec.static_order == 0;
 	if (calibrationColumns)
 	{
-		auto fc = compensatorColumns(spec, run, d.defined);
+		const auto causal = compensatorColumns(spec, run, d.defined);
 		const auto& fs = spec.features;
 		for (std::size_t t = 1; t < fs.termCount(); ++t)
 		{
 			const auto& term = fs.terms()[t];
 			const bool isStatic = term.signal.kind == SignalKind::Temp;
-			add(std::move(fc[t]), term.name(), isStatic);
+			add(causal[t], term.name(), isStatic);
 			if (isStatic)
 			{
 				if (d.static_temp_C.empty()) d.static_temp_C = sig.thermistor_C[thermistor(term.signal.a)];
 				d.max_static_order = std::max(d.max_static_order, term.power);
 			}
+		}
+		// Nuisance: for each rate term, the same feature on the analysis' centred rate minus the
+		// feature on the calibration's causal rate. The compensator's rate estimate has noise
+		// and shape errors (order 2 from 12 samples per window at 5 s sampling), so a rate term
+		// fitted on it leaves part of the true rate response in the residual (errors in the
+		// regressor), and the candidates' centred rate columns (shupe_rate, gradient_rate,
+		// radial_gradient during ramps) would take it: a gap of the rate ESTIMATOR, named as a
+		// missing physical effect. With this column the base spans "the same rate term, better
+		// estimated"; a candidate must explain something beyond it.
+		std::vector<unsigned char> unused;
+		auto centred = compensatorColumns(spec, run, unused, &sig);
+		for (std::size_t t = 1; t < fs.termCount(); ++t)
+		{
+			const auto& term = fs.terms()[t];
+			if (term.signal.kind != SignalKind::Rate && term.signal.kind != SignalKind::DiffRate) continue;
+			std::vector<double> c(n);
+			for (std::size_t j = 0; j < n; ++j) c[j] = finiteOr0(centred[t][j]) - finiteOr0(causal[t][j]);
+			add(std::move(c), "centred-minus-causal " + term.name(), false);
+			d.is_nuisance.back() = 1;
 		}
 	}
 	if (d.static_temp_C.empty()) d.static_temp_C = sig.temp_mean_C;

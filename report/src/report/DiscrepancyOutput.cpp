@@ -131,6 +131,9 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 				e["p_adjusted"] = t.p_adjusted;
 				e["delta_bic"] = t.delta_bic;
 				e["significant"] = t.significant;
+				// how well its columns reproduce the shape of the effect named in this round (alias
+				// test; 0 for that effect itself and when nothing was named)
+				e["shape_reproduction_of_named"] = t.collinearity_with_best;
 			}
 			cands.push_back(e);
 		}

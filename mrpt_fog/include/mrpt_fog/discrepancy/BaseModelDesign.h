@@ -17,6 +17,10 @@
  * One extra grammar remains for the synthetic proof trials only: `static:P[:NAME]`, a
  * polynomial of order P in one thermistor or in the MEAN of all thermistors (the synthetic
  * generator's bias law, which no calibration term expresses), x = (T - 20 degC) / 50 degC.
+ * For each rate term of a calibration, a nuisance column "centred minus causal" (the same
+ * feature on the analysis' centred slope, RunSignals, minus the feature on the calibration's
+ * causal rate) lets the refit use a better estimate of the same rate: what the compensator's
+ * rate estimator misses is its gap, not a missing physical effect.
  * A constant column is always present; when the run has a varying table rate a `table_rate`
  * column (constant scale-factor error, not a thermal effect) is added as a nuisance term, and
  * when the calibration has a scale factor versus temperature of order >= 1, one column per
@@ -93,6 +97,11 @@ struct BaseDesign
 	std::vector<std::string> names;  //!< term names, e.g. "T(Ti1)^3"
 	/** 1 for static temperature terms T^k, k >= 1 (what a thermistor lag distorts). */
 	std::vector<unsigned char> is_static_temp;
+	/** 1 for columns that are no term of the calibration: for each rate term, the feature on
+	 * the analysis' centred rate minus the feature on the calibration's causal rate ("the same
+	 * term, better estimated"), so that the rate estimator's errors are not named as a missing
+	 * effect. */
+	std::vector<unsigned char> is_nuisance;
 	int max_static_order = 0;  //!< highest static power (temp_poly_order adds the next ones)
 	/** Temperature of the (first) static polynomial [degC] (temp_poly_order uses it). */
 	std::vector<double> static_temp_C;
