@@ -24,6 +24,8 @@ else
 	SIM="$BUILD/apps/fog-sim"
 fi
 mkdir -p "$OUT"
+OUT=$(cd "$OUT" && pwd)
+cd "$ROOT"  # profiles given as files are named relative to the repository (datasets/*.yaml)
 
 # name | profile | seed | csv twin (yes/no) | description
 # ratetable_A: same (default) device as chamber_A, its own noise seed (SEED + 1) so that a joint
@@ -34,6 +36,7 @@ RUNS=(
 	"warmup|warmup|$SEED|yes|Room-temperature warm-up: unpowered soak at 23 C, power on at t = 0, 3 h."
 	"drive|drive|$SEED|no|Vehicle drive, 70.5 min: winter cold start (cabin -15 C -> 20 C at 2 C/min -> 24 C), gyro powered at t = 0; streams FOG (thermal error), FOG_IDEAL (same noise, no thermal error), ODOMETRY (CObservationOdometry), GROUND_TRUTH (CObservationRobotPose)."
 	"ratetable_A|ratetable|$((SEED + 1))|no|Rate-table run, same device as chamber_A (scale factor vs temperature, IEEE Std 952 style): 90 min soaks at -40, -15, 10, 35, 60 C (2 C/min between), at each the table turns +-1, +-10, +-100 deg/s for 4 min each (table_rate_dph in the FOG observations); 10.9 h."
+	"ratetable_transient|datasets/ratetable_transient.yaml|$((SEED + 2))|no|Rate table in temperature transients, same device (the coil temperature the scale factor follows, which no thermistor reads in a transient): the table alternates +-100 deg/s every 2 min through a cold turn-on at -30 C (40 min), a ramp to 50 C at 1 C/min, 30 min at 50 C, 1 h off and a turn-on at 50 C (30 min), a ramp to -30 C at 2 C/min and 20 min there; 5 h. Profile: datasets/ratetable_transient.yaml."
 )
 
 for run in "${RUNS[@]}"; do
@@ -57,6 +60,10 @@ done
 	echo "rawlog carries table_rate_dph. It is the same device as chamber_A (the default device) with"
 	echo "its own noise seed, for a joint calibration:"
 	echo "\`fog-calibrate -i chamber_A.rawlog -i ratetable_A.rawlog --model multipoint -o cal.yaml\`."
+	echo "ratetable_transient (no CSV twin either) adds table segments in transients and turn-ons, where"
+	echo "the thermistors disagree, so that fog-calibrate can fit the scale factor in a weighted sum of"
+	echo "them (docs/nav.md): \`fog-calibrate -i chamber_A.rawlog -i ratetable_A.rawlog -i"
+	echo "ratetable_transient.rawlog -i warmup.rawlog -o cal_full.yaml\`."
 	echo
 	echo "Bit-for-bit regeneration holds on the same platform (made on x86-64 Linux, GCC, glibc libm,"
 	echo "Eigen 3.4, MRPT 2.5). Another C library or compiler can change the last bits of floating-point"

@@ -303,6 +303,13 @@ void printAxis(const AxisFit& f, double tau_s, bool validated)
 					"[%.4g .. %.4g] (the coil temperature the scale factor follows is read by none)\n",
 					sf.slope_noise_ci95_lo_ppm_per_C, sf.slope_noise_ci95_hi_ppm_per_C, sf.slope_thermistors,
 					sf.slope_thermistor_min_ppm_per_C, sf.slope_thermistor_max_ppm_per_C);
+		if (!sf.weights.empty())
+		{
+			std::printf("    weighted temperature T = ");
+			for (std::size_t i = 0; i < sf.weights.size(); i++)
+				std::printf("%s%.4g %s", i ? " + " : "", sf.weights[i], sf.thermistors[i].c_str());
+			std::printf(" (weights fitted from the table segments, where the thermistors disagree)\n");
+		}
 		std::printf("    candidates (held-out RMS [ppm]):");
 		for (const auto& c : f.sf_report.candidates) std::printf(" %s/%d:%.3g", c.thermistor.c_str(), c.order, c.rms_held_out_ppm);
 		std::printf("\n");

@@ -381,6 +381,46 @@ TEST(CalibrationYaml, ScaleFactorAndWarmupRoundTrip)
 	EXPECT_NE(errorOf(replaced(good, "coef_ppm: [-300, 1000, 3.5]", "coef_ppm: [-300, x]")).find("coef_ppm[1]: not a number"), std::string::npos);
 }
 
+// A scale factor in a weighted sum of thermistors (the coil temperature estimate fitted from
+// table segments in transients) round-trips; its weights must match the thermistors and sum to 1.
+TEST(CalibrationYaml, WeightedScaleFactorRoundTripAndErrors)
+{
+	Calibration c = cal();
+	ScaleFactorModel m = someScaleFactor();
+	m.thermistor = "weighted";
+	for (const auto& t : c.layout) m.thermistors.push_back(t.name);
+	ASSERT_GE(m.thermistors.size(), 2u);
+	m.weights.assign(m.thermistors.size(), 0.0);
+	m.weights[0] = 1.25;
+	m.weights[1] = -0.25;
+	c.scale_factor = m;
+	const std::string good = calibrationToYaml(c);
+	const Calibration back = calibrationFromYaml(good, "w.yaml");
+	ASSERT_TRUE(back.scale_factor);
+	EXPECT_EQ(back.scale_factor->thermistor, "weighted");
+	EXPECT_EQ(back.scale_factor->thermistors, m.thermistors);
+	EXPECT_EQ(back.scale_factor->weights, m.weights);
+	EXPECT_EQ(calibrationToYaml(back), good);
+	// the compensator reads T = 1.25 x first - 0.25 x second: equal readings give that reading
+	std::vector<double> temps(c.layout.size(), 30.0);
+	temps[1] = 34.0;  // T = 1.25 x 30 - 0.25 x 34 = 29
+	Compensator comp(back, back.layout);
+	const double raw = 36000.0;
+	Compensator::Output o{};
+	for (int k = 0; k < 200; k++) o = comp.step(k * 1.0, raw, temps.data());
+	EXPECT_NEAR((raw - o.bias_dph) / o.compensated_dph - 1.0, 1e-6 * m.evaluate_ppm(29.0), 1e-12);
+	const auto at = good.find("weights: [");
+	ASSERT_NE(at, std::string::npos);
+	const std::string line = good.substr(at, good.find(']', at) + 1 - at);
+	EXPECT_NE(errorOf(replaced(good, line, "weights: [1.25, -0.25]" + std::string(m.weights.size() > 2 ? "" : ", 0"))).find("scale_factor.weights"),
+			  std::string::npos);
+	std::string two_more = "weights: [1.25, 0.25";
+	for (std::size_t i = 2; i < m.weights.size(); i++) two_more += ", 0";
+	EXPECT_NE(errorOf(replaced(good, line, two_more + "]")).find("must sum to 1"), std::string::npos);
+	EXPECT_NE(errorOf(replaced(good, "thermistor: \"weighted\"", "thermistor: \"mean\"")).find("scale_factor.thermistor"),
+			  std::string::npos);
+}
+
 // Several axes in one file: single-axis loading says which axes there are; by axis it works.
 TEST(CalibrationYaml, SeveralAxesInOneFile)
 {

@@ -187,3 +187,48 @@ TEST(ScaleFactorFit, RefusesRunsThatCannotSupportTheFit)
 	EXPECT_FALSE(hasTableRates({no_table}));
 	EXPECT_TRUE(hasTableRates({rateTableRun(34, tr)}));
 }
+
+// The scale factor follows the coil temperature T, which no thermistor reads in a transient:
+// Ti1 = T + 0.6 g(t), To1 = T - 0.4 g(t) with a disagreement g that comes and goes (a turn-on,
+// ramps), so T = 0.4 Ti1 + 0.6 To1 exactly. Table segments (+-100 deg/s alternating every 2 min)
+// through the transients: the weighted candidate wins by held-out error, and its weights and
+// slope are the closed form's. At soaks alone (g = 0) nothing could tell the weights.
+TEST(ScaleFactorFit, WeightedThermistorsFromTransientTableSegments)
+{
+	const Truth tr;
+	std::mt19937_64 rng(41);
+	std::normal_distribution<double> n01;
+	FogSeries s;
+	s.thermistors = {{"Ti1", CoilSide::Inner, 0}, {"To1", CoilSide::Outer, 0}};
+	s.temp_C.resize(2);
+	const double dur_s = 6 * 3600.0;
+	for (double t = 0; t < dur_s; t += 1.0)
+	{
+		const double T = 10.0 + 35.0 * std::sin(2 * M_PI * t / dur_s);  // -25 .. 45 degC and back
+		const double g = 2.0 * std::exp(-t / 900.0) + 1.5 * std::sin(2 * M_PI * t / 2700.0);  // disagreement [degC]
+		const bool table = t >= 600;  // 10 min at rest first: the bias fit needs table-free samples
+		const double applied = table ? ((static_cast<long long>(t / 120.0) % 2) ? -360000.0 : 360000.0) : 0.0;
+		const double s_ppm = tr.s0_ppm + tr.k_ppm_per_C * (T - 25.0);
+		s.time_s.push_back(t);
+		s.rate_dph[2].push_back((1 + 1e-6 * s_ppm) * applied + tr.bias0_dph + tr.noise_dph * n01(rng));
+		s.temp_C[0].push_back(T + 0.6 * g + 0.01 * n01(rng));
+		s.temp_C[1].push_back(T - 0.4 * g + 0.01 * n01(rng));
+		s.table_rate_dph.push_back(applied);
+	}
+	FitOptions o;
+	o.table_samples = TableSamples::Exclude;
+	const Calibration bias = fitCalibration({s}, "terms:1", o);
+	ScaleFactorFitReport rep;
+	const ScaleFactorModel m = fitScaleFactor({s}, bias, {}, &rep);
+	ASSERT_EQ(m.thermistor, "weighted");
+	ASSERT_EQ(m.weights.size(), 2u);
+	EXPECT_NEAR(m.weights[0], 0.4, 0.01);
+	EXPECT_NEAR(m.weights[1], 0.6, 0.01);
+	EXPECT_EQ(m.order(), 1u);
+	EXPECT_NEAR(m.slope_ppm_per_C, tr.k_ppm_per_C, 0.01 * tr.k_ppm_per_C);
+	EXPECT_NEAR(m.evaluate_ppm(25.0), tr.s0_ppm, 1.0);  // T_w = T: s at 25 degC of the coil
+	double single_best = 1e300, weighted = 1e300;
+	for (const auto& c : rep.candidates)
+		(c.thermistor == "weighted" ? weighted : single_best) = std::min(c.thermistor == "weighted" ? weighted : single_best, c.rms_held_out_ppm);
+	EXPECT_LT(weighted, 0.2 * single_best) << "a single thermistor is off by its share of g";
+}

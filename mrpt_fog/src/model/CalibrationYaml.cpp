@@ -85,7 +85,13 @@ void writeScaleFactor(std::ostringstream& o, const ScaleFactorModel& m, const st
 	{
 		o << ind << "  thermistors: [";
 		for (std::size_t i = 0; i < m.thermistors.size(); i++) o << (i ? ", " : "") << str(m.thermistors[i]);
-		o << "]  # T = mean of these readings\n";
+		o << "]  # T = " << (m.weights.empty() ? "mean of these readings" : "sum of weights x these readings") << "\n";
+	}
+	if (!m.weights.empty())
+	{
+		o << ind << "  weights: [";
+		for (std::size_t i = 0; i < m.weights.size(); i++) o << (i ? ", " : "") << num(m.weights[i]);
+		o << "]  # of thermistors, summing to 1: the coil temperature the scale factor follows\n";
 	}
 	o << ind << "  centre_C: " << num(m.centre_C) << "  # z = (clamp(T, min_C, max_C) - centre_C) / scale_C\n";
 	o << ind << "  scale_C: " << num(m.scale_C) << "\n";
@@ -401,7 +407,27 @@ ScaleFactorModel readScaleFactor(const Reader& rd, const yaml& n, const std::str
 	{
 		for (const auto& t : rd.seq(n, "thermistors", path)) m.thermistors.push_back(yaml(t).as<std::string>());
 		if (m.thermistors.empty()) rd.fail(path + ".thermistors", "must name at least one thermistor");
-		if (m.thermistor != "mean") rd.fail(path + ".thermistor", "must be \"mean\" when thermistors is given");
+		const char* want = n.has("weights") ? "weighted" : "mean";
+		if (m.thermistor != want)
+			rd.fail(path + ".thermistor", std::string("must be \"") + want + "\" when thermistors is given" +
+											  (n.has("weights") ? " with weights" : " without weights"));
+	}
+	if (n.has("weights"))  // optional: T = sum of weights x readings ("thermistor: weighted")
+	{
+		if (m.thermistors.empty()) rd.fail(path + ".weights", "needs thermistors: the readings they weight");
+		m.weights = readNumbers(rd, n, "weights", path);
+		if (m.weights.size() != m.thermistors.size())
+			rd.fail(path + ".weights", std::to_string(m.weights.size()) + " weights for " +
+										   std::to_string(m.thermistors.size()) + " thermistors");
+		double sum = 0;
+		for (std::size_t i = 0; i < m.weights.size(); i++)
+		{
+			if (!(std::abs(m.weights[i]) <= 100.0))
+				rd.fail(path + ".weights[" + std::to_string(i) + "]",
+						num(m.weights[i]) + " is outside [-100, 100] (a weight of a thermistor reading)");
+			sum += m.weights[i];
+		}
+		if (!(std::abs(sum - 1.0) <= 1e-6)) rd.fail(path + ".weights", "sum to " + num(sum) + ", must sum to 1");
 	}
 	const char* why = "a temperature [degC] no coil reaches";
 	m.centre_C = rd.bounded(n, "centre_C", path, -kMaxSignal_C, kMaxSignal_C, why);

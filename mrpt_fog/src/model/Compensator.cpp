@@ -227,6 +227,9 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 		};
 		if (sf_->thermistors.empty()) sf_col_ = column(sf_->thermistor);
 		for (const auto& name : sf_->thermistors) sf_cols_.push_back(column(name));
+		if (!sf_->weights.empty() && sf_->weights.size() != sf_->thermistors.size())
+			throw std::invalid_argument("calibration's scale-factor model has " + std::to_string(sf_->weights.size()) +
+										" weights for " + std::to_string(sf_->thermistors.size()) + " thermistors");
 		sf_initial_ppm_ = sf_ppm_ = sf_->evaluate_ppm(sf_->centre_C);
 	}
 	warmup_ = cal.warmup;
@@ -278,12 +281,17 @@ void Compensator::notePowerOnFromMetadata(const FogSeries& log)
 			T = temp_C[sf_col_];
 		else
 		{
-			// the mean of the valid readings; none valid: the value held from before
-			double sum = 0;
+			// the mean (or weighted sum) of the readings when all are valid; else the value held
+			double sum = 0, wsum = 0;
 			int n = 0;
-			for (int c : sf_cols_)
-				if (!std::isnan(temp_C[c])) sum += temp_C[c], n++;
-			if (n > 0 && n == static_cast<int>(sf_cols_.size())) T = sum / n;
+			for (std::size_t i = 0; i < sf_cols_.size(); i++)
+			{
+				const double v = temp_C[sf_cols_[i]];
+				if (std::isnan(v)) continue;
+				sum += v, n++;
+				if (!sf_->weights.empty()) wsum += sf_->weights[i] * v;
+			}
+			if (n > 0 && n == static_cast<int>(sf_cols_.size())) T = sf_->weights.empty() ? sum / n : wsum;
 		}
 		if (!std::isnan(T)) sf_ppm_ = sf_->evaluate_ppm(T);
 		r /= 1.0 + 1e-6 * sf_ppm_;

@@ -164,10 +164,16 @@ ScaleFactorModel fitScaleFactor(const std::vector<FogSeries>& runs, const Calibr
 	std::vector<std::size_t> order_idx(segs.size());
 	std::iota(order_idx.begin(), order_idx.end(), 0);
 	std::sort(order_idx.begin(), order_idx.end(), [&](std::size_t a, std::size_t b) { return tmean[a] < tmean[b]; });
+	// A group also closes once it spans more than group_gap_C: segments in a ramp or a turn-on
+	// follow each other closer than the gap and would otherwise chain into one group (soaks are
+	// unaffected: their segments lie within a fraction of a degree).
 	int groups = 0;
+	double group_first_C = tmean.empty() ? 0.0 : tmean[order_idx.front()];
 	for (std::size_t q = 0; q < order_idx.size(); q++)
 	{
-		if (q > 0 && tmean[order_idx[q]] - tmean[order_idx[q - 1]] > opt.group_gap_C) groups++;
+		const double tq = tmean[order_idx[q]];
+		if (q > 0 && (tq - tmean[order_idx[q - 1]] > opt.group_gap_C || tq - group_first_C > opt.group_gap_C))
+			groups++, group_first_C = tq;
 		segs[order_idx[q]].group = groups;
 	}
 	groups++;
@@ -238,17 +244,56 @@ ScaleFactorModel fitScaleFactor(const std::vector<FogSeries>& runs, const Calibr
 			all.push_back({th, order, cv});
 		}
 	}
+	// The weighted candidate: s = c + sum_i a_i T_i over all thermistors (order 1), i.e. order 1
+	// in a weighted temperature T_w = sum_i (a_i / sum a) T_i. Only data where the thermistors
+	// disagree (table segments in ramps and turn-ons) can determine the weights; at soaks they
+	// move together and the held-out error of this candidate says so. Needs nt + 2 groups.
+	const std::size_t kWeighted = nt + 1;  // candidate index (nt is the mean)
+	const auto weightedFit = [&](int leave_out, Eigen::VectorXd& a) {
+		std::size_t m = 0;
+		for (const auto& g : segs) m += g.group != leave_out;
+		Eigen::MatrixXd X(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(nt + 1));
+		Eigen::VectorXd yy(static_cast<Eigen::Index>(m));
+		Eigen::Index row = 0;
+		for (std::size_t i = 0; i < segs.size(); i++)
+		{
+			if (segs[i].group == leave_out) continue;
+			X(row, 0) = 1.0;
+			for (std::size_t th = 0; th < nt; th++) X(row, static_cast<Eigen::Index>(th + 1)) = segs[i].temp_C[th];
+			yy(row++) = y[i];
+		}
+		a = X.completeOrthogonalDecomposition().solve(yy);
+	};
+	if (!opt.thermistor_mean && nt >= 2 && static_cast<int>(nt) + 2 <= groups)
+	{
+		double sse = 0;
+		for (int g = 0; g < groups; g++)
+		{
+			Eigen::VectorXd a;
+			weightedFit(g, a);
+			for (std::size_t i = 0; i < segs.size(); i++)
+				if (segs[i].group == g)
+				{
+					double pred = a(0);
+					for (std::size_t th = 0; th < nt; th++) pred += a(static_cast<Eigen::Index>(th + 1)) * segs[i].temp_C[th];
+					sse += (y[i] - pred) * (y[i] - pred);
+				}
+		}
+		const double cv = std::sqrt(sse / static_cast<double>(segs.size()));
+		rep.candidates.push_back({"weighted", 1, std::isfinite(cv) ? cv : std::numeric_limits<double>::infinity()});
+		if (std::isfinite(cv)) all.push_back({kWeighted, 1, cv});
+	}
 	double best_cv = std::numeric_limits<double>::infinity();
 	for (const auto& b : all) best_cv = std::min(best_cv, b.cv);
+	// the fewest parameters within prefer_simpler of the best (one thermistor of order k: k + 1;
+	// the weighted candidate: nt + 1), then the smaller held-out error
+	const auto params = [&](const Best& b) { return b.therm == kWeighted ? nt + 1 : static_cast<std::size_t>(b.order) + 1; };
 	Best pick;
 	bool picked = false;
-	for (int order = 0; order <= opt.max_order && !picked; order++)
-		for (const auto& b : all)
-			if (b.order == order && b.cv <= (1 + opt.prefer_simpler) * best_cv)
-			{
-				if (!picked || b.cv < pick.cv) pick = b;
-				picked = true;
-			}
+	for (const auto& b : all)
+		if (b.cv <= (1 + opt.prefer_simpler) * best_cv &&
+			(!picked || params(b) < params(pick) || (params(b) == params(pick) && b.cv < pick.cv)))
+			pick = b, picked = true;
 
 	// 5. final fit on every thermistor with the chosen order: the model's, and the slopes that
 	// bound the errors in the temperature variable (6.)
@@ -277,9 +322,26 @@ ScaleFactorModel fitScaleFactor(const std::vector<FogSeries>& runs, const Calibr
 		return f;
 	};
 	ScaleFactorModel m;
+	if (pick.therm == kWeighted)
+	{
+		Eigen::VectorXd a;
+		weightedFit(-1, a);
+		const double slope_sum = a.tail(static_cast<Eigen::Index>(nt)).sum();
+		if (!(std::abs(slope_sum) > 0))
+			throw ScaleFactorFitError("scale factor: the weighted fit found no temperature dependence");
+		for (std::size_t th = 0; th < nt; th++) m.weights.push_back(a(static_cast<Eigen::Index>(th + 1)) / slope_sum);
+		// the weighted temperature as one more column (index nt + 1; the mean's nt may be unused)
+		for (auto& g : segs)
+		{
+			double tw = 0;
+			for (std::size_t th = 0; th < nt; th++) tw += m.weights[th] * g.temp_C[th];
+			g.temp_C.resize(nt + 1, std::numeric_limits<double>::quiet_NaN());
+			g.temp_C.push_back(tw);
+		}
+	}
 	const ThermFit own = fitOn(pick.therm);
-	m.thermistor = candName(pick.therm);
-	if (pick.therm == nt)
+	m.thermistor = pick.therm == kWeighted ? std::string("weighted") : candName(pick.therm);
+	if (pick.therm >= nt)
 		for (const auto& t : bias_cal.layout) m.thermistors.push_back(t.name);
 	m.centre_C = own.centre;
 	m.scale_C = own.scale;
@@ -293,7 +355,7 @@ ScaleFactorModel fitScaleFactor(const std::vector<FogSeries>& runs, const Calibr
 	m.slope_ci95_lo_ppm_per_C = m.slope_noise_ci95_lo_ppm_per_C;
 	m.slope_ci95_hi_ppm_per_C = m.slope_noise_ci95_hi_ppm_per_C;
 	m.slope_thermistor_min_ppm_per_C = m.slope_thermistor_max_ppm_per_C = own.slope;
-	m.slope_thermistors = pick.therm < nt ? 1 : 0;  // the mean of the thermistors is not one of them
+	m.slope_thermistors = pick.therm < nt ? 1 : 0;  // the mean or weighted sum is not one of them
 	for (std::size_t th = 0; th < nt; th++)
 	{
 		if (th == pick.therm) continue;

@@ -136,7 +136,12 @@ WarmupModel fitWarmup(const std::vector<FogSeries>& runs, const Calibration& cal
 			{
 				const double e = comp.compensated_dph[k];
 				const bool table = !s.table_rate_dph.empty() && s.table_rate_dph[k] != 0.0;
-				if (table || !std::isfinite(e)) continue;
+				// Only where the main model (or a fallback) with its rates runs: the term is fitted to
+				// what that model leaves after a turn-on; the rate-free start-up model of the first half
+				// rate window is another model, whose own error would otherwise pull the fit (on the
+				// bundled warm-up run -1.4 deg/h for 30 s, and the time constant to its search edge).
+				const bool startup = (comp.flags[k] & (compflags::RateFree | compflags::RateWarmup)) != 0;
+				if (table || startup || !std::isfinite(e)) continue;
 				const double dt = s.time_s[k] - t_on;
 				const auto id = static_cast<long long>(std::floor(dt / opt.bin_s));
 				if (id != bin_id) flush(), bin_id = id;

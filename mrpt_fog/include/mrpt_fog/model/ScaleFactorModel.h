@@ -21,10 +21,17 @@ namespace mrpt_fog
 {
 struct ScaleFactorModel
 {
-	std::string thermistor;  //!< the temperature the model reads ("mean" with `thermistors`)
-	/** Non-empty: the model reads the mean of these thermistors' readings (the valid ones), and
-	 * `thermistor` is "mean" (fitScaleFactor with ScaleFactorFitOptions::thermistor_mean). */
+	std::string thermistor;  //!< the temperature the model reads ("mean" or "weighted" with `thermistors`)
+	/** Non-empty: the model reads the mean of these thermistors' readings, and `thermistor` is
+	 * "mean" (fitScaleFactor with ScaleFactorFitOptions::thermistor_mean); or, with `weights`,
+	 * their weighted sum and `thermistor` is "weighted". All must be valid, else the last value
+	 * is held (Compensator.h). */
 	std::vector<std::string> thermistors;
+	/** Non-empty (same length as `thermistors`, summing to 1): T = sum weights[i] x reading i, an
+	 * estimate of the coil's mean temperature, which the scale factor follows and no single
+	 * thermistor reads in a transient (fitted from table segments in temperature transients and
+	 * turn-ons, where the thermistors disagree; ScaleFactorFit.h). */
+	std::vector<double> weights;
 	double centre_C = 0.0;  //!< normalisation centre [degC]
 	double scale_C = 1.0;  //!< normalisation half-width [degC] (> 0)
 	double min_C = 0.0, max_C = 0.0;  //!< calibrated temperature range [degC] (inputs clamped to it)
