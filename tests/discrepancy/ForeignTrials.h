@@ -58,11 +58,12 @@ struct Outcome
 	std::string summary;
 };
 
+/** dt_s: sample period of the runs [s]; 0 = trialSamplePeriod_s(). */
 inline Outcome runForeignTrial(const std::string& hidden, double ratio, std::uint64_t seed,
-							   const std::string& profile = "lab")
+							   const std::string& profile = "lab", double dt_s = 0.0)
 {
 	fogtest::LumpedCoilOptions o1, o2;
-	o1.dt_s = o2.dt_s = trialSamplePeriod_s();
+	o1.dt_s = o2.dt_s = dt_s > 0 ? dt_s : trialSamplePeriod_s();
 	o1.seed = 2 * seed;
 	o2.seed = 2 * seed + 1;
 	o1.profile = o2.profile = profile;
@@ -143,12 +144,12 @@ struct Tally
 
 /** seeds first_seed .. first_seed + count - 1; prints one FOREIGN line. */
 inline Tally runCell(const std::string& hidden, double ratio, std::uint64_t first_seed, int count,
-					 const std::string& profile = "lab")
+					 const std::string& profile = "lab", double dt_s = 0.0)
 {
 	Tally t;
 	for (int i = 0; i < count; ++i)
 	{
-		const auto o = runForeignTrial(hidden, ratio, first_seed + static_cast<std::uint64_t>(i), profile);
+		const auto o = runForeignTrial(hidden, ratio, first_seed + static_cast<std::uint64_t>(i), profile, dt_s);
 		++t.trials;
 		t.named += o.named_ok;
 		t.false_naming += o.false_naming;
@@ -163,7 +164,7 @@ inline Tally runCell(const std::string& hidden, double ratio, std::uint64_t firs
 	std::sort(sh.begin(), sh.end());
 	std::printf("FOREIGN dt %gs %s %s x%g seeds %llu..%llu: named %d/%d, false naming %d, gap share >= 0.5: %d/%zu "
 				"(median %.2f)\n",
-				trialSamplePeriod_s(), profile.c_str(), hidden.empty() ? "null" : hidden.c_str(), ratio,
+				dt_s > 0 ? dt_s : trialSamplePeriod_s(), profile.c_str(), hidden.empty() ? "null" : hidden.c_str(), ratio,
 				static_cast<unsigned long long>(first_seed), static_cast<unsigned long long>(first_seed + count - 1),
 				t.named, t.trials, t.false_naming, t.gap_ok, sh.size(), sh.empty() ? NAN : sh[sh.size() / 2]);
 	for (const auto& m : t.misses) std::printf("  miss: %s\n", m.c_str());

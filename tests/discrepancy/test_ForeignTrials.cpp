@@ -22,6 +22,16 @@ TEST(ForeignTrials, NullWithSlowBiasWanderNamesNothing)
 	EXPECT_EQ(t.false_naming, 0);
 }
 
+TEST(ForeignTrials, NullAt5sSamplingNamesNothing)
+{
+	// at 5 s the compensator's causal order-2 rate has 12 samples per 60 s window: its noise
+	// left part of the true rate response in the residual and shupe_rate / radial_gradient were
+	// named on nulls (16/20 tuning seeds, session 5) until the base carried the nuisance column
+	// "centred minus causal rate" (BaseModelDesign.h). Tuning seeds 3-4 (seeds 1-10 were clean).
+	const auto t = runCell("", 0.0, 3, 2, "lab", 5.0);
+	EXPECT_EQ(t.false_naming, 0);
+}
+
 TEST(ForeignTrials, MonotonicCoolingNeverNamesHysteresis)
 {
 	for (std::uint64_t seed = 1; seed <= 1; ++seed)
