@@ -65,6 +65,67 @@ BaseDesign simulatorBaseDesign(const SimCalibration& c, const RunSignals& sig)
 	return b;
 }
 
+/** Log-drive mode: nuisance columns for the configured effects' response to the thermal content
+ * the reconstructed air does not resolve, i.e. to the thermistors' measured-minus-simulated
+ * difference d: each thermistor's d(d_i)/dt (the Shupe term and any rate effect follow node
+ * rates) and d(Tin) - d(Tout) (the radial gradient). `meas` and `simu` are the signals on the
+ * measured and on the simulated thermistors (same usable rows). Such a response cannot be told
+ * from a missing effect of the same form, so it is taken out of every candidate's test. */
+void addUnresolvedThermalColumns(BaseDesign& b, const RunSignals& meas, const RunSignals& simu)
+{
+	std::vector<std::vector<double>> cols;
+	std::vector<std::string> names;
+	for (std::size_t i = 0; i < meas.dthermistor_dt_Cpm.size() && i < simu.dthermistor_dt_Cpm.size(); ++i)
+	{
+		std::vector<double> c(meas.size(), 0.0);
+		for (std::size_t k = 0; k < meas.size(); ++k)
+			if (meas.usable[k]) c[k] = meas.dthermistor_dt_Cpm[i][k] - simu.dthermistor_dt_Cpm[i][k];
+		cols.push_back(std::move(c));
+		names.push_back("unresolved d(T" + std::to_string(i) + ")/dt");
+	}
+	if (meas.has_inner_outer)
+	{
+		std::vector<double> c(meas.size(), 0.0);
+		for (std::size_t k = 0; k < meas.size(); ++k)
+			if (meas.usable[k]) c[k] = meas.gradient_C[k] - simu.gradient_C[k];
+		cols.push_back(std::move(c));
+		names.push_back("unresolved Tin - Tout");
+	}
+	for (std::size_t j = 0; j < cols.size(); ++j)
+	{
+		b.X.conservativeResize(Eigen::NoChange, b.X.cols() + 1);
+		for (std::size_t k = 0; k < cols[j].size(); ++k) b.X(static_cast<Eigen::Index>(k), b.X.cols() - 1) = cols[j][k];
+		b.names.push_back(names[j]);
+		b.is_static_temp.push_back(0);
+	}
+}
+
+/** Share of the residual energy on the usable rows that columns [p0, end) of X explain beyond
+ * columns [0, p0): 1 - RSS(all) / RSS(first p0). 0 when nothing is left to explain. */
+double explainedShare(const Eigen::MatrixXd& X, std::size_t p0, const Eigen::VectorXd& r, const std::vector<unsigned char>& usable)
+{
+	std::vector<Eigen::Index> rows;
+	for (std::size_t k = 0; k < usable.size(); ++k)
+		if (usable[k] && std::isfinite(r(static_cast<Eigen::Index>(k)))) rows.push_back(static_cast<Eigen::Index>(k));
+	const auto n = static_cast<Eigen::Index>(rows.size());
+	if (n <= X.cols()) return 0.0;
+	auto rss = [&](Eigen::Index cols)
+	{
+		Eigen::MatrixXd A(n, cols + 1);
+		Eigen::VectorXd y(n);
+		for (Eigen::Index i = 0; i < n; ++i)
+		{
+			A(i, 0) = 1.0;  // the mean is not the unresolved content's
+			A.row(i).tail(cols) = X.row(rows[static_cast<std::size_t>(i)]).head(cols);
+			y(i) = r(rows[static_cast<std::size_t>(i)]);
+		}
+		const Eigen::VectorXd e = y - A * A.colPivHouseholderQr().solve(y);
+		return e.squaredNorm();
+	};
+	const double base = rss(static_cast<Eigen::Index>(p0));
+	return base > 0 ? std::max(0.0, 1.0 - rss(X.cols()) / base) : 0.0;
+}
+
 RunSignals withBias(RunSignals sig, const Eigen::VectorXd& r)
 {
 	for (std::size_t k = 0; k < sig.size(); ++k) sig.bias_dph[k] = r(static_cast<Eigen::Index>(k));
@@ -85,6 +146,31 @@ TemperatureGap temperatureGap(const std::string& label, const FogSeries& run, co
 		g.rms_after_per_C.push_back(rmsOfFinite({ra[i]}));
 	}
 	return g;
+}
+
+/** The run's signals with every thermistor reading replaced by the calibrated simulator's (where
+ * both exist), for the bias candidates when the drive comes from the log alone. The bias
+ * residual is measured minus SIMULATED bias, and the simulated coil follows the reconstructed
+ * air, which cannot follow air changes faster than its knots (steps, minute-period cycles: the
+ * housing leaves them near the thermistors' noise). The gyro's response to that fast part stays
+ * in the residual, and a candidate built from the MEASURED thermistors (d(Tin - Tout)/dt above
+ * all) tracks it: on fog-sim `rich` with nothing missing a gradient_rate was named (chi2 336,
+ * docs/discrepancy-sim.md). Built from the simulated thermistors the candidates see the thermal
+ * state the residual is relative to; a missing effect then has to show on the thermal history the
+ * simulator reproduces. With a profile the simulated and measured thermistors agree to their noise
+ * and the measured signals are kept. */
+RunSignals signalsOnSimulatedThermistors(const FogSeries& run, const SimTrace& trace, const RunSignals& measured,
+										 const RunSignalsOptions& opt)
+{
+	FogSeries s = run;
+	for (std::size_t i = 0; i < s.thermistorCount() && i < trace.temp_C.size(); ++i)
+		for (std::size_t k = 0; k < s.size(); ++k)
+			if (std::isfinite(s.temp_C[i][k]) && std::isfinite(trace.temp_C[i][k])) s.temp_C[i][k] = trace.temp_C[i][k];
+	RunSignals out = computeRunSignals(s, opt);
+	out.bias_dph = measured.bias_dph;
+	if (out.usable != measured.usable)
+		throw std::logic_error("simulated thermistor signals changed the usable samples");  // same NaN pattern by construction
+	return out;
 }
 
 NamedEffect heatNamedEffect(const HeatSourceResult& h)
@@ -139,7 +225,8 @@ SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& r
 		// default device's offsets (mean -0.01 C) gave 19.94 for 20 ppm/C (docs/discrepancy-sim.md).
 		// Active only when scale_factor_temp is on (expandSlots).
 		addUnique(free0, "sf_ref_C");
-	if (drive1.source == DriveSource::MeasuredLog)
+	const bool logDrive = drive1.source == DriveSource::MeasuredLog;
+	if (logDrive)
 	{
 		// the air was reconstructed through the network as configured: the thermal parameters by
 		// variable projection (the air re-reconstructed for each trial), then the calibration
@@ -220,6 +307,8 @@ SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& r
 			if (c.channel == ResidualChannel::Bias && c.id != "thermistor_lag" && !calA.model.effects.count(c.id))
 				candidates.push_back(c.id);
 		const Eigen::VectorXd r = biasResidual(sig1.bias_dph, calA.trace, sig1.usable);
+		const RunSignals candSig =
+			logDrive ? signalsOnSimulatedThermistors(runs[0], calA.trace, sig1, opt.base.signals) : sig1;
 		SelectionResult sel;
 		if (candidates.empty())
 		{
@@ -229,7 +318,14 @@ SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& r
 		else
 		{
 			selOpt.candidates = candidates;
-			sel = selectMissingEffects(withBias(sig1, r), simulatorBaseDesign(calA, sig1), selOpt);
+			BaseDesign base = simulatorBaseDesign(calA, candSig);
+			if (logDrive)
+			{
+				const std::size_t p0 = static_cast<std::size_t>(base.X.cols());
+				addUnresolvedThermalColumns(base, sig1, candSig);
+				if (firstRound) R.unresolved_share = explainedShare(base.X, p0, r, sig1.usable);
+			}
+			sel = selectMissingEffects(withBias(candSig, r), base, selOpt);
 		}
 		if (firstRound) rep.selection = sel;  // candidates_first_round, noise model, fit rows
 		firstRound = false;
@@ -287,8 +383,14 @@ SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& r
 			R.simulations += t2.simulations;
 			SelectionResult sel;
 			sel.named = {stages[i].named};
-			confirmOnRun(sel, withBias(sig2, biasResidual(sig2.bias_dph, t2.trace, sig2.usable)),
-						 simulatorBaseDesign(t2, sig2), opt.base.selection);
+			const RunSignals candSig2 =
+				drive2.source == DriveSource::MeasuredLog
+					? signalsOnSimulatedThermistors(runs[1], t2.trace, sig2, opt.base.signals)
+					: sig2;
+			BaseDesign base2 = simulatorBaseDesign(t2, candSig2);
+			if (drive2.source == DriveSource::MeasuredLog) addUnresolvedThermalColumns(base2, sig2, candSig2);
+			confirmOnRun(sel, withBias(candSig2, biasResidual(sig2.bias_dph, t2.trace, sig2.usable)), base2,
+						 opt.base.selection);
 			rep.selection.named[first + i] = sel.named.front();
 		}
 		rep.gap_confirm = runGapFromResiduals(rep.run_labels[1], sig2, segmentRun(sig2, opt.base.segmentation),

@@ -172,6 +172,7 @@ JsonValue simDiscrepancyJson(const SimDiscrepancyReport& R)
 		a["fit_rms_C"] = R.drive_air_fit_rms_C;
 		a["ci95_half_mean_C"] = R.drive_air_ci95_mean_C;
 		a["ci95_half_max_C"] = R.drive_air_ci95_max_C;
+		if (R.unresolved_share >= 0) a["unresolved_share"] = R.unresolved_share;
 		j["simulator"]["reconstructed_air"] = a;
 	}
 	if (R.report.has_confirm) j["temperature_gap_confirm"] = tempGapJson(R.temp_gap_confirm);
@@ -187,6 +188,12 @@ std::string simDiscrepancyText(const SimDiscrepancyReport& R)
 	os << valuesText(R.calibrated_before, R.calibrated_before_ci95_half) << "\n";
 	os << "Temperature channel: " << R.heat.sentence << "\n";
 	os << R.thermal.sentence << "\n";
+	if (R.unresolved_share >= 0)
+		os << "Unresolved thermal content: " << formatValue("%.0f", 100 * R.unresolved_share)
+		   << " % of the bias residual follows the thermistors' measured-minus-simulated rates and Tin - Tout (air "
+			  "changes faster than the reconstructed air's knots). It is taken out before the candidates are "
+			  "tested: an effect acting only there cannot be told from the configured effects' response to it "
+			  "without the chamber profile.\n";
 	std::string body = discrepancyText(R.report);
 	if (R.thermal.misfit)
 	{

@@ -63,6 +63,11 @@ struct SimDiscrepancyReport
 	/** Reconstructed air (drive from the measured log; ci < 0: not reconstructed). */
 	std::size_t drive_air_knots = 0;
 	double drive_air_fit_rms_C = 0, drive_air_ci95_mean_C = -1, drive_air_ci95_max_C = -1;
+	/** Drive from the measured log: share of the first-round bias residual energy explained by the
+	 * thermal content the reconstructed air does not resolve (the thermistors' measured-minus-
+	 * simulated rates and Tin - Tout, SimulatorGap.cpp); the bias candidates are tested with it
+	 * taken out. < 0: not computed (drive from a profile, or the thermal fit failed). */
+	double unresolved_share = -1;
 	std::vector<std::string> effects_before, effects_after;
 	std::vector<std::string> free_before, free_after;
 	std::vector<std::pair<std::string, double>> calibrated_before, calibrated_after;
