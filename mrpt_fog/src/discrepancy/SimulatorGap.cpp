@@ -45,6 +45,7 @@ BaseDesign simulatorBaseDesign(const SimCalibration& c, const RunSignals& sig)
 		b.names.push_back("d(sim)/d(" + s.label() + ")");
 		const bool poly = s.id == "temp_poly_dph";
 		b.is_static_temp.push_back(poly ? 1 : 0);
+		b.is_nuisance.push_back(0);
 		if (poly) b.max_static_order = std::max(b.max_static_order, s.index + 1);
 	}
 	// static temperature of the temp_poly_order candidate: the thermistor mean. The simulator's
@@ -61,6 +62,7 @@ BaseDesign simulatorBaseDesign(const SimCalibration& c, const RunSignals& sig)
 			b.X(static_cast<Eigen::Index>(k), b.X.cols() - 1) = sig.usable[k] ? sig.table_rate_dph[k] * 1e-4 : 0.0;
 		b.names.push_back("table_rate");
 		b.is_static_temp.push_back(0);
+		b.is_nuisance.push_back(0);
 	}
 	return b;
 }
@@ -97,6 +99,7 @@ void addUnresolvedThermalColumns(BaseDesign& b, const RunSignals& meas, const Ru
 		for (std::size_t k = 0; k < cols[j].size(); ++k) b.X(static_cast<Eigen::Index>(k), b.X.cols() - 1) = cols[j][k];
 		b.names.push_back(names[j]);
 		b.is_static_temp.push_back(0);
+		b.is_nuisance.push_back(1);
 	}
 }
 
