@@ -9,7 +9,11 @@
 #include <mrpt_fog/plot/PlotCanvas.h>
 #include <mrpt_fog_nav/OdometryRawlog.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -120,35 +124,41 @@ void writeDriftJson(const std::string& path, const std::vector<DriveEvaluation>&
 
 void writeDriftCsv(const std::string& path, const nav::Trajectory& truth, const nav::DriftReport& report)
 {
-	std::ostringstream o;
-	o.precision(10);
-	o << "time_s,truth_yaw_deg";
-	for (const auto& v : report.variants) o << ",heading_error_" << v.name << "_deg,position_error_" << v.name << "_m";
-	o << "\n";
-	const double t0 = truth.front().t_s;
-	// every variant is evaluated at the truth times inside its span: index by time
-	std::vector<std::size_t> idx(report.variants.size(), 0);
-	for (const auto& gt : truth)
-	{
-		bool any = false;
+	// Row by row into the file (the whole text in memory was ~100 B per sample, issue 14).
+	writeFileAtomically(path, [&](const std::string& tmp) {
+		std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+		if (!f) throw std::runtime_error("cannot write '" + path + "': cannot open: " + std::strerror(errno));
+		f.precision(10);
+		f << "time_s,truth_yaw_deg";
+		for (const auto& v : report.variants) f << ",heading_error_" << v.name << "_deg,position_error_" << v.name << "_m";
+		f << "\n";
+		const double t0 = truth.front().t_s;
+		// every variant is evaluated at the truth times inside its span: index by time
+		std::vector<std::size_t> idx(report.variants.size(), 0);
 		std::ostringstream row;
 		row.precision(10);
-		row << gt.t_s - t0 << "," << gt.yaw_rad * 180.0 / M_PI;
-		for (std::size_t i = 0; i < report.variants.size(); i++)
+		for (const auto& gt : truth)
 		{
-			const auto& v = report.variants[i];
-			while (idx[i] < v.t_s.size() && v.t_s[idx[i]] < gt.t_s) idx[i]++;
-			if (idx[i] < v.t_s.size() && v.t_s[idx[i]] == gt.t_s)
+			bool any = false;
+			row.str("");
+			row << gt.t_s - t0 << "," << gt.yaw_rad * 180.0 / M_PI;
+			for (std::size_t i = 0; i < report.variants.size(); i++)
 			{
-				row << "," << v.heading_error_deg[idx[i]] << "," << v.position_error_m[idx[i]];
-				any = true;
+				const auto& v = report.variants[i];
+				while (idx[i] < v.t_s.size() && v.t_s[idx[i]] < gt.t_s) idx[i]++;
+				if (idx[i] < v.t_s.size() && v.t_s[idx[i]] == gt.t_s)
+				{
+					row << "," << v.heading_error_deg[idx[i]] << "," << v.position_error_m[idx[i]];
+					any = true;
+				}
+				else
+					row << ",,";
 			}
-			else
-				row << ",,";
+			if (any) f << row.str() << "\n";
 		}
-		if (any) o << row.str() << "\n";
-	}
-	writeTextFileAtomically(path, o.str());
+		f.close();
+		if (!f) throw std::runtime_error("cannot write '" + path + "': write error (disk full?)");
+	});
 }
 
 void writeDriftPlots(const std::string& dir, const nav::Trajectory& truth, const std::vector<nav::NamedTrajectory>& variants,
@@ -207,12 +217,23 @@ void writeDriftPlots(const std::string& dir, const nav::Trajectory& truth, const
 
 void writeOdometryRawlog(const std::string& path, const nav::Trajectory& traj, const std::vector<double>& imu_rate_z_rad_s)
 {
-	const auto obs = nav::makeOdometryObservations(traj, imu_rate_z_rad_s);
+	if (imu_rate_z_rad_s.size() != traj.size())
+		throw std::invalid_argument("writeOdometryRawlog: imu_rate_z_rad_s size differs from the trajectory");
 	writeFileAtomically(path, [&](const std::string& tmp) {
 		mrpt::io::CFileGZOutputStream f;
 		if (!f.open(tmp)) throw std::runtime_error(tmp + ": cannot open for writing");
 		auto ar = mrpt::serialization::archiveFrom(f);
-		for (const auto& o : obs) ar << *o;
+		// A few thousand poses at a time: the MRPT objects of the whole drive were ~1 KB per
+		// pose (issue 14). With the rates given, a chunk's objects are the whole call's.
+		constexpr std::size_t kChunk = 4096;
+		for (std::size_t b = 0; b < traj.size(); b += kChunk)
+		{
+			const std::size_t e = std::min(traj.size(), b + kChunk);
+			const nav::Trajectory part(traj.begin() + static_cast<std::ptrdiff_t>(b), traj.begin() + static_cast<std::ptrdiff_t>(e));
+			const std::vector<double> rates(imu_rate_z_rad_s.begin() + static_cast<std::ptrdiff_t>(b),
+											imu_rate_z_rad_s.begin() + static_cast<std::ptrdiff_t>(e));
+			for (const auto& o : nav::makeOdometryObservations(part, rates)) ar << *o;
+		}
 		f.close();
 	});
 }

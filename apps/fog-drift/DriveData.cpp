@@ -44,17 +44,29 @@ std::optional<double> latitudeFrom(const FogSeries& s)
 	return std::nullopt;
 }
 
+void shrinkToFit(FogSeries& s)
+{
+	s.time_s.shrink_to_fit();
+	for (auto& r : s.rate_dph) r.shrink_to_fit();
+	for (auto& t : s.temp_C) t.shrink_to_fit();
+	for (auto* v : {&s.table_rate_dph, &s.field_uT, &s.power}) v->shrink_to_fit();
+}
+
 /** seriesFromObservations() one observation at a time (the same series and layout error), so
  * that a drive's observations need not be kept as MRPT objects (~2 KB each, issue 14). */
 class SeriesBuilder
 {
    public:
+	/** keep_temperatures false: the series has no thermistors (the ideal FOG: its rates alone
+	 * are used; the layout is still checked against the first observation's). */
+	explicit SeriesBuilder(bool keep_temperatures) : keep_temps_(keep_temperatures) {}
 	void add(const CObservationFOG& o)
 	{
 		if (n_ == 0)
 		{
 			s_.sensor_label = o.sensorLabel;
-			s_.thermistors = o.thermistors;
+			first_thermistors_ = o.thermistors;
+			if (keep_temps_) s_.thermistors = o.thermistors;
 			s_.has_axis = o.hasAxis;
 			s_.epoch_s = std::floor(mrpt::Clock::toDouble(o.timestamp));
 			s_.temp_C.assign(s_.thermistors.size(), {});
@@ -62,7 +74,7 @@ class SeriesBuilder
 			field_ = o.hasField;
 			power_ = o.hasPower;
 		}
-		else if (o.thermistors != s_.thermistors || o.hasAxis != s_.has_axis || o.hasTableRate != table_ ||
+		else if (o.thermistors != first_thermistors_ || o.hasAxis != s_.has_axis || o.hasTableRate != table_ ||
 				 o.hasField != field_ || o.hasPower != power_)
 			throw std::invalid_argument("FOG observation " + std::to_string(n_) + " (sensor '" + o.sensorLabel +
 										"') has a different layout than the first one");
@@ -79,6 +91,8 @@ class SeriesBuilder
 	FogSeries take() { return std::move(s_); }
 
    private:
+	bool keep_temps_ = true;
+	std::vector<ThermistorInfo> first_thermistors_;
 	FogSeries s_;
 	std::size_t n_ = 0;
 	bool table_ = false, field_ = false, power_ = false;
@@ -90,7 +104,7 @@ DriveData readDrive(const std::string& path, const DriveLabels& labels)
 	// Read as readFogRawlog() reads, but the other observations are taken in as they come: the
 	// odometry and the truth as poses, the ideal FOG as a series.
 	DriveData d;
-	SeriesBuilder ideal;
+	SeriesBuilder ideal(false);
 	const auto take = [&](const mrpt::obs::CObservation::Ptr& o) {
 		if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o); f && o->sensorLabel == labels.fog_ideal)
 			ideal.add(*f);
@@ -135,6 +149,11 @@ DriveData readDrive(const std::string& path, const DriveLabels& labels)
 	if (d.fog.size() < 2) throw std::runtime_error(path + ": FOG '" + labels.fog + "' has fewer than 2 samples");
 	d.latitude_deg = latitudeFrom(d.fog);
 	if (!ideal.empty()) d.fog_ideal = ideal.take();
+	// Growth by doubling leaves up to half of each vector unused: give it back (issue 14).
+	shrinkToFit(d.fog);
+	if (d.fog_ideal) shrinkToFit(*d.fog_ideal);
+	for (auto* v : {&d.odometry.t_s, &d.odometry.x_m, &d.odometry.y_m, &d.odometry.phi_rad}) v->shrink_to_fit();
+	d.truth.shrink_to_fit();
 	if (d.odometry.t_s.size() < 2)
 		throw std::runtime_error(path + ": fewer than 2 CObservationOdometry with label '" + labels.odometry + "'");
 	if (d.truth.size() < 2)

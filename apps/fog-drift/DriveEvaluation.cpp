@@ -40,9 +40,16 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 											 : "FOG_IDEAL is not a triad: the vertical gyro alone";
 
 	auto run = [&](const std::string& name, const std::vector<double>& t, const std::array<const std::vector<double>*, 3>& r) {
-		e.results.push_back(e.three_axis ? deadReckonVariant(t, *r[0], *r[1], *r[2], e.drive, hopt)
-										 : deadReckonVariant(t, *r[2], e.drive, hopt));
-		e.variants.emplace_back(name, e.results.back().trajectory);
+		// The times and rates of a variant serve the triad's attitude figures and --odometry-out
+		// (raw or compensated): the ideal's, single-axis, are not kept.
+		HeadingOptions o = hopt;
+		o.keep_rates = e.three_axis || name != "ideal";
+		e.results.push_back(e.three_axis ? deadReckonVariant(t, *r[0], *r[1], *r[2], e.drive, o)
+										 : deadReckonVariant(t, *r[2], e.drive, o));
+		// The trajectory lives in variants alone (results[i].trajectory is left empty): one copy
+		// of each (~80 B per sample, issue 14).
+		e.variants.emplace_back(name, std::move(e.results.back().trajectory));
+		e.results.back().trajectory = {};
 	};
 	// The heading gyro is the vertical (z) axis; a triad's x / y enter the 3-D strapdown.
 	auto rates = [&](const FogSeries& s) -> std::array<const std::vector<double>*, 3> {
@@ -51,7 +58,7 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 									 "' has no z (vertical) axis; fog-drift integrates the vertical gyro");
 		return {&s.rate_dph[0], &s.rate_dph[1], &s.rate_dph[2]};
 	};
-	const std::vector<double> t_fog = absoluteTimes(fog);
+	std::vector<double> t_fog = absoluteTimes(fog);
 	run("raw", t_fog, rates(fog));
 	std::array<std::vector<double>, 3> comp;
 	if (cals)
@@ -92,6 +99,11 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 		// bias (hence its Earth rate) is removed before the division, so the Earth rate goes
 		// back unscaled.
 		for (double& r : comp[2]) r += e.calibration_earth_rate_dph;
+		// The temperatures have served (compensation is the last to read them): released, 8 B per
+		// thermistor and sample (issue 14). The drive's FOG keeps its times, rates and power.
+		e.drive.fog.thermistors.clear();
+		e.drive.fog.temp_C.clear();
+		e.drive.fog.temp_C.shrink_to_fit();
 		run("compensated", t_fog, {&comp[0], &comp[1], &comp[2]});
 	}
 	if (e.drive.fog_ideal) run("ideal", absoluteTimes(*e.drive.fog_ideal), rates(*e.drive.fog_ideal));
@@ -151,6 +163,22 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 			}
 		}
 	}
+
+	// Dead reckoning and the triad figures are done: from here on only the truth and the
+	// trajectories are read (report, segments, CSV, plots). The per-sample FOG, ideal FOG and
+	// odometry are released (~100 B per sample, issue 14); the FOG's label, epoch and metadata stay.
+	std::vector<double>().swap(t_fog);
+	for (auto& c : comp) std::vector<double>().swap(c);
+	{
+		FogSeries kept;
+		kept.sensor_label = fog.sensor_label;
+		kept.epoch_s = fog.epoch_s;
+		kept.has_axis = fog.has_axis;
+		kept.metadata = fog.metadata;
+		e.drive.fog = std::move(kept);
+	}
+	e.drive.fog_ideal.reset();
+	e.drive.odometry = OdometryPoses{};
 
 	e.report = nav::computeDriftReport(e.drive.truth, e.variants);
 	e.segments = nav::segmentDrive(e.drive.truth, st.figures);

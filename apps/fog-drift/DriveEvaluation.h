@@ -43,12 +43,14 @@ struct AttitudeFigures
 struct DriveEvaluation
 {
 	std::string input;
+	/** After evaluateDrive: the truth, and the FOG's label, epoch and metadata; the per-sample
+	 * FOG, ideal FOG and odometry are released once dead-reckoned (memory, issue 14). */
 	DriveData drive;
 	double latitude_deg = 0.0;
 	double calibration_earth_rate_dph = 0.0;  //!< vertical Earth rate the calibration's bias held
 	std::string calibration_latitude_source;  //!< "option", "calibration" or "drive"
 	std::vector<nav::NamedTrajectory> variants;
-	std::vector<VariantResult> results;  //!< same order as variants
+	std::vector<VariantResult> results;  //!< same order as variants (their trajectories moved there)
 	nav::DriftReport report;
 	nav::DriveSegments segments;
 	std::map<std::string, nav::HeadingFigures> figures;  //!< by variant name

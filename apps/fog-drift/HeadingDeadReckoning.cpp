@@ -49,12 +49,17 @@ VariantResult deadReckonImpl(const std::vector<double>& t_s, const std::vector<d
 	const nav::TrajectoryPoint start = nav::interpolate(drive.truth, t0);
 	att.initialize(t0, triad ? start.q_nb.normalized() : nav::quatFromYawPitchRoll(start.yaw_rad, 0, 0));
 	nav::AttitudeTrack track;
+	track.reserve(t_s.size() + 1);
 	track.push_back(t0, att.attitude());
 
 	VariantResult out;
+	if (options.keep_rates) out.t_s.reserve(t_s.size()), out.yaw_rate_rad_s.reserve(t_s.size());
+	if (triad) out.roll_rad.reserve(t_s.size()), out.pitch_rad.reserve(t_s.size());
 	const double earth_up = nav::earthRateEnu(so.latitude_rad).z();
 	// Speed for the transport rate: wheel odometry (as a real vehicle has it), per interval.
-	const std::vector<nav::OdometryIncrement> odo_inc = nav::odometryFromPoses2D(odo.t_s, odo.x_m, odo.y_m, odo.phi_rad);
+	const std::vector<nav::OdometryIncrement> odo_inc =
+		options.transport_rate ? nav::odometryFromPoses2D(odo.t_s, odo.x_m, odo.y_m, odo.phi_rad)
+							   : std::vector<nav::OdometryIncrement>{};
 	auto speedAt = [&](double t) {
 		auto it = std::lower_bound(odo_inc.begin(), odo_inc.end(), t,
 								   [](const nav::OdometryIncrement& a, double tq) { return a.t_s < tq; });
@@ -87,23 +92,17 @@ VariantResult deadReckonImpl(const std::vector<double>& t_s, const std::vector<d
 		else
 			att.updateRateZ(t_s[k], w, vel);
 		if (t_s[k] > track.backTime()) track.push_back(t_s[k], att.attitude());
-		out.t_s.push_back(t_s[k]);
-		out.yaw_rate_rad_s.push_back(w - earth_up);
+		if (options.keep_rates) out.t_s.push_back(t_s[k]), out.yaw_rate_rad_s.push_back(w - earth_up);
 	}
 
-	// Odometry inside the attitude track; dead reckoning from the truth position.
-	std::vector<double> ot, ox, oy, op;
-	for (std::size_t k = 0; k < odo.t_s.size(); ++k)
-		if (odo.t_s[k] >= t0 && odo.t_s[k] <= track.backTime())
-		{
-			ot.push_back(odo.t_s[k]);
-			ox.push_back(odo.x_m[k]);
-			oy.push_back(odo.y_m[k]);
-			op.push_back(odo.phi_rad[k]);
-		}
-	if (ot.size() < 2) throw std::runtime_error("fewer than 2 odometry samples inside the gyro's time span");
-	const nav::TrajectoryPoint p0 = nav::interpolate(drive.truth, ot.front());
-	out.trajectory = nav::deadReckon2D(ot.front(), p0.x_m, p0.y_m, nav::odometryFromPoses2D(ot, ox, oy, op), track);
+	// Odometry inside the attitude track (a contiguous range: times increase); dead reckoning
+	// from the truth position.
+	const auto first = static_cast<std::size_t>(std::lower_bound(odo.t_s.begin(), odo.t_s.end(), t0) - odo.t_s.begin());
+	const auto last = static_cast<std::size_t>(std::upper_bound(odo.t_s.begin(), odo.t_s.end(), track.backTime()) - odo.t_s.begin());
+	if (last < first + 2) throw std::runtime_error("fewer than 2 odometry samples inside the gyro's time span");
+	const nav::TrajectoryPoint p0 = nav::interpolate(drive.truth, odo.t_s[first]);
+	out.trajectory = nav::deadReckon2D(odo.t_s[first], p0.x_m, p0.y_m,
+									   nav::odometryFromPoses2D(odo.t_s, odo.x_m, odo.y_m, odo.phi_rad, first, last), track);
 	return out;
 }
 }  // namespace

@@ -24,11 +24,13 @@ struct HeadingOptions
 	double latitude_deg = 0.0;
 	bool transport_rate = false;  //!< the simulator's drive is flat-Earth: off by default
 	nav::RateSampling sampling = nav::RateSampling::IntervalAverage;  //!< fog-sim: mean over (t - dt, t]
+	/** false: VariantResult::t_s and yaw_rate_rad_s are left empty (not needed: memory) */
+	bool keep_rates = true;
 };
 
 struct VariantResult
 {
-	nav::Trajectory trajectory;  //!< dead-reckoned, at odometry times
+	nav::Trajectory trajectory;  //!< dead-reckoned, at odometry times (evaluateDrive moves it to DriveEvaluation::variants)
 	std::vector<double> t_s;  //!< gyro sample times used
 	std::vector<double> yaw_rate_rad_s;  //!< gyro rate with the Earth rate removed (for the rawlog)
 	std::vector<double> roll_rad, pitch_rad;  //!< triad only: the attitude at t_s

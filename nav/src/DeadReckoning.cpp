@@ -47,11 +47,20 @@ std::vector<OdometryIncrement> odometryFromSpeed(const std::vector<double>& t_s,
 std::vector<OdometryIncrement> odometryFromPoses2D(const std::vector<double>& t_s, const std::vector<double>& x_m,
 												   const std::vector<double>& y_m, const std::vector<double>& phi_rad)
 {
+	return odometryFromPoses2D(t_s, x_m, y_m, phi_rad, 0, t_s.size());
+}
+
+std::vector<OdometryIncrement> odometryFromPoses2D(const std::vector<double>& t_s, const std::vector<double>& x_m,
+												   const std::vector<double>& y_m, const std::vector<double>& phi_rad,
+												   std::size_t first, std::size_t last)
+{
 	checkTimes(t_s, x_m.size(), "odometryFromPoses2D");
 	checkTimes(t_s, y_m.size(), "odometryFromPoses2D");
 	checkTimes(t_s, phi_rad.size(), "odometryFromPoses2D");
+	if (!(first <= last && last <= t_s.size())) throw std::invalid_argument("odometryFromPoses2D: range outside the poses");
 	std::vector<OdometryIncrement> out;
-	for (std::size_t k = 1; k < t_s.size(); ++k)
+	out.reserve(last > first ? last - first - 1 : 0);
+	for (std::size_t k = first + 1; k < last; ++k)
 	{
 		const double dx = x_m[k] - x_m[k - 1], dy = y_m[k] - y_m[k - 1];
 		const double dphi = wrapToPi(phi_rad[k] - phi_rad[k - 1]);
@@ -135,15 +144,16 @@ Trajectory deadReckon2D(double t0_s, double x0_m, double y0_m, const std::vector
 						const AttitudeTrack& attitude)
 {
 	DeadReckoning2D dr(t0_s, x0_m, y0_m);
+	dr.reserve(odometry.size() + 1);
 	for (const auto& inc : odometry) dr.add(inc, attitude);
 	if (odometry.empty())
 	{
-		Trajectory t = dr.trajectory();
+		Trajectory t = dr.takeTrajectory();
 		t.front().yaw_rad = attitude.yawAt(t0_s);
 		t.front().q_nb = quatFromYawPitchRoll(t.front().yaw_rad, 0, 0);
 		return t;
 	}
-	return dr.trajectory();
+	return dr.takeTrajectory();
 }
 
 Trajectory deadReckon3D(double t0_s, const Eigen::Vector3d& p0_m, const std::vector<OdometryIncrement>& odometry,

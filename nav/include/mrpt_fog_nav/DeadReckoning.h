@@ -37,6 +37,11 @@ std::vector<OdometryIncrement> odometryFromSpeed(const std::vector<double>& t_s,
  * by the direction of travel along the body x axis. */
 std::vector<OdometryIncrement> odometryFromPoses2D(const std::vector<double>& t_s, const std::vector<double>& x_m,
 												   const std::vector<double>& y_m, const std::vector<double>& phi_rad);
+/** The same for the poses [first, last) alone (no copies of the range: long drives, issue 14);
+ * throws std::invalid_argument unless first <= last <= size. */
+std::vector<OdometryIncrement> odometryFromPoses2D(const std::vector<double>& t_s, const std::vector<double>& x_m,
+												   const std::vector<double>& y_m, const std::vector<double>& phi_rad,
+												   std::size_t first, std::size_t last);
 
 /** Planar dead reckoning (z = 0): heading from the attitude track's yaw. */
 class DeadReckoning2D
@@ -49,6 +54,10 @@ class DeadReckoning2D
 	void add(const OdometryIncrement& inc, const AttitudeTrack& attitude);
 
 	const Trajectory& trajectory() const { return traj_; }
+	/** Room for n points (no regrowth: long drives, issue 14). */
+	void reserve(std::size_t n) { traj_.reserve(n); }
+	/** The trajectory, moved out (the object is spent). */
+	Trajectory takeTrajectory() { return std::move(traj_); }
 
    private:
 	Trajectory traj_;

@@ -41,6 +41,12 @@ class AttitudeTrack
 	/** Yaw [rad] at t_s. */
 	double yawAt(double t_s) const;
 	std::size_t size() const { return t_s_.size(); }
+	/** Room for n attitudes (no regrowth: long drives, issue 14). */
+	void reserve(std::size_t n)
+	{
+		t_s_.reserve(n);
+		q_.reserve(n);
+	}
 	bool empty() const { return t_s_.empty(); }
 	double frontTime() const { return t_s_.front(); }
 	double backTime() const { return t_s_.back(); }
