@@ -133,3 +133,38 @@ TEST(BaseModelDesign, BadPresetsThrow)
 	EXPECT_THROW(resolveBaseModel("quadratic", f.run.series), std::invalid_argument);
 	EXPECT_ANY_THROW(resolveBaseModel("/nonexistent/cal.yaml", f.run.series));
 }
+
+TEST(BaseModelDesign, WeightedScaleFactorColumnReadsTheWeightedSum)
+{
+	// a calibration whose scale factor reads a weighted sum of thermistors (ScaleFactorModel
+	// `weighted`, issue 12) is tested as the compensator runs it: the column is table rate x 1e-6
+	// x z, z of sum w_i T_i (clamped to the calibrated range); it used to throw "base model uses
+	// thermistor 'weighted'"
+	Fixture f;
+	auto spec = resolveBaseModel("M2:Ti1", f.run.series, ScaleFactorFitting::Off);
+	ScaleFactorModel sf;
+	sf.thermistor = "weighted";
+	ASSERT_GE(f.run.series.thermistors.size(), 2u);
+	const auto& a = f.run.series.thermistors[0].name;
+	const auto& b = f.run.series.thermistors[1].name;
+	sf.thermistors = {a, b};
+	sf.weights = {1.5, -0.5};
+	sf.centre_C = 20.0;
+	sf.scale_C = 10.0;
+	sf.min_C = -100.0;
+	sf.max_C = 100.0;
+	sf.coef_ppm = {0.0, 7.0};
+	spec.scale_factor = sf;
+	const auto d = buildBaseDesign(spec, f.run.series, f.sig);
+	ASSERT_EQ(d.names.back(), "table_rate*1e-6*s(weighted)^1");
+	std::size_t checked = 0;
+	for (std::size_t k = 0; k < f.run.series.size(); ++k)
+	{
+		const double Ta = f.sig.thermistor_C[0][k], Tb = f.sig.thermistor_C[1][k];
+		if (!std::isfinite(Ta) || !std::isfinite(Tb) || f.sig.table_rate_dph[k] == 0) continue;
+		const double z = (1.5 * Ta - 0.5 * Tb - 20.0) / 10.0;
+		EXPECT_NEAR(d.X(static_cast<Eigen::Index>(k), d.X.cols() - 1), f.sig.table_rate_dph[k] * 1e-6 * z, 1e-12);
+		++checked;
+	}
+	EXPECT_GT(checked, 100u);
+}

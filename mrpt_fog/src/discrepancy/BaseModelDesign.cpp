@@ -257,13 +257,23 @@ BaseDesign buildBaseDesign(const BaseModelSpec& spec, const FogSeries& run, cons
 		if (spec.scale_factor && spec.scale_factor->order() >= 1)
 		{
 			const auto& sf = *spec.scale_factor;
-			const std::size_t ti = thermistor(sf.thermistor);
+			// the temperature it reads: one thermistor, or the mean / weighted sum of several
+			std::vector<double> sfTemp(n, 0.0);
+			if (sf.thermistors.empty())
+				sfTemp = sig.thermistor_C[thermistor(sf.thermistor)];
+			else
+				for (std::size_t i = 0; i < sf.thermistors.size(); ++i)
+				{
+					const std::size_t ti = thermistor(sf.thermistors[i]);
+					const double w = sf.weights.empty() ? 1.0 / double(sf.thermistors.size()) : sf.weights[i];
+					for (std::size_t j = 0; j < n; ++j) sfTemp[j] += w * sig.thermistor_C[ti][j];
+				}
 			for (std::size_t p = 1; p <= sf.order(); ++p)
 			{
 				std::vector<double> col(n);
 				for (std::size_t j = 0; j < n; ++j)
 				{
-					const double T = std::min(std::max(sig.thermistor_C[ti][j], sf.min_C), sf.max_C);
+					const double T = std::min(std::max(sfTemp[j], sf.min_C), sf.max_C);
 					col[j] = sig.table_rate_dph[j] * 1e-6 * std::pow((T - sf.centre_C) / sf.scale_C, static_cast<double>(p));
 				}
 				add(std::move(col), "table_rate*1e-6*s(" + sf.thermistor + ")^" + std::to_string(p), false);
