@@ -56,3 +56,32 @@ TEST(CorruptLengthField, ReaderFailsCleanlyWhenMrptCannotAllocate)
 	for (const char* f : {"corrupt_length_rawdaq.rawlog", "corrupt_length_classname.rawlog"})
 		EXPECT_EQ(readInSmallMachine(dataFile(f)), 0) << f;
 }
+
+// Found by fuzz_rawlog (300 s local run): a corrupt class name that MRPT resolves to
+// mrpt::math::CMatrixD with rows x cols read from the file. MRPT's aligned allocator returns null
+// instead of throwing and its matrix code writes through it: SIGSEGV in fog-convert. The reader
+// refuses a top-level object that is no observation, sensory frame or action before MRPT reads it.
+TEST(CorruptLengthField, TopLevelNonObservationRefusedUnread)
+{
+	const std::string path = dataFile("corrupt_top_level_matrix.rawlog");
+	const int code = fogtest::exitCodeInChild([&] {
+		try
+		{
+			(void)readFogRawlog(path);
+		}
+		catch (const FogIoError& e)
+		{
+			const std::string m = e.what();
+			return m.find(path) != std::string::npos && m.find("object #0") != std::string::npos &&
+						   m.find("mrpt::math::CMatrixD, not an observation") != std::string::npos
+					   ? 0
+					   : 2;
+		}
+		catch (...)
+		{
+			return 3;
+		}
+		return 1;
+	});
+	EXPECT_EQ(code, 0) << "0 = FogIoError naming the file, the object and its class; 1 = read; 2 = other message; 3 = other exception; else a crash";
+}

@@ -12,6 +12,7 @@
 #include <mrpt_fog/obs/registerAllClasses.h>
 
 #include <cmath>
+#include <cstring>
 #include <deque>
 #include <map>
 #include <optional>
@@ -42,6 +43,29 @@ std::string whyReadFailed(const std::string& what, bool at_end_of_data)
 	if (at_end_of_data)
 		return "the file ends in the middle of this object (truncated file, or a corrupt length field in the object)";
 	return "corrupt object: " + oneLineErrorMessage(what);
+}
+
+/** The registered class an MRPT object header at `p` names (MRPT 2 header: 0x80 | name length,
+ * then the name; MRPT ends the name at its first NUL), or nullptr when the header is cut, in another
+ * format or names no registered class (CArchive then says why). */
+const mrpt::rtti::TRuntimeClassId* classOfObjectHeader(const unsigned char* p, std::size_t n)
+{
+	if (n < 1 || (p[0] & 0x80u) == 0) return nullptr;
+	const std::size_t len = p[0] & 0x7Fu;
+	if (n < 1 + len) return nullptr;
+	const auto* name = reinterpret_cast<const char*>(p + 1);
+	const std::string cls(name, ::strnlen(name, len));
+	return cls.empty() ? nullptr : mrpt::rtti::findRegisteredClass(cls);
+}
+
+/** Whether objects of `c` may stand at the top level of a rawlog (observations-only or
+ * sensory-frame format). Anything else is refused before MRPT deserialises it: a corrupt file
+ * can name any registered class, and some (CMatrixD: rows x cols from the file, MRPT's aligned
+ * allocator returning null on failure) crash inside MRPT instead of throwing (found by fuzz_rawlog). */
+bool rawlogEntryClass(const mrpt::rtti::TRuntimeClassId* c)
+{
+	return c->derivedFrom(CLASS_ID(mrpt::obs::CObservation)) || c->derivedFrom(CLASS_ID(mrpt::obs::CSensoryFrame)) ||
+		   c->derivedFrom(CLASS_ID(mrpt::obs::CActionCollection));
 }
 
 std::string labelList(const std::map<std::string, std::size_t>& counts)
@@ -140,6 +164,14 @@ class RawlogReaderImpl : public FogLogReader::Impl
 		if (in_.atEnd()) return false;
 		if (readFogObservationFast()) return true;
 		const uint64_t offset = in_.position();
+		{
+			const unsigned char* p = nullptr;
+			const std::size_t n = in_.peek(p, 128);
+			if (const auto* c = classOfObjectHeader(p, n); c && !rawlogEntryClass(c))
+				throw FogIoError(path_ + ": object #" + std::to_string(objects_) + " (byte offset " + std::to_string(offset) +
+								 ") is a " + c->className + ", not an observation (refused unread: a rawlog holds observations, "
+								 "sensory frames or action collections)");
+		}
 		mrpt::serialization::CSerializable::Ptr obj;
 		try
 		{
