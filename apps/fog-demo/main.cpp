@@ -44,7 +44,9 @@ WHAT IT DOES
    6. stages of the thermal error model, each compensating the bundled drive plus --drives
       simulated drives (fog-sim --profile drive, seeds 11.., cabins winter / mild / hot in
       turn; fog-drift -i ... over all of them): bias only (chamber A), + scale factor vs
-      temperature (+ the rate-table run ratetable_A.rawlog), + warm-up (+ the cold-start run
+      temperature (+ the rate-table run ratetable_A.rawlog, and ratetable_transient.rawlog when
+      present: table segments in transients, for the scale factor in a weighted sum of the
+      thermistors), + warm-up (+ the cold-start run
       warmup.rawlog in the bias fit); the median heading RMS of each over the drives leads the
       report. Stages whose runs the datasets folder lacks are skipped, said in the report.
   The report folder holds summary.md (key figures, tables, the command behind each), the
@@ -158,6 +160,10 @@ int main(int argc, char** argv)
 		}
 		// Stages of the thermal error model (the runs each needs must be in the datasets folder).
 		const fs::path table_run = data / "ratetable_A.rawlog", warm_run = data / "warmup.rawlog";
+		// table segments in transients (when bundled): the scale factor in a weighted sum of thermistors
+		const fs::path transient_run = data / "ratetable_transient.rawlog";
+		const bool have_transient = fs::exists(transient_run);
+		const std::string table_runs = have_transient ? "rate table A + transient rate table" : "rate table A";
 		const bool stages_on = !arg_no_stages.getValue();
 		const bool have_table = stages_on && fs::exists(table_run), have_warm = have_table && fs::exists(warm_run);
 		const int n_drives = stages_on ? arg_drives.getValue() : 0;
@@ -228,18 +234,22 @@ int main(int argc, char** argv)
 		const std::string cal_full = (out / "calibration_full.yaml").string();
 		if (have_table)
 		{
-			run.run({"calibrate_scale_factor", "stage + scale factor: calibrating on chamber run A + the rate-table run",
-					 {run.program("fog-calibrate"), "-i", ds.chamber_A, "-i", table_run.string(), "--model",
-					  arg_model.getValue(), "-o", cal_sf, "--json", (json / "calibrate_scale_factor.json").string()}});
-			stages.push_back({"scale_factor", "+ scale factor vs temperature", "chamber A + rate table A", cal_sf});
+			std::vector<std::string> argv{run.program("fog-calibrate"), "-i", ds.chamber_A, "-i", table_run.string()};
+			if (have_transient) argv.insert(argv.end(), {"-i", transient_run.string()});
+			argv.insert(argv.end(), {"--model", arg_model.getValue(), "-o", cal_sf, "--json",
+									 (json / "calibrate_scale_factor.json").string()});
+			run.run({"calibrate_scale_factor", "stage + scale factor: calibrating on chamber run A + the rate-table run(s)", argv});
+			stages.push_back({"scale_factor", "+ scale factor vs temperature", "chamber A + " + table_runs, cal_sf});
 		}
 		if (have_warm)
 		{
+			std::vector<std::string> argv{run.program("fog-calibrate"), "-i", ds.chamber_A, "-i", table_run.string()};
+			if (have_transient) argv.insert(argv.end(), {"-i", transient_run.string()});
+			argv.insert(argv.end(), {"-i", warm_run.string(), "--model", arg_model.getValue(), "-o", cal_full, "--json",
+									 (json / "calibrate_full.json").string()});
 			run.run({"calibrate_full",
-					 "stage + warm-up: calibrating on chamber run A + the rate-table run + the cold-start run",
-					 {run.program("fog-calibrate"), "-i", ds.chamber_A, "-i", table_run.string(), "-i", warm_run.string(),
-					  "--model", arg_model.getValue(), "-o", cal_full, "--json", (json / "calibrate_full.json").string()}});
-			stages.push_back({"full", "+ warm-up (cold-start run in the bias fit)", "chamber A + rate table A + warm-up",
+					 "stage + warm-up: calibrating on chamber run A + the rate-table run(s) + the cold-start run", argv});
+			stages.push_back({"full", "+ warm-up (cold-start run in the bias fit)", "chamber A + " + table_runs + " + warm-up",
 							  cal_full});
 		}
 		std::vector<std::string> drive_inputs{ds.drive};
