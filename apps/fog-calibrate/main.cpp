@@ -105,6 +105,10 @@ SCALE FACTOR VS TEMPERATURE (--scale-factor auto|off)
 
   The reported 95 % interval of the mean slope also covers the thermistors' disagreement on
   the coil temperature (the fit repeated against each thermistor; docs/model.md).
+  With table segments where the thermistors disagree (turn-ons, ramps: the bundled
+  datasets/ratetable_transient.rawlog) a further candidate reads a weighted sum of all
+  thermistors (the coil's mean temperature, which no single one reads in a transient; weights
+  fitted, printed, and stored in the file); chosen only when its held-out error is lower.
 
 WARM-UP (--warmup-run RUN, repeatable)
   Runs that hold a turn-on (a 0 -> 1 power step, or metadata power_on_time_s at or before the
@@ -127,7 +131,9 @@ THREE AXES (--axis x|y|z|all)
 EXAMPLES
   fog-calibrate -i datasets/chamber_A.rawlog --model multipoint -o cal.yaml --validate datasets/chamber_B.rawlog
   fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable_A.rawlog -o cal_sf.yaml
-  fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable_A.rawlog --warmup-run datasets/warmup.rawlog -o cal_full.yaml
+  fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable_A.rawlog -i datasets/ratetable_transient.rawlog \
+                -i datasets/warmup.rawlog -o cal_full.yaml        (the recommended calibration: docs/nav.md)
+  fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable_A.rawlog --warmup-run datasets/warmup.rawlog -o cal_wu.yaml
   fog-calibrate -i chamber3.rawlog -i rt_x.rawlog -i rt_y.rawlog -i rt_z.rawlog -o cal3.yaml   (triad, fog-sim --triad)
   fog-calibrate -i runA.csv -i runB.csv --model points:2 -o cal2.yaml --json fit.json
   fog-calibrate -i runA.csv --model M3:Ti1,To1 --selection none -o m3.yaml
