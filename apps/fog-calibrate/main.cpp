@@ -20,6 +20,7 @@
 
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "Progress.h"
 #include "RangeWarning.h"
 #include "ThermistorScreeningReport.h"
 
@@ -471,6 +472,7 @@ int main(int argc, char** argv)
 										 "Write the calibration even when the fit selects no thermal term (a constant "
 										 "bias only); without it that is an error saying why",
 										 cmd);
+		TCLAP::SwitchArg arg_quiet("q", "quiet", "No progress line on stderr while the runs are read", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-calibrate", kHelp)) return *rc;
 
 		std::vector<FileArg> inputs{{"--validate", arg_val.getValue()}};
@@ -501,7 +503,10 @@ int main(int argc, char** argv)
 		// log's length, issue 14), screened on the way as fog-compensate screens it.
 		const auto readScreened = [&](const std::string& path) {
 			app::StreamScreening sc(screen);
-			FogRun run = readFogRun(path, arg_label.getValue(), sc.hook());
+			app::Progress progress("fog-calibrate: reading " + path, arg_quiet.getValue());
+			FogRun run = readFogRun(path, arg_label.getValue(), sc.hook(),
+									[&](std::uint64_t n, std::uint64_t done, std::uint64_t total) { progress.update(n, done, total); });
+			progress.finish();
 			const ThermistorScreening counts = sc.result(run);
 			if (!screen || counts.rejected_readings > 0) screening_text += "  " + path + ":\n" + app::screeningText(counts, screen);
 			return run;

@@ -99,13 +99,16 @@ class SeriesBuilder
 };
 }  // namespace
 
-DriveData readDrive(const std::string& path, const DriveLabels& labels)
+DriveData readDrive(const std::string& path, const DriveLabels& labels,
+					const std::function<void(std::uint64_t, std::uint64_t, std::uint64_t)>& progress)
 {
+	const FogLogReader* reading = nullptr;  // for the progress line
 	// Read as readFogRawlog() reads, but the other observations are taken in as they come: the
 	// odometry and the truth as poses, the ideal FOG as a series.
 	DriveData d;
 	SeriesBuilder ideal(false);
 	const auto take = [&](const mrpt::obs::CObservation::Ptr& o) {
+		if (progress && reading) progress(reading->samplesRead(), reading->fileBytesRead(), reading->fileBytes());
 		if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o); f && o->sensorLabel == labels.fog_ideal)
 			ideal.add(*f);
 		else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(o);
@@ -136,6 +139,7 @@ DriveData readDrive(const std::string& path, const DriveLabels& labels)
 	};
 	{
 		FogLogReader reader(path, labels.fog, ReadLimits{}, take);
+		reading = &reader;
 		d.fog = readAllSamples(reader);
 	}
 	try

@@ -11,6 +11,8 @@
 #include <mrpt_fog/obs/FogSeries.h>
 #include <mrpt_fog_nav/Trajectory.h>
 
+#include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,7 +41,11 @@ struct DriveData
 	std::optional<double> latitude_deg;  //!< from the metadata, when present
 };
 
-DriveData readDrive(const std::string& path, const DriveLabels& labels = {});
+/** `progress` (optional): called per object read with the FOG samples read, the file bytes consumed
+ * and the file's size (0 when unknown). */
+DriveData readDrive(const std::string& path, const DriveLabels& labels = {},
+					const std::function<void(std::uint64_t samples, std::uint64_t bytes_done, std::uint64_t bytes_total)>&
+						progress = {});
 
 /** Absolute times [s] (epoch_s + time_s) of a series. */
 std::vector<double> absoluteTimes(const FogSeries& s);

@@ -2,6 +2,7 @@
 #include "DriveEvaluation.h"
 
 #include "Compensation.h"
+#include "Progress.h"
 
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/obs/Units.h>
@@ -19,7 +20,12 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 {
 	DriveEvaluation e;
 	e.input = path;
-	e.drive = readDrive(path);
+	{
+		app::Progress progress("fog-drift: reading " + path, st.quiet);
+		e.drive = readDrive(path, {}, [&](std::uint64_t n, std::uint64_t done, std::uint64_t total) {
+			progress.update(n, done, total);
+		});
+	}
 	if (st.latitude_deg) e.latitude_deg = *st.latitude_deg;
 	else if (e.drive.latitude_deg) e.latitude_deg = *e.drive.latitude_deg;
 	else throw std::runtime_error(path + ": no latitude_deg in the metadata; give --latitude-deg");

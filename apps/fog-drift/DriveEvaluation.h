@@ -29,6 +29,7 @@ struct DriveSettings
 	std::optional<double> cal_latitude_deg;  //!< override of the calibration's latitude
 	bool cal_no_earth_rate = false;  //!< the calibration's bias holds no Earth rate
 	bool screen_thermistors = true;
+	bool quiet = false;  //!< no progress line on stderr while a drive is read
 	HeadingOptions heading;  //!< latitude_deg filled per drive
 	nav::HeadingFigureOptions figures;
 };

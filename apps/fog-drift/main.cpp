@@ -141,6 +141,7 @@ int main(int argc, char** argv)
 								   "do not screen the FOG's thermistor readings (stuck / spike / out of range -> "
 								   "dropout, fallback model) before compensating",
 								   cmd);
+		TCLAP::SwitchArg quiet("q", "quiet", "no progress line on stderr while a drive is read", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-drift", kHelp)) return *rc;
 
 		drift::DriveSettings st;
@@ -153,6 +154,7 @@ int main(int argc, char** argv)
 		if (std::isfinite(cal_lat.getValue())) st.cal_latitude_deg = cal_lat.getValue();
 		st.cal_no_earth_rate = cal_no_earth.getValue();
 		st.screen_thermistors = !no_screen.getValue();
+		st.quiet = quiet.getValue();
 		const auto& inputs = in.getValue();
 		if (inputs.size() > 1 && (!plots.getValue().empty() || !odo_out.getValue().empty() || !csv.getValue().empty()))
 			throw std::runtime_error("--plots, --csv and --odometry-out take one drive (-i given " +

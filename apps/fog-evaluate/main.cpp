@@ -9,6 +9,7 @@
  * peak-to-peak and the Allan deviation measure spread and are unaffected by it. */
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "Progress.h"
 #include "ThermistorScreeningReport.h"
 #include "CalibrationSource.h"
 #include "RangeWarning.h"
@@ -65,6 +66,7 @@ int main(int argc, char** argv)
 								   "do not screen thermistor readings (stuck / spike / out of range -> dropout) before "
 								   "compensating (fog-compensate's screening)",
 								   cmd);
+		TCLAP::SwitchArg quiet("q", "quiet", "No progress line on stderr while the log is read", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-evaluate")) return *rc;
 
 		const double tau_s = tau.getValue();
@@ -77,7 +79,10 @@ int main(int argc, char** argv)
 		// fog-compensate screens it (so that a log gives the same compensated figures here and
 		// there); the figures are computed in passes (memory independent of the log's length, issue 14).
 		app::StreamScreening screener(!no_screen.getValue());
-		const FogRun run = readFogRun(path, label.getValue(), screener.hook());
+		app::Progress progress("fog-evaluate: reading " + path, quiet.getValue());
+		const FogRun run = readFogRun(path, label.getValue(), screener.hook(),
+									  [&](std::uint64_t n, std::uint64_t done, std::uint64_t total) { progress.update(n, done, total); });
+		progress.finish();
 		const ThermistorScreening screening = screener.result(run);
 		if (run.size() < 2) throw std::invalid_argument(path + ": fewer than 2 samples");
 

@@ -57,7 +57,8 @@ std::vector<mrpt::obs::CObservation::Ptr> stockObservationsForRawlog(const FogSe
 namespace mrpt_fog
 {
 FogRun readFogRun(const std::string& path, const std::string& fog_label,
-				  const std::function<void(double, double*, std::size_t)>& each)
+				  const std::function<void(double, double*, std::size_t)>& each,
+				  const std::function<void(std::uint64_t, std::uint64_t, std::uint64_t)>& progress)
 {
 	FogLogReader reader(path, fog_label);
 	const FogSeries& h = reader.header();
@@ -87,6 +88,7 @@ FogRun readFogRun(const std::string& path, const std::string& fog_label,
 		if (each) each(x.time_s, x.temp_C.data(), x.temp_C.size());
 		appendSample(chunk, x, reader);
 		if (chunk.size() == FogRun::kChunkSamples) store();
+		if (progress) progress(reader.samplesRead(), reader.fileBytesRead(), reader.fileBytes());
 	}
 	if (chunk.size() > 0 || k0 == 0) store();
 	return run;

@@ -15,6 +15,7 @@
 #include <mrpt_fog/obs/FogSeries.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -77,9 +78,12 @@ FogSeries readFogLog(const std::string& path, const std::string& fog_label = "")
  * checked chunk by chunk), with memory that does not grow with the log; observations of other
  * sensors are dropped. `each` (optional) sees, and may change, every sample before it is stored
  * (e.g. the thermistor screening); it receives the sample's time and its thermistor_count
- * temperatures. */
+ * temperatures. `progress` (optional) is called after every sample with the samples read, the
+ * file bytes consumed and the file's size (0 when unknown), for a progress line. */
 FogRun readFogRun(const std::string& path, const std::string& fog_label = "",
-				  const std::function<void(double time_s, double* temp_C, std::size_t thermistor_count)>& each = {});
+				  const std::function<void(double time_s, double* temp_C, std::size_t thermistor_count)>& each = {},
+				  const std::function<void(std::uint64_t samples, std::uint64_t bytes_done, std::uint64_t bytes_total)>&
+					  progress = {});
 
 /** Writes by extension (.rawlog or .csv/.csv.gz). */
 void writeFogLog(const std::string& path, const FogSeries& series);
