@@ -56,6 +56,19 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 		// of each (~80 B per sample, issue 14).
 		e.variants.emplace_back(name, std::move(e.results.back().trajectory));
 		e.results.back().trajectory = {};
+		// Its drift figures now (computeDriftReport treats each variant alone), then the
+		// trajectory goes unless kept: the variants' trajectories are not all held at once.
+		std::vector<nav::NamedTrajectory> alone(1);
+		alone.front() = std::move(e.variants.back());  // moved, not copied ({e.variants.back()} copies)
+		nav::DriftReport one = nav::computeDriftReport(e.drive.truth, alone);
+		e.variants.back() = std::move(alone.front());
+		e.report.distance_m = one.distance_m;
+		e.report.duration_s = one.duration_s;
+		e.report.variants.push_back(std::move(one.variants.front()));
+		const bool odometry_variant = name == (st.cal_path.empty() ? "raw" : "compensated");
+		const bool keep = st.keep_trajectories == KeptTrajectories::All ||
+						  (st.keep_trajectories == KeptTrajectories::ForOdometry && odometry_variant);
+		if (!keep) nav::Trajectory().swap(e.variants.back().second);
 	};
 	// The heading gyro is the vertical (z) axis; a triad's x / y enter the 3-D strapdown.
 	auto rates = [&](const FogSeries& s) -> std::array<const std::vector<double>*, 3> {
@@ -186,7 +199,6 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 	e.drive.fog_ideal.reset();
 	e.drive.odometry = OdometryPoses{};
 
-	e.report = nav::computeDriftReport(e.drive.truth, e.variants);
 	e.segments = nav::segmentDrive(e.drive.truth, st.figures);
 	for (const auto& v : e.report.variants)
 		e.figures[v.name] = nav::computeHeadingFigures(v.t_s, v.heading_error_deg, e.drive.truth, e.segments);

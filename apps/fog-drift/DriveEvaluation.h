@@ -22,8 +22,19 @@
 
 namespace mrpt_fog::drift
 {
+/** Which dead-reckoned trajectories evaluateDrive keeps after computing their figures (each
+ * is ~80 B per sample): every one (--plots), the one --odometry-out writes (compensated, else
+ * raw), or none. */
+enum class KeptTrajectories
+{
+	All,
+	ForOdometry,
+	None
+};
+
 struct DriveSettings
 {
+	KeptTrajectories keep_trajectories = KeptTrajectories::All;
 	std::string cal_path;  //!< "" = no compensated variant
 	std::optional<double> latitude_deg;  //!< override of the drive's metadata
 	std::optional<double> cal_latitude_deg;  //!< override of the calibration's latitude
@@ -50,7 +61,7 @@ struct DriveEvaluation
 	double latitude_deg = 0.0;
 	double calibration_earth_rate_dph = 0.0;  //!< vertical Earth rate the calibration's bias held
 	std::string calibration_latitude_source;  //!< "option", "calibration" or "drive"
-	std::vector<nav::NamedTrajectory> variants;
+	std::vector<nav::NamedTrajectory> variants;  //!< names; trajectories as DriveSettings::keep_trajectories says (else empty)
 	std::vector<VariantResult> results;  //!< same order as variants (their trajectories moved there)
 	nav::DriftReport report;
 	nav::DriveSegments segments;

@@ -155,6 +155,10 @@ int main(int argc, char** argv)
 		st.cal_no_earth_rate = cal_no_earth.getValue();
 		st.screen_thermistors = !no_screen.getValue();
 		st.quiet = quiet.getValue();
+		// The trajectories the outputs draw or write are kept; the others go once measured.
+		st.keep_trajectories = !plots.getValue().empty()  ? drift::KeptTrajectories::All
+							   : !odo_out.getValue().empty() ? drift::KeptTrajectories::ForOdometry
+															 : drift::KeptTrajectories::None;
 		const auto& inputs = in.getValue();
 		if (inputs.size() > 1 && (!plots.getValue().empty() || !odo_out.getValue().empty() || !csv.getValue().empty()))
 			throw std::runtime_error("--plots, --csv and --odometry-out take one drive (-i given " +

@@ -28,6 +28,7 @@ DriftReport computeDriftReport(const Trajectory& truth, const std::vector<NamedT
 		if (traj.empty()) throw std::invalid_argument("computeDriftReport: variant '" + name + "' is empty");
 		DriftSeries s;
 		s.name = name;
+		for (auto* v : {&s.t_s, &s.heading_error_deg, &s.position_error_m}) v->reserve(truth.size());  // no regrowth
 		for (const auto& gt : truth)
 		{
 			if (gt.t_s < traj.front().t_s || gt.t_s > traj.back().t_s) continue;
