@@ -40,7 +40,7 @@ int main(int argc, char** argv)
 										   "extrapolation); coefficients refitted on the measured run. static:P[:NAME]: a "
 										   "polynomial in one thermistor / their mean (synthetic proof trials)",
 										   false, "", "PRESET|CAL.yaml");
-		TCLAP::ValueArg<std::string> sim("", "sim", "simulator configuration to test (device, effects, free parameters, optional profile; see docs/discrepancy-sim.md); its free parameters are calibrated to the measured run. Without a profile (in SIM.yaml or the run metadata sim.profile) the simulator is driven from the log alone: power, table rate and field columns, chamber air reconstructed from the thermistors; a thermistor misfit above 0.1 C RMS is reported as the first disagreement and no bias effect is named on top of it", false, "",
+		TCLAP::ValueArg<std::string> sim("", "sim", "simulator configuration to test (device, effects, free parameters, optional profile; see docs/discrepancy-sim.md); its free parameters are calibrated to the measured run. Without a profile (in SIM.yaml or the run metadata sim.profile) the simulator is driven from the log alone: power, table rate and field columns, chamber air reconstructed from the thermistors; a thermistor misfit above 0.1 C RMS is reported as the first disagreement and no bias effect is named on top of it; the share of the bias residual that follows air changes faster than the reconstruction resolves is reported ('Unresolved thermal content') and taken out before effects are named: give the profile to attribute it", false, "",
 										 "SIM.yaml");
 		cmd.xorAdd(model, sim);
 		TCLAP::ValueArg<std::string> json("", "json", "write the figures as JSON", false, "", "FILE", cmd);
