@@ -47,9 +47,10 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 
 	auto run = [&](const std::string& name, const std::vector<double>& t, const std::array<const std::vector<double>*, 3>& r) {
 		// The times and rates of a variant serve the triad's attitude figures and --odometry-out
-		// (raw or compensated): the ideal's, single-axis, are not kept.
+		// (compensated, else raw): the others, single-axis, are not kept.
+		const bool odometry_variant = name == (st.cal_path.empty() ? "raw" : "compensated");
 		HeadingOptions o = hopt;
-		o.keep_rates = e.three_axis || name != "ideal";
+		o.keep_rates = e.three_axis || (odometry_variant && st.keep_trajectories != KeptTrajectories::None);
 		e.results.push_back(e.three_axis ? deadReckonVariant(t, *r[0], *r[1], *r[2], e.drive, o)
 										 : deadReckonVariant(t, *r[2], e.drive, o));
 		// The trajectory lives in variants alone (results[i].trajectory is left empty): one copy
@@ -65,7 +66,6 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 		e.report.distance_m = one.distance_m;
 		e.report.duration_s = one.duration_s;
 		e.report.variants.push_back(std::move(one.variants.front()));
-		const bool odometry_variant = name == (st.cal_path.empty() ? "raw" : "compensated");
 		const bool keep = st.keep_trajectories == KeptTrajectories::All ||
 						  (st.keep_trajectories == KeptTrajectories::ForOdometry && odometry_variant);
 		if (!keep) nav::Trajectory().swap(e.variants.back().second);
