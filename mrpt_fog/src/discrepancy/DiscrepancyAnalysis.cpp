@@ -413,6 +413,47 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 			}
 		}
 	}
+	// the compensator's rate estimate as a gap of its own: the base with and without the
+	// "centred minus causal" nuisance columns, fitted on the analysed run, judged on the other
+	{
+		std::vector<Eigen::Index> keep;
+		for (std::size_t c = 0; c < base1.is_nuisance.size(); ++c)
+			if (!base1.is_nuisance[c]) keep.push_back(static_cast<Eigen::Index>(c));
+		if (keep.size() < base1.is_nuisance.size())
+		{
+			const RunSignals& sigJ = sig2 ? *sig2 : sig1;
+			const BaseDesign& baseJ = sig2 ? *base2 : base1;
+			auto columns = [&](const Eigen::MatrixXd& X) {
+				Eigen::MatrixXd K(X.rows(), static_cast<Eigen::Index>(keep.size()));
+				for (std::size_t i = 0; i < keep.size(); ++i) K.col(static_cast<Eigen::Index>(i)) = X.col(keep[i]);
+				return K;
+			};
+			auto rmsOn = [&](const Eigen::MatrixXd& X1, const Eigen::MatrixXd& XJ) {
+				std::vector<Eigen::Index> r;
+				for (std::size_t k = 0; k < sig1.size(); ++k)
+					if (rep.selection.fit_rows[k]) r.push_back(static_cast<Eigen::Index>(k));
+				Eigen::MatrixXd A(static_cast<Eigen::Index>(r.size()), X1.cols());
+				Eigen::VectorXd yv(static_cast<Eigen::Index>(r.size()));
+				for (std::size_t i = 0; i < r.size(); ++i)
+				{
+					A.row(static_cast<Eigen::Index>(i)) = X1.row(r[i]);
+					yv(static_cast<Eigen::Index>(i)) = sig1.bias_dph[static_cast<std::size_t>(r[i])];
+				}
+				const Eigen::VectorXd coef = A.colPivHouseholderQr().solve(yv);
+				const Eigen::VectorXd res = residualWithCoefficients(XJ, sigJ, coef);
+				const double m = static_cast<double>(std::max<std::size_t>(sigJ.usableCount(), 1));
+				return std::sqrt(res.squaredNorm() / m);
+			};
+			auto& g = rep.rate_estimator_gap;
+			g.tested = true;
+			g.run_label = rep.run_labels[sig2 ? 1 : 0];
+			g.rms_causal_dph = rmsOn(columns(base1.X), columns(baseJ.X));
+			g.rms_centred_dph = rmsOn(base1.X, baseJ.X);
+			const double c2 = g.rms_causal_dph * g.rms_causal_dph, e2 = g.rms_centred_dph * g.rms_centred_dph;
+			g.ratio = e2 > 0 && c2 > e2 ? std::sqrt((c2 - e2) / e2) : 0.0;
+			g.material = g.ratio >= opt.min_held_out_effect_ratio;
+		}
+	}
 	if (runs.size() == 2)
 	{
 		// only effects confirmed on the second run are added (keepConfirmedEffects); the gap is

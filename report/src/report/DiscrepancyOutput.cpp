@@ -106,6 +106,15 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 	j["not_named"] = JsonValue::arrayOf(
 		rep.rejected, [](const auto& r) { return JsonValue::object({{"id", r.id}, {"reason", r.reason}}); });
 	j["cannot_tell"] = rep.cannot_tell;
+	if (rep.rate_estimator_gap.tested)
+	{
+		const auto& g = rep.rate_estimator_gap;
+		j["rate_estimator_gap"] = JsonValue::object({{"run", g.run_label},
+													  {"rms_causal_dph", g.rms_causal_dph},
+													  {"rms_centred_dph", g.rms_centred_dph},
+													  {"ratio", g.ratio},
+													  {"material", g.material}});
+	}
 	j["where"] = rep.gap.ranking_before.sentence;
 	JsonValue segs = JsonValue::array();
 	int rank = 1;
@@ -194,6 +203,15 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 		   << "; on the confirmation run p " << formatValue("%.2g", ne.confirm_p)
 		   << (ne.confirm_p < 0.01 ? " with the opposite sign" : "") << "\n";
 	for (const auto& r : rep.rejected) os << "  not named: " << r.id << " (" << r.reason << ")\n";
+	if (rep.rate_estimator_gap.tested && rep.rate_estimator_gap.material)
+	{
+		const auto& g = rep.rate_estimator_gap;
+		os << "Rate estimator (not a physical effect): the model's rate terms on the calibration's causal rate leave RMS "
+		   << formatValue("%.4g", g.rms_causal_dph) << " deg/h on " << g.run_label << ", on a centred rate "
+		   << formatValue("%.4g", g.rms_centred_dph) << " deg/h (" << formatValue("%.2g", g.ratio)
+		   << " x the RMS left): the compensator's rate estimate is a gap of its own, "
+			  "not named as an effect\n";
+	}
 	if (!sel.rounds.empty())
 	{
 		std::string skipped;

@@ -91,6 +91,19 @@ struct DiscrepancyReport
 		std::string id, reason;
 	};
 	std::vector<Rejected> rejected;
+	/** The compensator's rate estimate as a gap of its own (not a physical effect): the model's
+	 * rate terms on the calibration's causal rate vs on the analysis' centred rate (the
+	 * "centred minus causal" nuisance columns, BaseModelDesign.h), both fitted on the analysed
+	 * run, RMS on the confirmation run (on the analysed run without one) [deg/h]. `material`
+	 * when the centred rate explains at least min_held_out_effect_ratio x the RMS left (the rail
+	 * an effect must pass to be named). Absent (tested false) when the model has no rate term. */
+	struct RateEstimatorGap
+	{
+		bool tested = false, material = false;
+		std::string run_label;
+		double rms_causal_dph = 0, rms_centred_dph = 0;
+		double ratio = 0;  //!< sqrt((causal^2 - centred^2) / centred^2), 0 when not smaller
+	} rate_estimator_gap;
 	/** Non-empty when the data cannot answer (too short, too narrow a temperature span, too
 	 * coarse a quantisation, bias wander too slow for the run): nothing is named, this says why. */
 	std::string cannot_tell;
