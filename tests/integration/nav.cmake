@@ -1,6 +1,16 @@
 # Navigation integration: MRPT's own pf-localization reads the dead-reckoned odometry rawlog
 # written by mrpt_fog_nav, and its odometry estimate (odo_est.txt) must equal our trajectory.
 # Three ctest tests chained by a fixture: write -> pf-localization -> compare.
+# The heading error budget's truth split (drive-truth + scripts/heading_budget_truth.py) reproduces
+# fog-drift's compensated/ideal heading RMS on the same short drive (docs/nav.md, "Error budget").
+find_program(NAV_PYTHON3 python3 PATHS /usr/bin NO_DEFAULT_PATH)
+if(TARGET fog-drift AND TARGET fog-sim AND TARGET drive-truth AND NAV_PYTHON3)
+  add_test(NAME nav.truth_split.matches_fog_drift
+    COMMAND bash ${FOG_SOURCE_DIR}/tests/nav/integration/truth_split_check.sh $<TARGET_FILE:fog-sim>
+      $<TARGET_FILE:fog-drift> $<TARGET_FILE:drive-truth> ${FOG_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/nav_truth_split)
+  set_tests_properties(nav.truth_split.matches_fog_drift PROPERTIES LABELS "nav;integration" TIMEOUT 300)
+endif()
+
 find_program(NAV_PF_LOCALIZATION pf-localization)
 if(NOT NAV_PF_LOCALIZATION)
   message(STATUS "nav integration: pf-localization not found (package mrpt-apps); test skipped")
