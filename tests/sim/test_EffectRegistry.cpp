@@ -46,6 +46,28 @@ TEST(EffectRegistry, EveryDescriptorIsComplete)
 			EXPECT_FALSE(std::string(d.identified_by).empty()) << "what data identifies it?";
 		if (d.identified_in == IdentifiedIn::Bias)
 			EXPECT_FALSE(std::string(d.trial_scaling).empty()) << "how do the proof trials scale it?";
+		if (*d.calibration_parameter)
+		{
+			// a simulator calibration can move it: a slot in the device, a step, this parameter
+			FogDevice dev = FogDevice::defaultDevice();
+			EXPECT_GE(calibrationSlotCount(d, dev), 1u) << "no slot for " << d.calibration_parameter;
+			EXPECT_GT(d.calibration.fd_step, 0.0);
+			EXPECT_EQ(descriptorOfCalibrationParameter(d.calibration_parameter), &d);
+		}
+		else
+		{
+			FogDevice dev = FogDevice::defaultDevice();
+			EXPECT_EQ(calibrationSlot(d, dev, 0), nullptr);
+		}
+		for (const auto& shape : d.shape_fields)
+			if (shape.key)
+			{
+				// a shape field is a device field holding the member's value
+				const auto it = device.find(std::string("device.errors.") + shape.key);
+				ASSERT_NE(it, device.end()) << shape.key << " is not a device field";
+				const double member = FogDevice::defaultDevice().errors.*shape.member;
+				EXPECT_NEAR(std::stod(it->second), member, 1e-9 * std::max(1.0, std::abs(member)));
+			}
 		if (d.coefficient)
 		{
 			// the key is the device field the member pointer designates

@@ -1,11 +1,13 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/BaseModelDesign.h>
 #include <mrpt_fog/discrepancy/CandidateEffect.h>
+#include <mrpt_fog/sim/EffectRegistry.h>
 
 #include <cmath>
 #include <cstdio>
 #include <numeric>
 #include <stdexcept>
+#include <utility>
 
 namespace mrpt_fog::discrepancy
 {
@@ -125,210 +127,191 @@ std::string hysteresisUntestableReason(const RunSignals& s)
 
 namespace
 {
+using Builder = decltype(CandidateEffect::build);
+using UntestableReason = decltype(CandidateEffect::untestable_reason);
+
+/** The candidate of a registry effect: its id and residual channel are the registry's. */
+CandidateEffect candidateOf(sim::Effect effect, const char* description, const char* excited_by,
+							const char* coefficient_unit, Builder build, UntestableReason untestable_reason)
+{
+	const auto& d = sim::descriptorOf(effect);
+	CandidateEffect c;
+	c.id = d.id;
+	c.channel = d.identified_in == sim::IdentifiedIn::Temperature ? ResidualChannel::Temperature : ResidualChannel::Bias;
+	c.description = description;
+	c.excited_by = excited_by;
+	c.coefficient_unit = coefficient_unit;
+	c.build = std::move(build);
+	c.untestable_reason = std::move(untestable_reason);
+	return c;
+}
+
+/** The same with a nonlinear parameter found by profile search over `grid`. */
+CandidateEffect withTheta(CandidateEffect c, const char* name, std::vector<double> grid)
+{
+	c.theta_name = name;
+	c.theta_grid = std::move(grid);
+	return c;
+}
+
+// Two columns when inner and outer thermistors exist: the mean rate (the seed paper's dT/dt
+// term) and the radial rate difference. The Shupe integral of seed eq. (1) has zero-sum weights
+// (integral of (2z - L) over the fibre is 0), so a uniform rate gives no Shupe bias; what surface
+// thermistors can see of it is the rate of the radial difference. (Without inner/outer
+// thermistors only dT/dt: coefficient in deg/h per degC/min.)
+Eigen::MatrixXd shupeColumns(const CandidateContext& ctx, double)
+{
+	const auto& s = *ctx.sig;
+	if (!s.has_inner_outer) return column(s.dtemp_dt_Cpm);
+	Mat m(static_cast<Eigen::Index>(s.size()), 2);
+	m.col(0) = column(s.dtemp_dt_Cpm);
+	m.col(1) = column(s.dgradient_dt_Cpm);
+	return m;
+}
+
+Eigen::MatrixXd thermistorLagColumn(const CandidateContext& ctx, double)
+{
+	const auto d = localSlopePerMin(ctx.sig->time_s, ctx.base_static_dph, ctx.sig->block, 120.0);
+	return column(d);
+}
+
+Eigen::MatrixXd warmupColumns(const CandidateContext& ctx, double tau_s)
+{
+	const auto& s = *ctx.sig;
+	// column 0: after the power-on transitions seen in the run; column 1: from the run start
+	// when the run starts powered (same decay, free amplitude)
+	const bool startsPowered = !s.power_on_s.empty() && s.size() > 0 && s.power_on_s.front() <= s.time_s.front();
+	const bool transitions = s.power_on_s.size() > (startsPowered ? 1u : 0u);
+	std::vector<double> after(s.size(), 0.0), start(s.size(), 0.0);
+	std::size_t on = 0;
+	for (std::size_t k = 0; k < s.size(); ++k)
+	{
+		while (on + 1 < s.power_on_s.size() && s.power_on_s[on + 1] <= s.time_s[k]) ++on;
+		if (s.power_on_s.empty() || s.time_s[k] < s.power_on_s[on] || s.power[k] < 0.5) continue;
+		const double v = std::exp(-(s.time_s[k] - s.power_on_s[on]) / tau_s);
+		(startsPowered && on == 0 ? start : after)[k] = v;
+	}
+	if (transitions && startsPowered)
+	{
+		Mat m(static_cast<Eigen::Index>(s.size()), 2);
+		m.col(0) = column(after);
+		m.col(1) = column(start);
+		return m;
+	}
+	return column(transitions ? after : start);
+}
+
+// a turn-on must be seen (power 0 -> 1): a run powered from its first sample does not say when
+// the gyro was switched on, so a decay from the run start is not identified
+std::string warmupUntestableReason(const RunSignals& s)
+{
+	for (double t_on : s.power_on_s)
+		if (s.size() > 0 && t_on > s.time_s.front()) return std::string();
+	return std::string("no turn-on in the run (power never goes from 0 to 1)");
+}
+
+Eigen::MatrixXd scaleFactorColumn(const CandidateContext& ctx, double)
+{
+	const auto& s = *ctx.sig;
+	double sum = 0;
+	std::size_t m = 0;
+	for (std::size_t k = 0; k < s.size(); ++k)
+		if (s.usable[k])
+		{
+			sum += s.temp_mean_C[k];
+			++m;
+		}
+	const double Tm = m ? sum / m : 20.0;
+	std::vector<double> v(s.size());
+	for (std::size_t k = 0; k < v.size(); ++k) v[k] = 1e-6 * (f0(s.temp_mean_C[k]) - Tm) * s.table_rate_dph[k];
+	return column(v);
+}
+
+Eigen::MatrixXd tempPolyColumns(const CandidateContext& ctx, double)
+{
+	const auto n = static_cast<Eigen::Index>(ctx.static_temp_C.size());
+	Mat m(n, 2);
+	for (Eigen::Index k = 0; k < n; ++k)
+	{
+		const double x = scaledTemp(f0(ctx.static_temp_C[static_cast<std::size_t>(k)]));
+		m(k, 0) = std::pow(x, ctx.base_static_order + 1);
+		m(k, 1) = std::pow(x, ctx.base_static_order + 2);
+	}
+	return m;
+}
+
 std::vector<CandidateEffect> makeLibrary()
 {
+	using sim::Effect;
 	std::vector<CandidateEffect> lib;
-	{
-		CandidateEffect c;
-		c.id = "shupe_rate";
-		c.description =
-			"Shupe effect: temperature rates along the fibre make the two counter-propagating beams see "
-			"different optical paths; sum_k w_k dT_k/dt with zero-sum winding weights, seen by surface "
-			"thermistors as d(Tin - Tout)/dt, plus the mean-rate term dT/dt of empirical models";
-		c.excited_by = "temperature steps and a sine sweep (rates of several sizes)";
-		c.coefficient_unit = "deg/h (RMS of the fitted rate terms)";
-		// Two columns when inner and outer thermistors exist: the mean rate (the seed paper's
-		// dT/dt term) and the radial rate difference. The Shupe integral of seed eq. (1) has
-		// zero-sum weights (integral of (2z - L) over the fibre is 0), so a uniform rate gives no
-		// Shupe bias; what surface thermistors can see of it is the rate of the radial difference.
-		// (Without inner/outer thermistors only dT/dt: coefficient in deg/h per degC/min.)
-		c.build = [](const CandidateContext& ctx, double)
-		{
-			const auto& s = *ctx.sig;
-			if (!s.has_inner_outer) return column(s.dtemp_dt_Cpm);
-			Mat m(static_cast<Eigen::Index>(s.size()), 2);
-			m.col(0) = column(s.dtemp_dt_Cpm);
-			m.col(1) = column(s.dgradient_dt_Cpm);
-			return m;
-		};
-		c.untestable_reason = always;
-		lib.push_back(c);
-	}
-	{
-		CandidateEffect c;
-		c.id = "radial_gradient";
-		c.description =
-			"elasto-optic / thermal-stress term: bias proportional to the radial gradient Tin - Tout, "
-			"persisting while the gradient lasts";
-		c.excited_by = "a sine sweep near the coil's radial time constant and soaks right after fast steps";
-		c.coefficient_unit = "deg/h per degC";
-		c.build = [](const CandidateContext& ctx, double) { return column(ctx.sig->gradient_C); };
-		c.untestable_reason = needInnerOuter;
-		lib.push_back(c);
-	}
-	{
-		CandidateEffect c;
-		c.id = "gradient_rate";
-		c.description = "rate of the radial gradient d(Tin - Tout)/dt (radial heat-flow transients)";
-		c.excited_by = "temperature steps and a sine sweep near the coil's radial time constant";
-		c.coefficient_unit = "deg/h per degC/min";
-		c.build = [](const CandidateContext& ctx, double) { return column(ctx.sig->dgradient_dt_Cpm); };
-		c.untestable_reason = needInnerOuter;
-		lib.push_back(c);
-	}
-	{
-		CandidateEffect c;
-		c.id = "thermistor_lag";
-		c.description =
-			"thermistor lag: the thermistors read the coil temperature late by tau, so the static model "
-			"f(T) misses tau * d/dt f(T) (tau < 0: the temperature driving the static bias leads the "
-			"thermistors, e.g. electronics)";
-		c.excited_by = "ramps and steps in temperature bands where the static bias slope differs";
-		c.coefficient_unit = "s (tau)";
-		c.coefficient_scale = 60.0;  // column is per minute
-		c.build = [](const CandidateContext& ctx, double)
-		{
-			const auto d = localSlopePerMin(ctx.sig->time_s, ctx.base_static_dph, ctx.sig->block, 120.0);
-			return column(d);
-		};
-		c.untestable_reason = always;
-		lib.push_back(c);
-	}
-	{
-		CandidateEffect c;
-		c.id = "hysteresis";
-		c.description =
-			"heating vs cooling hysteresis: a bias offset of opposite sign on the heating and the cooling "
-			"branch, kept through soaks, swapping over a temperature span (play-type)";
-		c.excited_by = "ramps at several rates (the offset does not scale with the rate) and soaks after heating "
-					   "and after cooling";
-		c.coefficient_unit = "deg/h (half heating-cooling difference)";
-		c.theta_name = "span_C";
-		c.theta_grid = {0.5, 1.0, 2.0, 5.0, 10.0, 20.0};
-		c.build = [](const CandidateContext& ctx, double span_C) { return column(hysteresisBranch(*ctx.sig, span_C)); };
-		c.untestable_reason = hysteresisUntestableReason;
-		lib.push_back(c);
-	}
-	{
-		CandidateEffect c;
-		c.id = "warmup";
-		c.description =
-			"turn-on warm-up: a bias decaying as exp(-(t - t_on)/tau) after each power-on (a run that starts "
-			"powered gets its own amplitude: how long before it the gyro was switched on is unknown)";
-		c.excited_by = "power cycles at constant chamber temperature";
-		c.coefficient_unit = "deg/h at power-on (RMS of the fitted terms when the run also starts powered)";
-		c.theta_name = "tau_s";
-		c.theta_grid = {60, 120, 240, 480, 900, 1800, 3600, 7200};
-		c.build = [](const CandidateContext& ctx, double tau_s)
-		{
-			const auto& s = *ctx.sig;
-			// column 0: after the power-on transitions seen in the run; column 1: from the run start
-			// when the run starts powered (same decay, free amplitude)
-			const bool startsPowered = !s.power_on_s.empty() && s.size() > 0 && s.power_on_s.front() <= s.time_s.front();
-			const bool transitions = s.power_on_s.size() > (startsPowered ? 1u : 0u);
-			std::vector<double> after(s.size(), 0.0), start(s.size(), 0.0);
-			std::size_t on = 0;
-			for (std::size_t k = 0; k < s.size(); ++k)
-			{
-				while (on + 1 < s.power_on_s.size() && s.power_on_s[on + 1] <= s.time_s[k]) ++on;
-				if (s.power_on_s.empty() || s.time_s[k] < s.power_on_s[on] || s.power[k] < 0.5) continue;
-				const double v = std::exp(-(s.time_s[k] - s.power_on_s[on]) / tau_s);
-				(startsPowered && on == 0 ? start : after)[k] = v;
-			}
-			if (transitions && startsPowered)
-			{
-				Mat m(static_cast<Eigen::Index>(s.size()), 2);
-				m.col(0) = column(after);
-				m.col(1) = column(start);
-				return m;
-			}
-			return column(transitions ? after : start);
-		};
-		c.untestable_reason = [](const RunSignals& s)
-		{
-			// a turn-on must be seen (power 0 -> 1): a run powered from its first sample does not
-			// say when the gyro was switched on, so a decay from the run start is not identified
-			for (double t_on : s.power_on_s)
-				if (s.size() > 0 && t_on > s.time_s.front()) return std::string();
-			return std::string("no turn-on in the run (power never goes from 0 to 1)");
-		};
-		lib.push_back(c);
-	}
-	{
-		CandidateEffect c;
-		c.id = "scale_factor_temp";
-		c.description =
-			"temperature-dependent scale factor (source wavelength): an error (T - Tmean) x applied rate";
-		c.excited_by = "rate-table segments at several temperatures";
-		c.coefficient_unit = "ppm/degC";
-		c.build = [](const CandidateContext& ctx, double)
-		{
-			const auto& s = *ctx.sig;
-			double sum = 0;
-			std::size_t m = 0;
-			for (std::size_t k = 0; k < s.size(); ++k)
-				if (s.usable[k])
-				{
-					sum += s.temp_mean_C[k];
-					++m;
-				}
-			const double Tm = m ? sum / m : 20.0;
-			std::vector<double> v(s.size());
-			for (std::size_t k = 0; k < v.size(); ++k) v[k] = 1e-6 * (f0(s.temp_mean_C[k]) - Tm) * s.table_rate_dph[k];
-			return column(v);
-		};
-		c.untestable_reason = [](const RunSignals& s)
-		{ return s.has_table ? std::string() : std::string("no rate-table segments in the run"); };
-		lib.push_back(c);
-	}
-	{
-		CandidateEffect c;
-		c.id = "magnetic";
-		c.description = "Faraday (magnetic) sensitivity: bias proportional to the axial field";
-		c.excited_by = "field segments (applied axial field switched on and off)";
-		c.coefficient_unit = "deg/h per uT";
-		c.build = [](const CandidateContext& ctx, double) { return column(ctx.sig->field_uT); };
-		c.untestable_reason = [](const RunSignals& s)
-		{ return s.has_field ? std::string() : std::string("no field segments in the run"); };
-		lib.push_back(c);
-	}
-	{
-		CandidateEffect c;
-		c.id = "temp_poly_order";
-		c.description = "static temperature polynomial too low: the next two powers of the temperature";
-		c.excited_by = "soaks at several temperature levels across the full range";
-		c.coefficient_unit = "deg/h (RMS of the added terms)";
-		c.build = [](const CandidateContext& ctx, double)
-		{
-			const auto n = static_cast<Eigen::Index>(ctx.static_temp_C.size());
-			Mat m(n, 2);
-			for (Eigen::Index k = 0; k < n; ++k)
-			{
-				const double x = scaledTemp(f0(ctx.static_temp_C[static_cast<std::size_t>(k)]));
-				m(k, 0) = std::pow(x, ctx.base_static_order + 1);
-				m(k, 1) = std::pow(x, ctx.base_static_order + 2);
-			}
-			return m;
-		};
-		c.untestable_reason = always;
-		lib.push_back(c);
-	}
-	{
-		CandidateEffect c;
-		c.id = "heat_source";
-		c.description =
-			"unmodelled internal heat source (electronics, source): the inner coil warms by a first-order "
-			"response to power";
-		c.excited_by = "power cycles";
-		c.coefficient_unit = "degC at full power";
-		c.channel = ResidualChannel::Temperature;
-		c.theta_name = "tau_s";
-		c.theta_grid = {120, 300, 600, 1200, 2400, 4800};
-		c.build = [](const CandidateContext& ctx, double tau_s)
-		{ return column(firstOrderLag(*ctx.sig, ctx.sig->power, tau_s)); };
-		c.untestable_reason = always;
-		lib.push_back(c);
-	}
+	lib.push_back(candidateOf(
+		Effect::ShupeRate,
+		"Shupe effect: temperature rates along the fibre make the two counter-propagating beams see "
+		"different optical paths; sum_k w_k dT_k/dt with zero-sum winding weights, seen by surface "
+		"thermistors as d(Tin - Tout)/dt, plus the mean-rate term dT/dt of empirical models",
+		"temperature steps and a sine sweep (rates of several sizes)", "deg/h (RMS of the fitted rate terms)",
+		shupeColumns, always));
+	lib.push_back(candidateOf(
+		Effect::RadialGradient,
+		"elasto-optic / thermal-stress term: bias proportional to the radial gradient Tin - Tout, "
+		"persisting while the gradient lasts",
+		"a sine sweep near the coil's radial time constant and soaks right after fast steps", "deg/h per degC",
+		[](const CandidateContext& ctx, double) { return column(ctx.sig->gradient_C); }, needInnerOuter));
+	lib.push_back(candidateOf(
+		Effect::GradientRate, "rate of the radial gradient d(Tin - Tout)/dt (radial heat-flow transients)",
+		"temperature steps and a sine sweep near the coil's radial time constant", "deg/h per degC/min",
+		[](const CandidateContext& ctx, double) { return column(ctx.sig->dgradient_dt_Cpm); }, needInnerOuter));
+	lib.push_back(candidateOf(
+		Effect::ThermistorLag,
+		"thermistor lag: the thermistors read the coil temperature late by tau, so the static model "
+		"f(T) misses tau * d/dt f(T) (tau < 0: the temperature driving the static bias leads the "
+		"thermistors, e.g. electronics)",
+		"ramps and steps in temperature bands where the static bias slope differs", "s (tau)", thermistorLagColumn,
+		always));
+	lib.back().coefficient_scale = 60.0;  // column is per minute
+	lib.push_back(withTheta(
+		candidateOf(Effect::Hysteresis,
+					"heating vs cooling hysteresis: a bias offset of opposite sign on the heating and the cooling "
+					"branch, kept through soaks, swapping over a temperature span (play-type)",
+					"ramps at several rates (the offset does not scale with the rate) and soaks after heating "
+					"and after cooling",
+					"deg/h (half heating-cooling difference)",
+					[](const CandidateContext& ctx, double span_C) { return column(hysteresisBranch(*ctx.sig, span_C)); },
+					hysteresisUntestableReason),
+		"span_C", {0.5, 1.0, 2.0, 5.0, 10.0, 20.0}));
+	lib.push_back(withTheta(
+		candidateOf(Effect::Warmup,
+					"turn-on warm-up: a bias decaying as exp(-(t - t_on)/tau) after each power-on (a run that starts "
+					"powered gets its own amplitude: how long before it the gyro was switched on is unknown)",
+					"power cycles at constant chamber temperature",
+					"deg/h at power-on (RMS of the fitted terms when the run also starts powered)", warmupColumns,
+					warmupUntestableReason),
+		"tau_s", {60, 120, 240, 480, 900, 1800, 3600, 7200}));
+	lib.push_back(candidateOf(
+		Effect::ScaleFactorTemp,
+		"temperature-dependent scale factor (source wavelength): an error (T - Tmean) x applied rate",
+		"rate-table segments at several temperatures", "ppm/degC", scaleFactorColumn, [](const RunSignals& s) {
+			return s.has_table ? std::string() : std::string("no rate-table segments in the run");
+		}));
+	lib.push_back(candidateOf(
+		Effect::Magnetic, "Faraday (magnetic) sensitivity: bias proportional to the axial field",
+		"field segments (applied axial field switched on and off)", "deg/h per uT",
+		[](const CandidateContext& ctx, double) { return column(ctx.sig->field_uT); },
+		[](const RunSignals& s) { return s.has_field ? std::string() : std::string("no field segments in the run"); }));
+	lib.push_back(candidateOf(Effect::TempPolyOrder,
+							  "static temperature polynomial too low: the next two powers of the temperature",
+							  "soaks at several temperature levels across the full range", "deg/h (RMS of the added terms)",
+							  tempPolyColumns, always));
+	lib.push_back(withTheta(
+		candidateOf(Effect::HeatSource,
+					"unmodelled internal heat source (electronics, source): the inner coil warms by a first-order "
+					"response to power",
+					"power cycles", "degC at full power",
+					[](const CandidateContext& ctx, double tau_s) {
+						return column(firstOrderLag(*ctx.sig, ctx.sig->power, tau_s));
+					},
+					always),
+		"tau_s", {120, 300, 600, 1200, 2400, 4800}));
 	for (auto& c : lib)
 		if (c.theta_grid.empty()) c.theta_grid = {0.0};
 	return lib;

@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/SimulatedRun.h>
+#include <mrpt_fog/sim/EffectRegistry.h>
 #include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/sim/ChamberRun.h>
 #include <mrpt_fog/sim/FogSimulator.h>
@@ -209,7 +210,8 @@ SimTrace simulateOnRun(const SimModel& model, const ChamberDrive& drive, const F
 
 std::string ParamSlot::label() const
 {
-	if (id == "temp_poly_dph" || id == "thermistor_offsets_C") return id + "[" + std::to_string(index) + "]";
+	const auto* d = sim::descriptorOfCalibrationParameter(id);
+	if (id == "thermistor_offsets_C" || (d && d->calibration.indexed)) return id + "[" + std::to_string(index) + "]";
 	return id;
 }
 
@@ -226,8 +228,9 @@ std::vector<ParamSlot> expandSlots(const std::vector<std::string>& free, const S
 	for (const auto& id : free)
 	{
 		if (!effectOn(id)) continue;
-		if (id == "temp_poly_dph")
-			for (std::size_t i = 0; i < m.device.errors.temp_poly_dph.size(); ++i) out.push_back({id, static_cast<int>(i)});
+		const auto* d = sim::descriptorOfCalibrationParameter(id);
+		if (d && d->calibration.indexed)
+			for (std::size_t i = 0; i < sim::calibrationSlotCount(*d, m.device); ++i) out.push_back({id, static_cast<int>(i)});
 		else if (id == "thermistor_offsets_C")
 			for (std::size_t i = 0; i < m.device.thermistors.size(); ++i) out.push_back({id, static_cast<int>(i)});
 		else
@@ -240,20 +243,13 @@ namespace
 {
 double* slotRef(SimModel& m, const ParamSlot& s)
 {
-	auto& e = m.device.errors;
-	if (s.id == "constant_bias_dph") return &e.constant_bias_dph;
-	if (s.id == "winding_asymmetry_m") return &m.device.winding.midpoint_offset_m;
-	if (s.id == "radial_gradient_dph_per_C") return &e.radial_gradient_dph_per_C;
-	if (s.id == "gradient_rate_dph_per_C_per_min") return &e.gradient_rate_dph_per_C_per_min;
-	if (s.id == "hysteresis_dph") return &e.hysteresis_dph;
-	if (s.id == "warmup_dph") return &e.warmup_dph;
-	if (s.id == "sf_ppm_per_C") return &e.sf_ppm_per_C;
-	if (s.id == "sf_ref_C") return &e.sf_ref_C;
-	if (s.id == "magnetic_dph_per_uT") return &e.magnetic_dph_per_uT;
-	if (s.id == "temp_poly_dph") return &e.temp_poly_dph.at(static_cast<std::size_t>(s.index));
-	if (s.id == "electronics_power_W") return &m.device.thermal.electronics_power_W;
+	if (s.id == "constant_bias_dph") return &m.device.errors.constant_bias_dph;
+	if (s.id == "sf_ref_C") return &m.device.errors.sf_ref_C;
 	if (s.id == "thermal_time_scale") return &m.thermal_time_scale;
 	if (s.id == "thermistor_offsets_C") return &m.device.thermistors.at(static_cast<std::size_t>(s.index)).offset_C;
+	// an effect's calibration parameter (the effect registry says where it lives)
+	if (const auto* d = sim::descriptorOfCalibrationParameter(s.id))
+		if (double* slot = sim::calibrationSlot(*d, m.device, static_cast<std::size_t>(s.index))) return slot;
 	throw std::invalid_argument("unknown free parameter '" + s.id + "'");
 }
 }  // namespace
@@ -262,8 +258,8 @@ double getParam(const SimModel& m, const ParamSlot& s) { return *slotRef(const_c
 
 void setParam(SimModel& m, const ParamSlot& s, double v)
 {
-	if (s.id == "hysteresis_dph") v = std::max(v, 0.0);
-	if (s.id == "electronics_power_W") v = std::max(v, 1e-6);
+	if (const auto* d = sim::descriptorOfCalibrationParameter(s.id); d && std::isfinite(d->calibration.min_value))
+		v = std::max(v, d->calibration.min_value);
 	if (s.id == "thermal_time_scale") v = std::clamp(v, 0.2, 5.0);
 	*slotRef(m, s) = v;
 }

@@ -2,6 +2,7 @@
 #include <mrpt_fog/common/GoldenSection.h>
 #include <mrpt_fog/discrepancy/SimulatorCalibration.h>
 #include <mrpt_fog/discrepancy/WhitenedRegression.h>
+#include <mrpt_fog/sim/EffectRegistry.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,19 +15,21 @@ namespace
 {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-bool isTempSlot(const ParamSlot& s) { return s.id == "thermal_time_scale" || s.id == "electronics_power_W"; }
+/** A parameter of the thermal network (fitted on the temperature residual). */
+bool isTempSlot(const ParamSlot& s)
+{
+	if (s.id == "thermal_time_scale") return true;
+	const auto* d = sim::descriptorOfCalibrationParameter(s.id);
+	return d && d->identified_in == sim::IdentifiedIn::Temperature;
+}
 
 /** Finite-difference step of a slot: a typical size of the parameter. */
 double fdStep(const ParamSlot& s, double v)
 {
-	static const std::pair<const char*, double> typ[] = {
-		{"constant_bias_dph", 0.01},  {"winding_asymmetry_m", 0.05}, {"radial_gradient_dph_per_C", 1e-3},
-		{"gradient_rate_dph_per_C_per_min", 1e-3}, {"hysteresis_dph", 1e-3}, {"warmup_dph", 1e-3},
-		{"sf_ppm_per_C", 0.1},		  {"sf_ref_C", 0.05}, {"magnetic_dph_per_uT", 1e-5}, {"temp_poly_dph", 1e-5},
-		{"electronics_power_W", 0.05}, {"thermal_time_scale", 0.01}};
-	double t = 1e-3;
-	for (const auto& [id, h] : typ)
-		if (s.id == id) t = h;
+	double t = 1e-3;  // thermistor offsets [degC]
+	if (s.id == "constant_bias_dph" || s.id == "thermal_time_scale") t = 0.01;
+	else if (s.id == "sf_ref_C") t = 0.05;
+	else if (const auto* d = sim::descriptorOfCalibrationParameter(s.id)) t = d->calibration.fd_step;
 	return std::max(t, 1e-3 * std::abs(v));
 }
 

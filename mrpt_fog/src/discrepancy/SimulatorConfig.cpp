@@ -38,11 +38,17 @@ std::vector<std::string> readIdList(const yaml& doc, const std::string& key, con
 
 const std::vector<std::string>& freeParameterIds()
 {
-	static const std::vector<std::string> ids = {
-		"constant_bias_dph",   "winding_asymmetry_m", "radial_gradient_dph_per_C", "gradient_rate_dph_per_C_per_min",
-		"hysteresis_dph",	   "warmup_dph",		  "sf_ppm_per_C",			   "magnetic_dph_per_uT",
-		"temp_poly_dph",	   "electronics_power_W", "thermal_time_scale",		   "thermistor_offsets_C",
-		"sf_ref_C"};
+	// the constant bias, each effect's calibration parameter (registry order), the thermal
+	// network's time scale, the thermistor offsets and the scale factor's reference temperature
+	static const std::vector<std::string> ids = [] {
+		std::vector<std::string> v{"constant_bias_dph"};
+		for (const auto& d : sim::effectDescriptors())
+			if (*d.calibration_parameter) v.push_back(d.calibration_parameter);
+		v.push_back("thermal_time_scale");
+		v.push_back("thermistor_offsets_C");
+		v.push_back("sf_ref_C");
+		return v;
+	}();
 	return ids;
 }
 

@@ -1,4 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/sim/EffectRegistry.h>
 #include <mrpt_fog/sim/FogDevice.h>
 #include <mrpt_fog/common/NumberFormat.h>
 
@@ -7,6 +8,7 @@
 #include <cmath>
 #include <fstream>
 #include <set>
+#include <stdexcept>
 
 #include "YamlFields.h"
 
@@ -54,19 +56,24 @@ std::vector<NumField> coilFields(WindingParams& w)
 			{"dn_dT_per_K", &w.dn_dT_per_K},			 {"expansion_per_K", &w.expansion_per_K}};
 }
 
+/** The scalar `errors:` fields: the constant bias, then each effect's coefficient and shape
+ * fields in the registry's order (temp_poly_dph, a list, is read on its own). */
 std::vector<NumField> errorFields(ErrorCoefficients& e)
 {
-	return {{"constant_bias_dph", &e.constant_bias_dph},
-			{"radial_gradient_dph_per_C", &e.radial_gradient_dph_per_C},
-			{"gradient_rate_dph_per_C_per_min", &e.gradient_rate_dph_per_C_per_min},
-			{"hysteresis_dph", &e.hysteresis_dph},
-			{"hysteresis_span_C", &e.hysteresis_span_C},
-			{"warmup_dph", &e.warmup_dph},
-			{"warmup_tau_s", &e.warmup_tau_s},
-			{"sf_ppm_per_C", &e.sf_ppm_per_C},
-			{"sf_ref_C", &e.sf_ref_C},
-			{"magnetic_dph_per_uT", &e.magnetic_dph_per_uT},
-			{"temp_poly_ref_C", &e.temp_poly_ref_C}};
+	static const std::string kSection = "errors.";
+	std::vector<NumField> f{{"constant_bias_dph", &e.constant_bias_dph}};
+	for (const auto& d : effectDescriptors())
+	{
+		if (d.coefficient)
+		{
+			if (std::string(d.coefficient_key).rfind(kSection, 0) != 0)
+				throw std::logic_error(std::string("effect ") + d.id + ": coefficient key is not an errors: field");
+			f.push_back({d.coefficient_key + kSection.size(), &(e.*d.coefficient)});
+		}
+		for (const auto& shape : d.shape_fields)
+			if (shape.key) f.push_back({shape.key, &(e.*shape.member)});
+	}
+	return f;
 }
 
 std::vector<NumField> noiseFields(GyroNoiseParams& n)

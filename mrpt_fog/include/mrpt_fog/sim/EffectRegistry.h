@@ -9,16 +9,18 @@
  * the order of ErrorEffects.h's allEffectIds() and of the "sim.effects" metadata.
  *
  * Adding an effect: one enumerator, one descriptor in EffectRegistry.cpp (with its simulator
- * term when it is an additive bias), its coefficient in ErrorCoefficients (FogDevice.h) and
- * YAML field list (FogDevice.cpp), and its candidate column builder in the discrepancy
- * room's CandidateEffect.cpp; tests/sim/test_EffectRegistry.cpp and
- * tests/discrepancy/test_CandidateEffect.cpp fail until every part is there.
+ * term when it is an additive bias), its coefficient in ErrorCoefficients (FogDevice.h), and
+ * its candidate column builder in the discrepancy room's CandidateEffect.cpp. The device YAML
+ * fields, the simulator calibration's free parameters (slots, finite-difference steps, bounds),
+ * fog-sim --help and the proof trials read the descriptor. tests/sim/test_EffectRegistry.cpp
+ * and tests/discrepancy/test_EffectRegistryCandidates.cpp fail until every part is there.
  */
 
 #include <mrpt_fog/sim/FogDevice.h>
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <string>
 
 namespace mrpt_fog::sim
@@ -56,6 +58,25 @@ struct EffectTermInputs
 	double electronics_C = 0;  //!< electronics (source) node temperature
 };
 
+/** A field of the device's `errors:` section that shapes an effect without setting its
+ * strength (a time constant, a span, a reference temperature). */
+struct ShapeField
+{
+	const char* key = nullptr;  //!< YAML key under `errors:`; nullptr = none
+	double ErrorCoefficients::*member = nullptr;
+};
+
+/** How a simulator calibration moves the effect's calibration parameter (SimulatorCalibration.h). */
+struct CalibrationSlots
+{
+	double fd_step = 1e-3;  //!< finite-difference step: a typical size of the parameter
+	double min_value = -std::numeric_limits<double>::infinity();  //!< kept at or above this
+	bool indexed = false;  //!< several slots, labelled "id[i]"
+	/** Slot `index` of the parameter in a device, nullptr past the last one; nullptr when the
+	 * parameter is the scalar `coefficient` (its only slot). */
+	double* (*slot)(FogDevice& device, std::size_t index) = nullptr;
+};
+
 struct EffectDescriptor
 {
 	Effect effect;
@@ -80,6 +101,10 @@ struct EffectDescriptor
 	 * gradient rate, hysteresis), acts elsewhere (lag, heat source, scale factor on the
 	 * applied rate, Earth rate) and is written in FogSimulator.cpp. */
 	void (*add_bias_term_dph)(const EffectTermInputs& in, const ErrorCoefficients& e, double& sum_dph);
+	/** Its other `errors:` fields, in the device file's order after the coefficient. */
+	std::array<ShapeField, 1> shape_fields;
+	/** How a simulator calibration moves `calibration_parameter` (unused when that is ""). */
+	CalibrationSlots calibration;
 };
 
 /** Every effect, in enumerator order. */
@@ -90,6 +115,16 @@ const EffectDescriptor& descriptorOf(Effect effect);
 
 /** Effect by id; throws std::invalid_argument "unknown effect 'x' (known: ...)". */
 Effect effectFromId(const std::string& id);
+
+/** The effect whose calibration_parameter is `parameter`, or nullptr. */
+const EffectDescriptor* descriptorOfCalibrationParameter(const std::string& parameter);
+
+/** Slot `index` of the effect's calibration parameter in `device`, nullptr past the last one
+ * (or when the effect has no calibration parameter). */
+double* calibrationSlot(const EffectDescriptor& effect, FogDevice& device, std::size_t index);
+
+/** How many slots the effect's calibration parameter has in `device`. */
+std::size_t calibrationSlotCount(const EffectDescriptor& effect, const FogDevice& device);
 
 /** Its stable id. */
 inline const char* toString(Effect effect) { return descriptorOf(effect).id; }
