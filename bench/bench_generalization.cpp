@@ -132,7 +132,7 @@ int main(int argc, char** argv)
 	if (savgol)
 		for (auto& p : presets)
 		{
-			p.options.rate_estimator.kind = "savgol";
+			p.options.rate_estimator.kind = mrpt_fog::RateEstimatorKind::SavitzkyGolay;
 			p.options.rate_estimator.poly_order = 1;  // a centred line: no delay
 		}
 	if (causal_order > 0)

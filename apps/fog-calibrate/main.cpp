@@ -483,10 +483,11 @@ int main(int argc, char** argv)
 		FitOptions opt;
 		opt.selection = arg_sel.getValue();
 		opt.ridge = arg_ridge.getValue();
-		opt.rate_estimator.kind = arg_est.getValue();
+		opt.rate_estimator.kind = rateEstimatorKindFromString(arg_est.getValue());
 		opt.rate_estimator.window_s = arg_window.getValue();
 		opt.window_for_quantum = !arg_window.isSet();  // an explicit window is used as given
-		opt.rate_estimator.poly_order = opt.rate_estimator.kind == "savgol" ? arg_order.getValue() : arg_corder.getValue();
+		opt.rate_estimator.poly_order =
+			opt.rate_estimator.kind == RateEstimatorKind::SavitzkyGolay ? arg_order.getValue() : arg_corder.getValue();
 		opt.folds = arg_folds.getValue();
 		opt.tau_s = arg_tau.getValue();
 		opt.fallbacks = !arg_nofb.getValue();

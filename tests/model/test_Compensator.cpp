@@ -254,7 +254,7 @@ TEST(Compensator, LayoutMismatchAndNonCausalCalibrationRefused)
 	xaxis.rate_dph[2].clear();
 	EXPECT_THROW(compensate(calA(), xaxis), std::invalid_argument);
 	Calibration sg = calA();
-	sg.rate_estimator = {"savgol", 60, 2};
+	sg.rate_estimator = {RateEstimatorKind::SavitzkyGolay, 60, 2};
 	EXPECT_THROW(Compensator(sg, s.thermistors), std::invalid_argument);
 }
 

@@ -71,8 +71,8 @@ TEST(RateEstimator, CausalOrderTwoHasNoDelayOnAQuadratic)
 	for (double v : ti) line.push_back(20.0 - 0.02 * v);
 	const auto rl = CausalRateEstimator(60.0, 2).estimate(ti, line);
 	for (std::size_t k = 2; k < ti.size(); k++) EXPECT_NEAR(rl[k], -0.02, 1e-9) << k;
-	EXPECT_EQ(makeRateEstimator({"causal", 60, 2})->settings().describe(), "causal(window_s=60, order=2)");
-	EXPECT_THROW(makeRateEstimator({"causal", 60, 3}), std::invalid_argument);
+	EXPECT_EQ(makeRateEstimator({RateEstimatorKind::Causal, 60, 2})->settings().describe(), "causal(window_s=60, order=2)");
+	EXPECT_THROW(makeRateEstimator({RateEstimatorKind::Causal, 60, 3}), std::invalid_argument);
 }
 
 // Savitzky-Golay of order 2 is exact on a quadratic, at the sample itself (no delay), even on
@@ -207,13 +207,15 @@ TEST(RateEstimator, BadInputThrows)
 	EXPECT_THROW(CausalRateEstimator(60).estimate({0, 1}, {1}), std::invalid_argument);
 	EXPECT_THROW(CausalRateEstimator(0.0), std::invalid_argument);
 	EXPECT_THROW(SavitzkyGolayRateEstimator(10, 5), std::invalid_argument);
-	EXPECT_THROW(makeRateEstimator({"kalman", 60, 1}), std::invalid_argument);
-	EXPECT_THROW(makeRateEstimator({"causal", 60, 0}), std::invalid_argument);
+	EXPECT_THROW(rateEstimatorKindFromString("kalman"), std::invalid_argument);
+	EXPECT_EQ(rateEstimatorKindFromString("savgol"), RateEstimatorKind::SavitzkyGolay);
+	EXPECT_STREQ(toString(RateEstimatorKind::Causal), "causal");
+	EXPECT_THROW(makeRateEstimator({RateEstimatorKind::Causal, 60, 0}), std::invalid_argument);
 	CausalRateTracker tr(1, 10);
 	const double x = 1;
 	tr.push(5, &x);
 	EXPECT_THROW(tr.push(5, &x), std::invalid_argument);
-	EXPECT_EQ(makeRateEstimator({"savgol", 30, 2})->settings().describe(), "savgol(window_s=30, order=2)");
-	EXPECT_FALSE(makeRateEstimator({"savgol", 30, 2})->isCausal());
-	EXPECT_TRUE(makeRateEstimator({"causal", 30, 1})->isCausal());
+	EXPECT_EQ(makeRateEstimator({RateEstimatorKind::SavitzkyGolay, 30, 2})->settings().describe(), "savgol(window_s=30, order=2)");
+	EXPECT_FALSE(makeRateEstimator({RateEstimatorKind::SavitzkyGolay, 30, 2})->isCausal());
+	EXPECT_TRUE(makeRateEstimator({RateEstimatorKind::Causal, 30, 1})->isCausal());
 }

@@ -127,7 +127,7 @@ class RowCursor
    public:
 	explicit RowCursor(const PreparedRun& r)
 		: r_(r),
-		  causal_(r.est.kind == "causal"),
+		  causal_(r.est.kind == RateEstimatorKind::Causal),
 		  order2_(causal_ && r.est.poly_order == 2),
 		  tracker_(r.col.size(), r.est.window_s),
 		  half_(r.col.size(), 0.5 * r.est.window_s),
@@ -195,7 +195,7 @@ PreparedRun prepare(const FogRun& s, const ThermalFeatureSet& fs, const RateEsti
 	// A table sample is not a bias sample (nor in the raw figures) when excluded.
 	r.exclude_table = table == TableSamples::Exclude;
 	r.est = est;
-	if (est.kind != "causal")
+	if (est.kind != RateEstimatorKind::Causal)
 	{
 		// The centred estimator needs whole columns (studies only: memory grows with the run).
 		FogSeries loaded;
@@ -632,7 +632,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 	const ModelPreset preset = parseModelPreset(preset_text, first.thermistors);
 	ThermalFeatureSet fs = presetFeatures(preset);
 	const bool candidates_added =
-		opt.selection == "auto" && opt.physics_candidates && (preset.kind == "multipoint" || preset.kind == "points");
+		opt.selection == "auto" && opt.physics_candidates && (preset.kind == PresetKind::Multipoint || preset.kind == PresetKind::Points);
 	if (candidates_added)
 	{
 		std::vector<ThermalTerm> terms(fs.terms().begin() + 1, fs.terms().end());
@@ -875,14 +875,14 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 	};
 	// The subsets of thermistors to consider, as masks over fs.thermistors().
 	const auto& names = fs.thermistors();
-	const bool nested = automatic && (preset.kind == "points" || (preset.kind == "multipoint" && !opt.linear_base));
+	const bool nested = automatic && (preset.kind == PresetKind::Points || (preset.kind == PresetKind::Multipoint && !opt.linear_base));
 	Choice best;
 	std::vector<Choice> fallback_choices;  // for nested: the best choice without each thermistor
 	if (nested)
 	{
 		NestedSelection search(names, [&](const std::vector<std::string>& pool) { return forward(folds, pool, ""); });
 		std::size_t base = search.fullMask();
-		if (preset.kind == "points")
+		if (preset.kind == PresetKind::Points)
 		{
 			// points:K = the best choice among all K-thermistor subsets (each with its subsets).
 			const auto K = static_cast<std::size_t>(preset.points_k);
@@ -915,7 +915,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 	{
 		// Candidate pools: the preset's thermistors, or every K-subset for points:K (selection none).
 		std::vector<std::vector<std::string>> pools;
-		if (preset.kind == "points")
+		if (preset.kind == PresetKind::Points)
 		{
 			const std::size_t n = names.size(), K = static_cast<std::size_t>(preset.points_k);
 			std::vector<bool> pick(n, false);
@@ -964,7 +964,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 			{
 				NestedSelection search(names, [&](const std::vector<std::string>& pool) { return forward(fset, pool, ""); });
 				std::size_t base = search.fullMask();
-				if (preset.kind == "points")
+				if (preset.kind == PresetKind::Points)
 				{
 					double lowest = std::numeric_limits<double>::infinity();
 					for (std::size_t mask = 1; mask <= search.fullMask(); mask++)
@@ -1131,7 +1131,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 				const double y = r.y(c, j);
 				all.push(c.time_s[j], y, r.ok[k0 + j] ? y - bias : kNaN);
 			};
-			if (opt.rate_estimator.kind == "causal")
+			if (opt.rate_estimator.kind == RateEstimatorKind::Causal)
 				compensateRun(cal, *r.run,
 							  [&](const FogSeries& c, std::size_t k0, std::size_t j0, std::size_t m,
 								  const Compensator::Output* out) {

@@ -497,11 +497,11 @@ void writeAxis(std::ostringstream& o, const Calibration& cal)
 	o << ind << "preset: " << str(cal.preset) << "\n";
 	o << ind << "selection: " << str(cal.selection) << "\n";
 	o << ind << "rate_estimator:\n";
-	o << ind << "  kind: " << str(cal.rate_estimator.kind) << "\n";
+	o << ind << "  kind: " << str(toString(cal.rate_estimator.kind)) << "\n";
 	o << ind << "  window_s: " << num(cal.rate_estimator.window_s) << "\n";
 	o << ind << "  poly_order: " << cal.rate_estimator.poly_order << "\n";
-	o << ind << "  delay_s: " << num(cal.rate_estimator.kind == "causal" && cal.rate_estimator.poly_order == 1 ? cal.rate_estimator.window_s / 2 : 0.0)
-	  << (cal.rate_estimator.kind == "causal" && cal.rate_estimator.poly_order == 2
+	o << ind << "  delay_s: " << num(cal.rate_estimator.kind == RateEstimatorKind::Causal && cal.rate_estimator.poly_order == 1 ? cal.rate_estimator.window_s / 2 : 0.0)
+	  << (cal.rate_estimator.kind == RateEstimatorKind::Causal && cal.rate_estimator.poly_order == 2
 			  ? "  # informational: order 2 extrapolates the slope to the newest sample (no delay)\n"
 			  : "  # informational: the causal estimate lags by about window_s / 2\n");
 	o << ind << "calibration_runs: [";
@@ -625,11 +625,12 @@ void readAxisFields(const Reader& rd, const yaml& n, const std::string& p, const
 	cal.selection = rd.text(n, "selection", p);
 	const yaml est = rd.child(n, "rate_estimator", p);
 	const std::string ep = at(p, "rate_estimator");
-	cal.rate_estimator.kind = rd.text(est, "kind", ep);
+	const std::string kind = rd.text(est, "kind", ep);
 	cal.rate_estimator.window_s = rd.finite(est, "window_s", ep);
 	cal.rate_estimator.poly_order = static_cast<int>(rd.count(est, "poly_order", ep, 0, 64));
 	try
 	{
+		cal.rate_estimator.kind = rateEstimatorKindFromString(kind);
 		cal.rate_estimator.validate();
 	}
 	catch (const std::invalid_argument& e)

@@ -165,7 +165,7 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 		throw std::invalid_argument("compensator: the AVX2 build was requested but this CPU lacks AVX2");
 	const bool avx2 = build == KernelBuild::Avx2 || (build == KernelBuild::Auto && kernel::cpuHasAvx2());
 	cal.rate_estimator.validate();
-	if (cal.rate_estimator.kind != "causal")
+	if (cal.rate_estimator.kind != RateEstimatorKind::Causal)
 		throw std::invalid_argument("calibration was fitted with the non-causal rate estimator " +
 									cal.rate_estimator.describe() +
 									": it cannot run in real time; refit with the causal estimator");

@@ -1,4 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/common/EnumNames.h>
 #include <mrpt_fog/model/ModelPreset.h>
 
 #include <cmath>
@@ -44,6 +45,16 @@ std::vector<ThermalTerm> multipointTerms(const std::vector<std::string>& names, 
 	return terms;
 }
 
+namespace
+{
+constexpr EnumName<PresetKind> kPresetKinds[] = {
+	{PresetKind::Multipoint, "multipoint"}, {PresetKind::M1, "M1"},		  {PresetKind::M2, "M2"},
+	{PresetKind::M3, "M3"},					{PresetKind::M4, "M4"},		  {PresetKind::Points, "points"},
+	{PresetKind::Terms, "terms"}};
+}  // namespace
+
+const char* toString(PresetKind kind) { return nameIn(kPresetKinds, kind, "?"); }
+
 ModelPreset parseModelPreset(const std::string& text, const std::vector<ThermistorInfo>& layout)
 {
 	ModelPreset p;
@@ -54,7 +65,7 @@ ModelPreset parseModelPreset(const std::string& text, const std::vector<Thermist
 	bool rate_given = false;
 	if (text.rfind("terms:", 0) == 0)
 	{
-		p.kind = "terms";
+		p.kind = PresetKind::Terms;
 		for (const auto& name : split(text.substr(6), ';'))
 			if (!name.empty()) p.explicit_terms.push_back(ThermalTerm::parse(name));
 		if (p.explicit_terms.empty()) fail("no terms listed");
@@ -82,7 +93,7 @@ ModelPreset parseModelPreset(const std::string& text, const std::vector<Thermist
 		body = body.substr(0, at);
 	}
 	const auto colon = body.find(':');
-	p.kind = body.substr(0, colon);
+	const std::string kind_text = body.substr(0, colon);
 	std::vector<std::string> args;
 	if (colon != std::string::npos)
 	{
@@ -90,6 +101,10 @@ ModelPreset parseModelPreset(const std::string& text, const std::vector<Thermist
 		if (args.empty()) fail("nothing after ':'");
 	}
 	if (layout.empty()) fail("the data has no thermistors");
+	const auto kind = valueIn(kPresetKinds, kind_text);
+	if (!kind || *kind == PresetKind::Terms)  // terms come as "terms:A;B" (above)
+		fail("unknown preset '" + kind_text + "' (use multipoint, M1..M4, points:K or terms:...)");
+	p.kind = *kind;
 	const auto check = [&](const std::string& n) -> const ThermistorInfo& {
 		for (const auto& t : layout)
 			if (t.name == n) return t;
@@ -110,22 +125,22 @@ ModelPreset parseModelPreset(const std::string& text, const std::vector<Thermist
 		if (!best) fail("no outer thermistor in the data for the inner/outer pair; name it as :IN,OUT");
 		return best->name;
 	};
-	if (p.kind == "multipoint")
+	if (p.kind == PresetKind::Multipoint)
 	{
 		if (args.empty())
 			for (const auto& t : layout) p.thermistors.push_back(t.name);
 		for (const auto& a : args) p.thermistors.push_back(check(a).name);
 	}
-	else if (p.kind == "M1" || p.kind == "M2")
+	else if (p.kind == PresetKind::M1 || p.kind == PresetKind::M2)
 	{
-		if (p.kind == "M1" && rate_given && p.rate_order != 0)
+		if (p.kind == PresetKind::M1 && rate_given && p.rate_order != 0)
 			fail("M1 is poly(T) only and has no rate terms: write M1@T (e.g. M1@3), or use M2 for rates");
-		if (args.size() > 1) fail(p.kind + " takes one thermistor (" + p.kind + ":NAME)");
+		if (args.size() > 1) fail(kind_text + " takes one thermistor (" + kind_text + ":NAME)");
 		p.thermistors.push_back(args.empty() ? firstInner() : check(args[0]).name);
 	}
-	else if (p.kind == "M3" || p.kind == "M4")
+	else if (p.kind == PresetKind::M3 || p.kind == PresetKind::M4)
 	{
-		if (args.size() == 1 || args.size() > 2) fail(p.kind + " takes an inner/outer pair (" + p.kind + ":IN,OUT)");
+		if (args.size() == 1 || args.size() > 2) fail(kind_text + " takes an inner/outer pair (" + kind_text + ":IN,OUT)");
 		if (args.empty())
 		{
 			const auto& in = check(firstInner());
@@ -135,7 +150,7 @@ ModelPreset parseModelPreset(const std::string& text, const std::vector<Thermist
 			p.thermistors = {check(args[0]).name, check(args[1]).name};
 		if (p.thermistors[0] == p.thermistors[1]) fail("the pair must be two different thermistors");
 	}
-	else if (p.kind == "points")
+	else  // PresetKind::Points
 	{
 		if (args.size() != 1) fail("write points:K with K the number of thermistors to use");
 		p.points_k = parseInt(args[0], "K", text);
@@ -143,8 +158,6 @@ ModelPreset parseModelPreset(const std::string& text, const std::vector<Thermist
 			fail("K must be 1.." + std::to_string(layout.size()) + " (thermistors in the data)");
 		for (const auto& t : layout) p.thermistors.push_back(t.name);
 	}
-	else
-		fail("unknown preset '" + p.kind + "' (use multipoint, M1..M4, points:K or terms:...)");
 	for (std::size_t i = 0; i < p.thermistors.size(); i++)
 		for (std::size_t j = 0; j < i; j++)
 			if (p.thermistors[i] == p.thermistors[j]) fail("thermistor '" + p.thermistors[i] + "' listed twice");
@@ -153,19 +166,19 @@ ModelPreset parseModelPreset(const std::string& text, const std::vector<Thermist
 
 ThermalFeatureSet presetFeatures(const ModelPreset& p)
 {
-	if (p.kind == "terms") return ThermalFeatureSet(p.explicit_terms);
-	if (p.kind == "multipoint" || p.kind == "points") return ThermalFeatureSet(multipointTerms(p.thermistors, p.temp_order, p.rate_order));
+	if (p.kind == PresetKind::Terms) return ThermalFeatureSet(p.explicit_terms);
+	if (p.kind == PresetKind::Multipoint || p.kind == PresetKind::Points) return ThermalFeatureSet(multipointTerms(p.thermistors, p.temp_order, p.rate_order));
 	const std::string& a = p.thermistors.at(0);
 	std::vector<ThermalTerm> terms;
-	if (p.kind == "M1") terms = multipointTerms({a}, p.temp_order, 0);
-	else if (p.kind == "M2") terms = multipointTerms({a}, p.temp_order, p.rate_order);
-	else if (p.kind == "M3")
+	if (p.kind == PresetKind::M1) terms = multipointTerms({a}, p.temp_order, 0);
+	else if (p.kind == PresetKind::M2) terms = multipointTerms({a}, p.temp_order, p.rate_order);
+	else if (p.kind == PresetKind::M3)
 	{
 		terms = multipointTerms({a}, p.temp_order, p.rate_order);
 		for (int k = 1; k <= std::max(1, p.rate_order); k++)
 			terms.push_back(ThermalTerm::of(SignalKind::Diff, a, p.thermistors.at(1), k));
 	}
-	else if (p.kind == "M4")
+	else if (p.kind == PresetKind::M4)
 	{
 		for (int k = 1; k <= std::max(1, p.rate_order); k++)
 			terms.push_back(ThermalTerm::of(SignalKind::Diff, a, p.thermistors.at(1), k));

@@ -1,4 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/common/EnumNames.h>
 #include <mrpt_fog/model/CausalRateTrackerInline.h>
 #include <mrpt_fog/model/RateEstimator.h>
 
@@ -29,11 +30,25 @@ void checkColumns(const std::vector<double>& t, const std::vector<double>& x)
 }
 }  // namespace
 
+namespace
+{
+constexpr EnumName<RateEstimatorKind> kKinds[] = {{RateEstimatorKind::Causal, "causal"},
+												  {RateEstimatorKind::SavitzkyGolay, "savgol"}};
+}  // namespace
+
+const char* toString(RateEstimatorKind kind) { return nameIn(kKinds, kind, "causal"); }
+
+RateEstimatorKind rateEstimatorKindFromString(const std::string& text)
+{
+	if (const auto k = valueIn(kKinds, text)) return *k;
+	throw std::invalid_argument("rate estimator kind must be 'causal' or 'savgol', got '" + text + "'");
+}
+
 std::string RateEstimatorSettings::describe() const
 {
 	std::ostringstream o;
-	o << kind << "(window_s=" << window_s;
-	if (kind == "savgol" || poly_order != 1) o << ", order=" << poly_order;
+	o << toString(kind) << "(window_s=" << window_s;
+	if (kind == RateEstimatorKind::SavitzkyGolay || poly_order != 1) o << ", order=" << poly_order;
 	o << ")";
 	return o.str();
 }
@@ -45,18 +60,16 @@ constexpr double kMaxWindow_s = 3600.0;
 
 void RateEstimatorSettings::validate() const
 {
-	if (kind != "causal" && kind != "savgol")
-		throw std::invalid_argument("rate estimator kind must be 'causal' or 'savgol', got '" + kind + "'");
 	if (!std::isfinite(window_s) || window_s <= 0)
 		throw std::invalid_argument("rate estimator window_s must be a positive number of seconds");
 	if (window_s > kMaxWindow_s)  // issue 14: window_s 1e9 was accepted (worse than raw)
 		throw std::invalid_argument("rate estimator window_s " + std::to_string(window_s) +
 									" s exceeds the limit of 3600 s (the causal estimate lags by half the window)");
-	if (kind == "causal" && poly_order != 1 && poly_order != 2)
+	if (kind == RateEstimatorKind::Causal && poly_order != 1 && poly_order != 2)
 		throw std::invalid_argument("rate estimator: the causal estimator has order 1 (the slope over the window, "
 									"delayed by half of it) or 2 (delay-compensated), got order " +
 									std::to_string(poly_order));
-	if (kind == "savgol" && (poly_order < 1 || poly_order > 4))
+	if (kind == RateEstimatorKind::SavitzkyGolay && (poly_order < 1 || poly_order > 4))
 		throw std::invalid_argument("rate estimator: savgol order must be 1..4, got " + std::to_string(poly_order));
 }
 
@@ -78,7 +91,7 @@ double windowForQuantum_s(double base_window_s, double quantum_C)
 std::unique_ptr<RateEstimator> makeRateEstimator(const RateEstimatorSettings& s)
 {
 	s.validate();
-	if (s.kind == "causal") return std::make_unique<CausalRateEstimator>(s.window_s, s.poly_order);
+	if (s.kind == RateEstimatorKind::Causal) return std::make_unique<CausalRateEstimator>(s.window_s, s.poly_order);
 	return std::make_unique<SavitzkyGolayRateEstimator>(s.window_s, s.poly_order);
 }
 
@@ -366,10 +379,10 @@ double CausalRateTracker::coveredSpan_s(std::size_t c) const
 // ---------------------------------------------------------------- CausalRateEstimator
 CausalRateEstimator::CausalRateEstimator(double window_s, int order) : window_s_(window_s), order_(order)
 {
-	RateEstimatorSettings{"causal", window_s, order}.validate();
+	RateEstimatorSettings{RateEstimatorKind::Causal, window_s, order}.validate();
 }
 
-RateEstimatorSettings CausalRateEstimator::settings() const { return {"causal", window_s_, order_}; }
+RateEstimatorSettings CausalRateEstimator::settings() const { return {RateEstimatorKind::Causal, window_s_, order_}; }
 
 std::vector<double> CausalRateEstimator::estimate(const std::vector<double>& t, const std::vector<double>& x) const
 {
@@ -389,10 +402,10 @@ std::vector<double> CausalRateEstimator::estimate(const std::vector<double>& t, 
 // ---------------------------------------------------------------- SavitzkyGolayRateEstimator
 SavitzkyGolayRateEstimator::SavitzkyGolayRateEstimator(double window_s, int order) : window_s_(window_s), order_(order)
 {
-	RateEstimatorSettings{"savgol", window_s, order}.validate();
+	RateEstimatorSettings{RateEstimatorKind::SavitzkyGolay, window_s, order}.validate();
 }
 
-RateEstimatorSettings SavitzkyGolayRateEstimator::settings() const { return {"savgol", window_s_, order_}; }
+RateEstimatorSettings SavitzkyGolayRateEstimator::settings() const { return {RateEstimatorKind::SavitzkyGolay, window_s_, order_}; }
 
 std::vector<double> SavitzkyGolayRateEstimator::estimate(const std::vector<double>& t, const std::vector<double>& x) const
 {

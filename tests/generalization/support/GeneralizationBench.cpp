@@ -243,7 +243,7 @@ std::vector<CaseResult> runBenchCase(const BenchCase& c, const std::vector<Bench
 			if (error.empty())
 			{
 				mrpt_fog::FitFigures f;
-				if (cal.rate_estimator.kind != "causal")
+				if (cal.rate_estimator.kind != mrpt_fog::RateEstimatorKind::Causal)
 				{
 					f.stability_dph = offlineStability_dph(cal, runs.eval[i]);
 					f.raw_stability_dph = mrpt_fog::biasStats(runs.eval[i].time_s, runs.eval[i].primaryRate_dph(), 100.0).stability_dph;

@@ -27,10 +27,25 @@
 
 namespace mrpt_fog
 {
+/** The preset grammar's kinds (docs/model.md): all or chosen thermistors at full order, the
+ * seed's equations M1..M4, the best K of all thermistors, or an explicit term list. */
+enum class PresetKind : unsigned char
+{
+	Multipoint,
+	M1,
+	M2,
+	M3,
+	M4,
+	Points,
+	Terms
+};
+/** "multipoint", "M1".."M4", "points", "terms" (as written in a preset). */
+const char* toString(PresetKind kind);
+
 struct ModelPreset
 {
 	std::string text;  //!< as typed
-	std::string kind;  //!< "multipoint", "M1".."M4", "points", "terms"
+	PresetKind kind = PresetKind::Multipoint;
 	std::vector<std::string> thermistors;  //!< chosen points (all for multipoint/points)
 	int temp_order = 5;
 	int rate_order = 3;

@@ -39,10 +39,22 @@
 
 namespace mrpt_fog
 {
+/** The estimators (see the file comment). */
+enum class RateEstimatorKind : unsigned char
+{
+	Causal,  //!< "causal"
+	SavitzkyGolay  //!< "savgol" (non-causal: studies only)
+};
+/** "causal" / "savgol" (the spelling in calibration files and on command lines). */
+const char* toString(RateEstimatorKind kind);
+/** Parses "causal" / "savgol"; throws std::invalid_argument "rate estimator kind must be
+ * 'causal' or 'savgol', got '...'". */
+RateEstimatorKind rateEstimatorKindFromString(const std::string& text);
+
 /** Which estimator and its parameters, as stored in a calibration file. */
 struct RateEstimatorSettings
 {
-	std::string kind = "causal";  //!< "causal" or "savgol"
+	RateEstimatorKind kind = RateEstimatorKind::Causal;
 	double window_s = 60.0;  //!< window length [s]
 	/** causal: 1 = the window's slope (delayed by about window_s / 2), 2 = delay-compensated
 	 * (default, see the file comment); savgol: the local polynomial's order 1..4. */
@@ -50,8 +62,8 @@ struct RateEstimatorSettings
 
 	/** e.g. "causal(window_s=60, order=2)", "causal(window_s=60)" (order 1) or "savgol(window_s=60, order=2)". */
 	std::string describe() const;
-	/** Throws std::invalid_argument (naming the field) for an unknown kind, window_s not
-	 * finite or <= 0, or an order outside the kind's range. */
+	/** Throws std::invalid_argument (naming the field) for window_s not finite or <= 0, or an
+	 * order outside the kind's range. */
 	void validate() const;
 	bool operator==(const RateEstimatorSettings& o) const
 	{
