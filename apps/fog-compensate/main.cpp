@@ -119,6 +119,19 @@ class CompensatedCsvWriter
 	io::GzWriter gz_;
 	std::string row_;
 };
+/** The compensator's sample counters as members of `j` (clamped_signals only in the top-level
+ * block, the per-axis blocks leave it out). */
+void putCounters(JsonValue& j, const CompensationCounters& k, bool with_clamped_signals)
+{
+	j["samples"] = static_cast<unsigned long>(k.samples);
+	j["fallback_samples"] = static_cast<unsigned long>(k.fallback_samples);
+	j["no_model_samples"] = static_cast<unsigned long>(k.no_model_samples);
+	j["clamped_samples"] = static_cast<unsigned long>(k.clamped_samples);
+	if (with_clamped_signals) j["clamped_signals"] = static_cast<unsigned long>(k.clamped_signals);
+	j["warmup_samples"] = static_cast<unsigned long>(k.warmup_samples);
+	j["rate_free_samples"] = static_cast<unsigned long>(k.rate_free_samples);
+	j["model_switches"] = static_cast<unsigned long>(k.model_switches);
+}
 }  // namespace
 
 int main(int argc, char** argv)
@@ -271,14 +284,7 @@ int main(int argc, char** argv)
 			j["output"] = out;
 			const auto& k = comps.front()->counters();
 			const Calibration& cal = cals.axes.front();
-			j["samples"] = static_cast<unsigned long>(k.samples);
-			j["fallback_samples"] = static_cast<unsigned long>(k.fallback_samples);
-			j["no_model_samples"] = static_cast<unsigned long>(k.no_model_samples);
-			j["clamped_samples"] = static_cast<unsigned long>(k.clamped_samples);
-			j["clamped_signals"] = static_cast<unsigned long>(k.clamped_signals);
-			j["warmup_samples"] = static_cast<unsigned long>(k.warmup_samples);
-			j["rate_free_samples"] = static_cast<unsigned long>(k.rate_free_samples);
-			j["model_switches"] = static_cast<unsigned long>(k.model_switches);
+			putCounters(j, k, true);
 			j["gyro_off_rows"] = static_cast<unsigned long>(gyro_off_rows);
 			j["turn_on_events"] = static_cast<unsigned long>(turn_ons);
 			j["screening"] = app::screeningJson(screening, screen);
@@ -290,12 +296,7 @@ int main(int argc, char** argv)
 				{
 					const auto& c = comps[i]->counters();
 					JsonValue& a = ja[std::string(1, axis_letter[i])] = JsonValue::object();
-					a["samples"] = static_cast<unsigned long>(c.samples);
-					a["fallback_samples"] = static_cast<unsigned long>(c.fallback_samples);
-					a["no_model_samples"] = static_cast<unsigned long>(c.no_model_samples);
-					a["clamped_samples"] = static_cast<unsigned long>(c.clamped_samples);
-					a["warmup_samples"] = static_cast<unsigned long>(c.warmup_samples);
-					a["model_switches"] = static_cast<unsigned long>(c.model_switches);
+					putCounters(a, c, false);
 					a["out_of_range"] = app::outOfRangeJson(c, cals.axes[i].extrapolation);
 				}
 			}

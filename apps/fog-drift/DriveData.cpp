@@ -51,52 +51,6 @@ void shrinkToFit(FogSeries& s)
 	for (auto& t : s.temp_C) t.shrink_to_fit();
 	for (auto* v : {&s.table_rate_dph, &s.field_uT, &s.power}) v->shrink_to_fit();
 }
-
-/** seriesFromObservations() one observation at a time (the same series and layout error), so
- * that a drive's observations need not be kept as MRPT objects (~2 KB each, issue 14). */
-class SeriesBuilder
-{
-   public:
-	/** keep_temperatures false: the series has no thermistors (the ideal FOG: its rates alone
-	 * are used; the layout is still checked against the first observation's). */
-	explicit SeriesBuilder(bool keep_temperatures) : keep_temps_(keep_temperatures) {}
-	void add(const CObservationFOG& o)
-	{
-		if (n_ == 0)
-		{
-			s_.sensor_label = o.sensorLabel;
-			first_thermistors_ = o.thermistors;
-			if (keep_temps_) s_.thermistors = o.thermistors;
-			s_.has_axis = o.hasAxis;
-			s_.epoch_s = std::floor(mrpt::Clock::toDouble(o.timestamp));
-			s_.temp_C.assign(s_.thermistors.size(), {});
-			table_ = o.hasTableRate;
-			field_ = o.hasField;
-			power_ = o.hasPower;
-		}
-		else if (o.thermistors != first_thermistors_ || o.hasAxis != s_.has_axis || o.hasTableRate != table_ ||
-				 o.hasField != field_ || o.hasPower != power_)
-			throw std::invalid_argument("FOG observation " + std::to_string(n_) + " (sensor '" + o.sensorLabel +
-										"') has a different layout than the first one");
-		s_.time_s.push_back(mrpt::Clock::toDouble(o.timestamp) - s_.epoch_s);
-		for (int a = 0; a < 3; a++)
-			if (s_.has_axis[a]) s_.rate_dph[a].push_back(o.rate_dph[a]);
-		for (std::size_t i = 0; i < s_.thermistors.size(); i++) s_.temp_C[i].push_back(o.temperature_C(i));
-		if (table_) s_.table_rate_dph.push_back(o.tableRate_dph);
-		if (field_) s_.field_uT.push_back(o.field_uT);
-		if (power_) s_.power.push_back(o.powerOn ? 1.0 : 0.0);
-		n_++;
-	}
-	bool empty() const { return n_ == 0; }
-	FogSeries take() { return std::move(s_); }
-
-   private:
-	bool keep_temps_ = true;
-	std::vector<ThermistorInfo> first_thermistors_;
-	FogSeries s_;
-	std::size_t n_ = 0;
-	bool table_ = false, field_ = false, power_ = false;
-};
 }  // namespace
 
 DriveData readDrive(const std::string& path, const DriveLabels& labels,
@@ -106,7 +60,7 @@ DriveData readDrive(const std::string& path, const DriveLabels& labels,
 	// Read as readFogRawlog() reads, but the other observations are taken in as they come: the
 	// odometry and the truth as poses, the ideal FOG as a series.
 	DriveData d;
-	SeriesBuilder ideal(false);
+	FogSeriesBuilder ideal(0, false);  // the ideal FOG: its rates alone are used
 	const auto take = [&](const mrpt::obs::CObservation::Ptr& o) {
 		if (progress && reading) progress(reading->samplesRead(), reading->fileBytesRead(), reading->fileBytes());
 		if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o); f && o->sensorLabel == labels.fog_ideal)

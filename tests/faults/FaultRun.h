@@ -81,6 +81,9 @@ inline std::size_t sampleAt(const mrpt_fog::FogSeries& s, double t)
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
+
+#include "support/ExceptionMessage.h"
 
 namespace faulttest
 {
@@ -135,21 +138,7 @@ inline mrpt_fog::FogSeries head(const mrpt_fog::FogSeries& s, std::size_t n)
 template <class E, class F>
 std::string errorOf(F&& f)
 {
-	try
-	{
-		f();
-	}
-	catch (const E& e)
-	{
-		return e.what();
-	}
-	catch (const std::exception& e)
-	{
-		ADD_FAILURE() << "expected another exception type, got: " << e.what();
-		return e.what();
-	}
-	ADD_FAILURE() << "nothing thrown";
-	return {};
+	return fogtest::messageOf<E>(std::forward<F>(f));
 }
 
 }  // namespace faulttest

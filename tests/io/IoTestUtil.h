@@ -13,6 +13,8 @@
 #include <functional>
 #include <string>
 
+#include "support/ExceptionMessage.h"
+
 namespace iotest
 {
 inline std::string dataFile(const std::string& name) { return std::string(FOG_TEST_DATA_DIR) + "/io/" + name; }
@@ -45,24 +47,7 @@ class ScratchDir
 };
 
 /** Runs f, expects a FogIoError, returns its message ("" and a failure if none). */
-inline std::string ioErrorOf(const std::function<void()>& f)
-{
-	try
-	{
-		f();
-	}
-	catch (const mrpt_fog::FogIoError& e)
-	{
-		return e.what();
-	}
-	catch (const std::exception& e)
-	{
-		ADD_FAILURE() << "expected FogIoError, got another exception: " << e.what();
-		return e.what();
-	}
-	ADD_FAILURE() << "expected FogIoError, nothing thrown";
-	return {};
-}
+inline std::string ioErrorOf(const std::function<void()>& f) { return fogtest::messageOf<mrpt_fog::FogIoError>(f); }
 
 /** Both NaN, or exactly equal. */
 inline bool sameValue(double a, double b) { return (std::isnan(a) && std::isnan(b)) || a == b; }

@@ -5,12 +5,15 @@
 
 #include <mrpt_fog/io/FogLogIO.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <vector>
 
+#include "ScaleFactorFixture.h"
 #include "SyntheticCoil.h"
 
 using namespace mrpt_fog;
@@ -139,19 +142,24 @@ TEST(CalibrationYaml, BadFilesGiveFieldErrors)
 {
 	const std::string good = calibrationToYaml(cal());
 	ASSERT_EQ(errorOf(good), "");
-	EXPECT_NE(errorOf(replaced(good, "format: \"mrpt_fog_calibration\"", "format: \"other\"")).find("cal.yaml: format"), std::string::npos);
-	EXPECT_NE(errorOf(replaced(good, "version: 2", "version: 7")).find("version"), std::string::npos);
-	EXPECT_NE(errorOf(replaced(good, "window_s: 60", "window_s: abc")).find("rate_estimator.window_s: not a number"), std::string::npos);
-	EXPECT_NE(errorOf(replaced(good, "kind: \"causal\"", "kind: \"kalman\"")).find("rate_estimator"), std::string::npos);
-	EXPECT_NE(errorOf(replaced(good, "    - name: \"T(Ti1)^2\"", "    - name: \"T(Ti1)^9\"")).find("model.terms"), std::string::npos);
-	EXPECT_NE(errorOf(replaced(good, "side: \"inner\"", "side: \"middle\"")).find("sensor.thermistors[0].side"), std::string::npos);
-	EXPECT_NE(errorOf(replaced(good, "  - axis: \"z\"", "  - axis: \"q\"")).find("axes[0].axis"), std::string::npos);
-	EXPECT_NE(errorOf(replaced(good, "latitude_deg: .nan", "latitude_deg: 91")).find("cal.yaml: latitude_deg"), std::string::npos);
-	EXPECT_NE(errorOf(replaced(good, "handling: \"in_bias\"", "handling: \"ignored\"")).find("earth_rate.handling"), std::string::npos);
-	EXPECT_NE(errorOf(replaced(good, "axes:\n", "axes: []\nother:\n")).find("axes"), std::string::npos);
-	EXPECT_NE(errorOf(replaced(good, "    - name: \"To2\"\n", "    - name: \"Tq\"\n")).find("not in sensor.thermistors"), std::string::npos);
-	EXPECT_NE(errorOf(replaced(good, "mean_bias_dph:", "mean_bias:")).find("mean_bias_dph: missing"), std::string::npos);
-	EXPECT_NE(errorOf(replaced(good, "      scale: ", "      scale: -")).find(".scale"), std::string::npos);
+	// {text in the good file, its replacement, what the message must name}
+	const std::vector<std::array<std::string, 3>> broken = {
+		{"format: \"mrpt_fog_calibration\"", "format: \"other\"", "cal.yaml: format"},
+		{"version: 2", "version: 7", "version"},
+		{"window_s: 60", "window_s: abc", "rate_estimator.window_s: not a number"},
+		{"kind: \"causal\"", "kind: \"kalman\"", "rate_estimator"},
+		{"    - name: \"T(Ti1)^2\"", "    - name: \"T(Ti1)^9\"", "model.terms"},
+		{"side: \"inner\"", "side: \"middle\"", "sensor.thermistors[0].side"},
+		{"  - axis: \"z\"", "  - axis: \"q\"", "axes[0].axis"},
+		{"latitude_deg: .nan", "latitude_deg: 91", "cal.yaml: latitude_deg"},
+		{"handling: \"in_bias\"", "handling: \"ignored\"", "earth_rate.handling"},
+		{"axes:\n", "axes: []\nother:\n", "axes"},
+		{"    - name: \"To2\"\n", "    - name: \"Tq\"\n", "not in sensor.thermistors"},
+		{"mean_bias_dph:", "mean_bias:", "mean_bias_dph: missing"},
+		{"      scale: ", "      scale: -", ".scale"},
+	};
+	for (const auto& [from, to, named] : broken)
+		EXPECT_NE(errorOf(replaced(good, from, to)).find(named), std::string::npos) << from << " -> " << to;
 	EXPECT_NE(errorOf("a: [unclosed").find("cal.yaml"), std::string::npos);
 	EXPECT_NE(errorOf("- 1\n- 2\n").find("cal.yaml"), std::string::npos);
 	// a fallback that uses the thermistor it replaces
@@ -192,15 +200,31 @@ TEST(CalibrationYaml, OneThermistorCalibrationWithConstantFallbackRoundTrips)
 namespace
 {
 std::string dataPath(const std::string& name) { return std::string(FOG_SOURCE_DIR) + "/tests/data/model/" + name; }
+
+/** A compensated CSV an earlier program wrote (time_s, raw, bias, compensated, flags, ...):
+ * its time, bias and compensated columns. */
+void readStoredCompensation(const std::string& path, std::vector<double>& time_s, std::vector<double>& bias_dph,
+							std::vector<double>& comp_dph)
+{
+	std::ifstream in(path);
+	ASSERT_TRUE(in.good()) << path;
+	std::string line;
+	while (std::getline(in, line))
+	{
+		if (line.empty() || line[0] == '#' || line[0] == 't') continue;
+		std::stringstream ss(line);
+		std::string cell;
+		std::vector<std::string> cells;
+		while (std::getline(ss, cell, ',')) cells.push_back(cell);
+		ASSERT_GE(cells.size(), 4u) << path;
+		time_s.push_back(std::stod(cells[0]));
+		bias_dph.push_back(std::stod(cells[2]));
+		comp_dph.push_back(std::stod(cells[3]));
+	}
+}
 ScaleFactorModel someScaleFactor()
 {
-	ScaleFactorModel m;
-	m.thermistor = "Ti1";
-	m.centre_C = 10.0;
-	m.scale_C = 50.0;
-	m.min_C = -40.0;
-	m.max_C = 60.0;
-	m.coef_ppm = {-300.0, 1000.0, 3.5};
+	ScaleFactorModel m = fogtest::scaleFactorModel("Ti1", {-300.0, 1000.0, 3.5});
 	m.covariance_ppm2 = Eigen::MatrixXd::Identity(3, 3) * 0.25;
 	m.slope_ppm_per_C = 20.0;
 	m.slope_ci95_lo_ppm_per_C = 19.9;
@@ -233,22 +257,8 @@ TEST(CalibrationYaml, Version1FileLoadsAndCompensatesAsBefore)
 	EXPECT_FALSE(v1.scale_factor.has_value());
 	EXPECT_FALSE(v1.warmup.has_value());
 	// the old program's output: time_s, raw, bias, compensated, flags, temperatures
-	std::ifstream in(dataPath("comp_v1_coil_B.csv"));
-	ASSERT_TRUE(in.good());
 	std::vector<double> time_old, bias_old, comp_old;
-	std::string line;
-	while (std::getline(in, line))
-	{
-		if (line.empty() || line[0] == '#' || line[0] == 't') continue;
-		std::stringstream ss(line);
-		std::string cell;
-		std::vector<std::string> cells;
-		while (std::getline(ss, cell, ',')) cells.push_back(cell);
-		ASSERT_GE(cells.size(), 4u);
-		time_old.push_back(std::stod(cells[0]));
-		bias_old.push_back(std::stod(cells[2]));
-		comp_old.push_back(std::stod(cells[3]));
-	}
+	ASSERT_NO_FATAL_FAILURE(readStoredCompensation(dataPath("comp_v1_coil_B.csv"), time_old, bias_old, comp_old));
 	const FogSeries b = readFogLog(dataPath("coil_B.csv"));
 	const CompensatedSeries now = compensate(v1, b);
 	ASSERT_GT(bias_old.size(), 600u);
@@ -282,22 +292,8 @@ TEST(CalibrationYaml, Version2FileFromBeforeTheTriadLoadsAndCompensatesAsBefore)
 	EXPECT_TRUE(v2.scale_factor.has_value());
 	EXPECT_TRUE(v2.warmup.has_value());
 	EXPECT_EQ(calibrationToYaml(v2), text);
-	std::ifstream in(dataPath("comp_v2_coil_B.csv"));
-	ASSERT_TRUE(in.good());
 	std::vector<double> time_old, bias_old, comp_old;
-	std::string line;
-	while (std::getline(in, line))
-	{
-		if (line.empty() || line[0] == '#' || line[0] == 't') continue;
-		std::stringstream ss(line);
-		std::string cell;
-		std::vector<std::string> cells;
-		while (std::getline(ss, cell, ',')) cells.push_back(cell);
-		ASSERT_GE(cells.size(), 4u);
-		time_old.push_back(std::stod(cells[0]));
-		bias_old.push_back(std::stod(cells[2]));
-		comp_old.push_back(std::stod(cells[3]));
-	}
+	ASSERT_NO_FATAL_FAILURE(readStoredCompensation(dataPath("comp_v2_coil_B.csv"), time_old, bias_old, comp_old));
 	const FogSeries b = readFogLog(dataPath("coil_B.csv"));
 	const CompensatedSeries now = compensate(v2, b);
 	ASSERT_EQ(now.time_s.size(), time_old.size());

@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "ScaleFactorFixture.h"
 #include "SyntheticCoil.h"
 
 using namespace mrpt_fog;
@@ -22,16 +23,15 @@ const Calibration& biasOnly()
 	}();
 	return cal;
 }
+/** The run with a 1 deg/s table rate on its raw output, so that the scale factor matters. */
+FogSeries onTurningTable(FogSeries run)
+{
+	for (auto& r : run.rate_dph[2]) r += 3600.0;
+	return run;
+}
 ScaleFactorModel linearSf(double ppm_per_C)
 {
-	ScaleFactorModel m;
-	m.thermistor = "To1";
-	m.centre_C = 10;
-	m.scale_C = 50;
-	m.min_C = -40;
-	m.max_C = 60;
-	m.coef_ppm = {100.0, ppm_per_C * 50};  // s = 100 + k (T - 10)
-	return m;
+	return fogtest::scaleFactorModel("To1", {100.0, ppm_per_C * 50});  // s = 100 + k (T - 10)
 }
 }  // namespace
 
@@ -51,9 +51,7 @@ TEST(CompensatorExtras, AbsentSectionsChangeNothing)
 // omega = (raw - bias - A exp(-(t - t_on)/tau)) / (1 + 1e-6 (100 + 20 (clamp(To1) - 10)))
 TEST(CompensatorExtras, ScaleFactorAndWarmupFollowTheClosedForm)
 {
-	FogSeries b = fogtest::makeCoilRun("B", 73);
-	// a 1 deg/s table rate on the raw output so that the scale factor matters
-	for (auto& r : b.rate_dph[2]) r += 3600.0;
+	FogSeries b = onTurningTable(fogtest::makeCoilRun("B", 73));
 	const CompensatedSeries plain = compensate(biasOnly(), b);
 	Calibration cal = biasOnly();
 	cal.scale_factor = linearSf(20.0);
@@ -77,8 +75,7 @@ TEST(CompensatorExtras, ScaleFactorAndWarmupFollowTheClosedForm)
 	}
 	// with an unknown turn-on no warm-up term is added
 	b.setMetadata("power_on_time_s", "");
-	FogSeries c = fogtest::makeCoilRun("B", 73);
-	for (auto& r : c.rate_dph[2]) r += 3600.0;
+	FogSeries c = onTurningTable(fogtest::makeCoilRun("B", 73));
 	Calibration only_warm = biasOnly();
 	only_warm.warmup = w;
 	EXPECT_EQ(compensate(only_warm, c).compensated_dph, plain.compensated_dph);
@@ -128,8 +125,7 @@ TEST(CompensatorExtras, TurnOnFromThePowerColumnAndHeldScaleFactor)
 // s from (Ti1 + To1) / 2, closed form on the bias-only output; it round-trips through the file.
 TEST(CompensatorExtras, ScaleFactorInTheMeanOfThermistors)
 {
-	FogSeries b = fogtest::makeCoilRun("B", 74);
-	for (auto& r : b.rate_dph[2]) r += 3600.0;
+	FogSeries b = onTurningTable(fogtest::makeCoilRun("B", 74));
 	const CompensatedSeries plain = compensate(biasOnly(), b);
 	Calibration cal = biasOnly();
 	cal.scale_factor = linearSf(20.0);

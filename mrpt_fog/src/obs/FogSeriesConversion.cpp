@@ -45,35 +45,41 @@ std::vector<CObservationFOG::Ptr> observationsFromSeries(const FogSeries& s)
 
 FogSeries seriesFromObservations(const std::vector<CObservationFOG::Ptr>& obs)
 {
-	FogSeries s;
-	if (obs.empty()) return s;
-	const auto& first = *obs.front();
-	s.sensor_label = first.sensorLabel;
-	s.thermistors = first.thermistors;
-	s.has_axis = first.hasAxis;
-	s.epoch_s = std::floor(mrpt::Clock::toDouble(first.timestamp));
-	const std::size_t n = obs.size();
-	s.time_s.reserve(n);
-	for (int a = 0; a < 3; a++)
-		if (s.has_axis[a]) s.rate_dph[a].reserve(n);
-	s.temp_C.assign(s.thermistors.size(), {});
-	for (auto& c : s.temp_C) c.reserve(n);
-	for (std::size_t k = 0; k < n; k++)
+	FogSeriesBuilder b(obs.size());
+	for (const auto& o : obs) b.add(*o);
+	return b.take();
+}
+
+void FogSeriesBuilder::add(const CObservationFOG& o)
+{
+	if (n_ == 0)
 	{
-		const auto& o = *obs[k];
-		if (o.thermistors != s.thermistors || o.hasAxis != s.has_axis || o.hasTableRate != first.hasTableRate ||
-			o.hasField != first.hasField || o.hasPower != first.hasPower)
-			throw std::invalid_argument("FOG observation " + std::to_string(k) + " (sensor '" + o.sensorLabel +
-										"') has a different layout than the first one");
-		s.time_s.push_back(mrpt::Clock::toDouble(o.timestamp) - s.epoch_s);
+		s_.sensor_label = o.sensorLabel;
+		first_thermistors_ = o.thermistors;
+		if (keep_temps_) s_.thermistors = o.thermistors;
+		s_.has_axis = o.hasAxis;
+		s_.epoch_s = std::floor(mrpt::Clock::toDouble(o.timestamp));
+		s_.temp_C.assign(s_.thermistors.size(), {});
+		table_ = o.hasTableRate;
+		field_ = o.hasField;
+		power_ = o.hasPower;
+		s_.time_s.reserve(expected_);
 		for (int a = 0; a < 3; a++)
-			if (s.has_axis[a]) s.rate_dph[a].push_back(o.rate_dph[a]);
-		for (std::size_t i = 0; i < s.thermistors.size(); i++) s.temp_C[i].push_back(o.temperature_C(i));
-		if (first.hasTableRate) s.table_rate_dph.push_back(o.tableRate_dph);
-		if (first.hasField) s.field_uT.push_back(o.field_uT);
-		if (first.hasPower) s.power.push_back(o.powerOn ? 1.0 : 0.0);
+			if (s_.has_axis[a]) s_.rate_dph[a].reserve(expected_);
+		for (auto& c : s_.temp_C) c.reserve(expected_);
 	}
-	return s;
+	else if (o.thermistors != first_thermistors_ || o.hasAxis != s_.has_axis || o.hasTableRate != table_ ||
+			 o.hasField != field_ || o.hasPower != power_)
+		throw std::invalid_argument("FOG observation " + std::to_string(n_) + " (sensor '" + o.sensorLabel +
+									"') has a different layout than the first one");
+	s_.time_s.push_back(mrpt::Clock::toDouble(o.timestamp) - s_.epoch_s);
+	for (int a = 0; a < 3; a++)
+		if (s_.has_axis[a]) s_.rate_dph[a].push_back(o.rate_dph[a]);
+	for (std::size_t i = 0; i < s_.thermistors.size(); i++) s_.temp_C[i].push_back(o.temperature_C(i));
+	if (table_) s_.table_rate_dph.push_back(o.tableRate_dph);
+	if (field_) s_.field_uT.push_back(o.field_uT);
+	if (power_) s_.power.push_back(o.powerOn ? 1.0 : 0.0);
+	n_++;
 }
 
 }  // namespace mrpt_fog
