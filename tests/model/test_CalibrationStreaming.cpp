@@ -104,7 +104,7 @@ TEST(CalibrationStreaming, SeveralRunsBlocksAndSavgolGiveTheSameCalibration)
 	expectSameCalibration(mem, fitCalibrationRuns(runs, "M3:Ti1,To1"));
 	FitOptions o;
 	o.fold_scheme = FoldScheme::Blocks;
-	o.rate_estimator.kind = "savgol";
+	o.rate_estimator.kind = RateEstimatorKind::SavitzkyGolay;
 	o.rate_estimator.poly_order = 2;
 	std::vector<FogRun> one;
 	one.push_back(spilled(a));
