@@ -375,6 +375,12 @@ JsonValue axisJson(const AxisFit& f, double tau_s, bool validated)
 		const auto& sf = *cal.scale_factor;
 		JsonValue& js = j["scale_factor"];
 		js["thermistor"] = sf.thermistor;
+		if (!sf.thermistors.empty())  // "mean" or "weighted": the readings it combines
+		{
+			js["thermistors"] = JsonValue::arrayOf(sf.thermistors, [](const std::string& t) { return JsonValue(t); });
+			if (!sf.weights.empty())
+				js["weights"] = JsonValue::arrayOf(sf.weights, [](double w) { return JsonValue(w); });
+		}
 		js["order"] = static_cast<unsigned long>(sf.order());
 		js["slope_ppm_per_C"] = sf.slope_ppm_per_C;
 		js["slope_ci95_ppm_per_C"] = JsonValue::array();
