@@ -4,7 +4,7 @@
  * profiles it never saw; per preset, the median and 90th percentile of held-out 100 s stability
  * divided by the device's noise floor.
  *
- *   bench_generalization [--seeds tuning|heldout|final|all] [--sector-coil N] [--rate-cap HZ] [--cases]
+ *   bench_generalization [--seeds tuning|heldout|final|all|N[,N..]] [--sector-coil N] [--rate-cap HZ] [--cases]
  *                        [--extrapolation clamp|linear|polynomial] [--preset TEXT] [--extra PRESET]...
  *                        [--effects SEL] [--ideal-thermistors] [--oracle] [--rate-window S]
  *
@@ -97,9 +97,17 @@ int main(int argc, char** argv)
 		for (auto s : fogtest::heldOutSeeds()) seeds.push_back(s);
 	if (which == "final")
 		for (auto s : fogtest::finalSeeds()) seeds.push_back(s);
+	if (!which.empty() && which.find_first_not_of("0123456789,") == std::string::npos)  // e.g. 18 or 18,20
+		for (std::size_t i = 0; i < which.size();)
+		{
+			std::size_t j = which.find(',', i);
+			if (j == std::string::npos) j = which.size();
+			if (j > i) seeds.push_back(std::strtoull(which.substr(i, j - i).c_str(), nullptr, 10));
+			i = j + 1;
+		}
 	if (seeds.empty())
 	{
-		std::fprintf(stderr, "bench_generalization: --seeds must be tuning, heldout, final or all\n");
+		std::fprintf(stderr, "bench_generalization: --seeds must be tuning, heldout, final, all or seed numbers (17,18)\n");
 		return 2;
 	}
 	for (auto s : seeds) list.push_back({fogtest::Generator::FogSim, s, cap, effects, ideal});

@@ -285,7 +285,12 @@ void printAxis(const AxisFit& f, double tau_s, bool validated)
 		std::printf("  rate window %g s for the thermistors' reading quantum %g degC (60 s x q / 0.01 degC; "
 					"--window sets it)\n",
 					cal.rate_estimator.window_s, cal.reading_quantum_C);
-	if (cal.rate_gaps)
+	if (cal.rates_unavailable)
+		std::printf("  note: %zu gap(s) longer than the %g s rate window and the stretches between them shorter than "
+					"half of it (a burst log): temperature rates cannot be estimated from this log, so the model has "
+					"no dT/dt terms (rate-free); the compensator then runs it on every sample without a flag\n",
+					cal.rate_gaps, cal.rate_estimator.window_s);
+	else if (cal.rate_gaps)
 		std::printf("  note: %zu gap(s) longer than the %g s rate window (a burst log?): temperature rates cannot "
 					"be estimated across a gap, so the samples before each restart has a rate are left out of the fit\n",
 					cal.rate_gaps, cal.rate_estimator.window_s);
@@ -358,6 +363,7 @@ JsonValue axisJson(const AxisFit& f, double tau_s, bool validated)
 	}
 	j["extrapolation"] = toString(cal.extrapolation);
 	j["rate_gaps"] = static_cast<unsigned long>(cal.rate_gaps);
+	j["rates_unavailable"] = cal.rates_unavailable;
 	j["reading_quantum_C"] = cal.reading_quantum_C;
 	j["startup_model"] = cal.startup.has_value();
 	const auto& st = cal.selection_stability;

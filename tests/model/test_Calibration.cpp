@@ -328,5 +328,35 @@ TEST(Calibration, GapsLongerThanTheRateWindowAreCounted)
 	ASSERT_GT(gaps, 10u);
 	const Calibration cal = fitCalibration({bursts}, "multipoint:Ti1,To1");
 	EXPECT_EQ(cal.rate_gaps, gaps);
+	EXPECT_FALSE(cal.rates_unavailable);  // 1000 s stretches: rates are estimable within them
 	EXPECT_EQ(fitCalibration({A}, "multipoint:Ti1,To1").rate_gaps, 0u);
+}
+
+// Burst logs whose bursts are shorter than half the rate window (5 s every 305 s, the MEMS log of
+// issue 11): no rate can be estimated from them, so the fit has no dT/dt term (said by
+// rates_unavailable) and the compensator runs that model on every burst sample without the
+// RateFree flag, instead of a rate model it could never use.
+TEST(Calibration, ShortBurstsGiveARateFreeModelUsedWithoutFlags)
+{
+	const FogSeries A = fogtest::makeCoilRun("A", 91);  // 1 s sampling
+	FogSeries bursts;
+	bursts.thermistors = A.thermistors;
+	bursts.has_axis = A.has_axis;
+	bursts.temp_C.assign(A.thermistorCount(), {});
+	for (std::size_t k = 0; k < A.size(); k++)
+		if (std::fmod(A.time_s[k], 305.0) < 5.0) bursts.appendSampleFrom(A, k);
+	ASSERT_GT(bursts.size(), 300u);
+	for (const char* preset : {"multipoint:Ti1,To1", "M2:Ti1"})
+	{
+		const Calibration cal = fitCalibration({bursts}, preset);
+		EXPECT_TRUE(cal.rates_unavailable) << preset;
+		for (const auto& t : cal.model.features.terms()) EXPECT_FALSE(!t.constant && t.signal.isRate()) << preset << " " << t.name();
+		const CompensatedSeries out = compensate(cal, bursts);
+		EXPECT_EQ(out.counters.rate_free_samples, 0u) << preset;
+		EXPECT_EQ(out.counters.warmup_samples, 0u) << preset;
+		EXPECT_EQ(out.counters.fallback_samples, 0u) << preset;
+		EXPECT_EQ(out.counters.samples, bursts.size()) << preset;
+	}
+	// The same run logged continuously keeps its rates.
+	EXPECT_FALSE(fitCalibration({A}, "M2:Ti1").rates_unavailable);
 }

@@ -108,6 +108,9 @@ struct PreparedRun
 	std::vector<std::vector<double>> rate;  // [thermistor][sample] degC/s (non-causal estimator only)
 	std::vector<bool> ok;  // usable sample
 	std::size_t usable = 0;
+	/** Usable samples whose rate window covers less than half its length for some thermistor:
+	 * the compensator does not trust those rates (it uses the rate-free start-up model there). */
+	std::size_t short_rate_span = 0;
 	/** Bias of sample j of chunk c [deg/h]: gyro minus table rate; NaN for a table sample left
 	 * out of the fit. */
 	double y(const FogSeries& c, std::size_t j) const
@@ -152,6 +155,15 @@ class RowCursor
 	void endChunk(const FogSeries& c, std::size_t k0)
 	{
 		if (causal_) pushTo(c, k0, k0 + c.size());
+	}
+	/** After row(): some thermistor's rate window covers less than half its length (the
+	 * compensator's rule for using the rate-free start-up model). */
+	bool shortSpan() const
+	{
+		if (!causal_) return false;
+		for (std::size_t i = 0; i < r_.col.size(); i++)
+			if (!tracker_.spanAtLeast(i, 0.5 * r_.est.window_s)) return true;
+		return false;
 	}
 
    private:
@@ -219,6 +231,7 @@ PreparedRun prepare(const FogRun& s, const ThermalFeatureSet& fs, const RateEsti
 		for (std::size_t i = 0; i < nt && ok; i++) ok = std::isfinite(temp[i]) && std::isfinite(rate[i]);
 		r.ok[k0 + j] = ok;
 		r.usable += ok;
+		r.short_rate_span += ok && cur.shortSpan();
 	});
 	return r;
 }
@@ -246,6 +259,7 @@ struct Choice
 	double ridge = 0;
 	double cv_rms = std::numeric_limits<double>::infinity();
 	double cv_se_mse = 0;  // standard error of the cross-validated mean squared error
+	std::vector<double> fold_mse;  // per fold (NaN: fold empty), for paired comparisons
 	std::size_t terms = 1;  // including the constant
 	std::vector<std::string> pool;  // thermistors the choice was allowed to use
 };
@@ -291,9 +305,33 @@ Choice scoreOrders(FoldSet& folds, const ThermalFeatureSet& fs, const std::vecto
 			m /= static_cast<double>(mse.size());
 			for (double x : mse) v += (x - m) * (x - m);
 			c.cv_se_mse = mse.size() > 1 ? std::sqrt(v / static_cast<double>(mse.size() - 1) / static_cast<double>(mse.size())) : 0.0;
+			c.fold_mse.clear();
+			for (std::size_t f = 0; f < sse[r].size(); f++)
+				c.fold_mse.push_back(std::isnan(sse[r][f]) ? std::numeric_limits<double>::quiet_NaN()
+														   : sse[r][f] / static_cast<double>(folds.held_out[f].count()));
 		}
 	}
 	return c;
+}
+
+/** A difference signal's first power, T(a)-T(b) or d/dt (T(a)-T(b)), is a linear combination of
+ * the first powers of T(a) and T(b) (of their rates): when both are in the model it adds a
+ * column in their span, which only a ridge can fit and which changes nothing but the ridge's
+ * shrinkage. Such a step is not a candidate (its higher powers are; none are offered today). */
+bool differenceInSpan(const ThermalFeatureSet& fs, std::size_t g, const std::vector<int>& order)
+{
+	const ThermalSignal& d = fs.signals()[g];
+	if (!d.isDifference()) return false;
+	const SignalKind part = d.kind == SignalKind::Diff ? SignalKind::Temp : SignalKind::Rate;
+	bool has_a = false, has_b = false;
+	for (std::size_t s = 0; s < fs.signals().size(); s++)
+	{
+		const ThermalSignal& x = fs.signals()[s];
+		if (x.kind != part || order[s] < 1) continue;
+		has_a |= x.a == d.a;
+		has_b |= x.a == d.b;
+	}
+	return has_a && has_b;
 }
 
 /** Forward stepwise selection by CV error, among `allowed` signals, each up to max_order: a step
@@ -317,6 +355,7 @@ std::vector<Choice> selectForward(FoldSet& folds, const ThermalFeatureSet& fs, c
 		{
 			if (!allowed[g] || cur.order[g] >= max_order[g]) continue;
 			if (!orders && cur.order[g] > 0) continue;
+			if (cur.order[g] == 0 && differenceInSpan(fs, g, cur.order)) continue;
 			// any higher order of the signal (a cubic can help where a quadratic alone does not)
 			for (int k = orders ? cur.order[g] + 1 : max_order[g]; k <= max_order[g]; k++)
 			{
@@ -332,19 +371,40 @@ std::vector<Choice> selectForward(FoldSet& folds, const ThermalFeatureSet& fs, c
 	return path;
 }
 
+/** Standard error of the paired difference of two candidates' per-fold MSEs (the folds both
+ * scored): how far apart their CV errors may be by chance when the same folds judge both. The
+ * spread of one candidate's fold MSEs (cv_se_mse) mostly measures how unlike the folds are
+ * (a soak against a 2 C/min ramp), which both candidates share; the paired spread does not. */
+double pairedSeMse(const Choice& a, const Choice& b)
+{
+	std::vector<double> d;
+	for (std::size_t f = 0; f < a.fold_mse.size() && f < b.fold_mse.size(); f++)
+		if (std::isfinite(a.fold_mse[f]) && std::isfinite(b.fold_mse[f])) d.push_back(a.fold_mse[f] - b.fold_mse[f]);
+	if (d.size() < 2) return 0.0;
+	double m = 0, v = 0;
+	for (double x : d) m += x;
+	m /= static_cast<double>(d.size());
+	for (double x : d) v += (x - m) * (x - m);
+	return std::sqrt(v / static_cast<double>(d.size() - 1) / static_cast<double>(d.size()));
+}
+
 /** Parsimony: among the candidates, the one with the fewest terms whose CV MSE is within one
- * standard error of the best (ties: lower CV error). */
-Choice oneStandardError(const std::vector<const Choice*>& cands)
+ * standard error of the best (ties: lower CV error). paired: the standard error of the
+ * difference to the best over the same folds (pairedSeMse), else the best's own (cv_se_mse). */
+Choice oneStandardError(const std::vector<const Choice*>& cands, bool paired)
 {
 	const Choice* best = nullptr;
 	for (const Choice* c : cands)
 		if (!best || c->cv_rms < best->cv_rms) best = c;
-	const double limit = best->cv_rms * best->cv_rms + best->cv_se_mse;
+	const double best_mse = best->cv_rms * best->cv_rms;
 	const Choice* pick = best;
 	for (const Choice* c : cands)
-		if (c->cv_rms * c->cv_rms <= limit &&
+	{
+		const double se = paired ? pairedSeMse(*c, *best) : best->cv_se_mse;
+		if (c->cv_rms * c->cv_rms <= best_mse + se &&
 			(c->terms < pick->terms || (c->terms == pick->terms && c->cv_rms < pick->cv_rms)))
 			pick = c;
+	}
 	return *pick;
 }
 
@@ -394,10 +454,10 @@ class NestedSelection
 			for (const Choice& c : path(sub)) out.push_back(&c);
 		return out;
 	}
-	Choice best(std::size_t mask, bool parsimony)
+	Choice best(std::size_t mask, bool parsimony, bool paired = false)
 	{
 		const auto c = candidates(mask);
-		if (parsimony) return oneStandardError(c);
+		if (parsimony) return oneStandardError(c, paired);
 		const Choice* b = c.front();
 		for (const Choice* x : c)
 			if (x->cv_rms < b->cv_rms) b = x;
@@ -681,6 +741,35 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 		usable += prep.back().usable;
 	}
 	if (usable == 0) throw std::invalid_argument("fit: no usable sample (every sample has a dropout or no rate yet)");
+	// Burst logs (e.g. 5 s bursts every 5 min): within a burst the rate window never covers half
+	// its length, so the compensator could never use a model that reads rates (it would run the
+	// rate-free start-up model on every sample). When that holds for most usable samples, the
+	// rates are not estimable from this log: the model is fitted without rate signals.
+	std::size_t short_span = 0;
+	for (const auto& r : prep) short_span += r.short_rate_span;
+	bool rates_unavailable = false;
+	if (2 * short_span > usable)
+	{
+		std::vector<bool> keep(fs.signals().size());
+		bool any_rate = false;
+		for (std::size_t s = 0; s < keep.size(); s++)
+		{
+			keep[s] = !fs.signals()[s].isRate();
+			any_rate |= !keep[s];
+		}
+		if (any_rate)
+		{
+			rates_unavailable = true;
+			fs = fs.selectSignals(keep);
+			prep.clear();  // the thermistors may have changed (a thermistor read only through its rate)
+			usable = 0;
+			for (const auto& r : runs)
+			{
+				prep.push_back(prepare(r, fs, opt.rate_estimator, axis, opt.table_samples));
+				usable += prep.back().usable;
+			}
+		}
+	}
 
 	// Pass 1: signal ranges -> normalisation; mean bias as y reference.
 	std::size_t ns = fs.signals().size();
@@ -807,33 +896,65 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 	const bool resample = opt.selection == "auto" && opt.stability_resamples > 0;
 	constexpr std::size_t kStabilityBlocks = 40;
 	std::map<std::pair<std::size_t, std::size_t>, StreamingQr> units;  // (fold, run block) -> rows
+	// Selection judges candidates on time-bin means (FitOptions::selection_bin_s): the rows of
+	// `sel` are the means of features and bias over bins of that length (never across a fold or
+	// run boundary), so the gyro's white noise, which grows with the sample rate, does not drown
+	// the differences between thermal models. The fit itself uses every sample (`folds`).
+	FoldSet sel;
+	sel.held_out.assign(nfolds, StreamingQr(fs.termCount(), y_ref, x_ref));
+	std::vector<double> bin_f(fs.termCount()), bin_mean(fs.termCount());
 	for (std::size_t ri = 0; ri < prep.size(); ri++)
 	{
 		const auto& r = prep[ri];
 		const double t_front = r.run->frontTime_s(), t_back = r.run->backTime_s();
 		RowCursor cur(r);
 		RegimeFoldCursor regime(regimes, opt.max_regime_folds);
+		double bin_t0 = 0, bin_y = 0;
+		std::size_t bin_n = 0, bin_fold = 0, bin_block = 0;
+		const auto flush = [&]() {
+			if (bin_n == 0) return;
+			const double inv = 1.0 / static_cast<double>(bin_n);
+			for (std::size_t q = 0; q < bin_f.size(); q++) bin_mean[q] = bin_f[q] * inv;
+			sel.held_out[bin_fold].add(bin_mean.data(), bin_y * inv);
+			if (resample)
+			{
+				auto it = units.find({bin_fold, bin_block});
+				if (it == units.end())
+					it = units.emplace(std::make_pair(bin_fold, bin_block), StreamingQr(fs.termCount(), y_ref, x_ref)).first;
+				it->second.add(bin_mean.data(), bin_y * inv);
+			}
+			std::fill(bin_f.begin(), bin_f.end(), 0.0);
+			bin_y = 0;
+			bin_n = 0;
+		};
 		forEachSample(r, &cur, [&](const FogSeries& c, std::size_t k0, std::size_t j) {
 			if (!r.ok[k0 + j]) return;
 			rowSignals(cur, fs, c, k0, j, temp, rate, values);
 			fs.features(values.data(), f.data(), false);
-			const std::size_t fold = foldOf(ri, c.time_s[j], regime);
+			const double t = c.time_s[j];
+			const std::size_t fold = foldOf(ri, t, regime);
 			const double y = r.y(c, j);
 			folds.held_out[fold].add(f.data(), y);
-			if (resample)
+			const double u = (t - t_front) / (t_back - t_front + 1e-300);
+			const std::size_t block =
+				ri * kStabilityBlocks + std::min(kStabilityBlocks - 1, static_cast<std::size_t>(u * kStabilityBlocks));
+			if (bin_n > 0 && (fold != bin_fold || block != bin_block || !(t - bin_t0 < opt.selection_bin_s))) flush();
+			if (bin_n == 0)
 			{
-				const double u = (c.time_s[j] - t_front) / (t_back - t_front + 1e-300);
-				const std::size_t b = ri * kStabilityBlocks +
-									  std::min(kStabilityBlocks - 1, static_cast<std::size_t>(u * kStabilityBlocks));
-				auto it = units.find({fold, b});
-				if (it == units.end()) it = units.emplace(std::make_pair(fold, b), StreamingQr(fs.termCount(), y_ref, x_ref)).first;
-				it->second.add(f.data(), y);
+				bin_t0 = t;
+				bin_fold = fold;
+				bin_block = block;
 			}
+			for (std::size_t q = 0; q < bin_f.size(); q++) bin_f[q] += f[q];
+			bin_y += y;
+			bin_n++;
 		});
+		flush();
 	}
 	StreamingQr total(fs.termCount(), y_ref, x_ref);
 	for (auto& fo : folds.held_out) total.merge(fo);
 	folds.training = trainingSets(folds.held_out);
+	sel.training = trainingSets(sel.held_out);
 
 	const std::vector<int> max_order = fs.signalOrders();
 	const auto allowedFor = [&](const std::vector<std::string>& pool, const std::string& dropped) {
@@ -858,7 +979,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 			const auto path = forward(fset, pool, dropped);
 			std::vector<const Choice*> cands;
 			for (const auto& x : path) cands.push_back(&x);
-			c = opt.parsimony ? oneStandardError(cands) : *std::min_element(path.begin(), path.end(), [](const Choice& a, const Choice& b) {
+			c = opt.parsimony ? oneStandardError(cands, opt.paired_se) : *std::min_element(path.begin(), path.end(), [](const Choice& a, const Choice& b) {
 				return a.cv_rms < b.cv_rms;
 			});
 		}
@@ -880,7 +1001,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 	std::vector<Choice> fallback_choices;  // for nested: the best choice without each thermistor
 	if (nested)
 	{
-		NestedSelection search(names, [&](const std::vector<std::string>& pool) { return forward(folds, pool, ""); });
+		NestedSelection search(names, [&](const std::vector<std::string>& pool) { return forward(sel, pool, ""); });
 		std::size_t base = search.fullMask();
 		if (preset.kind == PresetKind::Points)
 		{
@@ -899,14 +1020,14 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 				}
 			}
 		}
-		best = search.best(base, opt.parsimony);
+		best = search.best(base, opt.parsimony, opt.paired_se);
 		if (opt.fallbacks)
 		{
 			const ThermalFeatureSet chosen = fs.selectOrders(best.order);
 			for (const auto& name : chosen.thermistors())
 			{
 				const std::size_t without = base & ~search.bit(name);
-				fallback_choices.push_back(without ? search.best(without, opt.parsimony)
+				fallback_choices.push_back(without ? search.best(without, opt.parsimony, opt.paired_se)
 												   : scoreOrders(folds, fs, std::vector<int>(ns, 0), {0.0}));
 			}
 		}
@@ -933,7 +1054,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 		bool first_pool = true;
 		for (const auto& pool : pools)
 		{
-			const Choice c = choose(folds, pool, "");
+			const Choice c = choose(automatic ? sel : folds, pool, "");
 			if (first_pool || c.cv_rms < best.cv_rms)
 			{
 				best = c;
@@ -943,7 +1064,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 		if (opt.fallbacks)
 		{
 			const ThermalFeatureSet chosen = fs.selectOrders(best.order);
-			for (const auto& name : chosen.thermistors()) fallback_choices.push_back(choose(folds, best.pool, name));
+			for (const auto& name : chosen.thermistors()) fallback_choices.push_back(choose(automatic ? sel : folds, best.pool, name));
 		}
 	}
 
@@ -979,7 +1100,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 						}
 					}
 				}
-				return search.best(base, opt.parsimony);
+				return search.best(base, opt.parsimony, opt.paired_se);
 			}
 			return choose(fset, best.pool, "");
 		};
@@ -1052,6 +1173,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 
 	Calibration cal;
 	cal.selection_stability = stability;
+	cal.rates_unavailable = rates_unavailable;
 	for (const auto& r : runs)
 	{
 		bool first_sample = true;

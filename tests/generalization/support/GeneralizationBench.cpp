@@ -93,6 +93,32 @@ std::vector<BenchPreset> benchPresets()
 						   "multipoint", o, false});
 		}
 	}
+	if (std::getenv("FOG_BENCH_PARSIMONY"))  // the parsimony rule and the order ceiling (issue 11, session 6)
+	{
+		mrpt_fog::FitOptions o;
+		o.stability_resamples = 0;
+		o.paired_se = true;
+		out.push_back({"auto paired-se", "multipoint", o, false});
+		o.paired_se = false;
+		o.parsimony = false;
+		out.push_back({"auto lowest-cv", "multipoint", o, false});
+		o.parsimony = true;
+		out.push_back({"auto@3/1", "multipoint@3/1", o, false});
+	}
+	if (std::getenv("FOG_BENCH_BINS"))  // selection scored on time-bin means (issue 11, session 6)
+	{
+		mrpt_fog::FitOptions o;
+		o.stability_resamples = 0;
+		for (const double b : {0.0, 1.0, 10.0, 100.0})
+		{
+			o.selection_bin_s = b;
+			char label[40];
+			std::snprintf(label, sizeof label, "auto bin %gs", b);
+			out.push_back({label, "multipoint", o, false});
+		}
+		o.paired_se = true;
+		out.push_back({"auto bin 100s paired", "multipoint", o, false});
+	}
 	out.push_back({"multipoint none 5/3", "multipoint", none, true});
 	out.push_back({"multipoint@3/1 none", "multipoint@3/1", none, true});
 	out.push_back({"multipoint@1/1 none", "multipoint@1/1", none, true});
@@ -192,8 +218,8 @@ double offlineStability_dph(const mrpt_fog::Calibration& cal, const mrpt_fog::Fo
 std::string describeTerms(const mrpt_fog::Calibration& cal)
 {
 	const auto names = cal.model.features.termNames();
-	char w[48];
-	std::snprintf(w, sizeof w, "window %g s, ", cal.rate_estimator.window_s);
+	char w[64];
+	std::snprintf(w, sizeof w, "window %g s, ridge %g, ", cal.rate_estimator.window_s, cal.model.ridge);
 	std::string s = w + std::to_string(names.size()) + " terms:";
 	for (std::size_t i = 1; i < names.size(); i++) s += " " + names[i];
 	return s;

@@ -115,6 +115,15 @@ struct FitOptions
 	bool select_orders = true;
 	/** "auto": the simplest candidate within one standard error of the best held-out error. */
 	bool parsimony = true;
+	/** Parsimony's standard error: true, that of the paired per-fold difference between a
+	 * candidate and the best (the same folds judge both); false, the spread of the best's own
+	 * per-fold errors, which mostly measures how unlike the folds are. */
+	bool paired_se = false;
+	/** "auto": candidates are scored on the means of consecutive samples over bins of this many
+	 * seconds (within a fold), not on single samples: the gyro's white noise per sample grows
+	 * with the sample rate and would otherwise decide the choice (at 40 Hz it is ~1 deg/h per
+	 * sample, 100x the thermal error). 0: every sample (the earlier scoring). */
+	double selection_bin_s = 0.0;
 	/** "auto" with multipoint / points:K: add physics-shaped candidates for each inner/outer pair
 	 * at the same angle: dT(in-out)^1 (thermal stress) and d/dt dT(in-out)^1 (gradient rate). */
 	bool physics_candidates = true;
@@ -266,6 +275,11 @@ struct Calibration
 	 * estimated across a gap, so each restart's first samples (no rate yet) are left out of the
 	 * fit. Reported by fog-calibrate; not stored in the file. */
 	std::size_t rate_gaps = 0;
+	/** The runs are burst logs whose continuous stretches are shorter than half the rate window,
+	 * so that for most samples no rate can be estimated (the compensator would never run a model
+	 * that reads rates): the model was fitted without rate signals. Reported by fog-calibrate;
+	 * not stored in the file. */
+	bool rates_unavailable = false;
 	/** The largest reading quantum of the model's thermistors in the runs [degC]
 	 * (readingQuantum_C; 0 = unquantised or not measured), which set the rate window when
 	 * FitOptions::window_for_quantum. Reported by fog-calibrate; not stored in the file. */
