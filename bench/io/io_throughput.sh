@@ -9,6 +9,7 @@
 # to WORK (never the repository). Prints a markdown table; also WORK/io_throughput.md.
 # Not part of the test suite (minutes at 16 M samples). fog-drift needs a drive log and
 # fog-discrepancy does not finish on millions of samples (docs/io.md): neither is measured.
+# Last run and its table: docs/io.md, "Size and speed".
 set -euo pipefail
 bin=$(cd "$1" && pwd)
 work=$2
