@@ -900,6 +900,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 	// `sel` are the means of features and bias over bins of that length (never across a fold or
 	// run boundary), so the gyro's white noise, which grows with the sample rate, does not drown
 	// the differences between thermal models. The fit itself uses every sample (`folds`).
+	const bool binned = opt.selection_bin_s > 0;
 	FoldSet sel;
 	sel.held_out.assign(nfolds, StreamingQr(fs.termCount(), y_ref, x_ref));
 	std::vector<double> bin_f(fs.termCount()), bin_mean(fs.termCount());
@@ -938,6 +939,15 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 			const double u = (t - t_front) / (t_back - t_front + 1e-300);
 			const std::size_t block =
 				ri * kStabilityBlocks + std::min(kStabilityBlocks - 1, static_cast<std::size_t>(u * kStabilityBlocks));
+			if (!binned)  // per sample: `sel` is `folds` (copied below); only the stability units
+			{
+				if (!resample) return;
+				auto it = units.find({fold, block});
+				if (it == units.end())
+					it = units.emplace(std::make_pair(fold, block), StreamingQr(fs.termCount(), y_ref, x_ref)).first;
+				it->second.add(f.data(), y);
+				return;
+			}
 			if (bin_n > 0 && (fold != bin_fold || block != bin_block || !(t - bin_t0 < opt.selection_bin_s))) flush();
 			if (bin_n == 0)
 			{
@@ -954,6 +964,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 	StreamingQr total(fs.termCount(), y_ref, x_ref);
 	for (auto& fo : folds.held_out) total.merge(fo);
 	folds.training = trainingSets(folds.held_out);
+	if (!binned) sel.held_out = folds.held_out;
 	sel.training = trainingSets(sel.held_out);
 
 	const std::vector<int> max_order = fs.signalOrders();
