@@ -57,6 +57,13 @@ if(TARGET fog-drift)
     --plots ${NAV_DRIVE_DIR}/plots --odometry-out ${NAV_DRIVE_DIR}/odometry.rawlog)
   set_tests_properties(nav.fog_drift.run PROPERTIES FIXTURES_REQUIRED nav_drive FIXTURES_SETUP nav_drift_json
     LABELS "nav;integration")
+  # fog-drift keeps a variant's trajectory only when --plots or --odometry-out needs it (memory,
+  # issue 14): the figures and the odometry rawlog must not depend on which outputs were asked for.
+  add_test(NAME nav.fog_drift.figures_do_not_depend_on_outputs
+    COMMAND sh -c "d='${NAV_DRIVE_DIR}'; \"$0\" -q -i $d/drive.rawlog --cal $d/cal.yaml --json $d/drift_lean.json >/dev/null && \"$0\" -q -i $d/drive.rawlog --cal $d/cal.yaml --json $d/drift_odo.json --odometry-out $d/odometry_alone.rawlog >/dev/null && cmp $d/drift.json $d/drift_lean.json && cmp $d/drift.json $d/drift_odo.json && cmp $d/odometry.rawlog $d/odometry_alone.rawlog"
+      $<TARGET_FILE:fog-drift>)
+  set_tests_properties(nav.fog_drift.figures_do_not_depend_on_outputs PROPERTIES FIXTURES_REQUIRED nav_drift_json
+    LABELS "nav;integration")
   add_test(NAME nav.fog_drift.check COMMAND nav_test_drive check ${NAV_DRIVE_DIR}/drift.json)
   set_tests_properties(nav.fog_drift.check PROPERTIES FIXTURES_REQUIRED nav_drift_json LABELS "nav;integration")
   # fog-drift's --odometry-out (the compensated trajectory) read by pf-localization: the circle.
