@@ -936,12 +936,12 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 			const std::size_t fold = foldOf(ri, t, regime);
 			const double y = r.y(c, j);
 			folds.held_out[fold].add(f.data(), y);
-			const double u = (t - t_front) / (t_back - t_front + 1e-300);
+			if (!binned && !resample) return;
+			const double u = std::clamp((t - t_front) / (t_back - t_front + 1e-300), 0.0, 1.0);
 			const std::size_t block =
 				ri * kStabilityBlocks + std::min(kStabilityBlocks - 1, static_cast<std::size_t>(u * kStabilityBlocks));
 			if (!binned)  // per sample: `sel` is `folds` (copied below); only the stability units
 			{
-				if (!resample) return;
 				auto it = units.find({fold, block});
 				if (it == units.end())
 					it = units.emplace(std::make_pair(fold, block), StreamingQr(fs.termCount(), y_ref, x_ref)).first;
