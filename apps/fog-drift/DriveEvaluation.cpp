@@ -10,9 +10,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 namespace mrpt_fog::drift
 {
@@ -230,38 +232,55 @@ Spread spreadOf(std::vector<double> v)
 	return s;
 }
 
+namespace
+{
+const char* const kVariants[] = {"raw", "compensated", "ideal"};
+
+/** t["<key>.<variant>"] = that member of by_variant[variant] (NaN where the variant is missing),
+ * for every variant and every (key, member) of `fields`. */
+template <class Figures>
+void putPerVariant(std::map<std::string, double>& t, const std::map<std::string, Figures>& by_variant,
+				   std::initializer_list<std::pair<const char*, double Figures::*>> fields)
+{
+	for (const char* name : kVariants)
+	{
+		const auto it = by_variant.find(name);
+		for (const auto& [key, member] : fields)
+			t[std::string(key) + "." + name] =
+				it != by_variant.end() ? it->second.*member : std::numeric_limits<double>::quiet_NaN();
+	}
+}
+}  // namespace
+
 std::map<std::string, double> driveFigureTable(const DriveEvaluation& e)
 {
 	const double nan = std::numeric_limits<double>::quiet_NaN();
 	std::map<std::string, double> t;
-	for (const char* name : {"raw", "compensated", "ideal"})
-	{
-		const auto it = e.figures.find(name);
-		const bool has = it != e.figures.end();
-		const std::string n(name);
-		t["heading_error_rms_deg." + n] = has ? it->second.heading_error_rms_deg : nan;
-		t["heading_error_max_deg." + n] = has ? it->second.heading_error_max_deg : nan;
-		t["heading_error_final_deg." + n] = has ? it->second.heading_error_final_deg : nan;
-		t["heading_drift_between_turns_dph." + n] = has ? it->second.heading_drift_between_turns_dph : nan;
-		t["turn_scale_factor_ppm." + n] = has ? it->second.turn_scale_factor_ppm : nan;
-	}
+	using HF = nav::HeadingFigures;
+	putPerVariant<HF>(t, e.figures,
+					  {{"heading_error_rms_deg", &HF::heading_error_rms_deg},
+					   {"heading_error_max_deg", &HF::heading_error_max_deg},
+					   {"heading_error_final_deg", &HF::heading_error_final_deg},
+					   {"heading_drift_between_turns_dph", &HF::heading_drift_between_turns_dph},
+					   {"turn_scale_factor_ppm", &HF::turn_scale_factor_ppm}});
 	if (e.three_axis)
-		for (const char* name : {"raw", "compensated", "ideal"})
+	{
+		using AF = AttitudeFigures;
+		putPerVariant<AF>(t, e.attitude,
+						  {{"roll_error_rms_deg", &AF::roll_error_rms_deg},
+						   {"roll_error_max_deg", &AF::roll_error_max_deg},
+						   {"roll_error_final_deg", &AF::roll_error_final_deg},
+						   {"pitch_error_rms_deg", &AF::pitch_error_rms_deg},
+						   {"pitch_error_max_deg", &AF::pitch_error_max_deg},
+						   {"pitch_error_final_deg", &AF::pitch_error_final_deg}});
+		for (const char* name : {"raw", "compensated"})  // the ideal run has no rate error
 		{
-			const auto it = e.attitude.find(name);
-			const bool has = it != e.attitude.end();
-			const std::string n(name);
-			t["roll_error_rms_deg." + n] = has ? it->second.roll_error_rms_deg : nan;
-			t["roll_error_max_deg." + n] = has ? it->second.roll_error_max_deg : nan;
-			t["roll_error_final_deg." + n] = has ? it->second.roll_error_final_deg : nan;
-			t["pitch_error_rms_deg." + n] = has ? it->second.pitch_error_rms_deg : nan;
-			t["pitch_error_max_deg." + n] = has ? it->second.pitch_error_max_deg : nan;
-			t["pitch_error_final_deg." + n] = has ? it->second.pitch_error_final_deg : nan;
 			const auto jt = e.rate_error_rms_dph.find(name);
-			if (n != "ideal")
-				for (std::size_t a = 0; a < 3; a++)
-					t[std::string("rate_error_rms_100s_dph.") + "xyz"[a] + "." + n] = jt != e.rate_error_rms_dph.end() ? jt->second[a] : nan;
+			for (std::size_t a = 0; a < 3; a++)
+				t[std::string("rate_error_rms_100s_dph.") + "xyz"[a] + "." + name] =
+					jt != e.rate_error_rms_dph.end() ? jt->second[a] : nan;
 		}
+	}
 	const auto ratio = [&](const std::string& a, const std::string& b) { return std::abs(t[a]) / std::abs(t[b]); };
 	t["ratio.heading_rms_compensated_over_raw"] = ratio("heading_error_rms_deg.compensated", "heading_error_rms_deg.raw");
 	t["ratio.heading_rms_compensated_over_ideal"] = ratio("heading_error_rms_deg.compensated", "heading_error_rms_deg.ideal");

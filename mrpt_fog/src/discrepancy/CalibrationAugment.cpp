@@ -4,6 +4,7 @@
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/ScaleFactorFit.h>
 #include <mrpt_fog/model/Compensator.h>
+#include <mrpt_fog/model/FitFigureStats.h>
 #include <mrpt_fog/metrics/BiasMetrics.h>
 
 #include <cmath>
@@ -42,34 +43,12 @@ FitFigures throughCompensator(const Calibration& cal, const FogSeries& series, c
 	}
 	FitFigures f;
 	f.label = label;
-	f.tau_s = tau_s;
-	double sum = 0, sum2 = 0;
-	std::size_t n = 0;
-	for (double v : comp)
-		if (std::isfinite(v))
-		{
-			sum += v;
-			++n;
-		}
-	if (n == 0) return f;
-	const double mean = sum / static_cast<double>(n);
-	for (double v : comp)
-		if (std::isfinite(v)) sum2 += (v - mean) * (v - mean);
-	f.samples = n;
-	f.rms_dph = std::sqrt(sum2 / static_cast<double>(n));
-	try
-	{
-		const BiasStats cs = biasStats(series.time_s, comp, tau_s), rs = biasStats(series.time_s, raw, tau_s);
-		f.stability_dph = cs.stability_dph;
-		f.range_dph = cs.range_dph;
-		f.raw_stability_dph = rs.stability_dph;
-		f.raw_range_dph = rs.range_dph;
-		f.valid = true;
-	}
-	catch (const std::invalid_argument&)
-	{
-		f.stability_dph = f.range_dph = f.raw_stability_dph = f.raw_range_dph = std::numeric_limits<double>::quiet_NaN();
-	}
+	const auto pass = [&series](const std::vector<double>& v) -> RecordPass {
+		return [&series, &v](const RecordVisitor& visit) {
+			for (std::size_t k = 0; k < v.size(); k++) visit(series.time_s[k], v[k]);
+		};
+	};
+	fitFiguresOfPasses(f, pass(comp), pass(raw), tau_s);
 	return f;
 }
 }  // namespace

@@ -24,6 +24,17 @@ std::size_t uniformSampleCount(double segment_s, double period_s, std::size_t fi
 									": the timestamps are too irregular for a uniform resample");
 	return static_cast<std::size_t>(count_d);
 }
+/** The Allan deviation at cluster size m from the sum of squared second differences of the
+ * cluster averages (`terms` of them) of an n-sample record at tau0_s. */
+AllanPoint allanPointOf(std::size_t m, double tau0_s, long double sum, std::size_t terms, std::size_t n)
+{
+	AllanPoint p;
+	p.m = m;
+	p.tau_s = static_cast<double>(m) * tau0_s;
+	p.adev = std::sqrt(static_cast<double>(sum / (2.0L * terms)));
+	p.clusters = n / m;
+	return p;
+}
 }  // namespace
 
 std::vector<std::size_t> octaveClusterSizes(std::size_t n, std::size_t min_clusters)
@@ -83,12 +94,7 @@ std::vector<AllanPoint> allanDeviation(const std::vector<double>& y, double tau0
 			}
 			terms = n - 2 * m + 1;
 		}
-		AllanPoint p;
-		p.m = m;
-		p.tau_s = static_cast<double>(m) * tau0_s;
-		p.adev = std::sqrt(static_cast<double>(sum / (2.0L * terms)));
-		p.clusters = n / m;
-		out.push_back(p);
+		out.push_back(allanPointOf(m, tau0_s, sum, terms, n));
 	}
 	return out;
 }
@@ -359,12 +365,7 @@ std::vector<AllanPoint> allanDeviationOverlapping(const RowSpill& y, double tau0
 			}
 		}
 		const std::size_t terms = n - 2 * m + 1;
-		AllanPoint pt;
-		pt.m = m;
-		pt.tau_s = static_cast<double>(m) * tau0_s;
-		pt.adev = std::sqrt(static_cast<double>(sum / (2.0L * terms)));
-		pt.clusters = n / m;
-		out.push_back(pt);
+		out.push_back(allanPointOf(m, tau0_s, sum, terms, n));
 	}
 	return out;
 }

@@ -5,6 +5,7 @@
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/model/Compensator.h>
 #include <mrpt_fog/model/ModelPreset.h>
+#include <mrpt_fog/model/FitFigureStats.h>
 #include <mrpt_fog/common/RowSpill.h>
 
 #include <algorithm>
@@ -588,7 +589,6 @@ BiasModel makeModel(StreamingQr& total, const ThermalFeatureSet& fs, const Choic
 /** The figures of (time, raw, compensated) rows (column 0, 1, 2), read in passes. */
 void statsInto(FitFigures& f, const RowSpill& rows, double tau_s)
 {
-	f.tau_s = tau_s;
 	const auto column = [&](std::size_t col) -> RecordPass {
 		return [&rows, col](const RecordVisitor& v) {
 			rows.forEachBlock([&](const double* r, std::size_t n, std::size_t) {
@@ -596,37 +596,7 @@ void statsInto(FitFigures& f, const RowSpill& rows, double tau_s)
 			});
 		};
 	};
-	const RecordPass comp = column(2), raw = column(1);
-	double sum = 0, sum2 = 0;
-	std::size_t n = 0;
-	comp([&](double, double v) {
-		if (std::isfinite(v))
-		{
-			sum += v;
-			n++;
-		}
-	});
-	if (n == 0) return;
-	const double mean = sum / static_cast<double>(n);
-	comp([&](double, double v) {
-		if (std::isfinite(v)) sum2 += (v - mean) * (v - mean);
-	});
-	f.samples = n;
-	f.rms_dph = std::sqrt(sum2 / static_cast<double>(n));
-	try
-	{
-		const BiasStats cs = biasStats(comp, tau_s), rs = biasStats(raw, tau_s);
-		f.stability_dph = cs.stability_dph;
-		f.range_dph = cs.range_dph;
-		f.raw_stability_dph = rs.stability_dph;
-		f.raw_range_dph = rs.range_dph;
-		f.valid = true;
-	}
-	catch (const std::invalid_argument&)
-	{
-		f.valid = false;  // run shorter than 2 tau: RMS only
-		f.stability_dph = f.range_dph = f.raw_stability_dph = f.raw_range_dph = std::numeric_limits<double>::quiet_NaN();
-	}
+	fitFiguresOfPasses(f, column(2), column(1), tau_s);
 }
 
 /** The calibration runs laid end to end on one time axis, a one-window (tau_s) gap between runs:
