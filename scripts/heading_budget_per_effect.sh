@@ -12,25 +12,9 @@
 # Drives: SEEDS (default 1..6: the TUNING drives of the budget; the held-out ones are 11..19 +
 # the bundled drive and 41..49, scripts/heading_error_budget.sh).
 set -euo pipefail
-ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-OUT=${1:?usage: heading_budget_per_effect.sh OUT_DIR [BUILD_DIR]}
-BUILD=${2:-$ROOT/build}
-SIM="$BUILD/apps/fog-sim"
-CAL="$BUILD/apps/fog-calibrate"
-TRUTH="$BUILD/tests/drive-truth"
+source "$(dirname "${BASH_SOURCE[0]}")/heading_budget_setup.sh"  # ROOT, OUT ($1), BUILD ($2), programs, cabins
 SEEDS=${SEEDS:-"1 2 3 4 5 6"}
-CABINS=(drive_cabin drive_cabin_mild drive_cabin_hot)
 EFFECTS=${EFFECTS:-"warmup shupe_rate temp_poly_order radial_gradient hysteresis gradient_rate"}
-mkdir -p "$OUT"
-cat > "$OUT/warm_start.yaml" <<'YAML'
-name: warm_start
-initial_temp_C: 20
-power_initially: true
-initial_state: steady
-segments:
-  - {type: ramp, to_C: 24, rate_C_per_min: 0.06}
-  - {type: hold, duration_min: 3.8}
-YAML
 for X in $EFFECTS; do
 	EF=(--effect heat_source --effect earth_rate --effect thermistor_lag --effect "$X")
 	"$SIM" --profile seed --seed 20240501 "${EF[@]}" -o "$OUT/$X.chamber.rawlog" >/dev/null

@@ -33,28 +33,10 @@
 #               calibration fits noise only; compensated/ideal is then the floor that noise in
 #               finite calibration runs sets for any calibration of this recipe
 set -euo pipefail
-ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-OUT=${1:?usage: heading_error_budget.sh OUT_DIR [BUILD_DIR]}
-BUILD=${2:-$ROOT/build}
-SIM="$BUILD/apps/fog-sim"
-CAL="$BUILD/apps/fog-calibrate"
-DRIFT="$BUILD/apps/fog-drift"
-TRUTH="$BUILD/tests/drive-truth"
-D="$ROOT/datasets"
+source "$(dirname "${BASH_SOURCE[0]}")/heading_budget_setup.sh"  # ROOT, OUT ($1), BUILD ($2), programs, cabins
 SEEDS=${SEEDS:-"11 12 13 14 15 16 17 18 19"}
 BUNDLED=${BUNDLED-20240501}  # the bundled drive's seed (winter cabin) joins SEEDS; BUNDLED= leaves it out
-CABINS=(drive_cabin drive_cabin_mild drive_cabin_hot)
 NOISE_EFFECTS=(--effect earth_rate --effect heat_source --effect thermistor_lag)
-mkdir -p "$OUT"
-cat > "$OUT/warm_start.yaml" <<'YAML'
-name: warm_start
-initial_temp_C: 20
-power_initially: true
-initial_state: steady
-segments:
-  - {type: ramp, to_C: 24, rate_C_per_min: 0.06}
-  - {type: hold, duration_min: 3.8}
-YAML
 
 [ -f "$OUT/cal_full.yaml" ] || "$CAL" -i "$D/chamber_A.rawlog" -i "$D/ratetable_A.rawlog" -i "$D/ratetable_transient.rawlog" \
 	-i "$D/warmup.rawlog" -o "$OUT/cal_full.yaml" >/dev/null

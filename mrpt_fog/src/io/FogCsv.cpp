@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt_fog/obs/FogSeriesLayout.h>
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/io/FogRawlogMetadata.h>
 #include <mrpt_fog/io/GzFile.h>
@@ -97,15 +98,7 @@ class CsvReaderImpl : public FogLogReader::Impl
 			parseMetadataLine(t, in_.lineNumber());
 		}
 		parseHeader(l, in_.lineNumber());
-		header.has_axis = s_.has_axis;
-		header.sensor_label = s_.sensor_label;
-		header.epoch_s = s_.epoch_s;
-		header.thermistors = s_.thermistors;
-		header.metadata = s_.metadata;
-		header.temp_C.assign(s_.thermistors.size(), {});
-		if (has_table_) header.table_rate_dph.assign(1, kNaN);
-		if (has_field_) header.field_uT.assign(1, kNaN);
-		if (has_power_) header.power.assign(1, kNaN);
+		header = layoutHeaderOf(s_, has_table_, has_field_, has_power_);
 	}
 
 	bool next(FogSample& x) override

@@ -134,18 +134,6 @@ FogSeries readAllSamples(FogLogReader& r)
 	return s;
 }
 
-FogSeries emptySeriesLike(const FogSeries& h)
-{
-	FogSeries s;
-	s.sensor_label = h.sensor_label;
-	s.epoch_s = h.epoch_s;
-	s.thermistors = h.thermistors;
-	s.has_axis = h.has_axis;
-	s.metadata = h.metadata;
-	s.temp_C.assign(h.thermistors.size(), {});
-	return s;
-}
-
 void appendSample(FogSeries& s, const FogSample& x, const FogLogReader& r)
 {
 	s.time_s.push_back(x.time_s);

@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/obs/FogRun.h>
+#include <mrpt_fog/obs/FogSeriesLayout.h>
 
 #include <cmath>
 #include <limits>
@@ -60,23 +61,6 @@ struct FogRun::Impl
 	}
 };
 
-namespace
-{
-FogSeries headerOf(const FogSeries& s, bool table, bool field, bool power)
-{
-	FogSeries h;
-	h.sensor_label = s.sensor_label;
-	h.epoch_s = s.epoch_s;
-	h.thermistors = s.thermistors;
-	h.has_axis = s.has_axis;
-	h.metadata = s.metadata;
-	h.temp_C.resize(s.thermistors.size());
-	if (table) h.table_rate_dph.assign(1, kNaN);
-	if (field) h.field_uT.assign(1, kNaN);
-	if (power) h.power.assign(1, kNaN);
-	return h;
-}
-}  // namespace
 
 FogRun::FogRun(const FogSeries& s) : impl_(std::make_unique<Impl>())
 {
@@ -86,7 +70,7 @@ FogRun::FogRun(const FogSeries& s) : impl_(std::make_unique<Impl>())
 	st.table = !s.table_rate_dph.empty();
 	st.field = !s.field_uT.empty();
 	st.power = !s.power.empty();
-	st.layout = headerOf(s, st.table, st.field, st.power);
+	st.layout = layoutHeaderOf(s, st.table, st.field, st.power);
 	impl_->header = st.layout;
 	if (!s.empty())
 	{
@@ -103,7 +87,7 @@ FogRun::FogRun(const FogSeries& header, bool has_table_rate, bool has_field, boo
 	st.table = has_table_rate;
 	st.field = has_field;
 	st.power = has_power;
-	st.layout = headerOf(header, has_table_rate, has_field, has_power);
+	st.layout = layoutHeaderOf(header, has_table_rate, has_field, has_power);
 	impl_->header = st.layout;
 	st.rows.emplace(st.width());
 	st.row.resize(st.width());

@@ -1,10 +1,12 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/common/EnumNames.h>
 #include <mrpt_fog/obs/FogSeries.h>
+#include <mrpt_fog/obs/FogSeriesLayout.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -156,6 +158,28 @@ void FogSeries::validate() const
 bool FogSeries::sameLayout(const FogSeries& o) const
 {
 	return thermistors == o.thermistors && has_axis == o.has_axis;
+}
+
+FogSeries emptySeriesLike(const FogSeries& h)
+{
+	FogSeries s;
+	s.sensor_label = h.sensor_label;
+	s.epoch_s = h.epoch_s;
+	s.thermistors = h.thermistors;
+	s.has_axis = h.has_axis;
+	s.metadata = h.metadata;
+	s.temp_C.assign(h.thermistors.size(), {});
+	return s;
+}
+
+FogSeries layoutHeaderOf(const FogSeries& s, bool has_table_rate, bool has_field, bool has_power)
+{
+	const double nan = std::numeric_limits<double>::quiet_NaN();
+	FogSeries h = emptySeriesLike(s);
+	if (has_table_rate) h.table_rate_dph.assign(1, nan);
+	if (has_field) h.field_uT.assign(1, nan);
+	if (has_power) h.power.assign(1, nan);
+	return h;
 }
 
 }  // namespace mrpt_fog

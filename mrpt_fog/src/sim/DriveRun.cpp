@@ -13,6 +13,23 @@
 
 namespace mrpt_fog::sim
 {
+DriveStep driveStep(std::size_t k, double rate_hz, const DriveTrajectory& traj, const ChamberProfile& cabin,
+					FogSimulator& sim, const PlanarState& prev)
+{
+	const double dt = 1.0 / rate_hz;
+	DriveStep step;
+	step.t_s = static_cast<double>(k) / rate_hz;
+	step.now = traj.at(step.t_s);
+	ChamberState& st = step.chamber;
+	st = cabin.stateAt(step.t_s);
+	// Mean applied yaw rate over (t - dt, t], exact from the heading truth [deg/h].
+	st.table_rate_dph = k == 0 ? step.now.yaw_rate_rad_s * units::kRadPerSecToDegPerHour
+							   : (step.now.yaw_rad - prev.yaw_rad) / dt * units::kRadPerSecToDegPerHour;
+	st.field_uT = 0;
+	step.sample = k == 0 ? sim.start(st, cabin.initialState()) : sim.advance(dt, st);
+	return step;
+}
+
 DriveOutput simulateDrive(const ChamberProfile& cabin, const FogDevice& device, const SimSettings& settings,
 						  const OdometryErrors& odo)
 {
@@ -41,14 +58,11 @@ DriveOutput simulateDrive(const ChamberProfile& cabin, const FogDevice& device, 
 	PlanarState prev = traj.at(0);
 	for (std::size_t k = 0; k < n; k++)
 	{
-		const double t = static_cast<double>(k) / settings.rate_hz;
-		const PlanarState now = traj.at(t);
-		ChamberState st = cabin.stateAt(t);
-		// Mean applied yaw rate over (t - dt, t], exact from the heading truth [deg/h].
-		st.table_rate_dph = k == 0 ? now.yaw_rate_rad_s * units::kRadPerSecToDegPerHour
-								   : (now.yaw_rad - prev.yaw_rad) / dt * units::kRadPerSecToDegPerHour;
-		st.field_uT = 0;
-		const FogSample s = k == 0 ? sim.start(st, cabin.initialState()) : sim.advance(dt, st);
+		const DriveStep step = driveStep(k, settings.rate_hz, traj, cabin, sim, prev);
+		const double t = step.t_s;
+		const PlanarState& now = step.now;
+		const ChamberState& st = step.chamber;
+		const FogSample& s = step.sample;
 		coil_min = std::min(coil_min, s.coil_mean_C);
 		coil_max = std::max(coil_max, s.coil_mean_C);
 		for (FogSeries* f : {&fog, &ideal})

@@ -63,7 +63,7 @@ int main(int argc, char** argv)
 		const FogDevice dev = FogDevice::defaultDevice();
 		const double dt = 1.0 / settings.rate_hz;
 
-		// The same loop as simulateDrive (DriveRun.cpp), keeping the simulator's state.
+		// The loop of simulateDrive (its steps: driveStep), keeping the simulator's state.
 		const DriveTrajectory traj = DriveTrajectory::randomDrive(settings.seed, cabin.duration_s());
 		FogSimulator sim(dev, settings.effects, settings.seed);
 		const auto n = static_cast<std::size_t>(std::floor(cabin.duration_s() * settings.rate_hz + 1e-9)) + 1;
@@ -83,19 +83,16 @@ int main(int argc, char** argv)
 		bool was_on = false;
 		for (std::size_t k = 0; k < n; k++)
 		{
-			const double t = static_cast<double>(k) / settings.rate_hz;
-			const PlanarState now = traj.at(t);
-			ChamberState st = cabin.stateAt(t);
-			st.table_rate_dph = k == 0 ? now.yaw_rate_rad_s * units::kRadPerSecToDegPerHour
-									   : (now.yaw_rad - prev.yaw_rad) / dt * units::kRadPerSecToDegPerHour;
-			st.field_uT = 0;
-			const FogSample s = k == 0 ? sim.start(st, cabin.initialState()) : sim.advance(dt, st);
+			const DriveStep step = driveStep(k, settings.rate_hz, traj, cabin, sim, prev);
+			const PlanarState& now = step.now;
+			const ChamberState& st = step.chamber;
+			const FogSample& s = step.sample;
 			if (k == 0) t_on = (cabin.initialState() == InitialThermalState::Cold && st.power_on) ? 0.0 : -1.0;
 			else if (st.power_on && !was_on) t_on = 0.0;
 			else if (st.power_on && t_on >= 0) t_on += dt;
 			was_on = st.power_on;
 			Row r;
-			r.t = t;
+			r.t = step.t_s;
 			r.power = s.power_on ? 1 : 0;
 			r.applied = st.table_rate_dph + earth_dph;
 			r.raw = s.rate_dph;

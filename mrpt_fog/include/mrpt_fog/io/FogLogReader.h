@@ -19,7 +19,7 @@
  * whole second of the first timestamp. */
 
 #include <mrpt/obs/CObservation.h>
-#include <mrpt_fog/obs/FogSeries.h>
+#include <mrpt_fog/obs/FogSeriesLayout.h>  // FogSeries, emptySeriesLike
 
 #include <array>
 #include <cstdint>
@@ -93,8 +93,5 @@ void appendSample(FogSeries& series, const FogSample& sample, const FogLogReader
 /** Every remaining sample of the reader as a series (columns of exact size; peak memory about
  * the series plus one column). */
 FogSeries readAllSamples(FogLogReader& reader);
-
-/** A series with the header's layout and no samples (optional columns present but empty). */
-FogSeries emptySeriesLike(const FogSeries& header);
 
 }  // namespace mrpt_fog

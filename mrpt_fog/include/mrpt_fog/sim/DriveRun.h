@@ -23,6 +23,7 @@
 #include <mrpt_fog/sim/ChamberRun.h>
 #include <mrpt_fog/sim/DriveTrajectory.h>
 #include <mrpt_fog/sim/FogDevice.h>
+#include <mrpt_fog/sim/FogSimulator.h>
 
 #include <vector>
 
@@ -49,5 +50,20 @@ struct DriveOutput
 /** Simulates the drive over the cabin profile's duration (> 130 s). */
 DriveOutput simulateDrive(const ChamberProfile& cabin, const FogDevice& device, const SimSettings& settings,
 						  const OdometryErrors& odo = {});
+
+/** One step of simulateDrive()'s loop (also what tools replaying a drive with the simulator's
+ * state call): t = k / rate_hz, the vehicle's planar truth there, the cabin state the FOG sees
+ * (the mean applied yaw rate over (t - 1/rate_hz, t] from the heading truth, no field) and the
+ * FOG sample (the simulator started at k = 0, else advanced one step). `prev` is the previous
+ * step's planar state (unused at k = 0). */
+struct DriveStep
+{
+	double t_s = 0;
+	PlanarState now;
+	ChamberState chamber;
+	FogSample sample;
+};
+DriveStep driveStep(std::size_t k, double rate_hz, const DriveTrajectory& traj, const ChamberProfile& cabin,
+					FogSimulator& sim, const PlanarState& prev);
 
 }  // namespace mrpt_fog::sim
