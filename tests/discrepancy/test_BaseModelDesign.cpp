@@ -4,6 +4,7 @@
 #include <mrpt_fog/model/Compensator.h>
 #include "support/SyntheticChamberRun.h"
 
+#include <algorithm>
 #include <cmath>
 
 using namespace mrpt_fog;
@@ -167,4 +168,42 @@ TEST(BaseModelDesign, WeightedScaleFactorColumnReadsTheWeightedSum)
 		++checked;
 	}
 	EXPECT_GT(checked, 100u);
+}
+
+TEST(BaseModelDesign, NuisanceColumnIsCentredMinusCausalRateFeature)
+{
+	// the rate term's column plus its nuisance column is the same feature evaluated on the
+	// analysis' centred slope (RunSignals::dthermistor_dt_Cpm, degC/min -> degC/s), inside the
+	// calibrated range (no clamp or tangent there)
+	Fixture f;
+	const auto spec = resolveBaseModel("M2:Ti1", f.run.series);
+	const auto d = buildBaseDesign(spec, f.run.series, f.sig);
+	const auto& fs = spec.features;
+	std::size_t checkedTerms = 0;
+	for (std::size_t t = 1; t < fs.termCount(); ++t)
+	{
+		const auto& term = fs.terms()[t];
+		if (term.signal.kind != SignalKind::Rate) continue;
+		const auto nuis = std::find(d.names.begin(), d.names.end(), "centred-minus-causal " + term.name());
+		ASSERT_NE(nuis, d.names.end()) << term.name();
+		const auto c = static_cast<Eigen::Index>(nuis - d.names.begin());
+		EXPECT_EQ(d.is_nuisance[static_cast<std::size_t>(c)], 1);
+		const auto& nm = fs.normalisation()[static_cast<std::size_t>(fs.termSignal(t))];
+		const int i = f.run.series.thermistorIndex(term.signal.a);
+		ASSERT_GE(i, 0);
+		std::size_t checked = 0;
+		for (std::size_t k = 0; k < f.run.series.size(); ++k)
+		{
+			const double r = f.sig.dthermistor_dt_Cpm[static_cast<std::size_t>(i)][k] / 60.0;
+			if (!d.defined[k] || !f.sig.usable[k] || r < nm.min || r > nm.max) continue;
+			const double expected = std::pow((r - nm.centre) / nm.scale, term.power);
+			EXPECT_NEAR(d.X(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(t)) + d.X(static_cast<Eigen::Index>(k), c),
+						expected, 1e-9 * (1 + std::fabs(expected)))
+				<< k;
+			++checked;
+		}
+		EXPECT_GT(checked, f.run.series.size() / 4);
+		++checkedTerms;
+	}
+	EXPECT_GE(checkedTerms, 1u);
 }
