@@ -93,17 +93,7 @@ inline Outcome runForeignTrial(const std::string& hidden, double ratio, std::uin
 			return X;
 		};
 		const Eigen::MatrixXd X1 = withTruth(b1, r1.effect_dph.at(hidden));
-		std::vector<Eigen::Index> rows;
-		for (std::size_t k = 0; k < sig1.size(); ++k)
-			if (sig1.usable[k]) rows.push_back(static_cast<Eigen::Index>(k));
-		Eigen::MatrixXd A(static_cast<Eigen::Index>(rows.size()), X1.cols());
-		Eigen::VectorXd y(static_cast<Eigen::Index>(rows.size()));
-		for (std::size_t i = 0; i < rows.size(); ++i)
-		{
-			A.row(static_cast<Eigen::Index>(i)) = X1.row(rows[i]);
-			y(static_cast<Eigen::Index>(i)) = sig1.bias_dph[static_cast<std::size_t>(rows[i])];
-		}
-		const Eigen::VectorXd coef = A.colPivHouseholderQr().solve(y);
+		const Eigen::VectorXd coef = coefficientsOnRows(X1, sig1, sig1.usable);
 		const Eigen::VectorXd r = residualWithCoefficients(withTruth(b2, r2.effect_dph.at(hidden)), sig2, coef);
 		double m = 0, n = 0, s = 0;
 		for (std::size_t k = 0; k < g.residual_before_dph.size(); ++k)

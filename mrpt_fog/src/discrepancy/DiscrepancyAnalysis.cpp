@@ -346,22 +346,7 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 		if (sig2 && rep.cannot_tell.empty())
 		{
 			keepConfirmedEffects(sel, sig1, base1);
-			const auto rows1 = [&] {
-				std::vector<Eigen::Index> r;
-				for (std::size_t k = 0; k < sig1.size(); ++k)
-					if (sel.fit_rows[k]) r.push_back(static_cast<Eigen::Index>(k));
-				return r;
-			}();
-			auto fitOnRun1 = [&](const Eigen::MatrixXd& X1) {
-				Eigen::MatrixXd A(static_cast<Eigen::Index>(rows1.size()), X1.cols());
-				Eigen::VectorXd yv(static_cast<Eigen::Index>(rows1.size()));
-				for (std::size_t i = 0; i < rows1.size(); ++i)
-				{
-					A.row(static_cast<Eigen::Index>(i)) = X1.row(rows1[i]);
-					yv(static_cast<Eigen::Index>(i)) = sig1.bias_dph[static_cast<std::size_t>(rows1[i])];
-				}
-				return Eigen::VectorXd(A.colPivHouseholderQr().solve(yv));
-			};
+			auto fitOnRun1 = [&](const Eigen::MatrixXd& X1) { return coefficientsOnRows(X1, sig1, sel.fit_rows); };
 			const double nu = static_cast<double>(std::max<std::size_t>(sig2->usableCount(), 1));
 			const double rmin2 = opt.min_held_out_effect_ratio * opt.min_held_out_effect_ratio;
 			while (!sel.model.effects.empty())
@@ -429,17 +414,7 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 				return K;
 			};
 			auto rmsOn = [&](const Eigen::MatrixXd& X1, const Eigen::MatrixXd& XJ) {
-				std::vector<Eigen::Index> r;
-				for (std::size_t k = 0; k < sig1.size(); ++k)
-					if (rep.selection.fit_rows[k]) r.push_back(static_cast<Eigen::Index>(k));
-				Eigen::MatrixXd A(static_cast<Eigen::Index>(r.size()), X1.cols());
-				Eigen::VectorXd yv(static_cast<Eigen::Index>(r.size()));
-				for (std::size_t i = 0; i < r.size(); ++i)
-				{
-					A.row(static_cast<Eigen::Index>(i)) = X1.row(r[i]);
-					yv(static_cast<Eigen::Index>(i)) = sig1.bias_dph[static_cast<std::size_t>(r[i])];
-				}
-				const Eigen::VectorXd coef = A.colPivHouseholderQr().solve(yv);
+				const Eigen::VectorXd coef = coefficientsOnRows(X1, sig1, rep.selection.fit_rows);
 				const Eigen::VectorXd res = residualWithCoefficients(XJ, sigJ, coef);
 				const double m = static_cast<double>(std::max<std::size_t>(sigJ.usableCount(), 1));
 				return std::sqrt(res.squaredNorm() / m);

@@ -232,6 +232,21 @@ double logSumExpWeights(const std::vector<double>& halfBic)
 }
 }  // namespace
 
+Vec coefficientsOnRows(const Mat& X, const RunSignals& sig, const std::vector<unsigned char>& rows)
+{
+	std::vector<Eigen::Index> r;
+	for (std::size_t k = 0; k < rows.size(); ++k)
+		if (rows[k]) r.push_back(static_cast<Eigen::Index>(k));
+	Mat A(static_cast<Eigen::Index>(r.size()), X.cols());
+	Vec y(static_cast<Eigen::Index>(r.size()));
+	for (std::size_t i = 0; i < r.size(); ++i)
+	{
+		A.row(static_cast<Eigen::Index>(i)) = X.row(r[i]);
+		y(static_cast<Eigen::Index>(i)) = sig.bias_dph[static_cast<std::size_t>(r[i])];
+	}
+	return A.colPivHouseholderQr().solve(y);
+}
+
 Vec residualWithCoefficients(const Mat& X, const RunSignals& sig, const Vec& coef)
 {
 	const Vec y = yVector(sig);

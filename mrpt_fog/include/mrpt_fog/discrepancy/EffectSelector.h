@@ -162,6 +162,10 @@ void confirmOnRun(SelectionResult& result, const RunSignals& sig2, const BaseDes
  * Why: on null trials every false naming seen was unconfirmed (docs/discrepancy.md). */
 void keepConfirmedEffects(SelectionResult& result, const RunSignals& sig1, const BaseDesign& base1);
 
+/** Least-squares coefficients of the run's bias on the design X, fitted on the rows where
+ * `rows` is non-zero (a run's `usable` or a selection's `fit_rows`). */
+Eigen::VectorXd coefficientsOnRows(const Eigen::MatrixXd& X, const RunSignals& sig, const std::vector<unsigned char>& rows);
+
 /** Residuals on another run with coefficients fitted elsewhere, re-estimating only the
  * constant offset (turn-on to turn-on bias repeatability). Rows not usable give 0. */
 Eigen::VectorXd residualWithCoefficients(const Eigen::MatrixXd& X, const RunSignals& sig, const Eigen::VectorXd& coef);
