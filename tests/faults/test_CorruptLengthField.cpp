@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <string>
+#include <vector>
 
 #include "FaultRun.h"
 #include "support/AddressSpaceLimit.h"
@@ -84,4 +85,58 @@ TEST(CorruptLengthField, TopLevelNonObservationRefusedUnread)
 		return 1;
 	});
 	EXPECT_EQ(code, 0) << "0 = FogIoError naming the file, the object and its class; 1 = read; 2 = other message; 3 = other exception; else a crash";
+}
+
+namespace
+{
+/** Reads `path` in a child process. Exit 0 = FogIoError naming the file and holding every one of
+ * `parts`; 1 = read without error; 2 = FogIoError with another message; 3 = another exception;
+ * anything else = a crash (a signal) or a hang killed by ctest. */
+int refusedInChild(const std::string& path, const std::vector<std::string>& parts)
+{
+	return fogtest::exitCodeInChild([&] {
+		try
+		{
+			(void)readFogRawlog(path);
+		}
+		catch (const FogIoError& e)
+		{
+			const std::string m = e.what();
+			if (m.find(path) == std::string::npos) return 2;
+			for (const auto& part : parts)
+				if (m.find(part) == std::string::npos) return 2;
+			return 0;
+		}
+		catch (...)
+		{
+			return 3;
+		}
+		return 1;
+	});
+}
+}  // namespace
+
+// The same corrupt CMatrixD written with MRPT's old object header (name length without the 0x80
+// flag, 3 zero bytes, a 32-bit version): the first check read only the MRPT 2 header, so MRPT
+// deserialised it and fog-convert died of SIGSEGV (exit 139) before the fix.
+TEST(CorruptLengthField, OldFormatHeaderRefusedUnread)
+{
+	EXPECT_EQ(refusedInChild(dataFile("old_top_matrix.rawlog"), {"object #0", "mrpt::math::CMatrixD, not an observation"}), 0)
+		<< "0 = FogIoError naming the file, the object and its class; 1 = read; 2 = other message; 3 = other exception; else a crash";
+}
+
+// A sensory frame holding the corrupt CMatrixD: MRPT's CSensoryFrame reads whatever class its list
+// names (SIGSEGV, exit 139, before the fix). The reader reads frames itself and checks each entry.
+TEST(CorruptLengthField, SensoryFrameEntriesCheckedBeforeReading)
+{
+	EXPECT_EQ(refusedInChild(dataFile("sf_nested_matrix.rawlog"), {"object #0", "sensory frame holds a mrpt::math::CMatrixD"}), 0)
+		<< "0 = FogIoError naming the file, the object and its class; 1 = read; 2 = other message; 3 = other exception; else a crash";
+}
+
+// A sensory frame whose observation count reads 4294967295: MRPT resizes its list to that count
+// first (64 GB of pointers; fog-convert ran past a 60 s timeout before the fix). Bounded now.
+TEST(CorruptLengthField, SensoryFrameCountBounded)
+{
+	EXPECT_EQ(refusedInChild(dataFile("sf_huge_n.rawlog"), {"4294967295 observations, more than the limit"}), 0)
+		<< "0 = FogIoError naming the file and the count; 1 = read; 2 = other message; 3 = other exception; else a crash";
 }

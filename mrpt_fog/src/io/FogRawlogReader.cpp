@@ -45,27 +45,47 @@ std::string whyReadFailed(const std::string& what, bool at_end_of_data)
 	return "corrupt object: " + oneLineErrorMessage(what);
 }
 
-/** The registered class an MRPT object header at `p` names (MRPT 2 header: 0x80 | name length,
- * then the name; MRPT ends the name at its first NUL), or nullptr when the header is cut, in another
- * format or names no registered class (CArchive then says why). */
-const mrpt::rtti::TRuntimeClassId* classOfObjectHeader(const unsigned char* p, std::size_t n)
+/** An MRPT object header as it stands in the bytes: the class it names and how long it is. */
+struct ObjectHeader
 {
-	if (n < 1 || (p[0] & 0x80u) == 0) return nullptr;
-	const std::size_t len = p[0] & 0x7Fu;
-	if (n < 1 + len) return nullptr;
-	const auto* name = reinterpret_cast<const char*>(p + 1);
-	const std::string cls(name, ::strnlen(name, len));
-	return cls.empty() ? nullptr : mrpt::rtti::findRegisteredClass(cls);
+	const mrpt::rtti::TRuntimeClassId* cls = nullptr;  //!< null: cut, not a header, or no registered class
+	std::string name;									//!< as MRPT reads it (up to the first NUL)
+	bool old_format = false;							//!< pre-MRPT-0.5.5: 3 zero bytes and a 32-bit version
+	std::size_t bytes = 0;								//!< header length, version included
+	std::uint8_t version = 0;
+};
+
+/** Parses the header of the object at `p` (MRPT 2: 0x80 | name length, the name, a version byte;
+ * the old format: name length, 3 zero bytes, the name, a 32-bit version). MRPT ends the name at its
+ * first NUL and refuses names over 120 bytes. `cls` stays null when the header is cut, malformed or
+ * names no registered class (CArchive then says why). */
+ObjectHeader parseObjectHeader(const unsigned char* p, std::size_t n)
+{
+	ObjectHeader h;
+	if (n < 1) return h;
+	h.old_format = (p[0] & 0x80u) == 0;
+	const std::size_t len = p[0] & 0x7Fu, name_at = h.old_format ? 4 : 1, version_bytes = h.old_format ? 4 : 1;
+	if (len > 120 || n < name_at + len + version_bytes) return h;
+	if (h.old_format && (p[1] || p[2] || p[3])) return h;
+	const auto* name = reinterpret_cast<const char*>(p + name_at);
+	h.name.assign(name, ::strnlen(name, len));
+	h.bytes = name_at + len + version_bytes;
+	const unsigned char* v = p + name_at + len;
+	if (h.old_format && (v[1] || v[2] || v[3] || v[0] == 255)) return h;  // MRPT: 0 <= version < 255 (little endian)
+	h.version = v[0];
+	h.cls = h.name.empty() ? nullptr : mrpt::rtti::findRegisteredClass(h.name);
+	return h;
 }
 
 /** Whether objects of `c` may stand at the top level of a rawlog (observations-only or
- * sensory-frame format). Anything else is refused before MRPT deserialises it: a corrupt file
- * can name any registered class, and some (CMatrixD: rows x cols from the file, MRPT's aligned
- * allocator returning null on failure) crash inside MRPT instead of throwing (found by fuzz_rawlog). */
-bool rawlogEntryClass(const mrpt::rtti::TRuntimeClassId* c)
+ * sensory-frame format), or inside a sensory frame (observations only). Anything else is refused
+ * before MRPT deserialises it: a corrupt file can name any registered class, and some (CMatrixD:
+ * rows x cols from the file, MRPT's aligned allocator returning null on failure) crash inside
+ * MRPT instead of throwing (found by fuzz_rawlog). */
+bool allowedClass(const mrpt::rtti::TRuntimeClassId* c, bool nested)
 {
-	return c->derivedFrom(CLASS_ID(mrpt::obs::CObservation)) || c->derivedFrom(CLASS_ID(mrpt::obs::CSensoryFrame)) ||
-		   c->derivedFrom(CLASS_ID(mrpt::obs::CActionCollection));
+	if (c->derivedFrom(CLASS_ID(mrpt::obs::CObservation))) return true;
+	return !nested && c->derivedFrom(CLASS_ID(mrpt::obs::CSensoryFrame));
 }
 
 std::string labelList(const std::map<std::string, std::size_t>& counts)
@@ -164,22 +184,14 @@ class RawlogReaderImpl : public FogLogReader::Impl
 		if (in_.atEnd()) return false;
 		if (readFogObservationFast()) return true;
 		const uint64_t offset = in_.position();
-		{
-			const unsigned char* p = nullptr;
-			const std::size_t n = in_.peek(p, 128);
-			if (const auto* c = classOfObjectHeader(p, n); c && !rawlogEntryClass(c))
-				throw FogIoError(path_ + ": object #" + std::to_string(objects_) + " (byte offset " + std::to_string(offset) +
-								 ") is a " + c->className + ", not an observation (refused unread: a rawlog holds observations, "
-								 "sensory frames or action collections)");
-		}
 		mrpt::serialization::CSerializable::Ptr obj;
 		try
 		{
-			obj = arch_.ReadObject();
+			obj = readCheckedObject(false, offset);
 		}
 		catch (const FogIoError&)
 		{
-			throw;  // corrupt or truncated gzip data: says so itself
+			throw;  // corrupt or truncated gzip data, or an object refused unread: says so itself
 		}
 		catch (const std::exception& e)
 		{
@@ -194,15 +206,74 @@ class RawlogReaderImpl : public FogLogReader::Impl
 		{
 			for (const auto& so : *sf) take(so, objects_);
 		}
-		else if (std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(obj))
-			throw FogIoError(path_ + ": object #" + std::to_string(objects_) + " (byte offset " + std::to_string(offset) +
-							 ") is a CActionCollection: rawlogs with actions (sensory-frame format) are not supported; "
-							 "use the observations-only format");
 		else
 			throw FogIoError(path_ + ": object #" + std::to_string(objects_) + " (byte offset " + std::to_string(offset) +
 							 ") is a " + (obj ? obj->GetRuntimeClass()->className : "null object") + ", not an observation");
 		objects_++;
 		return true;
+	}
+
+	/** Reads the next object through CArchive after checking its header: a class that cannot stand
+	 * here is refused unread (see allowedClass), and a sensory frame is read here, each of its
+	 * observations checked the same way, because MRPT would read whatever class its list names.
+	 * `offset`: where the top-level object starts (for messages). */
+	mrpt::serialization::CSerializable::Ptr readCheckedObject(bool nested, uint64_t offset)
+	{
+		const unsigned char* p = nullptr;
+		const std::size_t n = in_.peek(p, 4 + 127 + 4);
+		const ObjectHeader h = parseObjectHeader(p, n);
+		if (h.cls && !allowedClass(h.cls, nested))
+		{
+			const std::string where = path_ + ": object #" + std::to_string(objects_) + " (byte offset " + std::to_string(offset) + ")";
+			if (h.cls->derivedFrom(CLASS_ID(mrpt::obs::CActionCollection)))
+				throw FogIoError(where + " is a CActionCollection: rawlogs with actions (sensory-frame format) are not "
+										 "supported; use the observations-only format (refused unread)");
+			throw FogIoError(where + (nested ? ": the sensory frame holds a " : " is a ") + h.cls->className +
+							 ", not an observation (refused unread: a rawlog holds observations" +
+							 (nested ? ")" : " or sensory frames of observations)"));
+		}
+		if (h.cls && h.cls->derivedFrom(CLASS_ID(mrpt::obs::CSensoryFrame)))
+		{
+			in_.consume(h.bytes);
+			return readSensoryFrameBody(h, offset);
+		}
+		return arch_.ReadObject();
+	}
+
+	/** The body of a CSensoryFrame (its header consumed), as CSensoryFrame::serializeFrom reads it
+	 * (versions 0-2: [ID], [timestamp], count, the observations), then MRPT's end flag; each
+	 * observation checked before it is read, the count bounded, nothing allocated ahead. */
+	mrpt::serialization::CSerializable::Ptr readSensoryFrameBody(const ObjectHeader& h, uint64_t offset)
+	{
+		const std::string where = path_ + ": object #" + std::to_string(objects_) + " (byte offset " +
+								  std::to_string(offset) + "), a sensory frame";
+		if (h.version > 2)
+			throw FogIoError(where + ": unknown serialization version " + std::to_string(h.version) + " (MRPT 2.5 writes 2)");
+		uint32_t id = 0, count = 0;
+		mrpt::system::TTimeStamp stamp = INVALID_TIMESTAMP;
+		if (h.version < 2) arch_ >> id;
+		if (h.version == 0) arch_.ReadBufferFixEndianness(&stamp, 1);
+		arch_ >> count;
+		if (count > kMaxFrameObservations)
+			throw FogIoError(where + ": holds " + std::to_string(count) + " observations, more than the limit of " +
+							 std::to_string(kMaxFrameObservations) + " (a corrupt count)");
+		auto sf = mrpt::obs::CSensoryFrame::Create();
+		for (uint32_t i = 0; i < count; i++)
+		{
+			auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(readCheckedObject(true, offset));
+			if (!o) throw FogIoError(where + ": its observation " + std::to_string(i) + " is a null object");
+			if (h.version == 0) o->timestamp = stamp;
+			sf->insert(o);
+		}
+		if (!h.old_format)
+		{
+			uint8_t end_flag = 0;
+			arch_ >> end_flag;
+			if (end_flag != 0x88)  // MRPT's SERIALIZATION_END_FLAG
+				throw FogIoError(where + ": end-of-object mark missing after its " + std::to_string(count) +
+								 " observations (corrupt object)");
+		}
+		return sf;
 	}
 
 	/** The common case, a CObservationFOG whose sensor pose is the last one read, decoded straight
@@ -301,7 +372,7 @@ class RawlogReaderImpl : public FogLogReader::Impl
 		{
 			while (!in_.atEnd())
 			{
-				auto obj = arch_.ReadObject();
+				auto obj = readCheckedObject(false, in_.position());
 				if (auto f = std::dynamic_pointer_cast<CObservationFOG>(obj)) counts[f->sensorLabel]++;
 			}
 		}
@@ -338,6 +409,7 @@ class RawlogReaderImpl : public FogLogReader::Impl
 	int64_t epoch_ticks_ = 0, last_ticks_ = 0;
 	std::optional<detail::SerializedPose> pose_;  // of the last FOG observation read by CArchive
 	std::vector<CObservationFOG::Ptr> spare_;  // consumed observations, reused by the fast path
+	static constexpr uint32_t kMaxFrameObservations = 1u << 20;  // observations in one sensory frame
 	static constexpr std::size_t kFastPeekBytes = 64 * 1024;  // a FOG object of 255 named thermistors fits
 };
 }  // namespace
