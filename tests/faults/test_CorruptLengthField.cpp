@@ -140,3 +140,15 @@ TEST(CorruptLengthField, SensoryFrameCountBounded)
 	EXPECT_EQ(refusedInChild(dataFile("sf_huge_n.rawlog"), {"4294967295 observations, more than the limit"}), 0)
 		<< "0 = FogIoError naming the file and the count; 1 = read; 2 = other message; 3 = other exception; else a crash";
 }
+
+// A valid MRPT observation class with a corrupt size: a CObservation3DRangeScan (written by MRPT
+// 2.5) whose range image claims 2147483647 x 2147483647 pixels. MRPT's matrix allocates through its
+// aligned allocator, which returns null, and writes through it: fog-convert died of SIGSEGV (exit
+// 139) before the fix. Only observation classes whose MRPT readers fail cleanly are read now.
+TEST(CorruptLengthField, ObservationClassWithUnsafeReaderRefusedUnread)
+{
+	EXPECT_EQ(refusedInChild(dataFile("corrupt_3d_range_image.rawlog"),
+							 {"object #0", "CObservation3DRangeScan", "rawlog-edit --keep-label"}),
+			  0)
+		<< "0 = FogIoError naming the file, the object, its class and the remedy; 1 = read; 2 = other message; 3 = other exception; else a crash";
+}

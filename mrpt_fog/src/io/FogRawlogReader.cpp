@@ -1,6 +1,10 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CObservationComment.h>
+#include <mrpt/obs/CObservationRobotPose.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CObservationRawDAQ.h>
+#include <mrpt/obs/CObservationIMU.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt_fog/io/FogLogIO.h>
@@ -77,15 +81,35 @@ ObjectHeader parseObjectHeader(const unsigned char* p, std::size_t n)
 	return h;
 }
 
+/** The observation classes this reader lets MRPT deserialise: their MRPT readers size what they
+ * allocate with std::vector or fixed members, so a corrupt length ends in std::bad_alloc, which is
+ * reported. Other classes are refused unread: several (CObservation3DRangeScan's range image,
+ * CObservation2DRangeScan's scan, CMatrixD) allocate through MRPT's aligned allocator, which returns
+ * null on failure, and MRPT then writes through it: a corrupt size crashes the program (SIGSEGV,
+ * found by fuzz_rawlog and by hand) instead of throwing. */
+const std::vector<const mrpt::rtti::TRuntimeClassId*>& readableObservationClasses()
+{
+	static const std::vector<const mrpt::rtti::TRuntimeClassId*> classes{
+		CLASS_ID(CObservationFOG),			   CLASS_ID(mrpt::obs::CObservationIMU),
+		CLASS_ID(mrpt::obs::CObservationRawDAQ), CLASS_ID(mrpt::obs::CObservationOdometry),
+		CLASS_ID(mrpt::obs::CObservationRobotPose), CLASS_ID(mrpt::obs::CObservationComment)};
+	return classes;
+}
+
+std::string readableClassList()
+{
+	std::string s;
+	for (const auto* c : readableObservationClasses()) s += (s.empty() ? "" : ", ") + std::string(c->className);
+	return s;
+}
+
 /** Whether objects of `c` may stand at the top level of a rawlog (observations-only or
- * sensory-frame format), or inside a sensory frame (observations only). Anything else is refused
- * before MRPT deserialises it: a corrupt file can name any registered class, and some (CMatrixD:
- * rows x cols from the file, MRPT's aligned allocator returning null on failure) crash inside
- * MRPT instead of throwing (found by fuzz_rawlog). */
+ * sensory-frame format), or inside a sensory frame (observations only). */
 bool allowedClass(const mrpt::rtti::TRuntimeClassId* c, bool nested)
 {
-	if (c->derivedFrom(CLASS_ID(mrpt::obs::CObservation))) return true;
-	return !nested && c->derivedFrom(CLASS_ID(mrpt::obs::CSensoryFrame));
+	for (const auto* r : readableObservationClasses())
+		if (c == r) return true;
+	return !nested && c == CLASS_ID(mrpt::obs::CSensoryFrame);
 }
 
 std::string labelList(const std::map<std::string, std::size_t>& counts)
@@ -228,11 +252,16 @@ class RawlogReaderImpl : public FogLogReader::Impl
 			if (h.cls->derivedFrom(CLASS_ID(mrpt::obs::CActionCollection)))
 				throw FogIoError(where + " is a CActionCollection: rawlogs with actions (sensory-frame format) are not "
 										 "supported; use the observations-only format (refused unread)");
-			throw FogIoError(where + (nested ? ": the sensory frame holds a " : " is a ") + h.cls->className +
-							 ", not an observation (refused unread: a rawlog holds observations" +
-							 (nested ? ")" : " or sensory frames of observations)"));
+			const std::string what = where + (nested ? ": the sensory frame holds a " : " is a ") + h.cls->className;
+			if (!h.cls->derivedFrom(CLASS_ID(mrpt::obs::CObservation)))
+				throw FogIoError(what + ", not an observation (refused unread: a rawlog holds observations" +
+								 (nested ? ")" : " or sensory frames of observations)"));
+			throw FogIoError(what + ": this reader lets MRPT read only " + readableClassList() +
+							 " (MRPT's readers of other classes can crash on a corrupt size instead of failing); "
+							 "keep the FOG's and those sensors' observations first, e.g. with MRPT's "
+							 "`rawlog-edit --keep-label FOG,ODOMETRY -i in.rawlog -o out.rawlog` (refused unread)");
 		}
-		if (h.cls && h.cls->derivedFrom(CLASS_ID(mrpt::obs::CSensoryFrame)))
+		if (h.cls == CLASS_ID(mrpt::obs::CSensoryFrame))
 		{
 			in_.consume(h.bytes);
 			return readSensoryFrameBody(h, offset);
