@@ -22,9 +22,7 @@ std::vector<double> absoluteTimes(const FogSeries& s)
 	return t;
 }
 
-namespace
-{
-std::optional<double> latitudeFrom(const FogSeries& s)
+std::optional<double> driveLatitude(const FogSeries& s)
 {
 	for (const char* key : {"latitude_deg", "device.latitude_deg"})
 	{
@@ -44,6 +42,8 @@ std::optional<double> latitudeFrom(const FogSeries& s)
 	return std::nullopt;
 }
 
+namespace
+{
 void shrinkToFit(FogSeries& s)
 {
 	s.time_s.shrink_to_fit();
@@ -105,7 +105,7 @@ DriveData readDrive(const std::string& path, const DriveLabels& labels,
 		throw FogIoError(path + ": sensor '" + d.fog.sensor_label + "': " + e.what());
 	}
 	if (d.fog.size() < 2) throw std::runtime_error(path + ": FOG '" + labels.fog + "' has fewer than 2 samples");
-	d.latitude_deg = latitudeFrom(d.fog);
+	d.latitude_deg = driveLatitude(d.fog);
 	if (!ideal.empty()) d.fog_ideal = ideal.take();
 	// Growth by doubling leaves up to half of each vector unused: give it back (issue 14).
 	shrinkToFit(d.fog);

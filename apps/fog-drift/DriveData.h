@@ -47,6 +47,10 @@ DriveData readDrive(const std::string& path, const DriveLabels& labels = {},
 					const std::function<void(std::uint64_t samples, std::uint64_t bytes_done, std::uint64_t bytes_total)>&
 						progress = {});
 
+/** The latitude [deg] in a series' metadata (latitude_deg, else device.latitude_deg), if any;
+ * throws std::runtime_error when the value is not a latitude. */
+std::optional<double> driveLatitude(const FogSeries& s);
+
 /** Absolute times [s] (epoch_s + time_s) of a series. */
 std::vector<double> absoluteTimes(const FogSeries& s);
 

@@ -2,6 +2,7 @@
 #include "DriveEvaluation.h"
 
 #include "Compensation.h"
+#include "StreamingDrive.h"
 #include "Progress.h"
 
 #include <mrpt_fog/model/CalibrationYaml.h>
@@ -18,8 +19,30 @@
 
 namespace mrpt_fog::drift
 {
+bool noteCalibrationEarthRate(DriveEvaluation& e, const DriveSettings& st, const Calibration& zcal)
+{
+	double cal_lat_deg = e.latitude_deg;
+	e.calibration_latitude_source = "drive";
+	if (st.cal_latitude_deg)
+	{
+		cal_lat_deg = *st.cal_latitude_deg;
+		e.calibration_latitude_source = "option";
+	}
+	else if (std::isfinite(zcal.latitude_deg))
+	{
+		cal_lat_deg = zcal.latitude_deg;
+		e.calibration_latitude_source = "calibration";
+	}
+	if (!(std::abs(cal_lat_deg) <= 90)) throw std::runtime_error("--cal-latitude-deg: must be within [-90, 90]");
+	const bool bias_holds_earth = !st.cal_no_earth_rate && zcal.earth_rate == EarthRateHandling::InBias;
+	if (bias_holds_earth) e.calibration_earth_rate_dph = units::kEarthRate_dph * std::sin(cal_lat_deg * units::kDegToRad);
+	return bias_holds_earth;
+}
+
 DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 {
+	if (canStream(st))
+		if (auto streamed = evaluateDriveStreaming(path, st)) return std::move(*streamed);
 	DriveEvaluation e;
 	e.input = path;
 	{
@@ -86,21 +109,7 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 	{
 		const Calibration* zcal = cals->forAxis(GyroAxis::Z);
 		if (!zcal) throw std::runtime_error(st.cal_path + ": axes: no calibration for axis z (the heading gyro)");
-		double cal_lat_deg = e.latitude_deg;
-		e.calibration_latitude_source = "drive";
-		if (st.cal_latitude_deg)
-		{
-			cal_lat_deg = *st.cal_latitude_deg;
-			e.calibration_latitude_source = "option";
-		}
-		else if (std::isfinite(zcal->latitude_deg))
-		{
-			cal_lat_deg = zcal->latitude_deg;
-			e.calibration_latitude_source = "calibration";
-		}
-		if (!(std::abs(cal_lat_deg) <= 90)) throw std::runtime_error("--cal-latitude-deg: must be within [-90, 90]");
-		const bool bias_holds_earth = !st.cal_no_earth_rate && zcal->earth_rate == EarthRateHandling::InBias;
-		if (bias_holds_earth) e.calibration_earth_rate_dph = units::kEarthRate_dph * std::sin(cal_lat_deg * units::kDegToRad);
+		const bool bias_holds_earth = noteCalibrationEarthRate(e, st, *zcal);
 		if (e.three_axis && bias_holds_earth)
 			throw std::runtime_error(st.cal_path +
 									 ": the bias holds the Earth rate of the calibration mount (earth_rate handling "

@@ -11,6 +11,7 @@
 #include "DriveData.h"
 #include "HeadingDeadReckoning.h"
 
+#include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog_nav/DriftReport.h>
 #include <mrpt_fog_nav/HeadingFigures.h>
 
@@ -41,6 +42,12 @@ struct DriveSettings
 	bool cal_no_earth_rate = false;  //!< the calibration's bias holds no Earth rate
 	bool screen_thermistors = true;
 	bool quiet = false;  //!< no progress line on stderr while a drive is read
+	/** The per-sample drift series (DriftReport's t_s, errors) are wanted (--csv): the drive is
+	 * held in memory. */
+	bool keep_series = false;
+	/** Hold the drive in memory even when nothing asks for it (--in-memory: the reference the
+	 * streaming evaluation is tested against). */
+	bool in_memory = false;
 	HeadingOptions heading;  //!< latitude_deg filled per drive
 	nav::HeadingFigureOptions figures;
 };
@@ -76,8 +83,15 @@ struct DriveEvaluation
 	std::map<std::string, std::array<double, 3>> rate_error_rms_dph;
 };
 
-/** Throws std::runtime_error naming the file on any problem. */
+/** Throws std::runtime_error naming the file on any problem. Streams the drive (StreamingDrive.h:
+ * memory that does not grow with it) when canStream(settings) and the FOG is single-axis; holds
+ * it in memory otherwise. */
 DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& settings);
+
+/** The vertical Earth rate the z calibration's bias holds at the calibration's latitude
+ * (option, file, else the drive's: e.latitude_deg) into e.calibration_earth_rate_dph and
+ * e.calibration_latitude_source; returns whether the bias holds it. */
+bool noteCalibrationEarthRate(DriveEvaluation& e, const DriveSettings& settings, const Calibration& zcal);
 
 /** Median, quartiles (linear interpolation between order statistics) and extremes. */
 struct Spread

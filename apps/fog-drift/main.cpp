@@ -142,6 +142,11 @@ int main(int argc, char** argv)
 								   "dropout, fallback model) before compensating",
 								   cmd);
 		TCLAP::SwitchArg quiet("q", "quiet", "no progress line on stderr while a drive is read", cmd);
+		TCLAP::SwitchArg in_memory("", "in-memory",
+								   "hold the whole drive in memory, as --csv, --plots, --odometry-out, "
+								   "--transport-rate and a triad FOG do (otherwise a single-axis drive is read twice "
+								   "and streamed: memory does not grow with the drive; the same figures)",
+								   cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-drift", kHelp)) return *rc;
 
 		drift::DriveSettings st;
@@ -155,6 +160,8 @@ int main(int argc, char** argv)
 		st.cal_no_earth_rate = cal_no_earth.getValue();
 		st.screen_thermistors = !no_screen.getValue();
 		st.quiet = quiet.getValue();
+		st.keep_series = !csv.getValue().empty();
+		st.in_memory = in_memory.getValue();
 		// The trajectories the outputs draw or write are kept; the others go once measured.
 		st.keep_trajectories = !plots.getValue().empty()  ? drift::KeptTrajectories::All
 							   : !odo_out.getValue().empty() ? drift::KeptTrajectories::ForOdometry

@@ -61,17 +61,21 @@ std::vector<OdometryIncrement> odometryFromPoses2D(const std::vector<double>& t_
 	std::vector<OdometryIncrement> out;
 	out.reserve(last > first ? last - first - 1 : 0);
 	for (std::size_t k = first + 1; k < last; ++k)
-	{
-		const double dx = x_m[k] - x_m[k - 1], dy = y_m[k] - y_m[k - 1];
-		const double dphi = wrapToPi(phi_rad[k] - phi_rad[k - 1]);
-		const double chord = std::hypot(dx, dy);
-		// Direction of travel relative to the body x axis at mid-interval.
-		const double mid = phi_rad[k - 1] + 0.5 * dphi;
-		const double along = dx * std::cos(mid) + dy * std::sin(mid);
-		const double arc = chord / sinc(0.5 * dphi);
-		out.push_back({t_s[k], along < 0 ? -arc : arc});
-	}
+		out.push_back(odometryIncrement2D(t_s[k], x_m[k - 1], y_m[k - 1], phi_rad[k - 1], x_m[k], y_m[k], phi_rad[k]));
 	return out;
+}
+
+OdometryIncrement odometryIncrement2D(double t1_s, double x0_m, double y0_m, double phi0_rad, double x1_m, double y1_m,
+									  double phi1_rad)
+{
+	const double dx = x1_m - x0_m, dy = y1_m - y0_m;
+	const double dphi = wrapToPi(phi1_rad - phi0_rad);
+	const double chord = std::hypot(dx, dy);
+	// Direction of travel relative to the body x axis at mid-interval.
+	const double mid = phi0_rad + 0.5 * dphi;
+	const double along = dx * std::cos(mid) + dy * std::sin(mid);
+	const double arc = chord / sinc(0.5 * dphi);
+	return {t1_s, along < 0 ? -arc : arc};
 }
 
 DeadReckoning2D::DeadReckoning2D(double t0_s, double x0_m, double y0_m)
@@ -83,6 +87,22 @@ DeadReckoning2D::DeadReckoning2D(double t0_s, double x0_m, double y0_m)
 	traj_.push_back(p);
 }
 
+TrajectoryPoint deadReckonStep2D(const TrajectoryPoint& last, const OdometryIncrement& inc, double yaw1_rad)
+{
+	checkIncrement(inc, last.t_s);
+	const double yaw0 = last.yaw_rad;
+	const double dpsi = wrapToPi(yaw1_rad - yaw0);
+	const double mid = yaw0 + 0.5 * dpsi;
+	const double chord = inc.distance_m * sinc(0.5 * dpsi);
+	TrajectoryPoint p;
+	p.t_s = inc.t_s;
+	p.x_m = last.x_m + chord * std::cos(mid);
+	p.y_m = last.y_m + chord * std::sin(mid);
+	p.yaw_rad = yaw1_rad;
+	p.q_nb = quatFromYawPitchRoll(yaw1_rad, 0, 0);
+	return p;
+}
+
 void DeadReckoning2D::add(const OdometryIncrement& inc, const AttitudeTrack& attitude)
 {
 	TrajectoryPoint& last = traj_.back();
@@ -92,18 +112,7 @@ void DeadReckoning2D::add(const OdometryIncrement& inc, const AttitudeTrack& att
 		last.q_nb = quatFromYawPitchRoll(attitude.yawAt(last.t_s), 0, 0);
 		last.yaw_rad = attitude.yawAt(last.t_s);
 	}
-	const double yaw0 = last.yaw_rad;
-	const double yaw1 = attitude.yawAt(inc.t_s);
-	const double dpsi = wrapToPi(yaw1 - yaw0);
-	const double mid = yaw0 + 0.5 * dpsi;
-	const double chord = inc.distance_m * sinc(0.5 * dpsi);
-	TrajectoryPoint p;
-	p.t_s = inc.t_s;
-	p.x_m = last.x_m + chord * std::cos(mid);
-	p.y_m = last.y_m + chord * std::sin(mid);
-	p.yaw_rad = yaw1;
-	p.q_nb = quatFromYawPitchRoll(yaw1, 0, 0);
-	traj_.push_back(p);
+	traj_.push_back(deadReckonStep2D(last, inc, attitude.yawAt(inc.t_s)));
 }
 
 DeadReckoning3D::DeadReckoning3D(double t0_s, const Eigen::Vector3d& p0_m)

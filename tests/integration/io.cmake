@@ -54,3 +54,10 @@ if(TARGET fog-calibrate)
     $<TARGET_FILE_DIR:fog-calibrate> ${FOG_SOURCE_DIR} ${io_work}/empty_model)
   set_tests_properties(io_calibrate_empty_model PROPERTIES LABELS "io;integration" TIMEOUT 300)
 endif()
+
+# fog-drift streams a single-axis drive; the figures must be those of --in-memory (issue 14).
+if(TARGET fog-sim AND TARGET fog-calibrate AND TARGET fog-drift)
+  add_test(NAME io_drift_streaming_equals_in_memory COMMAND bash ${io_scripts}/drift_streaming.sh
+    $<TARGET_FILE:fog-sim> $<TARGET_FILE:fog-calibrate> $<TARGET_FILE:fog-drift> ${FOG_SOURCE_DIR} ${io_work}/drift_streaming)
+  set_tests_properties(io_drift_streaming_equals_in_memory PROPERTIES LABELS "io;integration;nav" TIMEOUT 300)
+endif()

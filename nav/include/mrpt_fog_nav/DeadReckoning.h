@@ -43,6 +43,17 @@ std::vector<OdometryIncrement> odometryFromPoses2D(const std::vector<double>& t_
 												   const std::vector<double>& y_m, const std::vector<double>& phi_rad,
 												   std::size_t first, std::size_t last);
 
+/** The increment between two consecutive poses (t0, x0, y0, phi0) -> (t1, x1, y1, phi1), as
+ * odometryFromPoses2D computes each one. */
+OdometryIncrement odometryIncrement2D(double t1_s, double x0_m, double y0_m, double phi0_rad, double x1_m, double y1_m,
+									  double phi1_rad);
+
+/** One step of planar dead reckoning: from `last` (its yaw_rad is the heading at last.t_s)
+ * by `inc` to the heading yaw1_rad at inc.t_s (what DeadReckoning2D::add does; also for a
+ * caller that keeps only the last point: fog-drift's streaming evaluation, issue 14). Throws
+ * std::invalid_argument on a non-finite increment or a time that does not follow last.t_s. */
+TrajectoryPoint deadReckonStep2D(const TrajectoryPoint& last, const OdometryIncrement& inc, double yaw1_rad);
+
 /** Planar dead reckoning (z = 0): heading from the attitude track's yaw. */
 class DeadReckoning2D
 {

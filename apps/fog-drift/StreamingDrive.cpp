@@ -1,0 +1,909 @@
+/* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
+#include "StreamingDrive.h"
+
+#include "Progress.h"
+#include "RangeWarning.h"
+#include "ThermistorScreeningReport.h"
+
+#include <mrpt/core/Clock.h>
+#include <mrpt/core/bits_math.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CObservationRobotPose.h>
+#include <mrpt_fog/io/FogLogIO.h>
+#include <mrpt_fog/io/FogLogReader.h>
+#include <mrpt_fog/model/CalibrationYaml.h>
+#include <mrpt_fog/model/Compensator.h>
+#include <mrpt_fog/model/ThermistorHealth.h>
+#include <mrpt_fog/obs/CObservationFOG.h>
+#include <mrpt_fog/obs/Units.h>
+#include <mrpt_fog_nav/DeadReckoning.h>
+#include <mrpt_fog_nav/Rotation.h>
+#include <mrpt_fog_nav/StrapdownAttitude.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <deque>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <tuple>
+
+namespace mrpt_fog::drift
+{
+namespace
+{
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kRadToDeg = 180.0 / M_PI;  // as nav/HeadingFigures.cpp
+
+/** First and last value of a stream and its length. */
+struct Ends
+{
+	double first = kNaN, last = kNaN;
+	std::size_t n = 0;
+	void add(double t)
+	{
+		if (n == 0) first = t;
+		last = t;
+		n++;
+	}
+};
+
+/** A truth pose as readDrive() stores it. */
+nav::TrajectoryPoint truthPoint(const mrpt::obs::CObservationRobotPose& gt)
+{
+	nav::TrajectoryPoint p;
+	p.t_s = mrpt::Clock::toDouble(gt.timestamp);
+	const mrpt::poses::CPose3D& m = gt.pose.mean;
+	p.x_m = m.x();
+	p.y_m = m.y();
+	p.z_m = m.z();
+	p.yaw_rad = m.yaw();
+	p.q_nb = nav::quatFromYawPitchRoll(m.yaw(), m.pitch(), m.roll());
+	return p;
+}
+
+/** A turn with the unwrapped truth yaw [deg] at its ends. */
+struct TurnSpan
+{
+	double t0_s = 0, t1_s = 0, yaw0_deg = 0, yaw1_deg = 0;
+};
+
+/** nav::segmentDrive() over a stream of truth poses, with the truth yaw at the turns' ends
+ * (computeHeadingFigures' heading change of each turn: the ends are truth samples). */
+class StreamSegmenter
+{
+   public:
+	explicit StreamSegmenter(const nav::HeadingFigureOptions& o) : o_(o), h_(0.5 * o.smooth_s) {}
+
+	void add(double t, double yaw_rad)
+	{
+		if (n_ == 0) front_yaw_rad_ = yaw_rad;
+		else acc_ += std::remainder(yaw_rad - prev_yaw_rad_, 2 * M_PI);
+		prev_yaw_rad_ = yaw_rad;
+		const double y = (front_yaw_rad_ + acc_) * kRadToDeg;
+		if (n_ == 0) t_front_ = t, y_front_ = y;
+		n_++;
+		win_.push_back({t, y});
+		// the smoothed rate of every point whose window (t + h) is now passed
+		while (next_ < base_ + win_.size() && win_.back().first > at(next_).first + h_) rateOf(next_++, false);
+	}
+
+	/** The segments (empty below 3 poses) and the turns' end yaws. */
+	void finish(nav::DriveSegments& seg, std::vector<TurnSpan>& turns)
+	{
+		if (n_ > 0)
+		{
+			while (next_ < base_ + win_.size()) rateOf(next_++, true);
+			closeRun();
+			for (auto& p : pending_) p.t1_s = win_.back().first, p.yaw1_deg = win_.back().second;
+			for (auto& p : pending_) turns_.push_back(p);
+			pending_.clear();
+		}
+		seg = {};
+		turns.clear();
+		if (n_ < 3) return;
+		seg.straights = straights_;
+		for (const auto& tr : turns_)  // merge turns that now overlap (segmentDrive)
+		{
+			if (!turns.empty() && tr.t0_s <= turns.back().t1_s)
+			{
+				if (tr.t1_s > turns.back().t1_s) turns.back().t1_s = tr.t1_s, turns.back().yaw1_deg = tr.yaw1_deg;
+			}
+			else
+				turns.push_back(tr);
+		}
+		for (const auto& tr : turns) seg.turns.push_back({tr.t0_s, tr.t1_s});
+	}
+
+   private:
+	const std::pair<double, double>& at(std::size_t i) const { return win_[i - base_]; }
+
+	/** HeadingFigures.cpp's interpAt on the window (x inside the window's reach). */
+	double interp(double x, bool done) const
+	{
+		if (x <= t_front_) return y_front_;
+		if (done && x >= win_.back().first) return win_.back().second;
+		const auto it = std::upper_bound(win_.begin(), win_.end(), x,
+										 [](double v, const std::pair<double, double>& p) { return v < p.first; });
+		const auto& b = *it;
+		const auto& a = *(it - 1);
+		const double f = (x - a.first) / (b.first - a.first);
+		return a.second + f * (b.second - a.second);
+	}
+
+	void rateOf(std::size_t i, bool done)
+	{
+		const auto [t, y] = at(i);
+		const double a = std::max(t_front_, t - h_), b = done ? std::min(win_.back().first, t + h_) : t + h_;
+		const double rate = b > a ? (interp(b, done) - interp(a, done)) / (b - a) : 0.0;
+		classify(t, y, rate);
+		// drop what no later window reaches (the last point <= the next a stays)
+		if (!done)
+			while (win_.size() > 2 && next_ + 1 < base_ + win_.size() && win_[1].first <= at(next_ + 1).first - h_)
+			{
+				win_.pop_front();
+				base_++;
+			}
+	}
+
+	void classify(double t, double y, double rate)
+	{
+		const double r = std::abs(rate);
+		const bool turn = r > o_.turn_rate_dps, straight = r < o_.straight_rate_dps;
+		if (!in_run_ || turn != run_turn_ || straight != run_straight_)
+		{
+			closeRun();
+			in_run_ = true;
+			run_turn_ = turn, run_straight_ = straight;
+			run_t0_ = t;
+			// a turn starts at the last quiet instant before it (else at the first pose)
+			run_ext_t0_ = have_quiet_ ? quiet_t_ : t_front_;
+			run_ext_y0_ = have_quiet_ ? quiet_y_ : y_front_;
+		}
+		run_t1_ = t;
+		if (!(r >= o_.straight_rate_dps))  // quiet: ends the turns waiting for their end
+		{
+			for (auto& p : pending_) p.t1_s = t, p.yaw1_deg = y;
+			for (auto& p : pending_) turns_.push_back(p);
+			pending_.clear();
+			have_quiet_ = true, quiet_t_ = t, quiet_y_ = y;
+		}
+	}
+
+	void closeRun()
+	{
+		if (!in_run_) return;
+		if (run_turn_ && run_t1_ > run_t0_)
+			pending_.push_back({run_ext_t0_, kNaN, run_ext_y0_, kNaN});
+		else if (run_straight_ && run_t1_ - run_t0_ - 2 * o_.margin_s >= o_.min_straight_s)
+			straights_.push_back({run_t0_ + o_.margin_s, run_t1_ - o_.margin_s});
+		in_run_ = false;
+	}
+
+	nav::HeadingFigureOptions o_;
+	double h_;
+	std::size_t n_ = 0, base_ = 0, next_ = 0;
+	double front_yaw_rad_ = 0, prev_yaw_rad_ = 0, acc_ = 0, t_front_ = 0, y_front_ = 0;
+	std::deque<std::pair<double, double>> win_;  //!< (t, unwrapped yaw [deg]) still needed
+	bool in_run_ = false, run_turn_ = false, run_straight_ = false;
+	double run_t0_ = 0, run_t1_ = 0, run_ext_t0_ = 0, run_ext_y0_ = 0;
+	bool have_quiet_ = false;
+	double quiet_t_ = 0, quiet_y_ = 0;
+	std::vector<TurnSpan> pending_, turns_;
+	std::vector<nav::DriveSegments::Span> straights_;
+};
+
+/** computeDriftReport's summary and computeHeadingFigures of one variant, summed over its
+ * heading / position errors at the truth times as they come (same order, same arithmetic). */
+class FigureAccumulator
+{
+   public:
+	FigureAccumulator(const nav::DriveSegments& seg, const std::vector<TurnSpan>& turns) : seg_(seg), turns_(turns)
+	{
+		for (const auto& tr : turns) queries_.push_back(tr.t0_s), queries_.push_back(tr.t1_s);
+		at_query_.assign(queries_.size(), kNaN);
+	}
+
+	void add(double t, double e_deg, double pos_m)
+	{
+		// computeDriftReport
+		s_.heading_error_max_deg = std::max(s_.heading_error_max_deg, std::abs(e_deg));
+		s_.position_error_max_m = std::max(s_.position_error_max_m, pos_m);
+		last_e_ = e_deg, last_pos_ = pos_m;
+		// computeHeadingFigures: RMS and max
+		ss_ += e_deg * e_deg;
+		f_.heading_error_max_deg = std::max(f_.heading_error_max_deg, std::abs(e_deg));
+		// the straight it is in (straights are disjoint and in time order)
+		while (straight_ < seg_.straights.size() && t > seg_.straights[straight_].t1_s) closeStraight();
+		if (straight_ < seg_.straights.size() && t >= seg_.straights[straight_].t0_s) in_straight_.push_back({t, e_deg});
+		// the error at the turns' ends (interpAt: the first sample after x and the one before)
+		while (q_ < queries_.size() && queries_[q_] < t)
+		{
+			const double x = queries_[q_];
+			at_query_[q_++] = n_ == 0 ? e_deg : prev_e_ + ((x - prev_t_) / (t - prev_t_)) * (e_deg - prev_e_);
+		}
+		if (n_ == 0) first_t_ = t;
+		prev_t_ = t, prev_e_ = e_deg;
+		n_++;
+	}
+
+	std::size_t size() const { return n_; }
+
+	void finish(const std::string& name, double distance_m, nav::DriftSeries& s, nav::HeadingFigures& f)
+	{
+		if (n_ == 0)
+			throw std::invalid_argument("computeDriftReport: variant '" + name + "' does not overlap the truth in time");
+		s_.name = name;
+		s_.heading_error_final_signed_deg = last_e_;
+		s_.heading_error_final_deg = std::abs(last_e_);
+		s_.position_error_final_m = last_pos_;
+		if (distance_m > 0)
+		{
+			s_.position_error_final_pct = 100.0 * s_.position_error_final_m / distance_m;
+			s_.position_error_max_pct = 100.0 * s_.position_error_max_m / distance_m;
+		}
+		s = std::move(s_);
+		if (n_ < 2) throw std::invalid_argument("computeHeadingFigures: need >= 2 error samples with times");
+		while (straight_ < seg_.straights.size()) closeStraight();
+		while (q_ < queries_.size()) at_query_[q_++] = prev_e_;  // x >= the last time
+		f_.heading_error_rms_deg = std::sqrt(ss_ / static_cast<double>(n_));
+		f_.heading_error_final_deg = std::abs(prev_e_);
+		const double drift_dps = sxx_ > 0 ? sxy_ / sxx_ : kNaN;
+		f_.heading_drift_between_turns_dph = drift_dps * 3600.0;
+		double sab = 0, saa = 0;
+		for (std::size_t i = 0; i < turns_.size(); i++)
+		{
+			const TurnSpan& tr = turns_[i];
+			if (tr.t0_s < first_t_ || tr.t1_s > prev_t_) continue;
+			const double dpsi = tr.yaw1_deg - tr.yaw0_deg;
+			double de = at_query_[2 * i + 1] - at_query_[2 * i];
+			if (std::isfinite(drift_dps)) de -= drift_dps * (tr.t1_s - tr.t0_s);
+			sab += de * dpsi;
+			saa += dpsi * dpsi;
+			f_.turns++;
+			f_.turned_deg += std::abs(dpsi);
+		}
+		f_.turn_scale_factor_ppm = saa > 0 ? 1e6 * sab / saa : kNaN;
+		f = f_;
+	}
+
+   private:
+	void closeStraight()
+	{
+		const auto& s = seg_.straights[straight_++];
+		double st = 0, se = 0;
+		for (const auto& [t, e] : in_straight_) st += t, se += e;
+		const std::size_t m = in_straight_.size();
+		if (m >= 3)
+		{
+			const double tm = st / static_cast<double>(m), em = se / static_cast<double>(m);
+			for (const auto& [t, e] : in_straight_)
+			{
+				sxy_ += (t - tm) * (e - em);
+				sxx_ += (t - tm) * (t - tm);
+			}
+			f_.straights++;
+			f_.straight_time_s += s.t1_s - s.t0_s;
+		}
+		in_straight_.clear();
+	}
+
+	const nav::DriveSegments& seg_;
+	const std::vector<TurnSpan>& turns_;
+	nav::DriftSeries s_;
+	nav::HeadingFigures f_;
+	double last_e_ = 0, last_pos_ = 0, ss_ = 0, sxy_ = 0, sxx_ = 0;
+	std::size_t n_ = 0, straight_ = 0, q_ = 0;
+	double first_t_ = 0, prev_t_ = 0, prev_e_ = 0;
+	std::vector<std::pair<double, double>> in_straight_;  //!< (t, error) of the current straight
+	std::vector<double> queries_, at_query_;
+};
+
+/** What pass 1 found. */
+struct DriveScan
+{
+	FogSeries header;  //!< label, epoch, axes, metadata, thermistors; no samples
+	Ends fog, ideal, odometry, truth;
+	bool ideal_has_z = true;
+	std::string ideal_label;
+	double distance_m = 0;
+	nav::DriveSegments segments;
+	std::vector<TurnSpan> turns;
+};
+
+/** A queue with global indices: the samples not yet needed by no one. */
+template <class T>
+struct IndexedQueue
+{
+	std::deque<T> q;
+	std::size_t base = 0;  //!< global index of q.front()
+	bool done = false;  //!< the stream has ended
+	std::size_t end() const { return base + q.size(); }
+	const T& at(std::size_t i) const { return q[i - base]; }
+	void dropBefore(std::size_t i)
+	{
+		while (base < i && !q.empty()) q.pop_front(), base++;
+	}
+};
+
+struct OdoPose
+{
+	double t_s, x_m, y_m, phi_rad;
+};
+
+/** One gyro variant: attitude -> dead reckoning -> errors at the truth times -> figures. */
+class VariantStream
+{
+   public:
+	VariantStream(std::string name, double t0, double t_end, const HeadingOptions& hopt, const DriveScan& scan)
+		: name_(std::move(name)), t0_(t0), t_end_(t_end), hopt_(hopt), acc_(scan.segments, scan.turns)
+	{
+		nav::StrapdownOptions so;
+		so.latitude_rad = hopt.latitude_deg * units::kDegToRad;
+		so.use_transport_rate = false;
+		so.sampling = hopt.sampling;
+		att_ = std::make_unique<nav::StrapdownAttitude>(so, nav::StrapdownAttitude::Mode::VerticalOnly);
+	}
+
+	/** Sample k of the variant's gyro: absolute time [s], vertical rate [deg/h]. */
+	void addGyro(double t, double rate_dph, std::size_t k)
+	{
+		if (!gyro_stopped_) gyro_.push_back({t, rate_dph, k});
+	}
+	void gyroDone() { gyro_done_ = true; }
+
+	/** Advances as far as the data allow. */
+	void pump(const IndexedQueue<nav::TrajectoryPoint>& truth, const IndexedQueue<OdoPose>& odo)
+	{
+		if (!initialised_)
+		{
+			if (!truthReady(truth, t0_)) return;
+			const nav::TrajectoryPoint start = interpolateTruth(truth, t0_);
+			att_->initialize(t0_, nav::quatFromYawPitchRoll(start.yaw_rad, 0, 0));
+			track_.push_back({t0_, att_->attitude()});
+			initialised_ = true;
+		}
+		integrate();
+		deadReckon(truth, odo);
+		compare(truth);
+	}
+
+	bool done() const { return compared_all_; }
+	/** Truth and odometry indices this variant still needs (its lower bounds). */
+	std::size_t truthNeeded() const { return initialised_ && dr_started_ ? next_truth_ : 0; }
+	std::size_t odoNeeded() const { return next_odo_ > 0 ? next_odo_ - 1 : 0; }
+
+	void finish(double distance_m, nav::DriftSeries& s, nav::HeadingFigures& f) { acc_.finish(name_, distance_m, s, f); }
+
+   private:
+	struct Att
+	{
+		double t;
+		Eigen::Quaterniond q;
+	};
+
+	static bool truthReady(const IndexedQueue<nav::TrajectoryPoint>& truth, double t)
+	{
+		return truth.done || (!truth.q.empty() && truth.q.back().t_s > t);
+	}
+
+	/** nav::interpolate(truth, t) on the truth still held (the same bracket). */
+	nav::TrajectoryPoint interpolateTruth(const IndexedQueue<nav::TrajectoryPoint>& truth, double t)
+	{
+		return interpolateIn(truth.q, t);
+	}
+
+	/** nav::interpolate on the two points the whole trajectory would bracket t with. */
+	template <class Q>
+	nav::TrajectoryPoint interpolateIn(const Q& q, double t)
+	{
+		if (q.empty()) throw std::out_of_range("interpolate(trajectory): empty");
+		auto it = std::upper_bound(q.begin(), q.end(), t, [](double v, const nav::TrajectoryPoint& p) { return v < p.t_s; });
+		if (q.size() == 1) pair_.assign(1, q.front());
+		else
+		{
+			if (it == q.end()) --it;
+			if (it == q.begin()) throw std::out_of_range("interpolate(trajectory): time before the poses held");
+			pair_.assign(it - 1, it + 1);
+		}
+		return nav::interpolate(pair_, t);
+	}
+
+	void integrate()
+	{
+		while (!gyro_.empty())
+		{
+			const auto [t, rate, k] = gyro_.front();
+			gyro_.pop_front();
+			if (t < t0_ || (t == t0_ && hopt_.sampling == nav::RateSampling::IntervalAverage)) continue;
+			if (t > t_end_)
+			{
+				gyro_stopped_ = true;
+				gyro_.clear();
+				break;
+			}
+			if (!std::isfinite(rate))
+				throw std::runtime_error("gyro rate is not finite at sample " + std::to_string(k) + " (t = " +
+										 std::to_string(t) +
+										 " s; a heading cannot be integrated while the gyro is off)");
+			const double w = rate * units::kDegPerHourToRadPerSec;
+			att_->updateRateZ(t, w, Eigen::Vector3d::Zero());
+			if (t > track_.back().t) track_.push_back({t, att_->attitude()});
+		}
+	}
+
+	bool trackFinal() const { return gyro_stopped_ || gyro_done_; }
+
+	/** AttitudeTrack::yawAt(t) on the attitudes still held (the same bracket); drops the
+	 * attitudes before it. */
+	double yawAt(double t)
+	{
+		std::size_t i1;
+		if (track_.size() == 1) return nav::yawOf(track_.front().q);
+		auto it = std::upper_bound(track_.begin(), track_.end(), t, [](double v, const Att& a) { return v < a.t; });
+		i1 = it == track_.end() ? track_.size() - 1 : static_cast<std::size_t>(it - track_.begin());
+		if (i1 == 0) throw std::out_of_range("AttitudeTrack::at: time before the attitudes held");
+		const std::size_t i0 = i1 - 1;
+		const double f = (t - track_[i0].t) / (track_[i1].t - track_[i0].t);
+		const double yaw = nav::yawOf(track_[i0].q.slerp(f, track_[i1].q));
+		for (std::size_t k = 0; k < i0; k++) track_.pop_front();
+		return yaw;
+	}
+
+	/** Whether the attitude at t is final (a later attitude exists, or there will be none). */
+	bool attitudeReady(double t) const { return track_.back().t > t || trackFinal(); }
+
+	void deadReckon(const IndexedQueue<nav::TrajectoryPoint>& truth, const IndexedQueue<OdoPose>& odo)
+	{
+		while (!dr_done_)
+		{
+			if (next_odo_ < odo.base) next_odo_ = odo.base;  // (never: the queue keeps what is needed)
+			if (next_odo_ >= odo.end())
+			{
+				if (odo.done) finishDeadReckoning();
+				return;
+			}
+			const OdoPose& o = odo.at(next_odo_);
+			if (!dr_started_)
+			{
+				if (o.t_s < t0_)  // lower_bound(t0)
+				{
+					next_odo_++;
+					continue;
+				}
+				if (!truthReady(truth, o.t_s) || !attitudeReady(o.t_s)) return;
+				if (!(o.t_s <= track_.back().t))  // not inside the attitude track
+				{
+					finishDeadReckoning();
+					return;
+				}
+				const nav::TrajectoryPoint p0 = interpolateTruth(truth, o.t_s);
+				last_ = nav::TrajectoryPoint{};
+				last_.t_s = o.t_s;
+				last_.x_m = p0.x_m;
+				last_.y_m = p0.y_m;
+				first_pending_ = true;
+				dr_started_ = true;
+				dr_points_ = 1;
+				next_truth_ = truth.base;
+				prev_odo_ = o;
+				next_odo_++;
+				continue;
+			}
+			if (!attitudeReady(o.t_s)) return;
+			if (!(o.t_s <= track_.back().t))
+			{
+				finishDeadReckoning();
+				return;
+			}
+			const nav::OdometryIncrement inc =
+				nav::odometryIncrement2D(o.t_s, prev_odo_.x_m, prev_odo_.y_m, prev_odo_.phi_rad, o.x_m, o.y_m, o.phi_rad);
+			if (first_pending_)  // DeadReckoning2D::add's first step: the start's heading
+			{
+				if (!std::isfinite(inc.t_s) || !std::isfinite(inc.distance_m) || !(inc.t_s > last_.t_s))
+					(void)nav::deadReckonStep2D(last_, inc, 0.0);  // throws its message
+				last_.yaw_rad = yawAt(last_.t_s);
+				last_.q_nb = nav::quatFromYawPitchRoll(last_.yaw_rad, 0, 0);
+				traj_.push_back(last_);
+				traj_front_t_ = last_.t_s;
+				first_pending_ = false;
+			}
+			last_ = nav::deadReckonStep2D(last_, inc, yawAt(inc.t_s));
+			traj_.push_back(last_);
+			dr_points_++;
+			prev_odo_ = o;
+			next_odo_++;
+		}
+	}
+
+	void finishDeadReckoning()
+	{
+		if (dr_done_) return;
+		if (dr_points_ < 2) throw std::runtime_error("fewer than 2 odometry samples inside the gyro's time span");
+		dr_done_ = true;
+	}
+
+	/** computeDriftReport: each truth pose inside the trajectory's span, the trajectory
+	 * interpolated there. */
+	void compare(const IndexedQueue<nav::TrajectoryPoint>& truth)
+	{
+		if (!dr_started_ || compared_all_ || traj_.empty()) return;
+		while (next_truth_ < truth.end())
+		{
+			const nav::TrajectoryPoint& gt = truth.at(next_truth_);
+			if (gt.t_s < traj_front_t_)
+			{
+				next_truth_++;
+				continue;
+			}
+			if (!(traj_.back().t_s > gt.t_s))
+			{
+				if (!dr_done_) return;
+				if (gt.t_s > traj_.back().t_s)
+				{
+					compared_all_ = true;  // the later poses are outside the span too
+					return;
+				}
+			}
+			const nav::TrajectoryPoint p = interpolateIn(traj_, gt.t_s);
+			// drop the trajectory before the bracket
+			while (traj_.size() > 2 && traj_[1].t_s <= gt.t_s) traj_.pop_front();
+			const double dpsi_deg = mrpt::RAD2DEG(nav::wrapToPi(p.yaw_rad - gt.yaw_rad));
+			const double dpos =
+				std::sqrt(std::pow(p.x_m - gt.x_m, 2) + std::pow(p.y_m - gt.y_m, 2) + std::pow(p.z_m - gt.z_m, 2));
+			acc_.add(gt.t_s, dpsi_deg, dpos);
+			next_truth_++;
+		}
+		if (truth.done && dr_done_) compared_all_ = true;
+	}
+
+	std::string name_;
+	double t0_, t_end_;
+	HeadingOptions hopt_;
+	FigureAccumulator acc_;
+	std::unique_ptr<nav::StrapdownAttitude> att_;
+	std::deque<std::tuple<double, double, std::size_t>> gyro_;
+	std::deque<Att> track_;
+	std::deque<nav::TrajectoryPoint> traj_;
+	nav::Trajectory pair_;
+	nav::TrajectoryPoint last_;
+	OdoPose prev_odo_{};
+	bool initialised_ = false, gyro_stopped_ = false, gyro_done_ = false;
+	bool dr_started_ = false, dr_done_ = false, first_pending_ = false, compared_all_ = false;
+	std::size_t next_odo_ = 0, next_truth_ = 0, dr_points_ = 0;
+	double traj_front_t_ = 0;  //!< the trajectory's first time (traj_ keeps its tail)
+};
+
+/** readDrive()'s handling of the other observations (odometry and truth: a repeated or earlier
+ * time skipped), for both passes. */
+struct OtherObservations
+{
+	const DriveLabels& labels;
+	std::function<void(const CObservationFOG&)> on_ideal;
+	std::function<void(const OdoPose&)> on_odometry;
+	std::function<void(const nav::TrajectoryPoint&)> on_truth;
+	double last_odo_t = kNaN, last_truth_t = kNaN;
+	bool any_odo = false, any_truth = false;
+
+	void operator()(const mrpt::obs::CObservation::Ptr& o)
+	{
+		if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o); f && o->sensorLabel == labels.fog_ideal)
+			on_ideal(*f);
+		else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(o);
+				 odo && o->sensorLabel == labels.odometry)
+		{
+			const double t = mrpt::Clock::toDouble(o->timestamp);
+			if (any_odo && !(t > last_odo_t)) return;
+			any_odo = true, last_odo_t = t;
+			on_odometry({t, odo->odometry.x(), odo->odometry.y(), odo->odometry.phi()});
+		}
+		else if (auto gt = std::dynamic_pointer_cast<mrpt::obs::CObservationRobotPose>(o); gt && o->sensorLabel == labels.truth)
+		{
+			const double t = mrpt::Clock::toDouble(o->timestamp);
+			if (any_truth && !(t > last_truth_t)) return;
+			any_truth = true, last_truth_t = t;
+			on_truth(truthPoint(*gt));
+		}
+	}
+};
+
+/** FogSeries::validate()'s per-sample checks on one FOG sample. */
+void checkFogSample(const FogSeries& h, const FogSample& x, std::size_t k, bool has_power)
+{
+	for (int a = 0; a < 3; a++)
+	{
+		if (!h.has_axis[a]) continue;
+		const double r = x.rate_dph[a];
+		if (!std::isfinite(r) && !(std::isnan(r) && has_power && x.power == 0.0))
+			throw std::invalid_argument(std::string("FOG series: non-finite rate_") + "xyz"[a] + "_dph at sample " +
+										std::to_string(k) +
+										(std::isnan(r) ? " (a missing rate is allowed only where power is 0)" : ""));
+	}
+	for (std::size_t i = 0; i < x.temp_C.size(); i++)
+		if (std::isinf(x.temp_C[i]))
+			throw std::invalid_argument("FOG series: infinite temp_" + h.thermistors[i].name + "_C at sample " +
+										std::to_string(k));
+}
+
+/** The ideal FOG's layout check (FogSeriesBuilder's) and its absolute times. */
+struct IdealTimes
+{
+	std::string label;
+	double epoch_s = 0;
+	std::size_t n = 0;
+	std::vector<ThermistorInfo> th;
+	std::array<bool, 3> axes{};
+	bool table = false, field = false, power = false;
+	/** Absolute time of the observation as absoluteTimes(readDrive(...).fog_ideal) gives it. */
+	double add(const CObservationFOG& o)
+	{
+		if (n == 0)
+		{
+			label = o.sensorLabel;
+			th = o.thermistors;
+			axes = o.hasAxis;
+			table = o.hasTableRate, field = o.hasField, power = o.hasPower;
+			epoch_s = std::floor(mrpt::Clock::toDouble(o.timestamp));
+		}
+		else if (o.thermistors != th || o.hasAxis != axes || o.hasTableRate != table || o.hasField != field ||
+				 o.hasPower != power)
+			throw std::invalid_argument("FOG observation " + std::to_string(n) + " (sensor '" + o.sensorLabel +
+										"') has a different layout than the first one");
+		n++;
+		return epoch_s + (mrpt::Clock::toDouble(o.timestamp) - epoch_s);
+	}
+};
+
+}  // namespace
+
+bool canStream(const DriveSettings& st)
+{
+	return st.keep_trajectories == KeptTrajectories::None && !st.keep_series && !st.heading.transport_rate && !st.in_memory;
+}
+
+std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, const DriveSettings& st)
+{
+	const DriveLabels labels;
+	DriveScan scan;
+	// ---- pass 1: ends, path length, segments
+	{
+		StreamSegmenter seg(st.figures);
+		IdealTimes ideal;
+		nav::TrajectoryPoint prev_truth;
+		OtherObservations others{labels, {}, {}, {}};
+		others.on_ideal = [&](const CObservationFOG& o) {
+			scan.ideal.add(ideal.add(o));
+			scan.ideal_has_z = ideal.axes[2];
+			scan.ideal_label = ideal.label;
+		};
+		others.on_odometry = [&](const OdoPose& p) {
+			if (!std::isfinite(p.t_s))
+				throw std::invalid_argument("odometryFromPoses2D: time not increasing at sample " +
+											std::to_string(scan.odometry.n));
+			scan.odometry.add(p.t_s);
+		};
+		others.on_truth = [&](const nav::TrajectoryPoint& p) {
+			if (scan.truth.n > 0)
+				scan.distance_m += std::sqrt(std::pow(p.x_m - prev_truth.x_m, 2) + std::pow(p.y_m - prev_truth.y_m, 2) +
+											 std::pow(p.z_m - prev_truth.z_m, 2));
+			prev_truth = p;
+			scan.truth.add(p.t_s);
+			seg.add(p.t_s, p.yaw_rad);
+		};
+		app::Progress progress("fog-drift: reading " + path + " (1/2)", st.quiet);
+		const FogLogReader* reading = nullptr;
+		FogLogReader reader(path, labels.fog, ReadLimits{}, [&](const mrpt::obs::CObservation::Ptr& o) {
+			if (reading) progress.update(reading->samplesRead(), reading->fileBytesRead(), reading->fileBytes());
+			others(o);
+		});
+		reading = &reader;
+		const FogSeries& h = reader.header();
+		if (h.has_axis[0] && h.has_axis[1] && h.has_axis[2]) return std::nullopt;  // a triad: evaluateDrive()
+		FogSample x;
+		try
+		{
+			if (!h.has_axis[0] && !h.has_axis[1] && !h.has_axis[2])
+				throw std::invalid_argument("FOG series: no sensitive axis present");
+			const bool has_power = reader.hasPower();
+			while (reader.next(x))
+			{
+				checkFogSample(h, x, scan.fog.n, has_power);
+				scan.fog.add(h.epoch_s + x.time_s);
+			}
+		}
+		catch (const FogIoError&)
+		{
+			throw;
+		}
+		catch (const std::invalid_argument& e)
+		{
+			throw FogIoError(path + ": sensor '" + h.sensor_label + "': " + e.what());
+		}
+		scan.header = h;
+		seg.finish(scan.segments, scan.turns);
+	}
+	if (scan.fog.n < 2) throw std::runtime_error(path + ": FOG '" + labels.fog + "' has fewer than 2 samples");
+
+	DriveEvaluation e;
+	e.input = path;
+	e.drive.latitude_deg = driveLatitude(scan.header);
+	if (scan.odometry.n < 2)
+		throw std::runtime_error(path + ": fewer than 2 CObservationOdometry with label '" + labels.odometry + "'");
+	if (scan.truth.n < 2)
+		throw std::runtime_error(path + ": fewer than 2 CObservationRobotPose with label '" + labels.truth + "'");
+	if (st.latitude_deg) e.latitude_deg = *st.latitude_deg;
+	else if (e.drive.latitude_deg) e.latitude_deg = *e.drive.latitude_deg;
+	else throw std::runtime_error(path + ": no latitude_deg in the metadata; give --latitude-deg");
+	if (!(std::abs(e.latitude_deg) <= 90)) throw std::runtime_error("--latitude-deg: must be within [-90, 90]");
+	HeadingOptions hopt = st.heading;
+	hopt.latitude_deg = e.latitude_deg;
+	const FogSeries& h = scan.header;
+
+	std::optional<CalibrationSet> cals;
+	const Calibration* zcal = nullptr;
+	if (!st.cal_path.empty())
+	{
+		cals = loadCalibrationSet(st.cal_path);
+		zcal = cals->forAxis(GyroAxis::Z);
+		if (!zcal) throw std::runtime_error(st.cal_path + ": axes: no calibration for axis z (the heading gyro)");
+		noteCalibrationEarthRate(e, st, *zcal);
+	}
+	if (!h.has_axis[2])
+		throw std::runtime_error(path + ": FOG '" + h.sensor_label +
+								 "' has no z (vertical) axis; fog-drift integrates the vertical gyro");
+	if (scan.ideal.n > 0 && !scan.ideal_has_z)
+		throw std::runtime_error(path + ": FOG '" + scan.ideal_label +
+								 "' has no z (vertical) axis; fog-drift integrates the vertical gyro");
+
+	// ---- pass 2: every variant at once
+	const auto overlap = [&](const Ends& g) {
+		if (g.n < 2) throw std::runtime_error("gyro series: sizes differ or fewer than 2 samples");
+		const double t0 = std::max({g.first, scan.odometry.first, scan.truth.first});
+		const double t_end = std::min({g.last, scan.odometry.last, scan.truth.last});
+		if (!(t_end > t0)) throw std::runtime_error("the gyro, the odometry and the truth do not overlap in time");
+		return std::pair<double, double>(t0, t_end);
+	};
+	std::vector<std::unique_ptr<VariantStream>> vars;
+	std::vector<std::string> names;
+	const auto addVariant = [&](const std::string& name, const Ends& g) {
+		const auto [t0, t_end] = overlap(g);
+		vars.push_back(std::make_unique<VariantStream>(name, t0, t_end, hopt, scan));
+		names.push_back(name);
+	};
+	addVariant("raw", scan.fog);
+	VariantStream* raw = vars.back().get();
+	VariantStream* comp_var = nullptr;
+	if (zcal)
+	{
+		addVariant("compensated", scan.fog);
+		comp_var = vars.back().get();
+	}
+	VariantStream* ideal_var = nullptr;
+	if (scan.ideal.n > 0)
+	{
+		addVariant("ideal", scan.ideal);
+		ideal_var = vars.back().get();
+	}
+
+	IndexedQueue<nav::TrajectoryPoint> truth;
+	IndexedQueue<OdoPose> odo;
+	IdealTimes ideal_times;
+	// the compensator, as compensateRun() drives it (screening first: screenedForCompensation)
+	std::unique_ptr<Compensator> compensator;
+	std::unique_ptr<ThermistorHealth> health;
+	const bool screen = st.screen_thermistors;
+	double prev_power = 1.0;
+	std::vector<double> temps;
+	if (zcal)
+	{
+		try
+		{
+			compensator = std::make_unique<Compensator>(*zcal, h.thermistors);
+			if (zcal->warmup) compensator->notePowerOnFromMetadata(h);
+		}
+		catch (const std::exception& ex)
+		{
+			throw std::runtime_error(st.cal_path + ": cannot compensate the drive's FOG: " + ex.what());
+		}
+		if (screen) health = std::make_unique<ThermistorHealth>(h.thermistors.size());
+	}
+	const auto pumpAll = [&] {
+		for (auto& v : vars) v->pump(truth, odo);
+		std::size_t tn = truth.end(), on = odo.end();
+		for (const auto& v : vars)
+		{
+			tn = std::min(tn, v->truthNeeded());
+			on = std::min(on, v->odoNeeded());
+		}
+		truth.dropBefore(tn);
+		odo.dropBefore(on);
+	};
+	OtherObservations others{labels, {}, {}, {}};
+	others.on_ideal = [&](const CObservationFOG& o) {
+		const double t = ideal_times.add(o);
+		if (ideal_var) ideal_var->addGyro(t, o.rate_dph[2], ideal_times.n - 1);
+	};
+	others.on_odometry = [&](const OdoPose& p) { odo.q.push_back(p); };
+	others.on_truth = [&](const nav::TrajectoryPoint& p) { truth.q.push_back(p); };
+	{
+		app::Progress progress("fog-drift: dead reckoning " + path + " (2/2)", st.quiet);
+		const FogLogReader* reading = nullptr;
+		std::size_t since_pump = 0;
+		FogLogReader reader(path, labels.fog, ReadLimits{}, [&](const mrpt::obs::CObservation::Ptr& o) {
+			if (reading) progress.update(reading->samplesRead(), reading->fileBytesRead(), reading->fileBytes());
+			others(o);
+			if (++since_pump >= 64) pumpAll(), since_pump = 0;
+		});
+		reading = &reader;
+		const bool has_power = reader.hasPower();
+		FogSample x;
+		for (std::size_t k = 0; reader.next(x); k++)
+		{
+			const double t = h.epoch_s + x.time_s;
+			raw->addGyro(t, x.rate_dph[2], k);
+			if (comp_var)
+			{
+				temps = x.temp_C;
+				if (health) health->step(x.time_s, temps.data());
+				const double power = has_power ? x.power : 1.0;
+				if (zcal->warmup && has_power && power != 0.0 && prev_power == 0.0) compensator->notePowerOn(x.time_s);
+				prev_power = power;
+				double r;
+				try
+				{
+					r = compensator->step(x.time_s, x.rate_dph[2], temps.data()).compensated_dph;
+				}
+				catch (const std::exception& ex)
+				{
+					throw std::runtime_error(st.cal_path + ": cannot compensate the drive's FOG: " + ex.what());
+				}
+				comp_var->addGyro(t, r + e.calibration_earth_rate_dph, k);
+			}
+			if (++since_pump >= 64) pumpAll(), since_pump = 0;
+		}
+		truth.done = odo.done = true;
+		for (auto& v : vars) v->gyroDone();
+		pumpAll();
+	}
+	if (comp_var)
+	{
+		ThermistorScreening screening;
+		if (health)
+			for (std::size_t i = 0; i < h.thermistors.size(); i++)
+			{
+				screening.names.push_back(h.thermistors[i].name);
+				const ThermistorHealthCounters c = health->counters(i);
+				screening.counters.push_back(c);
+				screening.rejected_readings += c.out_of_range + c.spike + c.stuck;
+			}
+		if (!screen || screening.rejected_readings) std::fputs(app::screeningText(screening, screen).c_str(), stdout);
+		const CompensationCounters& c = compensator->counters();
+		if (c.fallback_samples || c.no_model_samples || c.clamped_samples)
+			std::printf("  compensation: %zu samples, %zu on a fallback model, %zu without model, %zu clamped to the "
+						"calibrated range\n",
+						c.samples, c.fallback_samples, c.no_model_samples, c.clamped_samples);
+		std::fputs(app::outOfRangeWarning(c, zcal->extrapolation).c_str(), stdout);
+	}
+
+	e.report.distance_m = scan.distance_m;
+	e.report.duration_s = scan.truth.last - scan.truth.first;
+	e.segments = scan.segments;
+	for (std::size_t i = 0; i < vars.size(); i++)
+	{
+		nav::DriftSeries s;
+		nav::HeadingFigures f;
+		vars[i]->finish(scan.distance_m, s, f);
+		e.report.variants.push_back(std::move(s));
+		e.figures[names[i]] = f;
+		e.variants.emplace_back(names[i], nav::Trajectory{});
+		e.results.emplace_back();
+	}
+	e.drive.fog.sensor_label = h.sensor_label;
+	e.drive.fog.epoch_s = h.epoch_s;
+	e.drive.fog.has_axis = h.has_axis;
+	e.drive.fog.metadata = h.metadata;
+	return e;
+}
+
+}  // namespace mrpt_fog::drift
