@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <stdexcept>
 
@@ -16,31 +17,53 @@ namespace
 /** A lighter version of a colour (for the unaveraged samples). */
 cv::Scalar light(const cv::Scalar& c) { return c * 0.35 + cv::Scalar(255, 255, 255) * 0.65; }
 
-std::vector<double> minus(const std::vector<double>& v, double m)
+/** (time, column col) of the rows, in order. */
+RecordPass rowColumn(const RowSpill& rows, std::size_t col)
 {
-	std::vector<double> out(v);
-	for (double& x : out) x -= m;
-	return out;
+	return [&rows, col](const RecordVisitor& v) {
+		const std::size_t w = rows.width();
+		rows.forEachBlock([&](const double* r, std::size_t n, std::size_t) {
+			for (std::size_t j = 0; j < n; j++) v(r[j * w], r[j * w + col]);
+		});
+	};
 }
 
-/** Mean of the finite thermistor readings per sample (NaN when none). */
-std::vector<double> meanTemperature_C(const FogSeries& s)
+/** (time, value(chunk, j)) of every sample of the run, in order. */
+RecordPass runColumn(const FogRun& run, std::function<double(const FogSeries&, std::size_t)> value)
 {
-	std::vector<double> out(s.size(), NAN);
-	for (std::size_t k = 0; k < s.size(); k++)
-	{
-		double sum = 0;
-		int n = 0;
-		for (const auto& col : s.temp_C)
-			if (std::isfinite(col[k]))
-			{
-				sum += col[k];
-				n++;
-			}
-		if (n > 0) out[k] = sum / n;
-	}
-	return out;
+	return [&run, value](const RecordVisitor& v) {
+		run.forEachChunk([&](const FogSeries& c, std::size_t) {
+			for (std::size_t j = 0; j < c.size(); j++) v(c.time_s[j], value(c, j));
+		});
+	};
 }
+
+/** The record minus m. */
+RecordPass minus(const RecordPass& pass, double m)
+{
+	return [pass, m](const RecordVisitor& v) { pass([&](double t, double y) { v(t, y - m); }); };
+}
+
+/** Mean of the finite thermistor readings of sample j (NaN when none). */
+double meanTemperature_C(const FogSeries& s, std::size_t k)
+{
+	double sum = 0;
+	int n = 0;
+	for (const auto& col : s.temp_C)
+		if (std::isfinite(col[k]))
+		{
+			sum += col[k];
+			n++;
+		}
+	return n > 0 ? sum / n : NAN;
+}
+
+/** What every trace of the time plot shares: samples, first and last time, median interval. */
+struct TimeAxis
+{
+	std::size_t n = 0;
+	double front_s = 0, back_s = 0, dt_s = 0;
+};
 
 /** Window averages as a step line (each window's average held over its tau). */
 void addAverages(LinePlot& p, const BiasStats& st, double mean, double time_scale, const std::string& label,
@@ -68,92 +91,109 @@ void addAverages(LinePlot& p, const BiasStats& st, double mean, double time_scal
 }
 
 /** A series (x scaled) with NaN inserted at the gaps of the log (> 5 sample periods), so that no
- * line is drawn across missing data. */
-PlotSeries gapBroken(const std::string& label, const std::vector<double>& time_s, const std::vector<double>& y,
-					 double scale, const cv::Scalar& colour)
+ * line is drawn across missing data. Read in one pass. */
+PlotSeries gapBroken(const std::string& label, const RecordPass& pass, const TimeAxis& ax, double scale,
+					 const cv::Scalar& colour)
 {
 	PlotSeries ps;
 	ps.label = label;
 	ps.colour = colour;
-	const double dt = medianSampleInterval_s(time_s);
-	const std::size_t n = time_s.size();
+	const double dt = ax.dt_s;
+	const std::size_t n = ax.n;
 	// A long log is thinned to the lowest and highest sample of each of kBuckets time buckets:
 	// the envelope that a line through every sample draws at this width, in bounded memory
 	// (issue 14: 4 thermistors x 2.4 M samples took 300 MB here).
 	constexpr std::size_t kBuckets = 4096;
+	std::size_t k = 0;
+	double t_prev = 0;
 	if (n <= 4 * kBuckets)
 	{
-		for (std::size_t k = 0; k < n; k++)
-		{
-			if (k > 0 && time_s[k] - time_s[k - 1] > 5 * dt)
+		pass([&](double t, double y) {
+			if (k > 0 && t - t_prev > 5 * dt)
 			{
 				ps.x.push_back(NAN);
 				ps.y.push_back(NAN);
 			}
-			ps.x.push_back(time_s[k] * scale);
-			ps.y.push_back(y[k]);
-		}
+			ps.x.push_back(t * scale);
+			ps.y.push_back(y);
+			t_prev = t;
+			k++;
+		});
 		return ps;
 	}
-	const double t0 = time_s.front(), span = time_s.back() - t0;
-	const auto bucketOf = [&](std::size_t k) {
-		return std::min(kBuckets - 1, static_cast<std::size_t>((time_s[k] - t0) / span * static_cast<double>(kBuckets)));
+	const double t0 = ax.front_s, span = ax.back_s - t0;
+	const auto bucketOf = [&](double t) {
+		return std::min(kBuckets - 1, static_cast<std::size_t>((t - t0) / span * static_cast<double>(kBuckets)));
 	};
-	const auto flush = [&](std::size_t a, std::size_t b) {  // samples [a, b)
-		std::size_t lo = b, hi = b;
-		for (std::size_t k = a; k < b; k++)
-			if (std::isfinite(y[k]))
-			{
-				if (lo == b || y[k] < y[lo]) lo = k;
-				if (hi == b || y[k] > y[hi]) hi = k;
-			}
-		if (lo == b)  // no reading in the bucket: the line breaks
+	struct Sample
+	{
+		std::size_t k;
+		double t, y;
+	};
+	bool any = false;  // the bucket's lowest and highest finite samples (first of equals)
+	Sample lo{}, hi{};
+	std::size_t bucket = 0;
+	const auto flush = [&] {
+		if (!any)  // no reading in the bucket: the line breaks
 		{
 			ps.x.push_back(NAN);
 			ps.y.push_back(NAN);
 			return;
 		}
-		for (std::size_t k : {std::min(lo, hi), std::max(lo, hi)})
+		const Sample& a = lo.k <= hi.k ? lo : hi;
+		const Sample& b = lo.k <= hi.k ? hi : lo;
+		ps.x.push_back(a.t * scale);
+		ps.y.push_back(a.y);
+		if (lo.k != hi.k)
 		{
-			ps.x.push_back(time_s[k] * scale);
-			ps.y.push_back(y[k]);
-			if (lo == hi) break;
+			ps.x.push_back(b.t * scale);
+			ps.y.push_back(b.y);
 		}
 	};
-	std::size_t start = 0;
-	for (std::size_t k = 1; k < n; k++)
-	{
-		const bool gap = time_s[k] - time_s[k - 1] > 5 * dt;
-		if (gap || bucketOf(k) != bucketOf(start))
+	pass([&](double t, double y) {
+		if (k == 0) bucket = bucketOf(t);
+		else
 		{
-			flush(start, k);
-			start = k;
+			const bool gap = t - t_prev > 5 * dt;
+			if (gap || bucketOf(t) != bucket)
+			{
+				flush();
+				any = false;
+				bucket = bucketOf(t);
+			}
+			if (gap)
+			{
+				ps.x.push_back(NAN);
+				ps.y.push_back(NAN);
+			}
 		}
-		if (gap)
+		if (std::isfinite(y))
 		{
-			ps.x.push_back(NAN);
-			ps.y.push_back(NAN);
+			if (!any || y < lo.y) lo = {k, t, y};
+			if (!any || y > hi.y) hi = {k, t, y};
+			any = true;
 		}
-	}
-	flush(start, n);
+		t_prev = t;
+		k++;
+	});
+	flush();
 	return ps;
 }
 
 /** The thin trace under the bold tau averages: averages over tau/10 (centres joined, broken at
  * empty windows), or the samples themselves when tau/10 is under 2 sample periods. */
-PlotSeries shortTrace(const std::string& what, const std::vector<double>& time_s, const std::vector<double>& y,
-					  double tau_s, double mean, double scale, const cv::Scalar& colour)
+PlotSeries shortTrace(const std::string& what, const RecordPass& pass, const TimeAxis& ax, double tau_s, double mean,
+					  double scale, const cv::Scalar& colour)
 {
 	const double short_tau = tau_s / 10;
-	if (short_tau < 2 * medianSampleInterval_s(time_s))
-		return gapBroken(what + " samples", time_s, minus(y, mean), scale, colour);
+	if (short_tau < 2 * ax.dt_s) return gapBroken(what + " samples", minus(pass, mean), ax, scale, colour);
 	PlotSeries ps;
 	ps.label = what + " " + formatValue("%g", short_tau) + " s avg";
 	ps.colour = colour;
 	BiasStats st;
 	try
 	{
-		st = biasStats(time_s, y, short_tau);
+		st = biasStats(pass, short_tau);
 	}
 	catch (const std::invalid_argument&)
 	{
@@ -172,58 +212,80 @@ PlotSeries shortTrace(const std::string& what, const std::vector<double>& time_s
 	return ps;
 }
 
-/** Shades the intervals with the gyro powered off and the gaps in the log (> 5 sample periods). */
-void shadeOffAndGaps(LinePlot& p, const FogSeries& s, double scale, bool with_labels)
+/** Shades the intervals with the gyro powered off and the gaps in the log (> 5 sample periods):
+ * the gaps first, then the off intervals (two passes). */
+void shadeOffAndGaps(LinePlot& p, const FogRun& run, const TimeAxis& ax, double scale, bool with_labels)
 {
-	const double dt = medianSampleInterval_s(s.time_s);
+	const double dt = ax.dt_s;
 	bool off_labelled = !with_labels, gap_labelled = !with_labels;
-	for (std::size_t k = 1; k < s.size(); k++)
-		if (s.time_s[k] - s.time_s[k - 1] > 5 * dt)
+	bool first = true;
+	double t_prev = 0;
+	run.forEachChunk([&](const FogSeries& c, std::size_t) {
+		for (std::size_t j = 0; j < c.size(); j++)
 		{
-			p.addShade(s.time_s[k - 1] * scale, s.time_s[k] * scale, plot_colour::kRed, gap_labelled ? "" : "no data");
-			gap_labelled = true;
+			const double t = c.time_s[j];
+			if (!first && t - t_prev > 5 * dt)
+			{
+				p.addShade(t_prev * scale, t * scale, plot_colour::kRed, gap_labelled ? "" : "no data");
+				gap_labelled = true;
+			}
+			first = false;
+			t_prev = t;
 		}
-	if (s.power.empty()) return;
-	for (std::size_t k = 0; k < s.size();)
-	{
-		if (s.power[k] != 0.0)
-		{
-			k++;
-			continue;
-		}
-		std::size_t e = k;
-		while (e + 1 < s.size() && s.power[e + 1] == 0.0) e++;
-		p.addShade(s.time_s[k] * scale, s.time_s[e] * scale, plot_colour::kGrey, off_labelled ? "" : "gyro off");
+	});
+	if (!run.hasPower()) return;
+	bool off = false;
+	double off_start = 0, off_last = 0;
+	const auto shade = [&] {
+		p.addShade(off_start * scale, off_last * scale, plot_colour::kGrey, off_labelled ? "" : "gyro off");
 		off_labelled = true;
-		k = e + 1;
-	}
+	};
+	run.forEachChunk([&](const FogSeries& c, std::size_t) {
+		for (std::size_t j = 0; j < c.size(); j++)
+		{
+			if (c.power[j] != 0.0)
+			{
+				if (off) shade(), off = false;
+				continue;
+			}
+			if (!off) off = true, off_start = c.time_s[j];
+			off_last = c.time_s[j];
+		}
+	});
+	if (off) shade();
 }
 
 void biasVsTime(const std::string& path, const PlotInputs& in)
 {
-	const FogSeries& s = *in.series;
-	const double duration_s = s.time_s.back() - s.time_s.front();
+	const FogRun& run = *in.run;
+	TimeAxis ax;
+	ax.n = run.size();
+	ax.front_s = run.frontTime_s();
+	ax.back_s = run.backTime_s();
+	ax.dt_s = medianSampleInterval_s(rowColumn(*in.rows, 0));
+	const double duration_s = ax.back_s - ax.front_s;
 	const bool hours = duration_s > 3 * 3600.0;
 	const double scale = hours ? 1.0 / 3600.0 : 1.0;
 	const std::string tlabel = hours ? "time [h]" : "time [s]";
 
-	const bool temps = s.thermistorCount() > 0;
+	const std::size_t thermistors = run.header().thermistorCount();
+	const bool temps = thermistors > 0;
 	PlotCanvas fig(1100, temps ? 800 : 520);
 	LinePlot& top = fig.addPanel(temps ? 1.7 : 1.0);
 	top.title = "bias vs time (each about its own mean; " + formatValue("%g", in.tau_s) + " s averages bold, " +
 				formatValue("%g", in.tau_s / 10) + " s thin)";
 	top.x_axis.label = tlabel;
-	top.x_axis.min = s.time_s.front() * scale;  // the run, not rounded out to a tick
-	top.x_axis.max = s.time_s.back() * scale;
+	top.x_axis.min = ax.front_s * scale;  // the run, not rounded out to a tick
+	top.x_axis.max = ax.back_s * scale;
 	top.y_axis.label = "bias - mean [deg/h]";
-	shadeOffAndGaps(top, s, scale, true);
+	shadeOffAndGaps(top, run, ax, scale, true);
 	const double m_raw = in.raw->stats.mean_dph;
-	top.addSeries(shortTrace("raw", s.time_s, *in.raw_bias_dph, in.tau_s, m_raw, scale, light(plot_colour::kBlue)));
+	top.addSeries(shortTrace("raw", rowColumn(*in.rows, 1), ax, in.tau_s, m_raw, scale, light(plot_colour::kBlue)));
 	if (in.comp)
 	{
 		const double m_comp = in.comp->stats.mean_dph;
-		top.addSeries(
-			shortTrace("compensated", s.time_s, *in.comp_bias_dph, in.tau_s, m_comp, scale, light(plot_colour::kOrange)));
+		top.addSeries(shortTrace("compensated", rowColumn(*in.rows, 2), ax, in.tau_s, m_comp, scale,
+								 light(plot_colour::kOrange)));
 		addAverages(top, in.raw->stats, m_raw, scale, "raw avg (mean " + formatValue("%.4g", m_raw) + " deg/h)",
 					plot_colour::kBlue);
 		addAverages(top, in.comp->stats, m_comp, scale, "compensated avg (mean " + formatValue("%.4g", m_comp) + " deg/h)",
@@ -240,21 +302,22 @@ void biasVsTime(const std::string& path, const PlotInputs& in)
 		const cv::Vec2d xl = top.xLimits();
 		bottom.x_axis.min = xl[0];
 		bottom.x_axis.max = xl[1];
-		shadeOffAndGaps(bottom, s, scale, false);
-		for (std::size_t i = 0; i < s.thermistorCount(); i++)
-			bottom.addSeries(gapBroken(s.thermistors[i].name, s.time_s, s.temp_C[i], scale, plot_colour::cycle(i + 2)));
+		shadeOffAndGaps(bottom, run, ax, scale, false);
+		for (std::size_t i = 0; i < thermistors; i++)
+			bottom.addSeries(gapBroken(run.header().thermistors[i].name,
+									   runColumn(run, [i](const FogSeries& c, std::size_t j) { return c.temp_C[i][j]; }),
+									   ax, scale, plot_colour::cycle(i + 2)));
 	}
 	fig.save(path);
 }
 
 bool biasVsTemperature(const std::string& path, const PlotInputs& in)
 {
-	const FogSeries& s = *in.series;
-	if (s.thermistorCount() == 0) return false;
+	if (in.run->header().thermistorCount() == 0) return false;
 	BiasStats tstats;
 	try
 	{
-		tstats = biasStats(s.time_s, meanTemperature_C(s), in.tau_s);
+		tstats = biasStats(runColumn(*in.run, meanTemperature_C), in.tau_s);
 	}
 	catch (const std::invalid_argument&)
 	{

@@ -15,6 +15,8 @@
 
 #include "RateEvaluation.h"
 
+#include <mrpt_fog/obs/FogRun.h>
+
 #include <string>
 #include <vector>
 
@@ -22,10 +24,12 @@ namespace mrpt_fog::evaluate
 {
 struct PlotInputs
 {
-	const FogSeries* series = nullptr;
-	const std::vector<double>* raw_bias_dph = nullptr;
+	/** The log (times, thermistors, power), read in passes: the plots keep what they draw,
+	 * not the log (a long log's traces are thinned to 4096 time buckets). */
+	const FogRun* run = nullptr;
+	/** Rows (time, raw bias [deg/h], compensated bias [deg/h] with --cal), as evaluateRate reads. */
+	const RowSpill* rows = nullptr;
 	const RateEvaluation* raw = nullptr;
-	const std::vector<double>* comp_bias_dph = nullptr;  //!< nullptr without --cal
 	const RateEvaluation* comp = nullptr;  //!< nullptr without --cal
 	double tau_s = 100.0;
 };

@@ -183,24 +183,11 @@ int main(int argc, char** argv)
 		std::vector<std::string> figures;
 		if (!plots.getValue().empty())
 		{
-			// The plots draw the whole record: it is loaded into memory (grows with the log).
-			FogSeries series = run.load();
-			std::vector<double>().swap(series.field_uT);
-			std::vector<double> raw_bias, comp_bias;
-			raw_bias.reserve(rows.rows());
-			if (comp) comp_bias.reserve(rows.rows());
-			rows.forEachBlock([&](const double* r, std::size_t n, std::size_t) {
-				for (std::size_t j = 0; j < n; j++)
-				{
-					raw_bias.push_back(r[j * rows.width() + 1]);
-					if (comp) comp_bias.push_back(r[j * rows.width() + 2]);
-				}
-			});
+			// The plots read the run and the bias rows in passes (memory: what they draw).
 			PlotInputs pin;
-			pin.series = &series;
-			pin.raw_bias_dph = &raw_bias;
+			pin.run = &run;
+			pin.rows = &rows;
 			pin.raw = &raw;
-			pin.comp_bias_dph = comp ? &comp_bias : nullptr;
 			pin.comp = comp.get();
 			pin.tau_s = tau_s;
 			figures = writeEvaluationPlots(plots.getValue(), pin);
