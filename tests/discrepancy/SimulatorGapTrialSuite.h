@@ -85,12 +85,12 @@ inline void scaleEffect(sim::FogDevice& d, const std::string& id, double k)
 		d.winding.dn_dT_per_K *= k;
 		d.winding.expansion_per_K *= k;
 	}
-	else if (id == "radial_gradient") e.radial_gradient_dph_per_C *= k;
-	else if (id == "gradient_rate") e.gradient_rate_dph_per_C_per_min *= k;
-	else if (id == "hysteresis") e.hysteresis_dph *= k;
-	else if (id == "warmup") e.warmup_dph *= k;
-	else if (id == "scale_factor_temp") e.sf_ppm_per_C *= k;
-	else if (id == "magnetic") e.magnetic_dph_per_uT *= k;
+	else if (id == "radial_gradient") e.radial_gradient_dph_per_C() *= k;
+	else if (id == "gradient_rate") e.gradient_rate_dph_per_C_per_min() *= k;
+	else if (id == "hysteresis") e.hysteresis_dph() *= k;
+	else if (id == "warmup") e.warmup_dph() *= k;
+	else if (id == "scale_factor_temp") e.sf_ppm_per_C() *= k;
+	else if (id == "magnetic") e.magnetic_dph_per_uT() *= k;
 	else if (id == "temp_poly_order")
 		for (auto& c : e.temp_poly_dph) c *= k;
 	else throw std::invalid_argument("no size knob for effect '" + id + "'");
@@ -128,13 +128,13 @@ inline SimulatorConfig baseConfig(const std::string& hidden, double k)
 	auto& d = c.device;
 	if (hidden == "shupe_rate") scaleEffect(d, hidden, k);
 	const sim::FogDevice truth = sim::FogDevice::defaultDevice();
-	d.errors.radial_gradient_dph_per_C = 0.7 * truth.errors.radial_gradient_dph_per_C;
+	d.errors.radial_gradient_dph_per_C() = 0.7 * truth.errors.radial_gradient_dph_per_C();
 	d.winding.midpoint_offset_m = 0.75 * truth.winding.midpoint_offset_m;
-	d.errors.gradient_rate_dph_per_C_per_min = 0.05;
-	d.errors.hysteresis_dph = 0.01;
-	d.errors.warmup_dph = 0.05;
-	d.errors.sf_ppm_per_C = 10;
-	d.errors.magnetic_dph_per_uT = 1e-4;
+	d.errors.gradient_rate_dph_per_C_per_min() = 0.05;
+	d.errors.hysteresis_dph() = 0.01;
+	d.errors.warmup_dph() = 0.05;
+	d.errors.sf_ppm_per_C() = 10;
+	d.errors.magnetic_dph_per_uT() = 1e-4;
 	for (auto& x : d.errors.temp_poly_dph) x *= 0.5;
 	d.thermal.electronics_power_W = 2.0;
 	d.thermal.scaleHeatCapacities(1.1);

@@ -39,7 +39,7 @@ TEST(SimulatorConfig, ReadsDeviceEffectsFreeAndProfile)
 							 "free: [constant_bias_dph, radial_gradient_dph_per_C, thermal_time_scale]\n"
 							 "profile: rich\n");
 	const auto c = readSimulatorConfig(p);
-	EXPECT_DOUBLE_EQ(c.device.errors.radial_gradient_dph_per_C, 0.05);
+	EXPECT_DOUBLE_EQ(c.device.errors.radial_gradient_dph_per_C(), 0.05);
 	EXPECT_EQ(c.effects, (sim::EffectSet{"shupe_rate", "radial_gradient", "earth_rate"}));
 	EXPECT_EQ(c.free, (std::vector<std::string>{"constant_bias_dph", "radial_gradient_dph_per_C", "thermal_time_scale"}));
 	EXPECT_FALSE(c.free_is_default);

@@ -48,11 +48,11 @@ SimulatorConfig configWithout(const std::string& hidden)
 	if (!hidden.empty()) c.effects.erase(hidden);
 	auto& d = c.device;
 	const sim::FogDevice truth = sim::FogDevice::defaultDevice();
-	d.errors.radial_gradient_dph_per_C = 0.7 * truth.errors.radial_gradient_dph_per_C;
+	d.errors.radial_gradient_dph_per_C() = 0.7 * truth.errors.radial_gradient_dph_per_C();
 	d.winding.midpoint_offset_m = 0.75 * truth.winding.midpoint_offset_m;
-	d.errors.magnetic_dph_per_uT = 1e-4;
-	d.errors.sf_ppm_per_C = 10;
-	d.errors.warmup_dph = 0.05;
+	d.errors.magnetic_dph_per_uT() = 1e-4;
+	d.errors.sf_ppm_per_C() = 10;
+	d.errors.warmup_dph() = 0.05;
 	d.thermal.electronics_power_W = 2.0;
 	d.thermal.scaleHeatCapacities(1.1);
 	for (auto& t : d.thermistors) t.offset_C = 0;
@@ -134,12 +134,12 @@ TEST(SimulatorGap, CalibrationRecoversStartingValueErrors)
 	EXPECT_NEAR(d.thermal.electronics_power_W, 2.5, 0.1);
 	// truth: the default device's; tolerances 5.7 % and 5 % of it (set when the truth was 0.07 / 2 m)
 	const sim::FogDevice truth = sim::FogDevice::defaultDevice();
-	EXPECT_NEAR(d.errors.radial_gradient_dph_per_C, truth.errors.radial_gradient_dph_per_C,
-				0.004 / 0.07 * truth.errors.radial_gradient_dph_per_C);
+	EXPECT_NEAR(d.errors.radial_gradient_dph_per_C(), truth.errors.radial_gradient_dph_per_C(),
+				0.004 / 0.07 * truth.errors.radial_gradient_dph_per_C());
 	EXPECT_NEAR(d.winding.midpoint_offset_m, truth.winding.midpoint_offset_m, 0.05 * truth.winding.midpoint_offset_m);
-	EXPECT_NEAR(d.errors.magnetic_dph_per_uT, 2e-4, 1e-5);
-	EXPECT_NEAR(d.errors.sf_ppm_per_C, 20, 0.1);
-	EXPECT_NEAR(d.errors.warmup_dph, 0.1, 0.03);
+	EXPECT_NEAR(d.errors.magnetic_dph_per_uT(), 2e-4, 1e-5);
+	EXPECT_NEAR(d.errors.sf_ppm_per_C(), 20, 0.1);
+	EXPECT_NEAR(d.errors.warmup_dph(), 0.1, 0.03);
 	EXPECT_NEAR(d.thermistors[0].offset_C, 0.05, 0.01);
 	EXPECT_NEAR(d.thermistors[1].offset_C, -0.08, 0.01);
 	// 95 % intervals (block-averaged residual variance): finite, positive, printed with the truth

@@ -68,14 +68,24 @@ TEST(EffectRegistry, EveryDescriptorIsComplete)
 				const double member = FogDevice::defaultDevice().errors.*shape.member;
 				EXPECT_NEAR(std::stod(it->second), member, 1e-9 * std::max(1.0, std::abs(member)));
 			}
-		if (d.coefficient)
+		FogDevice dev = FogDevice::defaultDevice();
+		if (d.default_coefficient)
 		{
-			// the key is the device field the member pointer designates
+			// the key is the device field holding the effect's coefficient, whose default is the
+			// descriptor's
 			const auto it = device.find(std::string("device.") + d.coefficient_key);
 			ASSERT_NE(it, device.end()) << d.coefficient_key << " is not a device field";
-			const double member = FogDevice::defaultDevice().errors.*d.coefficient;
-			EXPECT_NEAR(std::stod(it->second), member, 1e-9 * std::max(1.0, std::abs(member)));
+			const double value = *d.default_coefficient;
+			EXPECT_NEAR(std::stod(it->second), value, 1e-9 * std::max(1.0, std::abs(value)));
+			EXPECT_EQ(dev.errors.coefficient(d.effect), value);
+			EXPECT_EQ(coefficientIn(d, dev.errors), &dev.errors.coefficient(d.effect));
 		}
+		else
+		{
+			EXPECT_EQ(coefficientIn(d, dev.errors), nullptr);
+			EXPECT_EQ(d.bias_per_coefficient, nullptr) << "a term per coefficient needs a coefficient";
+		}
+		EXPECT_FALSE(d.bias_per_coefficient && d.add_bias_term_dph) << "one simulator term, not two";
 	}
 }
 
@@ -86,35 +96,39 @@ TEST(EffectRegistry, AdditiveTermsAreLinearInTheirCoefficientAndZeroWithoutIt)
 	in.time_since_power_on_s = 300.0;
 	in.field_uT = 45.0;
 	in.electronics_C = 41.0;
+	// the term as the simulator adds it (FogSimulator::advance)
+	auto term = [&](const EffectDescriptor& d, const ErrorCoefficients& e)
+	{
+		double sum = 0;
+		if (d.bias_per_coefficient) sum += e.coefficient(d.effect) * d.bias_per_coefficient(in, e);
+		if (d.add_bias_term_dph) d.add_bias_term_dph(in, e, sum);
+		return sum;
+	};
 	int terms = 0;
 	for (const auto& d : effectDescriptors())
 	{
-		if (!d.add_bias_term_dph) continue;
+		if (!d.bias_per_coefficient && !d.add_bias_term_dph) continue;
 		SCOPED_TRACE(d.id);
 		++terms;
 		ErrorCoefficients e;
-		double one = 0, two = 0, none = 0;
-		d.add_bias_term_dph(in, e, one);
-		if (d.coefficient)
+		const double one = term(d, e);
+		if (double* c = coefficientIn(d, e))
 		{
-			e.*d.coefficient *= 2;
-			d.add_bias_term_dph(in, e, two);
-			EXPECT_NEAR(two, 2 * one, 1e-12 * std::abs(one));
-			e.*d.coefficient = 0;
+			const double per_coefficient = d.bias_per_coefficient(in, e);
+			*c *= 2;
+			EXPECT_NEAR(term(d, e), 2 * one, 1e-12 * std::abs(one));
+			EXPECT_EQ(d.bias_per_coefficient(in, e), per_coefficient) << "the term per coefficient must not read it";
+			*c = 0;
 		}
 		else
 			e.temp_poly_dph.assign(e.temp_poly_dph.size(), 0.0);
-		d.add_bias_term_dph(in, e, none);
 		EXPECT_NE(one, 0.0);
-		EXPECT_EQ(none, 0.0);
+		EXPECT_EQ(term(d, e), 0.0);
 	}
 	EXPECT_EQ(terms, 4);  // radial_gradient, warmup, magnetic, temp_poly_order
-	// closed forms of two of them
-	ErrorCoefficients e;
-	double w = 0;
-	descriptorOf(Effect::Warmup).add_bias_term_dph(in, e, w);
-	EXPECT_DOUBLE_EQ(w, e.warmup_dph * std::exp(-300.0 / e.warmup_tau_s));
-	double p = 0;
-	descriptorOf(Effect::TempPolyOrder).add_bias_term_dph(in, e, p);
-	EXPECT_NEAR(p, 1e-3 * 16.0 + 1e-5 * 256.0, 1e-15);  // default {1e-3, 1e-5}, x = 41 - 25
+	// closed forms of three of them
+	const ErrorCoefficients e;
+	EXPECT_DOUBLE_EQ(term(descriptorOf(Effect::Warmup), e), e.warmup_dph() * std::exp(-300.0 / e.warmup_tau_s));
+	EXPECT_DOUBLE_EQ(term(descriptorOf(Effect::Magnetic), e), 2e-4 * 45.0);
+	EXPECT_NEAR(term(descriptorOf(Effect::TempPolyOrder), e), 1e-3 * 16.0 + 1e-5 * 256.0, 1e-15);  // default {1e-3, 1e-5}, x = 41 - 25
 }

@@ -75,7 +75,7 @@ TEST(FogSimulator, ScaleFactorActsOnAppliedRate)
 	FogSimulator sim(d, {"scale_factor_temp"}, 1);
 	sim.start(air(-15, true, 36000), InitialThermalState::Steady);
 	const FogSample s = sim.advance(0.1, air(-15, true, 36000));
-	const double expected = 36000 * (1 + d.errors.sf_ppm_per_C * 1e-6 * (s.coil_mean_C - d.errors.sf_ref_C));
+	const double expected = 36000 * (1 + d.errors.sf_ppm_per_C() * 1e-6 * (s.coil_mean_C - d.errors.sf_ref_C));
 	EXPECT_NEAR(s.rate_dph, expected, 1e-9 * 36000);
 	EXPECT_DOUBLE_EQ(s.ideal_rate_dph, 36000.0);
 }
@@ -85,11 +85,11 @@ TEST(FogSimulator, MagneticAndRadialGradientAreLinear)
 	FogDevice d = quietDevice();
 	FogSimulator mag(d, {"magnetic"}, 1);
 	mag.start(air(25), InitialThermalState::Steady);
-	EXPECT_NEAR(mag.advance(0.1, air(25, true, 0, 500)).rate_dph, 500 * d.errors.magnetic_dph_per_uT, 1e-12);
+	EXPECT_NEAR(mag.advance(0.1, air(25, true, 0, 500)).rate_dph, 500 * d.errors.magnetic_dph_per_uT(), 1e-12);
 	FogSimulator rg(d, {"radial_gradient"}, 1);
 	rg.start(air(25), InitialThermalState::Steady);
 	const FogSample s = rg.advance(10.0, air(20));
-	EXPECT_NEAR(s.rate_dph, d.errors.radial_gradient_dph_per_C * (s.inner_C - s.outer_C), 1e-12);
+	EXPECT_NEAR(s.rate_dph, d.errors.radial_gradient_dph_per_C() * (s.inner_C - s.outer_C), 1e-12);
 }
 
 TEST(FogSimulator, WarmupDecaysAfterPowerOn)
@@ -97,13 +97,13 @@ TEST(FogSimulator, WarmupDecaysAfterPowerOn)
 	FogDevice d = quietDevice();
 	FogSimulator sim(d, {"warmup"}, 1);
 	const FogSample s0 = sim.start(air(23), InitialThermalState::Cold);
-	EXPECT_NEAR(s0.rate_dph, d.errors.warmup_dph, 1e-12);
+	EXPECT_NEAR(s0.rate_dph, d.errors.warmup_dph(), 1e-12);
 	FogSample s;
 	for (int k = 0; k < 600; k++) s = sim.advance(1.0, air(23));
-	EXPECT_NEAR(s.rate_dph, d.errors.warmup_dph * std::exp(-1.0), 1e-9);
+	EXPECT_NEAR(s.rate_dph, d.errors.warmup_dph() * std::exp(-1.0), 1e-9);
 	// Power cycle restarts it; while off the output is 0.
 	EXPECT_DOUBLE_EQ(sim.advance(1.0, air(23, false)).rate_dph, 0.0);
-	EXPECT_NEAR(sim.advance(1.0, air(23, true)).rate_dph, d.errors.warmup_dph, 1e-12);
+	EXPECT_NEAR(sim.advance(1.0, air(23, true)).rate_dph, d.errors.warmup_dph(), 1e-12);
 }
 
 TEST(FogSimulator, HysteresisDependsOnDirection)
@@ -115,11 +115,11 @@ TEST(FogSimulator, HysteresisDependsOnDirection)
 	// Cool by 60 C (12 spans) and soak: the cooling branch, -H/2 (to exp(-12) ~ 6e-6 of H).
 	for (int k = 0; k < 3600; k++) s = sim.advance(1.0, air(25 - k / 60.0));
 	for (int k = 0; k < 4 * 3600; k++) s = sim.advance(1.0, air(-35));
-	EXPECT_NEAR(s.rate_dph, -0.5 * d.errors.hysteresis_dph, 1e-3 * d.errors.hysteresis_dph);
+	EXPECT_NEAR(s.rate_dph, -0.5 * d.errors.hysteresis_dph(), 1e-3 * d.errors.hysteresis_dph());
 	// Heat by 60 C and soak: the heating branch, +H/2.
 	for (int k = 0; k < 3600; k++) s = sim.advance(1.0, air(-35 + k / 60.0));
 	for (int k = 0; k < 4 * 3600; k++) s = sim.advance(1.0, air(25));
-	EXPECT_NEAR(s.rate_dph, 0.5 * d.errors.hysteresis_dph, 1e-3 * d.errors.hysteresis_dph);
+	EXPECT_NEAR(s.rate_dph, 0.5 * d.errors.hysteresis_dph(), 1e-3 * d.errors.hysteresis_dph());
 }
 
 TEST(FogSimulator, HeatSourceWarmsTheCoil)

@@ -115,7 +115,7 @@ TEST(TriadRun, AxisSeedsAndDevicesDiffer)
 	EXPECT_NE(triadAxisSeed(5, GyroAxis::X), triadAxisSeed(5, GyroAxis::Y));
 	EXPECT_NE(triadAxisSeed(5, GyroAxis::X), 5u);
 	const FogDevice z = FogDevice::defaultDevice();
-	EXPECT_EQ(triadAxisDevice(z, GyroAxis::X).errors.sf_ppm_per_C, 14.0);
-	EXPECT_EQ(triadAxisDevice(z, GyroAxis::Y).errors.sf_ppm_per_C, 27.0);
-	EXPECT_EQ(triadAxisDevice(z, GyroAxis::Z).errors.sf_ppm_per_C, z.errors.sf_ppm_per_C);
+	EXPECT_EQ(triadAxisDevice(z, GyroAxis::X).errors.sf_ppm_per_C(), 14.0);
+	EXPECT_EQ(triadAxisDevice(z, GyroAxis::Y).errors.sf_ppm_per_C(), 27.0);
+	EXPECT_EQ(triadAxisDevice(z, GyroAxis::Z).errors.sf_ppm_per_C(), z.errors.sf_ppm_per_C());
 }

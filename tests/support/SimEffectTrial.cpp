@@ -99,11 +99,11 @@ void applyScale(DeviceSetup& d, const std::string& id, double scale, SimTrialDev
 	info.scale = scale;
 	// effects with one scalar coefficient in errors (the registry's descriptor names it)
 	for (const auto& de : sim::effectDescriptors())
-		if (id == de.id && de.coefficient && de.identified_in == sim::IdentifiedIn::Bias)
+		if (double* c = sim::coefficientIn(de, e); id == de.id && c && de.identified_in == sim::IdentifiedIn::Bias)
 		{
-			e.*de.coefficient *= scale;
+			*c *= scale;
 			info.parameter = de.coefficient_key;
-			info.parameter_value = e.*de.coefficient;
+			info.parameter_value = *c;
 			return;
 		}
 	if (id == "shupe_rate")

@@ -64,11 +64,11 @@ std::vector<NumField> errorFields(ErrorCoefficients& e)
 	std::vector<NumField> f{{"constant_bias_dph", &e.constant_bias_dph}};
 	for (const auto& d : effectDescriptors())
 	{
-		if (d.coefficient)
+		if (double* c = coefficientIn(d, e))
 		{
 			if (std::string(d.coefficient_key).rfind(kSection, 0) != 0)
 				throw std::logic_error(std::string("effect ") + d.id + ": coefficient key is not an errors: field");
-			f.push_back({d.coefficient_key + kSection.size(), &(e.*d.coefficient)});
+			f.push_back({d.coefficient_key + kSection.size(), c});
 		}
 		for (const auto& shape : d.shape_fields)
 			if (shape.key) f.push_back({shape.key, &(e.*shape.member)});
@@ -264,7 +264,7 @@ void FogDevice::validate() const
 		{"noise.bias_instability_dph", noise.bias_instability_dph},
 		{"noise.rrw_deg_h_rt_h", noise.rrw_deg_h_rt_h},
 		{"noise.angle_quantum_arcsec", noise.angle_quantum_arcsec},
-		{"errors.hysteresis_dph", errors.hysteresis_dph},
+		{"errors.hysteresis_dph", errors.hysteresis_dph()},
 	};
 	for (const auto& [name, v] : nonneg)
 		if (!(v >= 0)) throw std::invalid_argument(std::string(name) + ": must be >= 0");

@@ -131,14 +131,14 @@ FogSample FogSimulator::makeSample(double dt_s, const Eigen::VectorXd& Tprev, co
 		if (enabled(Effect::GradientRate))
 		{
 			const double prev = thermal_.layerMean_C(Tprev, 0) - thermal_.layerMean_C(Tprev, L - 1);
-			thermal += e.gradient_rate_dph_per_C_per_min * (dTin_out - prev) / dt_s * kSecondsPerMinute;
+			thermal += e.gradient_rate_dph_per_C_per_min() * (dTin_out - prev) / dt_s * kSecondsPerMinute;
 		}
 		if (enabled(Effect::Hysteresis))
 		{
 			const double dT = out.coil_mean_C - Tprev.head(thermal_.coilNodeCount()).mean();
 			if (dT != 0)
 			{
-				const double target = (dT > 0 ? 0.5 : -0.5) * e.hysteresis_dph;
+				const double target = (dT > 0 ? 0.5 : -0.5) * e.hysteresis_dph();
 				hysteresis_dph_ = target + (hysteresis_dph_ - target) * std::exp(-std::abs(dT) / e.hysteresis_span_C);
 			}
 		}
@@ -147,13 +147,19 @@ FogSample FogSimulator::makeSample(double dt_s, const Eigen::VectorXd& Tprev, co
 	// the additive terms of the registry (EffectRegistry.cpp), in its order
 	const EffectTermInputs in{dTin_out, time_since_power_on_s_, s.field_uT, T_(thermal_.electronicsNode())};
 	for (const auto& d : effectDescriptors())
-		if (d.add_bias_term_dph && enabled(d.effect)) d.add_bias_term_dph(in, e, thermal);
+	{
+		if (!enabled(d.effect)) continue;
+		if (d.bias_per_coefficient)
+			thermal += e.coefficient(d.effect) * d.bias_per_coefficient(in, e);
+		else if (d.add_bias_term_dph)
+			d.add_bias_term_dph(in, e, thermal);
+	}
 
 	// --- applied rate and scale factor
 	double applied_dph = s.table_rate_dph;
 	if (enabled(Effect::EarthRate)) applied_dph += units::kEarthRate_dph * std::sin(dev_.latitude_deg * units::kDegToRad);
 	double sf_error = 0;
-	if (enabled(Effect::ScaleFactorTemp)) sf_error = e.sf_ppm_per_C * 1e-6 * (out.coil_mean_C - e.sf_ref_C);
+	if (enabled(Effect::ScaleFactorTemp)) sf_error = e.sf_ppm_per_C() * 1e-6 * (out.coil_mean_C - e.sf_ref_C);
 	thermal += sf_error * applied_dph;
 	out.thermal_error_dph = thermal;
 

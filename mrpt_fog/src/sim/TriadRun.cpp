@@ -130,8 +130,8 @@ FogDevice triadAxisDevice(const FogDevice& device, GyroAxis axis)
 	const bool x = axis == GyroAxis::X;
 	d.name = device.name + (x ? " (triad x coil)" : " (triad y coil)");
 	d.winding.midpoint_offset_m = device.winding.midpoint_offset_m * (x ? -0.6 : 1.3);
-	d.errors.radial_gradient_dph_per_C = device.errors.radial_gradient_dph_per_C * (x ? 0.7 : 1.3);
-	d.errors.sf_ppm_per_C = x ? 14.0 : 27.0;
+	d.errors.radial_gradient_dph_per_C() = device.errors.radial_gradient_dph_per_C() * (x ? 0.7 : 1.3);
+	d.errors.sf_ppm_per_C() = x ? 14.0 : 27.0;
 	d.errors.constant_bias_dph = x ? -0.2 : 0.45;
 	return d;
 }

@@ -27,9 +27,9 @@ DrawnDevice drawDevice(std::uint64_t seed)
 	dev.thermal.outer_to_housing_W_K = uni(0.15, 0.5);
 	dev.winding.midpoint_offset_m = uni(-2.0, 2.0);
 	dev.winding.pattern = uni(0, 1) < 0.75 ? WindingPattern::Quadrupolar : WindingPattern::Octupolar;
-	dev.errors.radial_gradient_dph_per_C = uni(0.02, 0.12);
-	dev.errors.gradient_rate_dph_per_C_per_min = uni(0.03, 0.2);
-	dev.errors.hysteresis_dph = uni(0.0, 0.03);
+	dev.errors.radial_gradient_dph_per_C() = uni(0.02, 0.12);
+	dev.errors.gradient_rate_dph_per_C_per_min() = uni(0.03, 0.2);
+	dev.errors.hysteresis_dph() = uni(0.0, 0.03);
 	dev.errors.temp_poly_dph = {uni(-2e-3, 2e-3), uni(-2e-5, 2e-5)};
 	const int count = 1 + static_cast<int>(std::floor(uni(0, 4)));
 	const double quanta[] = {0.01, 1.0 / 256.0, 1.0 / 16.0};

@@ -102,7 +102,7 @@ int main(int argc, char** argv)
 			r.outer = s.outer_C;
 			r.elec = sim.nodeTemperatures_C()(sim.thermal().electronicsNode());
 			r.t_on = t_on;
-			r.sf_ppm = sf_on ? dev.errors.sf_ppm_per_C * (s.coil_mean_C - dev.errors.sf_ref_C) : 0.0;
+			r.sf_ppm = sf_on ? dev.errors.sf_ppm_per_C() * (s.coil_mean_C - dev.errors.sf_ref_C) : 0.0;
 			r.bias_true = s.thermal_error_dph - 1e-6 * r.sf_ppm * r.applied + dev.errors.constant_bias_dph;
 			r.temps = s.temp_C;
 			rows.push_back(r);

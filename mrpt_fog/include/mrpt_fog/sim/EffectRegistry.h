@@ -8,23 +8,29 @@
  * are stable (files and command lines refer to them; never rename one) and the table's order is
  * the order of ErrorEffects.h's allEffectIds() and of the "sim.effects" metadata.
  *
- * Adding an effect: one enumerator, one descriptor in EffectRegistry.cpp (with its simulator
- * term when it is an additive bias), its coefficient in ErrorCoefficients (FogDevice.h), and
- * its candidate column builder in the discrepancy room's CandidateEffect.cpp. The device YAML
- * fields, the simulator calibration's free parameters (slots, finite-difference steps, bounds),
- * fog-sim --help and the proof trials read the descriptor. tests/sim/test_EffectRegistry.cpp
- * and tests/discrepancy/test_EffectRegistryCandidates.cpp fail until every part is there.
+ * Adding an effect: one enumerator below and one descriptor in EffectRegistry.cpp, which holds
+ * all that is known about it: its id and what it means, the default of its coefficient (the
+ * device keeps one value per effect, ErrorCoefficients::coefficients), its simulator term when
+ * it is an additive bias, and from that term its missing-effect candidate (a hand-written one in
+ * the discrepancy room's CandidateEffect.cpp replaces it when the effect needs more, e.g. a
+ * nonlinear parameter). The device YAML fields, the simulator calibration's free parameters
+ * (slots, finite-difference steps, bounds), fog-sim --help and the proof trials read the
+ * descriptor too. EffectRegistry.cpp checks at compile time that descriptor i is enumerator i;
+ * tests/sim/test_EffectRegistry.cpp and tests/discrepancy/test_EffectRegistryCandidates.cpp
+ * fail until every part is there.
  */
-
-#include <mrpt_fog/sim/FogDevice.h>
 
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <string>
 
 namespace mrpt_fog::sim
 {
+struct ErrorCoefficients;
+struct FogDevice;
+
 enum class Effect : unsigned char
 {
 	ShupeRate,
@@ -40,6 +46,9 @@ enum class Effect : unsigned char
 	EarthRate
 };
 constexpr std::size_t kEffectCount = 11;
+
+/** The effect's position in effectDescriptors() and in ErrorCoefficients::coefficients. */
+constexpr std::size_t indexOf(Effect effect) { return static_cast<std::size_t>(effect); }
 
 /** Which residual of a measured run can identify the effect in the model-gap workflow. */
 enum class IdentifiedIn
@@ -86,8 +95,9 @@ struct EffectDescriptor
 	 * whose strength is not one scalar of `errors`, the parameter(s) that set it. */
 	const char* coefficient_key;
 	const char* coefficient_unit;
-	/** The scalar coefficient in ErrorCoefficients, or nullptr (strength set elsewhere). */
-	double ErrorCoefficients::*coefficient;
+	/** Default of its scalar coefficient (ErrorCoefficients::coefficient(effect), the default
+	 * device's value); nullopt when its strength is not one scalar of `errors` (set elsewhere). */
+	std::optional<double> default_coefficient;
 	/** Free parameter of a simulator configuration that calibrates it (SimulatorConfig.h), ""
 	 * when none. */
 	const char* calibration_parameter;
@@ -96,10 +106,17 @@ struct EffectDescriptor
 	/** Proof-trial scaling (tests/support/SimEffectTrial): the parameter multiplied to reach an
 	 * effect-to-noise ratio ("" = not trialled on the simulator). */
 	const char* trial_scaling;
-	/** Its additive bias term [deg/h], added to the sum in place (the simulator's summation
-	 * order is the table's); nullptr when the term needs the simulator's state (Shupe,
-	 * gradient rate, hysteresis), acts elsewhere (lag, heat source, scale factor on the
-	 * applied rate, Earth rate) and is written in FogSimulator.cpp. */
+	/** Its additive bias term per unit of its coefficient [deg/h per coefficient_unit], for an
+	 * effect linear in its scalar coefficient: the simulator adds coefficient x this (in the
+	 * table's order), and, unless the discrepancy room has a hand-written candidate for it, the
+	 * missing-effect candidate's column is this on each sample of the measured run (inputs it
+	 * cannot measure, the electronics temperature, are NaN there; shape fields at the default
+	 * device's values). nullptr when the term is not of that form (see add_bias_term_dph) or
+	 * needs the simulator's state (Shupe, gradient rate, hysteresis), acts elsewhere (lag, heat
+	 * source, scale factor on the applied rate, Earth rate) and is written in FogSimulator.cpp. */
+	double (*bias_per_coefficient)(const EffectTermInputs& in, const ErrorCoefficients& e);
+	/** An additive bias term [deg/h] not linear in one scalar (the electronics polynomial), added
+	 * to the sum in place; nullptr otherwise. */
 	void (*add_bias_term_dph)(const EffectTermInputs& in, const ErrorCoefficients& e, double& sum_dph);
 	/** Its other `errors:` fields, in the device file's order after the coefficient. */
 	std::array<ShapeField, 1> shape_fields;
@@ -122,6 +139,12 @@ const EffectDescriptor* descriptorOfCalibrationParameter(const std::string& para
 /** Slot `index` of the effect's calibration parameter in `device`, nullptr past the last one
  * (or when the effect has no calibration parameter). */
 double* calibrationSlot(const EffectDescriptor& effect, FogDevice& device, std::size_t index);
+
+/** The effect's scalar coefficient in `e`, nullptr when it has none (default_coefficient). */
+double* coefficientIn(const EffectDescriptor& effect, ErrorCoefficients& e);
+
+/** The defaults of every effect's coefficient, indexed by Effect (NaN where none). */
+std::array<double, kEffectCount> defaultCoefficients();
 
 /** How many slots the effect's calibration parameter has in `device`. */
 std::size_t calibrationSlotCount(const EffectDescriptor& effect, const FogDevice& device);

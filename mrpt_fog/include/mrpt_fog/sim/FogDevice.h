@@ -26,7 +26,9 @@
 #include <mrpt_fog/obs/FogSeries.h>
 #include <mrpt_fog/sim/CoilThermalModel.h>
 #include <mrpt_fog/sim/CoilWinding.h>
+#include <mrpt_fog/sim/EffectRegistry.h>
 
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,18 +39,30 @@ namespace mrpt_fog::sim
 struct ErrorCoefficients
 {
 	double constant_bias_dph = 0.3;  //!< turn-on bias, constant (estimate)
-	/** Elasto-optic (thermal stress) bias x (Tin - Tout) [deg/h per C] (no source: one of the two
-	 * knobs FITTED to the seed's uncompensated figures and its M1 figure by
-	 * scripts/fit_seed_knobs.py, docs/sim.md). */
-	double radial_gradient_dph_per_C = 0.12;
-	double gradient_rate_dph_per_C_per_min = 0.1;  //!< x d(Tin - Tout)/dt [C/min] (estimate)
-	double hysteresis_dph = 0.02;  //!< heating minus cooling offset (estimate)
+	/** Each effect's scalar coefficient, indexed by Effect: its meaning, unit, device YAML key
+	 * and default (the reasons for each default too) are the effect's descriptor in
+	 * EffectRegistry.cpp. NaN for an effect whose strength is not one scalar. */
+	std::array<double, kEffectCount> coefficients = defaultCoefficients();
+	double& coefficient(Effect effect) { return coefficients[indexOf(effect)]; }
+	double coefficient(Effect effect) const { return coefficients[indexOf(effect)]; }
+	// The scalar coefficients by name (with their unit):
+	double& radial_gradient_dph_per_C() { return coefficient(Effect::RadialGradient); }  //!< x (Tin - Tout)
+	double radial_gradient_dph_per_C() const { return coefficient(Effect::RadialGradient); }
+	double& gradient_rate_dph_per_C_per_min() { return coefficient(Effect::GradientRate); }  //!< x d(Tin - Tout)/dt
+	double gradient_rate_dph_per_C_per_min() const { return coefficient(Effect::GradientRate); }
+	double& hysteresis_dph() { return coefficient(Effect::Hysteresis); }  //!< heating minus cooling offset
+	double hysteresis_dph() const { return coefficient(Effect::Hysteresis); }
+	double& warmup_dph() { return coefficient(Effect::Warmup); }  //!< extra bias at power-on
+	double warmup_dph() const { return coefficient(Effect::Warmup); }
+	double& sf_ppm_per_C() { return coefficient(Effect::ScaleFactorTemp); }  //!< scale factor vs coil temperature
+	double sf_ppm_per_C() const { return coefficient(Effect::ScaleFactorTemp); }
+	double& magnetic_dph_per_uT() { return coefficient(Effect::Magnetic); }  //!< axial field sensitivity
+	double magnetic_dph_per_uT() const { return coefficient(Effect::Magnetic); }
+
+	// The fields that shape an effect without setting its strength (EffectDescriptor::shape_fields):
 	double hysteresis_span_C = 5.0;  //!< temperature change to swap branch (1/e) (estimate)
-	double warmup_dph = 0.1;  //!< extra bias at power-on (estimate)
 	double warmup_tau_s = 600.0;  //!< decay time after power-on (estimate)
-	double sf_ppm_per_C = 20.0;  //!< scale factor vs coil temperature (PHYSICS.md: tens-hundreds)
 	double sf_ref_C = 25.0;  //!< temperature of the nominal scale factor
-	double magnetic_dph_per_uT = 2e-4;  //!< shielded coil (estimate)
 	/** Static bias c1 x + c2 x^2 + ... with x = T_electronics - temp_poly_ref_C (estimate). */
 	std::vector<double> temp_poly_dph = {1.0e-3, 1.0e-5};
 	double temp_poly_ref_C = 25.0;
