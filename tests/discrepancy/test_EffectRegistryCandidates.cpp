@@ -9,6 +9,7 @@
 #include <mrpt_fog/sim/EffectRegistry.h>
 
 #include <algorithm>
+#include <cmath>
 
 using namespace mrpt_fog;
 
@@ -35,4 +36,59 @@ TEST(EffectRegistryCandidates, EveryIdentifiableEffectHasItsCandidate)
 		}
 	}
 	for (const auto& c : discrepancy::candidateLibrary()) EXPECT_NO_THROW(sim::effectFromId(c.id)) << c.id;
+}
+
+namespace
+{
+/** A powered run of n samples at 10 s: a radial gradient that swings, a field switched on for
+ * the middle third, a turn-on at 100 s (the first ten samples are before it). */
+discrepancy::RunSignals poweredRun(std::size_t n)
+{
+	discrepancy::RunSignals s;
+	for (std::size_t k = 0; k < n; ++k)
+	{
+		s.time_s.push_back(10.0 * static_cast<double>(k));
+		s.gradient_C.push_back(0.3 * std::sin(0.05 * static_cast<double>(k)));
+		s.field_uT.push_back(k >= n / 3 && k < 2 * n / 3 ? 50.0 : 0.0);
+		s.power.push_back(1.0);
+		s.usable.push_back(1);
+		s.block.push_back(0);
+	}
+	s.power_on_s = {100.0};
+	s.has_field = s.has_inner_outer = true;
+	return s;
+}
+}  // namespace
+
+TEST(EffectRegistryCandidates, CandidateFromTheSimulatorTermIsItsColumn)
+{
+	// An effect without a hand-written candidate gets its simulator term per coefficient as its
+	// column. Checked against two hand-written ones that are that column, and a closed form.
+	const auto s = poweredRun(90);
+	discrepancy::CandidateContext ctx;
+	ctx.sig = &s;
+	for (const auto effect : {sim::Effect::Magnetic, sim::Effect::RadialGradient})
+	{
+		const auto& d = sim::descriptorOf(effect);
+		SCOPED_TRACE(d.id);
+		const auto derived = discrepancy::candidateFromTerm(d);
+		EXPECT_EQ(derived.id, d.id);
+		EXPECT_EQ(derived.channel, discrepancy::ResidualChannel::Bias);
+		EXPECT_EQ(derived.coefficient_unit, d.coefficient_unit);
+		const Eigen::MatrixXd a = derived.build(ctx, 0.0), b = discrepancy::candidateById(d.id).build(ctx, 0.0);
+		ASSERT_EQ(a.rows(), 90);
+		ASSERT_EQ(a.cols(), 1);
+		EXPECT_EQ(a, b);
+		EXPECT_EQ(derived.untestable_reason(s), "");
+	}
+	// warm-up: exp(-(t - 100 s) / 600 s) after the turn-on, 0 before it (no turn-on yet: +inf)
+	const auto w = discrepancy::candidateFromTerm(sim::descriptorOf(sim::Effect::Warmup)).build(ctx, 0.0);
+	for (std::size_t k = 0; k < 90; ++k)
+		EXPECT_DOUBLE_EQ(w(static_cast<Eigen::Index>(k), 0), k < 10 ? 0.0 : std::exp(-(10.0 * k - 100.0) / 600.0)) << k;
+	// no field in the run: the magnetic term's column is zero, so the run cannot test it
+	auto no_field = s;
+	no_field.field_uT.assign(90, 0.0);
+	EXPECT_NE(discrepancy::candidateFromTerm(sim::descriptorOf(sim::Effect::Magnetic)).untestable_reason(no_field), "");
+	// an effect whose term needs the simulator's state has none to derive from
+	EXPECT_THROW(discrepancy::candidateFromTerm(sim::descriptorOf(sim::Effect::Hysteresis)), std::invalid_argument);
 }

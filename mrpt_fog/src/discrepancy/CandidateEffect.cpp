@@ -2,9 +2,12 @@
 #include <mrpt_fog/discrepancy/BaseModelDesign.h>
 #include <mrpt_fog/discrepancy/CandidateEffect.h>
 #include <mrpt_fog/sim/EffectRegistry.h>
+#include <mrpt_fog/sim/FogDevice.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <utility>
@@ -240,7 +243,39 @@ Eigen::MatrixXd tempPolyColumns(const CandidateContext& ctx, double)
 	return m;
 }
 
-std::vector<CandidateEffect> makeLibrary()
+/** The inputs of the simulator's additive terms at each sample of a measured run: the radial
+ * gradient, the axial field and the time since the last power-on at or before the sample (+inf
+ * before the first); the electronics temperature is not measured (NaN). */
+std::vector<sim::EffectTermInputs> termInputs(const RunSignals& s)
+{
+	std::vector<sim::EffectTermInputs> in(s.size());
+	std::size_t on = 0;
+	for (std::size_t k = 0; k < s.size(); ++k)
+	{
+		while (on < s.power_on_s.size() && s.power_on_s[on] <= s.time_s[k]) ++on;
+		in[k].gradient_C = s.gradient_C[k];
+		in[k].field_uT = s.field_uT[k];
+		in[k].time_since_power_on_s =
+			on > 0 ? s.time_s[k] - s.power_on_s[on - 1] : std::numeric_limits<double>::infinity();
+		in[k].electronics_C = std::numeric_limits<double>::quiet_NaN();
+	}
+	return in;
+}
+
+/** The effect's simulator term per coefficient on each sample of the run (NaN where not finite). */
+std::vector<double> termPerCoefficient(const sim::EffectDescriptor& d, const RunSignals& s)
+{
+	const sim::ErrorCoefficients shape;  // the default device's shape fields
+	const auto in = termInputs(s);
+	std::vector<double> v(in.size());
+	for (std::size_t k = 0; k < in.size(); ++k) v[k] = d.bias_per_coefficient(in[k], shape);
+	return v;
+}
+
+/** The hand-written candidates: effects whose column is not their simulator term per
+ * coefficient on the measured run (the term needs the simulator's state, a nonlinear parameter
+ * is searched, the column is split, or the untestable reason says more). */
+std::vector<CandidateEffect> handWrittenCandidates()
 {
 	using sim::Effect;
 	std::vector<CandidateEffect> lib;
@@ -312,11 +347,51 @@ std::vector<CandidateEffect> makeLibrary()
 					},
 					always),
 		"tau_s", {120, 300, 600, 1200, 2400, 4800}));
+	return lib;
+}
+
+/** One candidate per effect a residual identifies, in the registry's order: its hand-written
+ * candidate, else the one its simulator term per coefficient gives. */
+std::vector<CandidateEffect> makeLibrary()
+{
+	const auto written = handWrittenCandidates();
+	std::vector<CandidateEffect> lib;
+	for (const auto& d : sim::effectDescriptors())
+	{
+		if (d.identified_in == sim::IdentifiedIn::NotIdentified) continue;
+		const auto it = std::find_if(written.begin(), written.end(), [&](const CandidateEffect& c) { return c.id == d.id; });
+		if (it != written.end())
+			lib.push_back(*it);
+		else if (d.bias_per_coefficient && d.identified_in == sim::IdentifiedIn::Bias)
+			lib.push_back(candidateFromTerm(d));
+		else
+			throw std::logic_error(std::string("effect registry: ") + d.id +
+								   " is identified in a residual but has neither a term per coefficient nor a "
+								   "hand-written candidate (CandidateEffect.cpp)");
+	}
 	for (auto& c : lib)
 		if (c.theta_grid.empty()) c.theta_grid = {0.0};
 	return lib;
 }
 }  // namespace
+
+CandidateEffect candidateFromTerm(const sim::EffectDescriptor& d)
+{
+	if (!d.bias_per_coefficient)
+		throw std::invalid_argument(std::string("candidateFromTerm: effect ") + d.id + " has no term per coefficient");
+	CandidateEffect c = candidateOf(
+		d.effect, d.summary, d.identified_by, d.coefficient_unit,
+		[d](const CandidateContext& ctx, double) { return column(termPerCoefficient(d, *ctx.sig)); },
+		[d](const RunSignals& s)
+		{
+			const auto v = termPerCoefficient(d, s);
+			for (std::size_t k = 0; k < v.size(); ++k)
+				if (s.usable[k] && std::isfinite(v[k]) && v[k] != 0.0) return std::string();
+			return std::string("the run does not excite it (its simulator term is zero on every usable sample)");
+		});
+	c.theta_grid = {0.0};
+	return c;
+}
 
 const std::vector<CandidateEffect>& candidateLibrary()
 {

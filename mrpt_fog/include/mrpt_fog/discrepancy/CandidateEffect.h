@@ -7,12 +7,16 @@
  * regressor columns it adds to a bias model, built from RunSignals. Time constants (warm-up)
  * are nonlinear parameters found by profile search over `theta_grid`.
  *
- * Ids: shupe_rate, radial_gradient, gradient_rate, thermistor_lag, hysteresis, warmup,
- * scale_factor_temp, magnetic, temp_poly_order (bias channel) and heat_source (temperature
- * channel, see ThermalResidualModel.h).
+ * One candidate per effect of the simulator's registry (sim/EffectRegistry.h) that a residual
+ * identifies, with the registry's id and order: shupe_rate, radial_gradient, gradient_rate,
+ * thermistor_lag, hysteresis, warmup, scale_factor_temp, magnetic, temp_poly_order (bias
+ * channel) and heat_source (temperature channel, see ThermalResidualModel.h). An effect
+ * without a hand-written candidate gets the one its simulator term per coefficient gives
+ * (candidateFromTerm).
  */
 
 #include <mrpt_fog/discrepancy/RunSignals.h>
+#include <mrpt_fog/sim/EffectRegistry.h>
 
 #include <Eigen/Dense>
 #include <cmath>
@@ -59,7 +63,15 @@ struct CandidateEffect
 	std::function<std::string(const RunSignals&)> untestable_reason;
 };
 
-/** The candidate library, in a fixed order. */
+/** The candidate an effect's simulator term per coefficient gives (EffectDescriptor::
+ * bias_per_coefficient): one column, the term per coefficient on each sample of the run (time
+ * since the last power-on at or before it, +inf before the first; the electronics temperature
+ * is not measured: NaN, and a non-finite value counts as 0); its description, data and unit
+ * are the descriptor's; untestable when the column is zero on every usable sample. Throws
+ * std::invalid_argument when the effect has no such term. */
+CandidateEffect candidateFromTerm(const sim::EffectDescriptor& effect);
+
+/** The candidate library, in the registry's order. */
 const std::vector<CandidateEffect>& candidateLibrary();
 
 /** Candidate by id; throws std::invalid_argument for an unknown id. */
