@@ -21,6 +21,17 @@
 #   full_order2 all effects; cal_order2 = cal_full's runs with the bias model's temperature order
 #               forced to 2 (--model multipoint@2/1 --selection none; the automatic selection
 #               keeps order 1); warm_start_order2 the same on the warm-start drives
+#   full_sq     all effects; cal_sq = cal_full's runs and terms (the linear multipoint model the
+#               automatic selection keeps) plus ONE curvature term T(To1)^2 (--model terms:...
+#               --selection none): the static bias curve's curvature (electronics polynomial) that
+#               order 1 cannot follow, without the turn-on extrapolation of four T^2 terms
+#               (full_order2). To1 chosen on tuning drives 1..3 (Ti1 / Ti2 within 2 %);
+#               warm_start_sq the same on the warm-start drives
+#   full_wu     all effects; cal_wu = chamber_A + ratetable_A + ratetable_transient for the bias (the
+#               cal_sq terms) and scale factor, the warm-up term fitted apart on the two warm-up runs
+#               (--warmup-run warmup --warmup-run warmup_B: its number of exponentials chosen by
+#               held-out error, each run left out in turn; and the start-up model's offset at a
+#               turn-on); warm_start_wu the same on the warm-start drives
 #   no_sf       drives without scale_factor_temp; cal_bias = chamber_A + warmup (no scale factor)
 #   no_sf_wu    drives also without the warm-up effect; cal_bias
 #   warm_start  all effects, but the gyro long on at the start (cabin warm_start: 20 C steady,
@@ -36,15 +47,23 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/heading_budget_setup.sh"  # ROOT, OUT ($1), BUILD ($2), programs, cabins
 SEEDS=${SEEDS:-"11 12 13 14 15 16 17 18 19"}
 BUNDLED=${BUNDLED-20240501}  # the bundled drive's seed (winter cabin) joins SEEDS; BUNDLED= leaves it out
+VARIANTS=${VARIANTS:-"full soak_sf no_sf no_sf_wu warm_start full_order2 warm_start_order2 full_sq warm_start_sq full_wu warm_start_wu noise_floor"}
+want() { [[ " $VARIANTS " == *" $1 "* ]]; }  # VARIANTS="full full_sq" runs only those (and their truth splits)
 NOISE_EFFECTS=(--effect earth_rate --effect heat_source --effect thermistor_lag)
 
 [ -f "$OUT/cal_full.yaml" ] || "$CAL" -i "$D/chamber_A.rawlog" -i "$D/ratetable_A.rawlog" -i "$D/ratetable_transient.rawlog" \
 	-i "$D/warmup.rawlog" -o "$OUT/cal_full.yaml" >/dev/null
 [ -f "$OUT/cal_order2.yaml" ] || "$CAL" -i "$D/chamber_A.rawlog" -i "$D/ratetable_A.rawlog" -i "$D/ratetable_transient.rawlog" \
 	-i "$D/warmup.rawlog" --model multipoint@2/1 --selection none -o "$OUT/cal_order2.yaml" >/dev/null
+LINEAR_TERMS="T(Ti1)^1;dT/dt(Ti1)^1;T(To1)^1;dT/dt(To1)^1;T(Ti2)^1;dT/dt(Ti2)^1;T(To2)^1;dT/dt(To2)^1"
+[ -f "$OUT/cal_sq.yaml" ] || "$CAL" -i "$D/chamber_A.rawlog" -i "$D/ratetable_A.rawlog" -i "$D/ratetable_transient.rawlog" \
+	-i "$D/warmup.rawlog" --model "terms:$LINEAR_TERMS;T(To1)^2" --selection none -o "$OUT/cal_sq.yaml" >/dev/null
+[ -f "$OUT/cal_wu.yaml" ] || "$CAL" -i "$D/chamber_A.rawlog" -i "$D/ratetable_A.rawlog" -i "$D/ratetable_transient.rawlog" \
+	--warmup-run "$D/warmup.rawlog" --warmup-run "$D/warmup_B.rawlog" --model "terms:$LINEAR_TERMS;T(To1)^2" --selection none \
+	-o "$OUT/cal_wu.yaml" >/dev/null
 [ -f "$OUT/cal_soak.yaml" ] || "$CAL" -i "$D/chamber_A.rawlog" -i "$D/ratetable_A.rawlog" -i "$D/warmup.rawlog" -o "$OUT/cal_soak.yaml" >/dev/null
 [ -f "$OUT/cal_bias.yaml" ] || "$CAL" -i "$D/chamber_A.rawlog" -i "$D/warmup.rawlog" -o "$OUT/cal_bias.yaml" >/dev/null
-if [ ! -f "$OUT/cal_noise.yaml" ]; then
+if want noise_floor && [ ! -f "$OUT/cal_noise.yaml" ]; then
 	"$SIM" --profile seed --seed 20240501 "${NOISE_EFFECTS[@]}" -o "$OUT/noise_chamber_A.rawlog" >/dev/null
 	"$SIM" --profile ratetable --seed 20240502 "${NOISE_EFFECTS[@]}" -o "$OUT/noise_ratetable_A.rawlog" >/dev/null
 	"$SIM" --profile warmup --seed 20240501 "${NOISE_EFFECTS[@]}" -o "$OUT/noise_warmup.rawlog" >/dev/null
@@ -65,8 +84,8 @@ run_variant() {  # name cal sim-args...
 		case $name in warm_start*) cab_arg=(--cabin "$OUT/warm_start.yaml") ;; esac
 		local f="$OUT/${name}_seed${seed}.rawlog"
 		case $name in  # the same drives as another variant
-			soak_sf | full_order2) f="$OUT/full_seed${seed}.rawlog" ;;
-			warm_start_order2) f="$OUT/warm_start_seed${seed}.rawlog" ;;
+			soak_sf | full_order2 | full_sq | full_wu) f="$OUT/full_seed${seed}.rawlog" ;;
+			warm_start_order2 | warm_start_sq | warm_start_wu) f="$OUT/warm_start_seed${seed}.rawlog" ;;
 		esac
 		[ -f "$f" ] || "$SIM" --profile drive "${cab_arg[@]}" --seed "$seed" "$@" -o "$f" >/dev/null
 		inputs+=(-i "$f")
@@ -91,16 +110,25 @@ truth_split() {  # name cal cabin-of-seed-function: the truth split of the varia
 	/usr/bin/python3 "$ROOT/scripts/heading_budget_truth.py" "${files[@]}" --json "$OUT/truth_$name.json" > "$OUT/truth_$name.txt"
 	grep '^median' "$OUT/truth_$name.txt" | sed "s/^/truth $name: /"
 }
-run_variant full "$OUT/cal_full.yaml"
-run_variant soak_sf "$OUT/cal_soak.yaml"
-run_variant no_sf "$OUT/cal_bias.yaml" --effect -scale_factor_temp
-run_variant no_sf_wu "$OUT/cal_bias.yaml" --effect -scale_factor_temp --effect -warmup
-run_variant warm_start "$OUT/cal_full.yaml"
-run_variant full_order2 "$OUT/cal_order2.yaml"
-run_variant warm_start_order2 "$OUT/cal_order2.yaml"
-run_variant noise_floor "$OUT/cal_noise.yaml" "${NOISE_EFFECTS[@]}"
-truth_split soak_sf "$OUT/cal_soak.yaml"
-truth_split full "$OUT/cal_full.yaml"
-truth_split full_order2 "$OUT/cal_order2.yaml"
-truth_split warm_start "$OUT/cal_full.yaml"
-truth_split warm_start_order2 "$OUT/cal_order2.yaml"
+want full && run_variant full "$OUT/cal_full.yaml"
+want soak_sf && run_variant soak_sf "$OUT/cal_soak.yaml"
+want no_sf && run_variant no_sf "$OUT/cal_bias.yaml" --effect -scale_factor_temp
+want no_sf_wu && run_variant no_sf_wu "$OUT/cal_bias.yaml" --effect -scale_factor_temp --effect -warmup
+want warm_start && run_variant warm_start "$OUT/cal_full.yaml"
+want full_order2 && run_variant full_order2 "$OUT/cal_order2.yaml"
+want warm_start_order2 && run_variant warm_start_order2 "$OUT/cal_order2.yaml"
+want full_sq && run_variant full_sq "$OUT/cal_sq.yaml"
+want warm_start_sq && run_variant warm_start_sq "$OUT/cal_sq.yaml"
+want full_wu && run_variant full_wu "$OUT/cal_wu.yaml"
+want warm_start_wu && run_variant warm_start_wu "$OUT/cal_wu.yaml"
+want noise_floor && run_variant noise_floor "$OUT/cal_noise.yaml" "${NOISE_EFFECTS[@]}"
+want soak_sf && truth_split soak_sf "$OUT/cal_soak.yaml"
+want full && truth_split full "$OUT/cal_full.yaml"
+want full_order2 && truth_split full_order2 "$OUT/cal_order2.yaml"
+want full_sq && truth_split full_sq "$OUT/cal_sq.yaml"
+want warm_start && truth_split warm_start "$OUT/cal_full.yaml"
+want warm_start_order2 && truth_split warm_start_order2 "$OUT/cal_order2.yaml"
+want warm_start_sq && truth_split warm_start_sq "$OUT/cal_sq.yaml"
+want full_wu && truth_split full_wu "$OUT/cal_wu.yaml"
+want warm_start_wu && truth_split warm_start_wu "$OUT/cal_wu.yaml"
+true

@@ -37,6 +37,7 @@ RUNS=(
 	"drive|drive|$SEED|no|Vehicle drive, 70.5 min: winter cold start (cabin -15 C -> 20 C at 2 C/min -> 24 C), gyro powered at t = 0; streams FOG (thermal error), FOG_IDEAL (same noise, no thermal error), ODOMETRY (CObservationOdometry), GROUND_TRUTH (CObservationRobotPose)."
 	"ratetable_A|ratetable|$((SEED + 1))|no|Rate-table run, same device as chamber_A (scale factor vs temperature, IEEE Std 952 style): 90 min soaks at -40, -15, 10, 35, 60 C (2 C/min between), at each the table turns +-1, +-10, +-100 deg/s for 4 min each (table_rate_dph in the FOG observations); 10.9 h."
 	"ratetable_transient|datasets/ratetable_transient.yaml|$((SEED + 2))|no|Rate table in temperature transients, same device (the coil temperature the scale factor follows, which no thermistor reads in a transient): the table alternates +-100 deg/s every 2 min through a cold turn-on at -30 C (40 min), a ramp to 50 C at 1 C/min, 30 min at 50 C, 1 h off and a turn-on at 50 C (30 min), a ramp to -30 C at 2 C/min and 20 min there; 5 h. Profile: datasets/ratetable_transient.yaml."
+	"warmup_B|warmup|$((SEED + 3))|no|Second room-temperature warm-up, same profile and device as warmup.rawlog, its own noise seed (SEED + 3): with two warm-up runs fog-calibrate chooses the warm-up term's number of exponentials by held-out error, each run left out in turn (--warmup-run warmup.rawlog --warmup-run warmup_B.rawlog)."
 )
 
 for run in "${RUNS[@]}"; do

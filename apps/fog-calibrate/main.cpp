@@ -111,14 +111,21 @@ SCALE FACTOR VS TEMPERATURE (--scale-factor auto|off)
   thermistors (the coil's mean temperature, which no single one reads in a transient; weights
   fitted, printed, and stored in the file); chosen only when its held-out error is lower.
 
-WARM-UP (--warmup-run RUN, repeatable)
+WARM-UP (--warmup-run RUN, repeatable; --warmup-terms 1|2|auto)
   Runs that hold a turn-on (a 0 -> 1 power step, or metadata power_on_time_s at or before the
   first sample: a gyro switched on cold, e.g. datasets/warmup.rawlog) fit the turn-on term
-  bias += A exp(-(t - t_on) / tau) on the residual of the calibration fitted on the -i runs;
-  they do not join the bias fit (their transient would be taken for a thermal effect). Printed
-  with its standard errors and the residual RMS without / with the term over the fitted spans.
-  The compensator adds it from each turn-on on (metadata power_on_time_s, 0 -> 1 steps). A run
-  with no turn-on, a span under 600 s, or no decay resolved stops fog-calibrate with the reason.
+  bias += A exp(-(t - t_on) / tau) [+ A2 exp(-(t - t_on) / tau2)] on the residual of the
+  calibration fitted on the -i runs; they do not join the bias fit (their transient would be
+  taken for a thermal effect). What the term holds is everything a turn-on adds that the bias
+  model fitted on powered runs does not predict: the source's own settling, and the thermal
+  model's error at a turn-on (an unpowered coil has inner/outer differences no powered run has).
+  --warmup-terms auto (default): with two or more warm-up runs, one or two exponentials by
+  held-out error (each run left out in turn, its binned residual scored); with one run, one.
+  Also fitted: the start-up offset, the rate-free start-up model's own error in the first rate
+  window after a turn-on (the compensator adds it there). Printed with standard errors and the
+  residual RMS without / with the term. The compensator adds the term from each turn-on on
+  (metadata power_on_time_s, 0 -> 1 steps). A run with no turn-on, a span under 600 s, or no
+  decay resolved stops fog-calibrate with the reason.
 
 THREE AXES (--axis x|y|z|all)
   A log with several gyro axes (rate_x/y/z_dph) is calibrated per axis, every axis the -i
@@ -133,8 +140,11 @@ EXAMPLES
   fog-calibrate -i datasets/chamber_A.rawlog --model multipoint -o cal.yaml --validate datasets/chamber_B.rawlog
   fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable_A.rawlog -o cal_sf.yaml
   fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable_A.rawlog -i datasets/ratetable_transient.rawlog \
-                -i datasets/warmup.rawlog -o cal_full.yaml        (the recommended calibration: docs/nav.md)
-  fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable_A.rawlog --warmup-run datasets/warmup.rawlog -o cal_wu.yaml
+                -i datasets/warmup.rawlog -o cal_full.yaml        (warm-up run in the bias fit: the recommendation before)
+  fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable_A.rawlog -i datasets/ratetable_transient.rawlog \
+                --warmup-run datasets/warmup.rawlog --warmup-run datasets/warmup_B.rawlog --selection none \
+                --model "terms:T(Ti1)^1;dT/dt(Ti1)^1;T(To1)^1;dT/dt(To1)^1;T(Ti2)^1;dT/dt(Ti2)^1;T(To2)^1;dT/dt(To2)^1;T(To1)^2" \
+                -o cal_wu.yaml    (the recommended calibration: docs/nav.md, "Error budget")
   fog-calibrate -i chamber3.rawlog -i rt_x.rawlog -i rt_y.rawlog -i rt_z.rawlog -o cal3.yaml   (triad, fog-sim --triad)
   fog-calibrate -i runA.csv -i runB.csv --model points:2 -o cal2.yaml --json fit.json
   fog-calibrate -i runA.csv --model M3:Ti1,To1 --selection none -o m3.yaml
@@ -238,6 +248,7 @@ struct AxisFit
 	std::vector<std::string> skipped;  //!< -i runs left out for this axis, with the reason
 	bool earth_rate_removed = false;
 	bool validated = false;
+	std::string warmup_terms_why;  //!< how the warm-up term count was chosen
 };
 
 CompensationCounters validationRange(const Calibration& cal)
@@ -333,6 +344,14 @@ void printAxis(const AxisFit& f, double tau_s, bool validated)
 					"residual RMS %.4g -> %.4g deg/h\n",
 					w.amplitude_dph, w.amplitude_std_dph, w.tau_s, w.tau_std_s, w.turn_ons, w.fitted_span_s,
 					w.rms_before_dph, w.rms_after_dph);
+		if (w.hasSecondTerm())
+			std::printf("    + %.4g +- %.2g deg/h x exp(-t / (%.4g +- %.2g s))\n", w.amplitude2_dph, w.amplitude2_std_dph,
+						w.tau2_s, w.tau2_std_s);
+		if (!f.warmup_terms_why.empty()) std::printf("    terms: %s\n", f.warmup_terms_why.c_str());
+		if (w.startup_samples > 0)
+			std::printf("    start-up offset %.4g +- %.2g deg/h while the rate-free start-up model runs after a turn-on "
+						"(%zu samples)\n",
+						w.startup_offset_dph, w.startup_offset_std_dph, w.startup_samples);
 	}
 	if (!cal.scale_factor && f.table_rates)
 		std::printf("  scale factor: not fitted (--scale-factor off): table samples used as bias samples\n");
@@ -425,6 +444,17 @@ JsonValue axisJson(const AxisFit& f, double tau_s, bool validated)
 		jw["fitted_span_s"] = w.fitted_span_s;
 		jw["rms_before_dph"] = w.rms_before_dph;
 		jw["rms_after_dph"] = w.rms_after_dph;
+		if (w.hasSecondTerm())
+		{
+			jw["amplitude2_dph"] = w.amplitude2_dph;
+			jw["amplitude2_std_dph"] = w.amplitude2_std_dph;
+			jw["tau2_s"] = w.tau2_s;
+			jw["tau2_std_s"] = w.tau2_std_s;
+		}
+		jw["terms_choice"] = f.warmup_terms_why;
+		jw["startup_offset_dph"] = w.startup_offset_dph;
+		jw["startup_offset_std_dph"] = w.startup_offset_std_dph;
+		jw["startup_samples"] = static_cast<unsigned long>(w.startup_samples);
 	}
 	if (f.earth_rate_removed) j["earth_rate"] = "removed from the bias (runs' metadata earth_rate_dph)";
 	return j;
@@ -472,6 +502,11 @@ int main(int argc, char** argv)
 											  "Run holding a turn-on (cold start) to fit the warm-up term; repeatable; "
 											  "not used in the bias fit",
 											  false, "RUN", cmd);
+		TCLAP::ValueArg<std::string> arg_warm_terms(
+			"", "warmup-terms",
+			"Exponential terms of the warm-up: 1, 2, or auto (default: chosen by held-out error, each "
+			"--warmup-run left out in turn; with one run: 1)",
+			false, "auto", "1|2|auto", cmd);
 		TCLAP::SwitchArg arg_no_screen("", "no-screening",
 									   "Do not screen thermistor readings (stuck / spike / out of range -> dropout) "
 									   "before fitting (the screening fog-compensate runs)",
@@ -621,7 +656,22 @@ int main(int argc, char** argv)
 				try
 				{
 					if (set.runs.empty()) throw WarmupFitError("no warm-up run has this axis");
-					cal.warmup = fitWarmup(inMemory(set.runs), cal, {}, nullptr, set.labels);
+					WarmupFitOptions wo;
+					const std::string& terms = arg_warm_terms.getValue();
+					if (terms == "auto")
+					{
+						const WarmupTermsChoice ch = selectWarmupTerms(inMemory(set.runs), cal, wo, set.labels);
+						wo.exponentials = ch.exponentials;
+						fits[ia].warmup_terms_why = ch.why;
+					}
+					else if (terms == "1" || terms == "2")
+					{
+						wo.exponentials = terms == "1" ? 1 : 2;
+						fits[ia].warmup_terms_why = "--warmup-terms " + terms;
+					}
+					else
+						throw std::invalid_argument("--warmup-terms: '" + terms + "' is not 1, 2 or auto");
+					cal.warmup = fitWarmup(inMemory(set.runs), cal, wo, nullptr, set.labels);
 				}
 				catch (const WarmupFitError& e)
 				{

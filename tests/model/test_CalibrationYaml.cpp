@@ -317,6 +317,45 @@ TEST(CalibrationYaml, Version2FileFromBeforeTheTriadLoadsAndCompensatesAsBefore)
 	EXPECT_EQ(calibrationSetToYaml(back), calibrationSetToYaml(set));
 }
 
+// The warm-up's optional second term and start-up offset round-trip exactly; a bad second time
+// constant is a field error; absent, the file reads as one term and no offset.
+TEST(CalibrationYaml, WarmupSecondTermAndStartupOffsetRoundTrip)
+{
+	Calibration c = cal();
+	WarmupModel w;
+	w.amplitude_dph = 0.45;
+	w.tau_s = 140;
+	w.amplitude2_dph = 0.08;
+	w.tau2_s = 520;
+	w.amplitude2_std_dph = 0.03;
+	w.tau2_std_s = 120;
+	w.startup_offset_dph = -1.9;
+	w.startup_offset_std_dph = 0.008;
+	w.startup_samples = 600;
+	c.warmup = w;
+	const std::string text = calibrationToYaml(c);
+	const Calibration back = calibrationFromYaml(text, "c.yaml");
+	ASSERT_TRUE(back.warmup);
+	EXPECT_EQ(back.warmup->amplitude2_dph, 0.08);
+	EXPECT_EQ(back.warmup->tau2_s, 520.0);
+	EXPECT_EQ(back.warmup->tau2_std_s, 120.0);
+	EXPECT_EQ(back.warmup->startup_offset_dph, -1.9);
+	EXPECT_EQ(back.warmup->startup_samples, 600u);
+	EXPECT_EQ(calibrationToYaml(back), text);
+	EXPECT_DOUBLE_EQ(back.warmup->bias_dph(100.0), 0.45 * std::exp(-100.0 / 140) + 0.08 * std::exp(-100.0 / 520));
+	EXPECT_NE(errorOf(replaced(text, "tau2_s: 520", "tau2_s: 0")).find("axes[0].warmup.tau2_s"), std::string::npos);
+	WarmupModel one;
+	one.amplitude_dph = 0.1;
+	one.tau_s = 600;
+	c.warmup = one;
+	const std::string plain = calibrationToYaml(c);
+	EXPECT_EQ(plain.find("tau2_s"), std::string::npos);
+	EXPECT_EQ(plain.find("startup_offset_dph"), std::string::npos);
+	const Calibration b1 = calibrationFromYaml(plain, "p.yaml");
+	EXPECT_FALSE(b1.warmup->hasSecondTerm());
+	EXPECT_EQ(b1.warmup->startup_offset_dph, 0.0);
+}
+
 // The optional sections round-trip exactly; absent they stay absent.
 TEST(CalibrationYaml, ScaleFactorAndWarmupRoundTrip)
 {

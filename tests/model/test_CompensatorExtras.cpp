@@ -81,6 +81,47 @@ TEST(CompensatorExtras, ScaleFactorAndWarmupFollowTheClosedForm)
 	EXPECT_EQ(compensate(only_warm, c).compensated_dph, plain.compensated_dph);
 }
 
+// The start-up offset is added exactly where the rate-free start-up model runs in the first rate
+// window after a turn-on, on top of the exponential terms; with the turn-on later, nowhere.
+TEST(CompensatorExtras, StartupOffsetOnlyWhileTheStartupModelRunsAfterATurnOn)
+{
+	FogSeries b = fogtest::makeCoilRun("B", 77);
+	const double t_on = b.time_s.front();
+	b.setMetadata("power_on_time_s", std::to_string(t_on));
+	const CompensatedSeries plain = compensate(biasOnly(), b);
+	Calibration cal = biasOnly();
+	ASSERT_TRUE(cal.startup.has_value()) << "the test needs a model with rates and its start-up model";
+	WarmupModel w;
+	w.amplitude_dph = 0.2;
+	w.tau_s = 900;
+	w.amplitude2_dph = -0.05;
+	w.tau2_s = 3000;
+	w.startup_offset_dph = -1.5;
+	cal.warmup = w;
+	const CompensatedSeries out = compensate(cal, b);
+	std::size_t with_offset = 0;
+	for (std::size_t k = 0; k < b.size(); k++)
+	{
+		const double dt = b.time_s[k] - t_on;
+		const bool startup = (plain.flags[k] & compflags::RateFree) != 0 && dt <= cal.rate_estimator.window_s;
+		with_offset += startup;
+		const double extra = 0.2 * std::exp(-dt / 900.0) - 0.05 * std::exp(-dt / 3000.0) + (startup ? -1.5 : 0.0);
+		ASSERT_NEAR(out.bias_dph[k] - plain.bias_dph[k], extra, 1e-12) << k;
+	}
+	EXPECT_GT(with_offset, 0u);
+	EXPECT_LT(with_offset, b.size() / 10);
+	// a turn-on after the start-up window: the exponentials from there, the offset nowhere
+	const double later = t_on + 1000.0;
+	b.setMetadata("power_on_time_s", std::to_string(later));
+	const CompensatedSeries out2 = compensate(cal, b);
+	for (std::size_t k = 0; k < b.size(); k++)
+	{
+		const double dt = b.time_s[k] - later;
+		const double extra = dt >= 0 ? 0.2 * std::exp(-dt / 900.0) - 0.05 * std::exp(-dt / 3000.0) : 0.0;
+		ASSERT_NEAR(out2.bias_dph[k] - plain.bias_dph[k], extra, 1e-12) << k;
+	}
+}
+
 // A power step 0 -> 1 restarts the warm-up term; a missing scale-factor thermistor holds s.
 TEST(CompensatorExtras, TurnOnFromThePowerColumnAndHeldScaleFactor)
 {

@@ -74,7 +74,50 @@ FogSeries turnOnRun(unsigned seed, double A, double tau, double T = 23.0, double
 {
 	return phasesRun(seed, A, tau, {{off_s, on_s, T}});
 }
+/** A turn-on after off_s at temperature T whose output adds two exponentials (closed form). */
+FogSeries twoTermRun(unsigned seed, double A1, double tau1, double A2, double tau2, double on_s = 10800)
+{
+	std::mt19937_64 rng(seed);
+	FogSeries s = emptyRun();
+	double t = 0;
+	for (int k = 0; k < 300; k++, t += 1) push(s, rng, t, 23.0, 0.0, false);
+	const double t_on = t;
+	for (int k = 0; k < static_cast<int>(on_s); k++, t += 1)
+		push(s, rng, t, 23.0, staticBias(23.0) + A1 * std::exp(-(t - t_on) / tau1) + A2 * std::exp(-(t - t_on) / tau2),
+			 true);
+	return s;
+}
 }  // namespace
+
+// Two time constants (a fast and a slow settling) come back from two turn-on runs, and the held-out
+// choice (each run left out in turn) takes two terms; with one true term it keeps one. A model
+// without rates has no start-up model: no start-up offset is fitted.
+TEST(WarmupFit, TwoTimeConstantsChosenByHeldOutError)
+{
+	const Calibration cal = biasCalibration();
+	const std::vector<FogSeries> two = {twoTermRun(11, 0.3, 150, 0.1, 1500), twoTermRun(12, 0.3, 150, 0.1, 1500)};
+	const WarmupTermsChoice ch = selectWarmupTerms(two, cal);
+	EXPECT_TRUE(ch.judged);
+	EXPECT_EQ(ch.exponentials, 2u) << ch.why;
+	WarmupFitOptions o;
+	o.exponentials = 2;
+	const WarmupModel w = fitWarmup(two, cal, o);
+	ASSERT_TRUE(w.hasSecondTerm());
+	EXPECT_NEAR(w.amplitude_dph, 0.3, std::max(3 * w.amplitude_std_dph, 0.03));
+	EXPECT_NEAR(w.tau_s, 150.0, std::max(3 * w.tau_std_s, 15.0));
+	EXPECT_NEAR(w.amplitude2_dph, 0.1, std::max(3 * w.amplitude2_std_dph, 0.01));
+	EXPECT_NEAR(w.tau2_s, 1500.0, std::max(3 * w.tau2_std_s, 150.0));
+	EXPECT_EQ(w.startup_samples, 0u);
+	EXPECT_EQ(w.startup_offset_dph, 0.0);
+	// one true term: one kept; one run: not judged, one term
+	const std::vector<FogSeries> one = {turnOnRun(13, 0.1, 600, 23.0, 300, 10800), turnOnRun(14, 0.1, 600, 23.0, 300, 10800)};
+	EXPECT_EQ(selectWarmupTerms(one, cal).exponentials, 1u) << selectWarmupTerms(one, cal).why;
+	const WarmupTermsChoice single = selectWarmupTerms({two[0]}, cal);
+	EXPECT_FALSE(single.judged);
+	EXPECT_EQ(single.exponentials, 1u);
+	o.exponentials = 3;
+	EXPECT_THROW(fitWarmup(two, cal, o), std::invalid_argument);
+}
 
 // Amplitude and time constant come back within their reported uncertainty (3 sigma) and 10 %.
 TEST(WarmupFit, RecoversAmplitudeAndTimeConstantFromAPowerStep)

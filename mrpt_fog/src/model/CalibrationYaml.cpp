@@ -136,6 +136,20 @@ void writeWarmup(std::ostringstream& o, const WarmupModel& w, const std::string&
 	o << ind << "  samples: " << w.samples << "\n";
 	o << ind << "  rms_before_dph: " << num(w.rms_before_dph) << "  # bias model alone, fitted span [deg/h]\n";
 	o << ind << "  rms_after_dph: " << num(w.rms_after_dph) << "  # with the warm-up term [deg/h]\n";
+	if (w.hasSecondTerm())
+	{
+		o << ind << "  amplitude2_dph: " << num(w.amplitude2_dph) << "  # second term: + amplitude2_dph * exp(-(t - t_on) / tau2_s)\n";
+		o << ind << "  tau2_s: " << num(w.tau2_s) << "\n";
+		o << ind << "  amplitude2_std_dph: " << num(w.amplitude2_std_dph) << "\n";
+		o << ind << "  tau2_std_s: " << num(w.tau2_std_s) << "\n";
+	}
+	if (w.startup_samples > 0 || w.startup_offset_dph != 0.0)  // optional: files without it read as before
+	{
+		o << ind << "  startup_offset_dph: " << num(w.startup_offset_dph)
+		  << "  # added while the rate-free start-up model runs in the first rate window after a turn-on\n";
+		o << ind << "  startup_offset_std_dph: " << num(w.startup_offset_std_dph) << "\n";
+		o << ind << "  startup_samples: " << w.startup_samples << "\n";
+	}
 }
 
 void writeModel(std::ostringstream& o, const BiasModel& m, const std::string& ind)
@@ -484,6 +498,20 @@ WarmupModel readWarmup(const Reader& rd, const yaml& n, const std::string& path)
 	w.samples = rd.count(n, "samples", path, 0, kMaxSamples);
 	w.rms_before_dph = rd.number(n, "rms_before_dph", path);
 	w.rms_after_dph = rd.number(n, "rms_after_dph", path);
+	if (n.has("amplitude2_dph"))  // optional: a second exponential term
+	{
+		w.amplitude2_dph = rd.bounded(n, "amplitude2_dph", path, -kMaxCoef_dph, kMaxCoef_dph, kCoefWhy);
+		w.tau2_s = rd.bounded(n, "tau2_s", path, -kMaxWarmupTau_s, kMaxWarmupTau_s, "a warm-up of more than 10 days is none");
+		if (!(w.tau2_s > 0)) rd.fail(path + ".tau2_s", "must be > 0");
+		w.amplitude2_std_dph = rd.number(n, "amplitude2_std_dph", path);
+		w.tau2_std_s = rd.number(n, "tau2_std_s", path);
+	}
+	if (n.has("startup_offset_dph"))  // optional (files before session 7 have none: 0)
+	{
+		w.startup_offset_dph = rd.bounded(n, "startup_offset_dph", path, -kMaxCoef_dph, kMaxCoef_dph, kCoefWhy);
+		w.startup_offset_std_dph = rd.number(n, "startup_offset_std_dph", path);
+		w.startup_samples = rd.count(n, "startup_samples", path, 0, kMaxSamples);
+	}
 	return w;
 }
 }  // namespace

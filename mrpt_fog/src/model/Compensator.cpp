@@ -272,7 +272,12 @@ void Compensator::notePowerOnFromMetadata(const FogSeries& log)
 
 [[gnu::noinline]] void Compensator::applyExtras(Output& out, double time_s, double raw_dph, const double* temp_C)
 {
-	if (warmup_ && time_s >= power_on_s_) out.bias_dph += warmup_->bias_dph(time_s - power_on_s_);
+	if (warmup_ && time_s >= power_on_s_)
+	{
+		out.bias_dph += warmup_->bias_dph(time_s - power_on_s_);
+		// the start-up model's own error at a turn-on, only in the first rate window after it
+		if (out.model == kStartupModel && time_s - power_on_s_ <= window_s_) out.bias_dph += warmup_->startup_offset_dph;
+	}
 	double r = raw_dph - out.bias_dph;
 	if (sf_)
 	{

@@ -42,6 +42,10 @@ struct WarmupFitOptions
 	double min_tau_s = 30.0;  //!< shortest time constant searched [s]
 	double max_tau_fraction = 0.5;  //!< longest time constant searched, as a fraction of the shortest span
 	double min_span_s = 600.0;  //!< shortest usable span after a turn-on [s]
+	/** Exponential terms, 1 or 2 (two time constants: searched on a grid of pairs, refined in
+	 * turn; each amplitude must exceed 3 standard errors). selectWarmupTerms() chooses by
+	 * held-out error. */
+	std::size_t exponentials = 1;
 };
 
 /** What the fit saw (for reports and tests). */
@@ -69,5 +73,19 @@ class WarmupFitError : public std::invalid_argument
  * `cal` must have no warm-up term. run_labels name runs in messages. */
 WarmupModel fitWarmup(const std::vector<FogSeries>& runs, const Calibration& cal, const WarmupFitOptions& options = {},
 					  WarmupFitReport* report = nullptr, const std::vector<std::string>& run_labels = {});
+
+/** How many exponential terms the warm-up runs support, judged held out: each run in turn is
+ * left out, the term fitted on the others (1 and 2 exponentials), and the left-out run's binned
+ * residual (bin_s bins, each turn-on span about its own mean) scored; the count with the lower
+ * pooled RMS wins (ties and a count that cannot be fitted: fewer terms). One run: 1, not judged. */
+struct WarmupTermsChoice
+{
+	std::size_t exponentials = 1;
+	bool judged = false;
+	double held_out_rms_dph[2] = {0, 0};  //!< for 1 and 2 terms [deg/h] (infinity: not fittable)
+	std::string why;  //!< one line for reports
+};
+WarmupTermsChoice selectWarmupTerms(const std::vector<FogSeries>& runs, const Calibration& cal,
+									const WarmupFitOptions& options = {}, const std::vector<std::string>& run_labels = {});
 
 }  // namespace mrpt_fog
