@@ -28,6 +28,7 @@
 
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "StreamedChamber.h"
 
 using namespace mrpt_fog;
 using namespace mrpt_fog::sim;
@@ -118,72 +119,101 @@ int main(int argc, char** argv)
 		const GyroAxis up = static_cast<GyroAxis>(up_text[0] - 'x');
 
 		const auto t0 = std::chrono::steady_clock::now();
-		FogSeries fog;
-		std::vector<mrpt::obs::CObservation::Ptr> others;
-		double transient_C = NAN;
-		std::vector<double> ideal_rate;  // vehicle: FOG_IDEAL, to report the thermal error alone
-		if (vehicle)
+		app::SimRunSummary sum;
+		double sim_s = 0;
+		double transient_C = NAN;  // vehicle: the coil's thermal transient
+		if (!vehicle && !triad.getValue())
 		{
-			DriveOutput d = triad.getValue() ? simulateTriadDrive(prof, dev, settings) : simulateDrive(prof, dev, settings);
-			fog = std::move(d.fog);
-			ideal_rate = d.fog_ideal.rate_dph[2];
-			transient_C = d.coil_transient_C;
-			if (duration.getValue() > 0)
+			// A single-axis chamber run is simulated and written sample by sample (issue 14).
+			std::vector<std::pair<std::string, std::string>> extra;
+			if (duration.getValue() > 0) extra.emplace_back("sim.duration_s", std::to_string(duration.getValue()));
+			sum = app::writeChamberStreamed(out.getValue(), prof, dev, settings,
+											duration.getValue() > 0 ? duration.getValue() : INFINITY, extra);
+			sim_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+		}
+		else
+		{
+			FogSeries fog;
+			std::vector<mrpt::obs::CObservation::Ptr> others;
+			std::vector<double> ideal_rate;  // vehicle: FOG_IDEAL, to report the thermal error alone
+			if (vehicle)
 			{
-				fog = truncated(fog, duration.getValue());
-				const auto end = mrpt::Clock::fromDouble(fog.epoch_s + duration.getValue() + 1e-6);
-				others.clear();
-				for (auto& o : d.others)
-					if (o->timestamp <= end) others.push_back(o);
+				DriveOutput d = triad.getValue() ? simulateTriadDrive(prof, dev, settings) : simulateDrive(prof, dev, settings);
+				fog = std::move(d.fog);
+				ideal_rate = d.fog_ideal.rate_dph[2];
+				transient_C = d.coil_transient_C;
+				if (duration.getValue() > 0)
+				{
+					fog = truncated(fog, duration.getValue());
+					const auto end = mrpt::Clock::fromDouble(fog.epoch_s + duration.getValue() + 1e-6);
+					others.clear();
+					for (auto& o : d.others)
+						if (o->timestamp <= end) others.push_back(o);
+				}
+				else
+					others = std::move(d.others);
 			}
 			else
-				others = std::move(d.others);
-		}
-		else
-		{
-			fog = triad.getValue() ? simulateTriadChamber(prof, dev, settings, up) : simulateChamber(prof, dev, settings);
-			if (duration.getValue() > 0) fog = truncated(fog, duration.getValue());
-		}
-		const double sim_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-		if (fog.size() < 2) throw std::invalid_argument("run has fewer than 2 samples (check --duration-s)");
-		if (duration.getValue() > 0) fog.setMetadata("sim.duration_s", std::to_string(duration.getValue()));
-
-		if (ext == ".rawlog")
-			writeFogRawlog(out.getValue(), fog, others);
-		else
-		{
-			if (vehicle) std::cerr << "fog-sim: note: CSV holds the FOG stream only; odometry and truth need .rawlog\n";
-			writeFogCsv(out.getValue(), fog);
-		}
-
-		// Summary: the uncompensated figures of the seed (100 s stability and range).
-		std::vector<double> t_on, r_on;
-		for (std::size_t k = 0; k < fog.size(); k++)
-			if (fog.power.empty() || fog.power[k] != 0)
 			{
-				t_on.push_back(fog.time_s[k]);
-				// bias only: the vehicle's FOG_IDEAL (motion, Earth rate, noise) or a chamber's table rate removed
-				const double table = fog.table_rate_dph.empty() ? 0.0 : fog.table_rate_dph[k];
-				r_on.push_back(fog.rate_dph[vehicle ? 2 : static_cast<std::size_t>(up)][k] - (vehicle ? ideal_rate[k] : table));
+				fog = triad.getValue() ? simulateTriadChamber(prof, dev, settings, up) : simulateChamber(prof, dev, settings);
+				if (duration.getValue() > 0) fog = truncated(fog, duration.getValue());
 			}
+			sim_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+			if (fog.size() < 2) throw std::invalid_argument("run has fewer than 2 samples (check --duration-s)");
+			if (duration.getValue() > 0) fog.setMetadata("sim.duration_s", std::to_string(duration.getValue()));
+
+			if (ext == ".rawlog")
+				writeFogRawlog(out.getValue(), fog, others);
+			else
+			{
+				if (vehicle) std::cerr << "fog-sim: note: CSV holds the FOG stream only; odometry and truth need .rawlog\n";
+				writeFogCsv(out.getValue(), fog);
+			}
+
+			// Summary: the uncompensated figures of the seed (100 s stability and range).
+			sum.samples = fog.size();
+			sum.last_time_s = fog.time_s.back();
+			sum.thermistors = fog.thermistors;
+			std::vector<double> t_on, r_on;
+			for (std::size_t k = 0; k < fog.size(); k++)
+				if (fog.power.empty() || fog.power[k] != 0)
+				{
+					t_on.push_back(fog.time_s[k]);
+					// bias only: the vehicle's FOG_IDEAL (motion, Earth rate, noise) or a chamber's table rate removed
+					const double table = fog.table_rate_dph.empty() ? 0.0 : fog.table_rate_dph[k];
+					r_on.push_back(fog.rate_dph[vehicle ? 2 : static_cast<std::size_t>(up)][k] - (vehicle ? ideal_rate[k] : table));
+				}
+			if (t_on.size() > 2 && t_on.back() - t_on.front() >= 200.0)
+			{
+				sum.has_stats = true;
+				sum.stats = biasStats(t_on, r_on, 100.0);
+			}
+			for (std::size_t i = 0; i < fog.thermistorCount(); i++)
+			{
+				const auto& c = fog.temp_C[i];
+				const auto [mn, mx] = std::minmax_element(c.begin(), c.end());
+				sum.min_C.push_back(*mn);
+				sum.max_C.push_back(*mx);
+			}
+		}
 		std::printf("fog-sim: %s, profile %s, seed %llu, %zu samples (%.2f h at %g Hz) -> %s\n", vehicle ? "vehicle" : "chamber",
-					profile.getValue().c_str(), static_cast<unsigned long long>(settings.seed), fog.size(),
-					fog.time_s.back() / 3600.0, settings.rate_hz, out.getValue().c_str());
+					profile.getValue().c_str(), static_cast<unsigned long long>(settings.seed), sum.samples,
+					sum.last_time_s / 3600.0, settings.rate_hz, out.getValue().c_str());
 		std::printf("  effects: %s\n", effectsToString(settings.effects).c_str());
 		JsonValue j = JsonValue::object();
 		j["profile"] = profile.getValue();
 		j["scenario"] = vehicle ? "vehicle" : "chamber";
 		j["seed"] = static_cast<double>(settings.seed);
 		j["rate_hz"] = settings.rate_hz;
-		j["samples"] = static_cast<unsigned long>(fog.size());
-		j["duration_s"] = fog.time_s.back();
+		j["samples"] = static_cast<unsigned long>(sum.samples);
+		j["duration_s"] = sum.last_time_s;
 		j["effects"] = effectsToString(settings.effects);
 		j["simulation_time_s"] = sim_s;
-		if (t_on.size() > 2 && t_on.back() - t_on.front() >= 200.0)
+		if (sum.has_stats)
 		{
-			const BiasStats st = biasStats(t_on, r_on, 100.0);
+			const BiasStats& st = sum.stats;
 			std::printf("  %s: 100 s bias stability %.4f deg/h, range %.4f deg/h, mean %.4f deg/h\n",
-						vehicle ? "thermal error (FOG - FOG_IDEAL)" : (fog.has_axis[0] ? "uncompensated up axis (powered samples, table rate removed)" : "uncompensated (powered samples, table rate removed)"), st.stability_dph,
+						vehicle ? "thermal error (FOG - FOG_IDEAL)" : (triad.getValue() ? "uncompensated up axis (powered samples, table rate removed)" : "uncompensated (powered samples, table rate removed)"), st.stability_dph,
 						st.range_dph, st.mean_dph);
 			const char* key = vehicle ? "thermal_error" : "uncompensated";
 			j[key]["stability_dph"] = st.stability_dph;
@@ -191,14 +221,13 @@ int main(int argc, char** argv)
 			j[key]["mean_dph"] = st.mean_dph;
 			j[key]["tau_s"] = 100.0;
 		}
-		for (std::size_t i = 0; i < fog.thermistorCount(); i++)
+		for (std::size_t i = 0; i < sum.thermistors.size(); i++)
 		{
-			const auto& c = fog.temp_C[i];
-			const auto [mn, mx] = std::minmax_element(c.begin(), c.end());
-			std::printf("  %s (%s %g deg): %.2f .. %.2f C\n", fog.thermistors[i].name.c_str(),
-						toString(fog.thermistors[i].side), fog.thermistors[i].angle_deg, *mn, *mx);
-			j["thermistors"][fog.thermistors[i].name]["min_C"] = *mn;
-			j["thermistors"][fog.thermistors[i].name]["max_C"] = *mx;
+			const ThermistorInfo& th = sum.thermistors[i];
+			std::printf("  %s (%s %g deg): %.2f .. %.2f C\n", th.name.c_str(), toString(th.side), th.angle_deg,
+						sum.min_C[i], sum.max_C[i]);
+			j["thermistors"][th.name]["min_C"] = sum.min_C[i];
+			j["thermistors"][th.name]["max_C"] = sum.max_C[i];
 		}
 		if (vehicle)
 		{

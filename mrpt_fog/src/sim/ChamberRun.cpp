@@ -40,44 +40,83 @@ void recordSimMetadata(FogSeries& series, const std::string& scenario, const Cha
 		series.setMetadata("power_on_time_s", "0");
 }
 
-FogSeries simulateChamber(const ChamberProfile& profile, const FogDevice& device, const SimSettings& settings)
+namespace
 {
-	settings.validate();
-	FogSimulator sim(device, settings.effects, settings.seed);
-	const double dt = 1.0 / settings.rate_hz;
-	const auto n = static_cast<std::size_t>(std::floor(profile.duration_s() * settings.rate_hz + 1e-9)) + 1;
-
-	bool uses_table = false, uses_field = false;
+struct OptionalColumns
+{
+	bool table = false, field = false;
+};
+OptionalColumns optionalColumns(const ChamberProfile& profile)
+{
+	OptionalColumns c;
 	for (const auto& s : profile.segments())
 	{
-		if (s.kind == ProfileSegment::Kind::Table && s.value != 0) uses_table = true;
-		if (s.kind == ProfileSegment::Kind::Field && s.value != 0) uses_field = true;
+		if (s.kind == ProfileSegment::Kind::Table && s.value != 0) c.table = true;
+		if (s.kind == ProfileSegment::Kind::Field && s.value != 0) c.field = true;
 	}
+	return c;
+}
 
+FogSeries emptyChamberRun(const FogDevice& device)
+{
 	FogSeries out;
 	out.sensor_label = "FOG";
 	out.epoch_s = kSimEpoch_s;
 	out.has_axis = {false, false, true};
 	for (const auto& t : device.thermistors) out.thermistors.push_back(t.info);
-	out.time_s.reserve(n);
-	auto& rate = out.rate_dph[2];
-	rate.reserve(n);
 	out.temp_C.assign(device.thermistors.size(), {});
-	for (auto& c : out.temp_C) c.reserve(n);
-	out.power.reserve(n);
+	return out;
+}
+}  // namespace
 
+void simulateChamberSamples(const ChamberProfile& profile, const FogDevice& device, const SimSettings& settings,
+							double max_time_s, const ChamberSampleSink& f)
+{
+	settings.validate();
+	FogSimulator sim(device, settings.effects, settings.seed);
+	const double dt = 1.0 / settings.rate_hz;
+	const auto n = static_cast<std::size_t>(std::floor(profile.duration_s() * settings.rate_hz + 1e-9)) + 1;
 	for (std::size_t k = 0; k < n; k++)
 	{
 		const double t = static_cast<double>(k) / settings.rate_hz;
+		if (!(t <= max_time_s + 1e-9)) break;
 		const ChamberState st = profile.stateAt(t);
 		const FogSample s = k == 0 ? sim.start(st, profile.initialState()) : sim.advance(dt, st);
-		out.time_s.push_back(t);
-		rate.push_back(s.rate_dph);
-		for (std::size_t i = 0; i < s.temp_C.size(); i++) out.temp_C[i].push_back(s.temp_C[i]);
-		out.power.push_back(s.power_on ? 1.0 : 0.0);
-		if (uses_table) out.table_rate_dph.push_back(st.table_rate_dph);
-		if (uses_field) out.field_uT.push_back(st.field_uT);
+		f(t, s.rate_dph, s.temp_C, st.table_rate_dph, st.field_uT, s.power_on ? 1.0 : 0.0);
 	}
+}
+
+FogSeries chamberRunHeader(const ChamberProfile& profile, const FogDevice& device, const SimSettings& settings)
+{
+	FogSeries h = emptyChamberRun(device);
+	const OptionalColumns c = optionalColumns(profile);
+	if (c.table) h.table_rate_dph.assign(1, NAN);
+	if (c.field) h.field_uT.assign(1, NAN);
+	h.power.assign(1, NAN);
+	recordSimMetadata(h, "chamber", profile, device, settings);
+	return h;
+}
+
+FogSeries simulateChamber(const ChamberProfile& profile, const FogDevice& device, const SimSettings& settings)
+{
+	settings.validate();
+	const auto n = static_cast<std::size_t>(std::floor(profile.duration_s() * settings.rate_hz + 1e-9)) + 1;
+	const OptionalColumns c = optionalColumns(profile);
+	FogSeries out = emptyChamberRun(device);
+	out.time_s.reserve(n);
+	auto& rate = out.rate_dph[2];
+	rate.reserve(n);
+	for (auto& col : out.temp_C) col.reserve(n);
+	out.power.reserve(n);
+	simulateChamberSamples(profile, device, settings, INFINITY,
+						   [&](double t, double r, const std::vector<double>& temp_C, double table, double field, double power) {
+							   out.time_s.push_back(t);
+							   rate.push_back(r);
+							   for (std::size_t i = 0; i < temp_C.size(); i++) out.temp_C[i].push_back(temp_C[i]);
+							   out.power.push_back(power);
+							   if (c.table) out.table_rate_dph.push_back(table);
+							   if (c.field) out.field_uT.push_back(field);
+						   });
 	recordSimMetadata(out, "chamber", profile, device, settings);
 	return out;
 }

@@ -14,7 +14,9 @@
 #include <mrpt_fog/sim/FogDevice.h>
 
 #include <cstdint>
+#include <functional>
 #include <string>
+#include <vector>
 
 namespace mrpt_fog::sim
 {
@@ -35,6 +37,20 @@ struct SimSettings
 
 /** Simulates the chamber run. Throws std::invalid_argument on bad settings. */
 FogSeries simulateChamber(const ChamberProfile& profile, const FogDevice& device, const SimSettings& settings);
+
+/** The run simulateChamber() returns, without samples: label, epoch, axis, thermistors, metadata;
+ * the optional columns it fills (table_rate_dph, field_uT when the profile uses them; power)
+ * hold one NaN (FogLogReader::header()'s form, what FogLogWriter takes). */
+FogSeries chamberRunHeader(const ChamberProfile& profile, const FogDevice& device, const SimSettings& settings);
+
+/** simulateChamber()'s samples one at a time, in order (issue 14: a long run need not be held):
+ * f(time_s, rate_z_dph, temp_C, table_rate_dph, field_uT, power) with the values simulateChamber()
+ * stores (table / field are passed whether or not the run has the column). Stops after the last
+ * sample whose time is <= max_time_s + 1e-9 (fog-sim --duration-s; infinity: the whole profile). */
+using ChamberSampleSink = std::function<void(double time_s, double rate_z_dph, const std::vector<double>& temp_C,
+											 double table_rate_dph, double field_uT, double power)>;
+void simulateChamberSamples(const ChamberProfile& profile, const FogDevice& device, const SimSettings& settings,
+							double max_time_s, const ChamberSampleSink& f);
 
 /** Writes the common simulator metadata (sim.*, device.*, latitude_deg) into a series. */
 void recordSimMetadata(FogSeries& series, const std::string& scenario, const ChamberProfile& profile,
