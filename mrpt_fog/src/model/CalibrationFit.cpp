@@ -616,20 +616,11 @@ struct ConcatenatedRuns
 	void endRun(const PreparedRun& r, double tau_s) { offset_s = offset_s + r.run->backTime_s() - t0 + tau_s; }
 	void figuresInto(FitFigures& f, double tau_s) const { statsInto(f, rows, tau_s); }
 };
-}  // namespace
+// The stages of fitCalibrationRuns before the fold accumulation, in the order it runs them.
 
-Calibration fitCalibration(const std::vector<FogSeries>& series, const std::string& preset_text, const FitOptions& opt,
-						   const std::vector<std::string>& labels)
+/** The fit's options and runs are valid (throws std::invalid_argument naming the run). */
+void checkFitInputs(const std::vector<FogRun>& runs, const FitOptions& opt, const std::vector<std::string>& labels)
 {
-	std::vector<FogRun> runs;
-	for (const auto& s : series) runs.emplace_back(s);
-	return fitCalibrationRuns(runs, preset_text, opt, labels);
-}
-
-Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::string& preset_text, const FitOptions& opt_in,
-						   const std::vector<std::string>& labels)
-{
-	FitOptions opt = opt_in;  // the rate window may follow the thermistors' quantum (below)
 	if (runs.empty()) throw std::invalid_argument("fit: no calibration runs given");
 	opt.rate_estimator.validate();
 	if (opt.selection != "auto" && opt.selection != "none")
@@ -655,99 +646,108 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 			throw std::invalid_argument(runName(labels, i) + " has another sensor layout (thermistors or axes) than " +
 										runName(labels, 0));
 	}
-	const FogSeries& first = runs[0].header();
-	const GyroAxis axis = opt.axis ? *opt.axis : first.primaryAxis();
-	if (!first.has_axis[static_cast<int>(axis)])
-		throw std::invalid_argument(runName(labels, 0) + " has no " + axisLetter(axis) + " axis to calibrate");
-	const ModelPreset preset = parseModelPreset(preset_text, first.thermistors);
+}
+
+/** The preset's feature set, with the physics candidates when `candidates_added`: for every
+ * inner thermistor of the preset, the difference to the outer one at the same angle (and its
+ * rate when the preset reads rates). */
+ThermalFeatureSet calibrationFeatures(const ModelPreset& preset, const FogSeries& first, bool candidates_added)
+{
 	ThermalFeatureSet fs = presetFeatures(preset);
-	const bool candidates_added =
-		opt.selection == "auto" && opt.physics_candidates && (preset.kind == PresetKind::Multipoint || preset.kind == PresetKind::Points);
-	if (candidates_added)
+	if (!candidates_added) return fs;
+	std::vector<ThermalTerm> terms(fs.terms().begin() + 1, fs.terms().end());
+	for (const auto& in : first.thermistors)
 	{
-		std::vector<ThermalTerm> terms(fs.terms().begin() + 1, fs.terms().end());
-		for (const auto& in : first.thermistors)
-		{
-			if (in.side != CoilSide::Inner ||
-				std::find(preset.thermistors.begin(), preset.thermistors.end(), in.name) == preset.thermistors.end())
-				continue;
-			for (const auto& out : first.thermistors)
-				if (out.side == CoilSide::Outer && out.angle_deg == in.angle_deg &&
-					std::find(preset.thermistors.begin(), preset.thermistors.end(), out.name) != preset.thermistors.end())
-				{
-					terms.push_back(ThermalTerm::of(SignalKind::Diff, in.name, out.name, 1));
-					if (preset.rate_order > 0) terms.push_back(ThermalTerm::of(SignalKind::DiffRate, in.name, out.name, 1));
-				}
-		}
-		fs = ThermalFeatureSet(terms);
+		if (in.side != CoilSide::Inner ||
+			std::find(preset.thermistors.begin(), preset.thermistors.end(), in.name) == preset.thermistors.end())
+			continue;
+		for (const auto& out : first.thermistors)
+			if (out.side == CoilSide::Outer && out.angle_deg == in.angle_deg &&
+				std::find(preset.thermistors.begin(), preset.thermistors.end(), out.name) != preset.thermistors.end())
+			{
+				terms.push_back(ThermalTerm::of(SignalKind::Diff, in.name, out.name, 1));
+				if (preset.rate_order > 0) terms.push_back(ThermalTerm::of(SignalKind::DiffRate, in.name, out.name, 1));
+			}
 	}
+	return ThermalFeatureSet(terms);
+}
 
-	// Rate window for the thermistors' reading quantum (FitOptions::window_for_quantum).
+/** The coarsest reading quantum of the feature set's thermistors over the runs [degC] (0 when
+ * none is found): one sequential pass per run. */
+double readingQuantum_C(const std::vector<FogRun>& runs, const ThermalFeatureSet& fs)
+{
 	double quantum_C = 0;
+	const auto& names = fs.thermistors();
+	std::vector<double> q(names.size(), std::numeric_limits<double>::infinity());
+	for (const auto& r : runs)  // one sequential pass per run
 	{
-		const auto& names = fs.thermistors();
-		std::vector<double> q(names.size(), std::numeric_limits<double>::infinity());
-		for (const auto& r : runs)  // one sequential pass per run
-		{
-			std::vector<ReadingQuantum> acc(names.size());
-			std::vector<std::size_t> col;
-			for (const auto& name : names) col.push_back(static_cast<std::size_t>(r.header().thermistorIndex(name)));
-			r.forEachChunk([&](const FogSeries& chunk, std::size_t) {
-				for (std::size_t i = 0; i < names.size(); i++)
-					for (const double v : chunk.temp_C[col[i]]) acc[i].add(v);
-			});
-			for (std::size_t i = 0; i < names.size(); i++) q[i] = std::min(q[i], acc[i].quantum_C());
-		}
-		for (const double qi : q)
-			if (std::isfinite(qi)) quantum_C = std::max(quantum_C, qi);
+		std::vector<ReadingQuantum> acc(names.size());
+		std::vector<std::size_t> col;
+		for (const auto& name : names) col.push_back(static_cast<std::size_t>(r.header().thermistorIndex(name)));
+		r.forEachChunk([&](const FogSeries& chunk, std::size_t) {
+			for (std::size_t i = 0; i < names.size(); i++)
+				for (const double v : chunk.temp_C[col[i]]) acc[i].add(v);
+		});
+		for (std::size_t i = 0; i < names.size(); i++) q[i] = std::min(q[i], acc[i].quantum_C());
 	}
-	if (opt.window_for_quantum) opt.rate_estimator.window_s = windowForQuantum_s(opt.rate_estimator.window_s, quantum_C);
+	for (const double qi : q)
+		if (std::isfinite(qi)) quantum_C = std::max(quantum_C, qi);
+	return quantum_C;
+}
 
+/** Every run prepared for the fit; `usable` = their usable samples. */
+std::vector<PreparedRun> prepareRuns(const std::vector<FogRun>& runs, const ThermalFeatureSet& fs, const FitOptions& opt,
+									 GyroAxis axis, std::size_t& usable)
+{
 	std::vector<PreparedRun> prep;
-	std::size_t usable = 0;
+	usable = 0;
 	for (const auto& r : runs)
 	{
 		prep.push_back(prepare(r, fs, opt.rate_estimator, axis, opt.table_samples));
 		usable += prep.back().usable;
 	}
-	if (usable == 0) throw std::invalid_argument("fit: no usable sample (every sample has a dropout or no rate yet)");
-	// Burst logs (e.g. 5 s bursts every 5 min): within a burst the rate window never covers half
-	// its length, so the compensator could never use a model that reads rates (it would run the
-	// rate-free start-up model on every sample). When that holds for most usable samples, the
-	// rates are not estimable from this log: the model is fitted without rate signals.
+	return prep;
+}
+
+/** Burst logs (e.g. 5 s bursts every 5 min): within a burst the rate window never covers half
+ * its length, so the compensator could never use a model that reads rates (it would run the
+ * rate-free start-up model on every sample). When that holds for most usable samples, the
+ * rates are not estimable from this log: the rate signals leave the feature set and the runs
+ * are prepared again. Returns whether they did. */
+bool leaveOutRatesOfBurstLogs(const std::vector<FogRun>& runs, const FitOptions& opt, GyroAxis axis,
+							  ThermalFeatureSet& fs, std::vector<PreparedRun>& prep, std::size_t& usable)
+{
 	std::size_t short_span = 0;
 	for (const auto& r : prep) short_span += r.short_rate_span;
-	bool rates_unavailable = false;
-	if (2 * short_span > usable)
+	if (!(2 * short_span > usable)) return false;
+	std::vector<bool> keep(fs.signals().size());
+	bool any_rate = false;
+	for (std::size_t s = 0; s < keep.size(); s++)
 	{
-		std::vector<bool> keep(fs.signals().size());
-		bool any_rate = false;
-		for (std::size_t s = 0; s < keep.size(); s++)
-		{
-			keep[s] = !fs.signals()[s].isRate();
-			any_rate |= !keep[s];
-		}
-		if (any_rate)
-		{
-			rates_unavailable = true;
-			fs = fs.selectSignals(keep);
-			prep.clear();  // the thermistors may have changed (a thermistor read only through its rate)
-			usable = 0;
-			for (const auto& r : runs)
-			{
-				prep.push_back(prepare(r, fs, opt.rate_estimator, axis, opt.table_samples));
-				usable += prep.back().usable;
-			}
-		}
+		keep[s] = !fs.signals()[s].isRate();
+		any_rate |= !keep[s];
 	}
+	if (!any_rate) return false;
+	fs = fs.selectSignals(keep);
+	prep = prepareRuns(runs, fs, opt, axis, usable);  // the thermistors may have changed (one read only through its rate)
+	return true;
+}
 
-	// Pass 1: signal ranges -> normalisation; mean bias as y reference.
-	std::size_t ns = fs.signals().size();
-	const std::size_t nt = fs.thermistors().size();
-	std::vector<double> lo(ns, std::numeric_limits<double>::infinity()), hi(ns, -std::numeric_limits<double>::infinity());
-	std::vector<double> temp(nt), rate(nt), values(ns), f(fs.termCount());
+/** Each signal's range over the usable samples, and the mean bias (the y reference). */
+struct SignalRanges
+{
+	std::vector<double> lo, hi;
+	double y_ref = 0;
+};
+
+SignalRanges signalRanges(const std::vector<PreparedRun>& prep, const ThermalFeatureSet& fs, std::size_t usable)
+{
+	const std::size_t ns = fs.signals().size(), nt = fs.thermistors().size();
+	SignalRanges g;
+	g.lo.assign(ns, std::numeric_limits<double>::infinity());
+	g.hi.assign(ns, -std::numeric_limits<double>::infinity());
+	std::vector<double> temp(nt), rate(nt), values(ns);
 	double ysum = 0;
-	std::vector<double> fsum(fs.termCount(), 0.0);
 	for (const auto& r : prep)
 	{
 		RowCursor cur(r);
@@ -756,41 +756,49 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 			rowSignals(cur, fs, c, k0, j, temp, rate, values);
 			for (std::size_t s = 0; s < ns; s++)
 			{
-				lo[s] = std::min(lo[s], values[s]);
-				hi[s] = std::max(hi[s], values[s]);
+				g.lo[s] = std::min(g.lo[s], values[s]);
+				g.hi[s] = std::max(g.hi[s], values[s]);
 			}
 			ysum += r.y(c, j);
 		});
 	}
-	const double y_ref = ysum / static_cast<double>(usable);
-	if (candidates_added)  // a physics candidate without variation (e.g. two identical readings) is left out
-	{
-		std::vector<bool> keep(ns, true);
-		bool any = false;
-		for (std::size_t s = 0; s < ns; s++)
-			if (fs.signals()[s].isDifference() && !(hi[s] - lo[s] > 1e-9 * (1 + std::abs(hi[s]))))
-			{
-				keep[s] = false;
-				any = true;
-			}
-		if (any)
+	g.y_ref = ysum / static_cast<double>(usable);
+	return g;
+}
+
+/** A physics candidate without variation (e.g. two identical readings) leaves the feature set. */
+void leaveOutConstantDifferences(ThermalFeatureSet& fs, SignalRanges& g)
+{
+	const std::size_t ns = fs.signals().size();
+	std::vector<bool> keep(ns, true);
+	bool any = false;
+	for (std::size_t s = 0; s < ns; s++)
+		if (fs.signals()[s].isDifference() && !(g.hi[s] - g.lo[s] > 1e-9 * (1 + std::abs(g.hi[s]))))
 		{
-			fs = fs.selectSignals(keep);
-			std::vector<double> lo2, hi2;
-			for (std::size_t s = 0; s < ns; s++)
-				if (keep[s])
-				{
-					lo2.push_back(lo[s]);
-					hi2.push_back(hi[s]);
-				}
-			lo = lo2;
-			hi = hi2;
-			ns = fs.signals().size();
-			values.resize(ns);
-			f.resize(fs.termCount());
-			fsum.assign(fs.termCount(), 0.0);
+			keep[s] = false;
+			any = true;
 		}
-	}
+	if (!any) return;
+	fs = fs.selectSignals(keep);
+	std::vector<double> lo2, hi2;
+	for (std::size_t s = 0; s < ns; s++)
+		if (keep[s])
+		{
+			lo2.push_back(g.lo[s]);
+			hi2.push_back(g.hi[s]);
+		}
+	g.lo = lo2;
+	g.hi = hi2;
+}
+
+/** Each signal's normalisation from its range: a temperature to [-1, 1] about its centre, a rate
+ * or difference scaled by its largest magnitude. Throws when a temperature spans too little for
+ * its polynomial order or a signal is constant. */
+void setNormalisation(ThermalFeatureSet& fs, const SignalRanges& g, const FitOptions& opt)
+{
+	const std::size_t ns = fs.signals().size();
+	const auto& lo = g.lo;
+	const auto& hi = g.hi;
 	for (std::size_t s = 0; s < ns; s++)
 	{
 		const auto& sig = fs.signals()[s];
@@ -822,8 +830,15 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 			nm.scale = std::max(std::abs(lo[s]), std::abs(hi[s]));
 		}
 	}
+}
 
-	// Feature means (the accumulation reference: the sums then hold centred features).
+/** The mean of each feature over the usable samples (the accumulation reference of the QR
+ * factors: their sums then hold centred features). */
+std::vector<double> featureMeans(const std::vector<PreparedRun>& prep, const ThermalFeatureSet& fs, std::size_t usable)
+{
+	const std::size_t nt = fs.thermistors().size();
+	std::vector<double> temp(nt), rate(nt), values(fs.signals().size()), f(fs.termCount());
+	std::vector<double> fsum(fs.termCount(), 0.0);
 	for (const auto& r : prep)
 	{
 		RowCursor cur(r);
@@ -836,6 +851,53 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 	}
 	std::vector<double> x_ref(fs.termCount());
 	for (std::size_t j = 0; j < x_ref.size(); j++) x_ref[j] = fsum[j] / static_cast<double>(usable);
+	return x_ref;
+}
+
+}  // namespace
+
+Calibration fitCalibration(const std::vector<FogSeries>& series, const std::string& preset_text, const FitOptions& opt,
+						   const std::vector<std::string>& labels)
+{
+	std::vector<FogRun> runs;
+	for (const auto& s : series) runs.emplace_back(s);
+	return fitCalibrationRuns(runs, preset_text, opt, labels);
+}
+
+Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::string& preset_text, const FitOptions& opt_in,
+						   const std::vector<std::string>& labels)
+{
+	FitOptions opt = opt_in;  // the rate window may follow the thermistors' quantum (below)
+	checkFitInputs(runs, opt, labels);
+	const FogSeries& first = runs[0].header();
+	const GyroAxis axis = opt.axis ? *opt.axis : first.primaryAxis();
+	if (!first.has_axis[static_cast<int>(axis)])
+		throw std::invalid_argument(runName(labels, 0) + " has no " + axisLetter(axis) + " axis to calibrate");
+	const ModelPreset preset = parseModelPreset(preset_text, first.thermistors);
+	const bool candidates_added =
+		opt.selection == "auto" && opt.physics_candidates && (preset.kind == PresetKind::Multipoint || preset.kind == PresetKind::Points);
+	ThermalFeatureSet fs = calibrationFeatures(preset, first, candidates_added);
+
+	// Rate window for the thermistors' reading quantum (FitOptions::window_for_quantum).
+	const double quantum_C = readingQuantum_C(runs, fs);
+	if (opt.window_for_quantum) opt.rate_estimator.window_s = windowForQuantum_s(opt.rate_estimator.window_s, quantum_C);
+
+	std::size_t usable = 0;
+	std::vector<PreparedRun> prep = prepareRuns(runs, fs, opt, axis, usable);
+	if (usable == 0) throw std::invalid_argument("fit: no usable sample (every sample has a dropout or no rate yet)");
+	const bool rates_unavailable = leaveOutRatesOfBurstLogs(runs, opt, axis, fs, prep, usable);
+
+	// Pass 1: signal ranges -> normalisation; mean bias as y reference.
+	SignalRanges ranges = signalRanges(prep, fs, usable);
+	const double y_ref = ranges.y_ref;
+	if (candidates_added) leaveOutConstantDifferences(fs, ranges);
+	setNormalisation(fs, ranges, opt);
+	const std::size_t ns = fs.signals().size();
+	const std::size_t nt = fs.thermistors().size();
+	std::vector<double> temp(nt), rate(nt), values(ns), f(fs.termCount());  // one row (the passes below)
+
+	// Feature means (the accumulation reference: the sums then hold centred features).
+	const std::vector<double> x_ref = featureMeans(prep, fs, usable);
 
 	// Pass 2: streaming QR factor per fold. Folds: one per run when several runs are given;
 	// else whole thermal regimes of the run (FoldScheme::Regimes), or interleaved time blocks.
