@@ -10,12 +10,14 @@
 # Drives: SEEDS (default 11..19, held out of every choice; cabins cycled winter / mild / hot)
 # plus seed 20240501 in the winter cabin (= the bundled drive, bit for bit; BUNDLED= leaves it
 # out). The fresh block run once at the end (docs/nav.md): SEEDS="41 42 43 44 45 46 47 48 49"
-# BUNDLED= scripts/heading_error_budget.sh OUT. Tuning drives (every choice): 1..6.
+# BUNDLED= scripts/heading_error_budget.sh OUT. Tuning drives (every choice): 1..6. Session 7's
+# choices (full_sq, full_wu) on 1..3; its fresh block, run once: SEEDS="51 52 53 54 55 56 57 58 59"
+# BUNDLED= VARIANTS="full full_wu".
 # Variants (calibration from the bundled lab runs unless said):
 #   full        all effects; cal_full = chamber_A + ratetable_A + ratetable_transient + warmup
 #               (the warm-up run in the bias fit; the scale factor in a weighted sum of the
 #               thermistors, fitted from the transient run's table segments: the recommended
-#               calibration)
+#               calibration until session 7; now cal_wu, variant full_wu)
 #   soak_sf     all effects; cal_soak = chamber_A + ratetable_A + warmup (scale factor from the
 #               soaks only, in one thermistor: the recommended calibration before)
 #   full_order2 all effects; cal_order2 = cal_full's runs with the bias model's temperature order
@@ -31,7 +33,8 @@
 #               cal_sq terms) and scale factor, the warm-up term fitted apart on the two warm-up runs
 #               (--warmup-run warmup --warmup-run warmup_B: its number of exponentials chosen by
 #               held-out error, each run left out in turn; and the start-up model's offset at a
-#               turn-on); warm_start_wu the same on the warm-start drives
+#               turn-on): THE RECOMMENDED CALIBRATION (docs/nav.md, "Error budget", session 7);
+#               warm_start_wu the same on the warm-start drives
 #   no_sf       drives without scale_factor_temp; cal_bias = chamber_A + warmup (no scale factor)
 #   no_sf_wu    drives also without the warm-up effect; cal_bias
 #   warm_start  all effects, but the gyro long on at the start (cabin warm_start: 20 C steady,

@@ -39,7 +39,7 @@ foreach(f json/drives_bias.json json/drives_scale_factor.json json/drives_full.j
 endforeach()
 foreach(needle "Held-out 100 s bias stability" "| compensated |" "fog-calibrate -i" "fog-drift -i"
     "## Stages of the thermal error model, heading over 2 drive(s)" "| + scale factor vs temperature |"
-    "| + warm-up (cold-start run in the bias fit) |" "Heading over 2 drives (median)")
+    "| + warm-up (fitted apart on two cold-start runs) + curvature T(To1)^2 |" "Heading over 2 drives (median)")
   string(FIND "${md}" "${needle}" pos)
   if(pos LESS 0)
     message(FATAL_ERROR "summary.md lacks '${needle}'")
@@ -64,7 +64,7 @@ endif()
 # The stage figures printed are fog-drift's medians over the drives (not hard-coded).
 file(READ ${WORK}/report/json/drives_full.json fj)
 string(JSON full_ratio GET "${fj}" over_drives "ratio.heading_rms_compensated_over_raw" median)
-string(REGEX MATCH "warm-up \\(cold-start run in the bias fit\\): compensated [0-9.eE+-]+ deg \\(/raw ([0-9.eE+-]+)," m "${out}")
+string(REGEX MATCH "warm-up \\(fitted apart on two cold-start runs\\) \\+ curvature T\\(To1\\)\\^2: compensated [0-9.eE+-]+ deg \\(/raw ([0-9.eE+-]+)," m "${out}")
 if(NOT m)
   message(FATAL_ERROR "stage line missing in fog-demo output:\n${out}")
 endif()
