@@ -265,6 +265,113 @@ Vec residualWithCoefficients(const Mat& X, const RunSignals& sig, const Vec& coe
 	return r;
 }
 
+namespace
+{
+// The stages of one round of selectMissingEffects.
+
+/** The candidates a round can test, each with its non-spanned grid values and the columns at
+ * its OLS-best value; the untestable and spanned ones (and why) go to `report`. Skips `excluded`. */
+std::vector<CandState> screenCandidates(const std::vector<std::string>& ids, const std::vector<std::string>& excluded,
+										const RunSignals& sig, const CandidateContext& ctx, const Mat& X, const Vec& y,
+										const std::vector<std::size_t>& rows, const SelectionOptions& opt,
+										std::vector<CandidateTest>& report)
+{
+	std::vector<CandState> cands;
+	for (const auto& id : ids)
+	{
+		CandState cs;
+		cs.eff = &candidateById(id);
+		cs.test.id = id;
+		if (std::find(excluded.begin(), excluded.end(), id) != excluded.end()) continue;
+		const auto why = cs.eff->untestable_reason(sig);
+		if (!why.empty())
+		{
+			cs.test.status = CandidateStatus::Untestable;
+			cs.test.note = why;
+			report.push_back(cs.test);
+			continue;
+		}
+		for (double th : cs.eff->theta_grid)
+			if (spanResidual(X, cs.eff->build(ctx, th), rows) >= opt.span_tolerance) cs.thetas.push_back(th);
+		if (cs.thetas.empty())
+		{
+			cs.test.status = CandidateStatus::Spanned;
+			cs.test.note = "the model already spans its terms";
+			report.push_back(cs.test);
+			continue;
+		}
+		// OLS profile (for the kitchen-sink noise estimate)
+		double best = std::numeric_limits<double>::infinity();
+		for (double th : cs.thetas)
+		{
+			Vec rc;
+			const double rss = olsOnRows(hcat(X, cs.eff->build(ctx, th)), y, rows, rc).rss;
+			if (rss < best)
+			{
+				best = rss;
+				cs.theta = th;
+			}
+		}
+		cs.C = cs.eff->build(ctx, cs.theta);
+		cs.test.status = CandidateStatus::Tested;
+		cands.push_back(std::move(cs));
+	}
+	return cands;
+}
+
+/** A screened candidate's test against the model X: its grid value by profile search on the OLS
+ * residual sum of squares, then the GLS Wald chi-square of its columns (Sidak-corrected for the
+ * grid size) and its BIC gain with nEff effective samples. */
+void testCandidate(CandState& cs, const CandidateContext& ctx, const Mat& X, const Vec& y,
+				   const std::vector<std::size_t>& rows, const std::vector<std::size_t>& common,
+				   const std::vector<int>& block, const SelectionOptions& opt, double nEff)
+{
+	// nonlinear parameter: profile search on the OLS residual sum of squares (the GLS test
+	// below is Sidak-corrected for the grid size)
+	double bestRss = std::numeric_limits<double>::infinity();
+	for (double th : cs.thetas)
+	{
+		const Mat C = cs.eff->build(ctx, th);
+		Vec rc;
+		const double rss = olsOnRows(hcat(X, C), y, rows, rc).rss;
+		if (rss < bestRss)
+		{
+			bestRss = rss;
+			cs.theta = th;
+			cs.C = C;
+		}
+	}
+	const Gls g1 = glsFit(hcat(X, cs.C), y, common, block, opt);
+	const double bestChi2 = waldChi2(X, g1, y, common, block);
+	auto& t = cs.test;
+	t.theta = cs.theta;
+	t.dof = static_cast<int>(cs.C.cols());
+	t.chi2 = std::max(0.0, bestChi2);
+	const int grid = static_cast<int>(cs.thetas.size());
+	t.p = sidak(chi2Survival(t.chi2, t.dof), grid);
+	t.delta_bic = t.chi2 - t.dof * std::log(nEff) - std::log(double(grid));
+}
+
+/** Holm's step-down adjustment over the tested candidates' p-values; significant = adjusted p
+ * below alpha and a positive BIC gain. */
+void holmAdjust(std::vector<CandState>& cands, const SelectionOptions& opt)
+{
+	std::vector<std::size_t> order(cands.size());
+	for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+	std::sort(order.begin(), order.end(), [&](auto a, auto b) { return cands[a].test.p < cands[b].test.p; });
+	double running = 0.0;
+	const std::size_t m = cands.size();
+	for (std::size_t i = 0; i < m; ++i)
+	{
+		auto& t = cands[order[i]].test;
+		running = std::max(running, std::min(1.0, double(m - i) * t.p));
+		t.p_adjusted = running;
+		t.significant = t.p_adjusted < opt.alpha && t.delta_bic > 0;
+	}
+}
+
+}  // namespace
+
 SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& base, const SelectionOptions& opt)
 {
 	SelectionResult res;
@@ -295,47 +402,8 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 		Vec rr;
 		const auto fit = olsOnRows(X, y, rows, rr);
 		const auto ctx = makeCandidateContext(sig, base, fit.coef.head(base.X.cols()));
-		std::vector<CandState> cands;
 		std::vector<CandidateTest> report;
-		for (const auto& id : ids)
-		{
-			CandState cs;
-			cs.eff = &candidateById(id);
-			cs.test.id = id;
-			if (std::find(excluded.begin(), excluded.end(), id) != excluded.end()) continue;
-			const auto why = cs.eff->untestable_reason(sig);
-			if (!why.empty())
-			{
-				cs.test.status = CandidateStatus::Untestable;
-				cs.test.note = why;
-				report.push_back(cs.test);
-				continue;
-			}
-			for (double th : cs.eff->theta_grid)
-				if (spanResidual(X, cs.eff->build(ctx, th), rows) >= opt.span_tolerance) cs.thetas.push_back(th);
-			if (cs.thetas.empty())
-			{
-				cs.test.status = CandidateStatus::Spanned;
-				cs.test.note = "the model already spans its terms";
-				report.push_back(cs.test);
-				continue;
-			}
-			// OLS profile (for the kitchen-sink noise estimate)
-			double best = std::numeric_limits<double>::infinity();
-			for (double th : cs.thetas)
-			{
-				Vec rc;
-				const double rss = olsOnRows(hcat(X, cs.eff->build(ctx, th)), y, rows, rc).rss;
-				if (rss < best)
-				{
-					best = rss;
-					cs.theta = th;
-				}
-			}
-			cs.C = cs.eff->build(ctx, cs.theta);
-			cs.test.status = CandidateStatus::Tested;
-			cands.push_back(std::move(cs));
-		}
+		std::vector<CandState> cands = screenCandidates(ids, excluded, sig, ctx, X, y, rows, opt, report);
 		if (cands.empty())
 		{
 			res.rounds.push_back(report);
@@ -350,46 +418,9 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 			res.lrv_factor = g0.lrv;
 		}
 		const double nEff = std::max(2.0, nRows / std::max(1.0, g0.lrv));
-		for (auto& cs : cands)
-		{
-			// nonlinear parameter: profile search on the OLS residual sum of squares (the GLS test
-			// below is Sidak-corrected for the grid size)
-			double bestRss = std::numeric_limits<double>::infinity();
-			for (double th : cs.thetas)
-			{
-				const Mat C = cs.eff->build(ctx, th);
-				Vec rc;
-				const double rss = olsOnRows(hcat(X, C), y, rows, rc).rss;
-				if (rss < bestRss)
-				{
-					bestRss = rss;
-					cs.theta = th;
-					cs.C = C;
-				}
-			}
-			const Gls g1 = glsFit(hcat(X, cs.C), y, common, sig.block, opt);
-			const double bestChi2 = waldChi2(X, g1, y, common, sig.block);
-			auto& t = cs.test;
-			t.theta = cs.theta;
-			t.dof = static_cast<int>(cs.C.cols());
-			t.chi2 = std::max(0.0, bestChi2);
-			const int grid = static_cast<int>(cs.thetas.size());
-			t.p = sidak(chi2Survival(t.chi2, t.dof), grid);
-			t.delta_bic = t.chi2 - t.dof * std::log(nEff) - std::log(double(grid));
-		}
-		// Holm over the tested candidates
-		std::vector<std::size_t> order(cands.size());
-		for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-		std::sort(order.begin(), order.end(), [&](auto a, auto b) { return cands[a].test.p < cands[b].test.p; });
-		double running = 0.0;
+		for (auto& cs : cands) testCandidate(cs, ctx, X, y, rows, common, sig.block, opt, nEff);
+		holmAdjust(cands, opt);
 		const std::size_t m = cands.size();
-		for (std::size_t i = 0; i < m; ++i)
-		{
-			auto& t = cands[order[i]].test;
-			running = std::max(running, std::min(1.0, double(m - i) * t.p));
-			t.p_adjusted = running;
-			t.significant = t.p_adjusted < opt.alpha && t.delta_bic > 0;
-		}
 		int bestIdx = -1;
 		for (std::size_t i = 0; i < m; ++i)
 			if (cands[i].test.significant && (bestIdx < 0 || cands[i].test.delta_bic > cands[bestIdx].test.delta_bic))
