@@ -28,7 +28,7 @@
 
 #include "AppMain.h"
 #include "CommandLine.h"
-#include "StreamedChamber.h"
+#include "StreamedRun.h"
 
 using namespace mrpt_fog;
 using namespace mrpt_fog::sim;
@@ -122,13 +122,15 @@ int main(int argc, char** argv)
 		app::SimRunSummary sum;
 		double sim_s = 0;
 		double transient_C = NAN;  // vehicle: the coil's thermal transient
-		if (!vehicle && !triad.getValue())
+		if (!triad.getValue())
 		{
-			// A single-axis chamber run is simulated and written sample by sample (issue 14).
+			// A single-axis run is simulated and written sample by sample (issue 14).
 			std::vector<std::pair<std::string, std::string>> extra;
 			if (duration.getValue() > 0) extra.emplace_back("sim.duration_s", std::to_string(duration.getValue()));
-			sum = app::writeChamberStreamed(out.getValue(), prof, dev, settings,
-											duration.getValue() > 0 ? duration.getValue() : INFINITY, extra);
+			const double max_s = duration.getValue() > 0 ? duration.getValue() : INFINITY;
+			sum = vehicle ? app::writeDriveStreamed(out.getValue(), prof, dev, settings, max_s, extra)
+						  : app::writeChamberStreamed(out.getValue(), prof, dev, settings, max_s, extra);
+			transient_C = sum.coil_transient_C;
 			sim_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 		}
 		else

@@ -25,6 +25,7 @@
 #include <mrpt_fog/sim/FogDevice.h>
 #include <mrpt_fog/sim/FogSimulator.h>
 
+#include <functional>
 #include <vector>
 
 namespace mrpt_fog::sim
@@ -46,6 +47,35 @@ struct DriveOutput
 	double coil_transient_C = 0;  //!< max - min of the coil mean temperature [degC]
 	double duration_s = 0;
 };
+
+/** One step of a drive as simulateDrive() records it: the FOG sample (with the ideal twin's
+ * rate), the applied table rate, the wheel odometry (cumulative pose and local velocities) and
+ * the planar truth (yaw wrapped to (-pi, pi]). */
+struct DriveRecord
+{
+	double t_s = 0;
+	FogSample sample;
+	double table_rate_dph = 0;
+	double odo_x_m = 0, odo_y_m = 0, odo_yaw_rad = 0, odo_v_mps = 0, odo_w_rad_s = 0;
+	double truth_x_m = 0, truth_y_m = 0, truth_yaw_rad = 0;
+};
+/** Called per step, in order; return false to be called no more (the simulation still runs to
+ * the end, for the coil transient). */
+using DriveStepSink = std::function<bool(const DriveRecord&)>;
+
+/** simulateDrive()'s steps one at a time (issue 14: a long drive need not be held); returns the
+ * coil's thermal transient over the whole drive (max - min of the coil mean temperature). */
+double simulateDriveSteps(const ChamberProfile& cabin, const FogDevice& device, const SimSettings& settings,
+						  const OdometryErrors& odo, const DriveStepSink& f);
+/** Samples of a drive: floor(duration * rate + 1e-9) + 1. */
+std::size_t driveSampleCount(const ChamberProfile& cabin, const SimSettings& settings);
+/** The FOG series of simulateDrive() without samples: layout and metadata (which holds the
+ * coil transient, known after the whole drive). */
+FogSeries driveRunHeader(const ChamberProfile& cabin, const FogDevice& device, const SimSettings& settings,
+						 const OdometryErrors& odo, double coil_transient_C);
+/** The ODOMETRY and GROUND_TRUTH observations of a step, as simulateDrive() makes them. */
+mrpt::obs::CObservation::Ptr odometryObservation(const DriveRecord& r);
+mrpt::obs::CObservation::Ptr truthObservation(const DriveRecord& r);
 
 /** Simulates the drive over the cabin profile's duration (> 130 s). */
 DriveOutput simulateDrive(const ChamberProfile& cabin, const FogDevice& device, const SimSettings& settings,
