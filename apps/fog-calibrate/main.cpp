@@ -483,6 +483,14 @@ int main(int argc, char** argv)
 										"Causal estimator: 2 (default) extrapolates the window's slope to the newest sample "
 										"(no delay); 1 is the plain slope, about window/2 late (the method before issue 11)",
 										false, 2, "1|2", cmd);
+		TCLAP::ValueArg<double> arg_selbin("", "selection-bin",
+											"auto: score candidates on the means of S-second bins (0 = every sample)", false,
+											FitOptions{}.selection_bin_s, "S", cmd);
+		TCLAP::ValueArg<std::string> arg_step("", "step-rule",
+											  "auto: a step must lower the held-out RMS by 0.5 % (relative) or be "
+											  "significant over time blocks (significant)",
+											  false, FitOptions{}.step_rule == StepRule::Significant ? "significant" : "relative",
+											  "relative|significant", cmd);
 		TCLAP::ValueArg<unsigned> arg_folds("", "folds", "Cross-validation folds for a single run", false, 5, "K", cmd);
 		TCLAP::ValueArg<double> arg_tau("", "tau", "Averaging time of the stability figures [s]", false, 100.0, "S", cmd);
 		TCLAP::SwitchArg arg_nofb("", "no-fallbacks", "Do not fit per-thermistor fallback models", cmd);
@@ -536,6 +544,12 @@ int main(int argc, char** argv)
 		opt.rate_estimator.poly_order =
 			opt.rate_estimator.kind == RateEstimatorKind::SavitzkyGolay ? arg_order.getValue() : arg_corder.getValue();
 		opt.folds = arg_folds.getValue();
+		if (!(arg_selbin.getValue() >= 0) || !std::isfinite(arg_selbin.getValue()))
+			throw std::invalid_argument("--selection-bin must be a number of seconds >= 0");
+		opt.selection_bin_s = arg_selbin.getValue();
+		if (arg_step.getValue() != "relative" && arg_step.getValue() != "significant")
+			throw std::invalid_argument("--step-rule must be relative or significant, got '" + arg_step.getValue() + "'");
+		opt.step_rule = arg_step.getValue() == "significant" ? StepRule::Significant : StepRule::RelativeGain;
 		opt.tau_s = arg_tau.getValue();
 		opt.fallbacks = !arg_nofb.getValue();
 		opt.extrapolation = extrapolationPolicyFromString(arg_extra.getValue());

@@ -110,6 +110,49 @@ TEST(BiasFit, CrossValidationMatchesExplicitRefits)
 	EXPECT_NEAR(cv[0], std::sqrt(sse / 2000), 1e-9);
 }
 
+// Held-out SSE per block (crossValidatedBlockSse): each block of a fold predicted by an explicit
+// refit on the other folds' stored rows; summed over a fold's blocks it is that fold's SSE.
+TEST(BiasFit, BlockSseMatchesExplicitRefitsPerBlock)
+{
+	const auto p = makeProblem(2000, 0.05, 6);
+	std::vector<StreamingQr> folds;
+	std::vector<std::vector<StreamingQr>> units(4);
+	for (int f = 0; f < 4; f++)
+	{
+		folds.push_back(accumulate(p, f * 500, (f + 1) * 500, 1.0));
+		for (int u = 0; u < 5; u++) units[f].push_back(accumulate(p, f * 500 + u * 100, f * 500 + (u + 1) * 100, 1.0));
+	}
+	auto training = trainingSets(folds);
+	const auto block = crossValidatedBlockSse(training, units, kAll, {0.0, 1e-3});
+	const auto fold = crossValidatedFoldSse(folds, training, kAll, {0.0, 1e-3});
+	ASSERT_EQ(block.size(), 2u);
+	for (int f = 0; f < 4; f++)
+	{
+		Eigen::MatrixXd Xt(1500, 7);
+		Eigen::VectorXd yt(1500);
+		int r = 0;
+		for (int i = 0; i < 2000; i++)
+			if (i / 500 != f)
+			{
+				Xt.row(r) = p.X.row(i);
+				yt[r++] = p.y[i];
+			}
+		const Eigen::VectorXd b = Xt.colPivHouseholderQr().solve(yt);
+		for (int u = 0; u < 5; u++)
+		{
+			const int from = f * 500 + u * 100;
+			const double ref = (p.y.segment(from, 100) - p.X.middleRows(from, 100) * b).squaredNorm();
+			EXPECT_NEAR(block[0][f][u], ref, 1e-9 * (1 + ref)) << f << " " << u;
+		}
+		for (int ridge = 0; ridge < 2; ridge++)
+		{
+			double sum = 0;
+			for (double x : block[ridge][f]) sum += x;
+			EXPECT_NEAR(sum, fold[ridge][f], 1e-9 * (1 + fold[ridge][f])) << f;
+		}
+	}
+}
+
 TEST(BiasFit, RidgeShrinksAndKeepsMean)
 {
 	const auto p = makeProblem(2000, 0.05, 6);

@@ -255,6 +255,35 @@ std::vector<std::vector<double>> crossValidatedFoldSse(std::vector<StreamingQr>&
 	return sse;
 }
 
+std::vector<std::vector<std::vector<double>>> crossValidatedBlockSse(std::vector<StreamingQr>& train,
+																	 std::vector<std::vector<StreamingQr>>& units,
+																	 const std::vector<int>& cols, const std::vector<double>& ridges,
+																	 double rcond)
+{
+	if (train.size() != units.size()) throw std::invalid_argument("crossValidatedBlockSse: one training set per fold needed");
+	const double nan = std::numeric_limits<double>::quiet_NaN();
+	std::vector<std::vector<std::vector<double>>> sse(ridges.size());
+	for (auto& r : sse)
+		for (const auto& u : units) r.emplace_back(u.size(), nan);
+	for (std::size_t f = 0; f < units.size(); f++)
+	{
+		if (units[f].empty() || train[f].count() == 0) continue;
+		const CentredSystem s = centre(train[f], cols);
+		const bool deficient = rankOf(s, rcond) < cols.size() || s.zero_variance;
+		for (std::size_t r = 0; r < ridges.size(); r++)
+		{
+			if (ridges[r] == 0 && deficient)
+			{
+				std::fill(sse[r][f].begin(), sse[r][f].end(), std::numeric_limits<double>::infinity());
+				continue;
+			}
+			const Eigen::VectorXd coef = solveCentred(s, ridges[r], rcond, train[f].yRef());
+			for (std::size_t u = 0; u < units[f].size(); u++) sse[r][f][u] = residualSumOfSquares(units[f][u], cols, coef);
+		}
+	}
+	return sse;
+}
+
 std::vector<double> crossValidatedRms(std::vector<StreamingQr>& folds, std::vector<StreamingQr>& train,
 									  const std::vector<int>& cols, const std::vector<double>& ridges, double rcond)
 {

@@ -261,6 +261,8 @@ struct Choice
 	double cv_rms = std::numeric_limits<double>::infinity();
 	double cv_se_mse = 0;  // standard error of the cross-validated mean squared error
 	std::vector<double> fold_mse;  // per fold (NaN: fold empty), for paired comparisons
+	std::vector<double> block_sse;  // per block of every fold (FoldSet::units), for paired comparisons
+	double rows = 0;  // held-out rows scored
 	std::size_t terms = 1;  // including the constant
 	std::vector<std::string> pool;  // thermistors the choice was allowed to use
 };
@@ -269,6 +271,8 @@ struct Choice
 struct FoldSet
 {
 	std::vector<StreamingQr> held_out, training;
+	/** Optional: each fold's held-out rows cut into time blocks (StepRule::Significant). */
+	std::vector<std::vector<StreamingQr>> units;
 };
 
 /** Best ridge for an order vector; the choice with its CV RMS and the standard error of its CV
@@ -280,7 +284,24 @@ Choice scoreOrders(FoldSet& folds, const ThermalFeatureSet& fs, const std::vecto
 	c.order = order;
 	const auto cols = columnsOf(fs, order);
 	c.terms = cols.size();
-	const auto sse = crossValidatedFoldSse(folds.held_out, folds.training, cols, ridges);
+	std::vector<std::vector<double>> sse;
+	std::vector<std::vector<std::vector<double>>> block;
+	if (folds.units.empty())
+		sse = crossValidatedFoldSse(folds.held_out, folds.training, cols, ridges);
+	else
+	{
+		// The fold's SSE is the sum of its blocks' (the blocks partition its rows).
+		block = crossValidatedBlockSse(folds.training, folds.units, cols, ridges);
+		sse.assign(ridges.size(), std::vector<double>(folds.units.size(), std::numeric_limits<double>::quiet_NaN()));
+		for (std::size_t r = 0; r < ridges.size(); r++)
+			for (std::size_t f = 0; f < folds.units.size(); f++)
+			{
+				if (folds.held_out[f].count() == 0 || folds.training[f].count() == 0 || folds.units[f].empty()) continue;
+				double t = 0;
+				for (double x : block[r][f]) t += x;
+				sse[r][f] = t;
+			}
+	}
 	for (std::size_t r = 0; r < ridges.size(); r++)
 	{
 		double total = 0, rows = 0;
@@ -306,6 +327,11 @@ Choice scoreOrders(FoldSet& folds, const ThermalFeatureSet& fs, const std::vecto
 			m /= static_cast<double>(mse.size());
 			for (double x : mse) v += (x - m) * (x - m);
 			c.cv_se_mse = mse.size() > 1 ? std::sqrt(v / static_cast<double>(mse.size() - 1) / static_cast<double>(mse.size())) : 0.0;
+			c.rows = rows;
+			c.block_sse.clear();
+			if (!block.empty())
+				for (std::size_t f = 0; f < block[r].size(); f++)
+					for (double x : block[r][f]) c.block_sse.push_back(x);
 			c.fold_mse.clear();
 			for (std::size_t f = 0; f < sse[r].size(); f++)
 				c.fold_mse.push_back(std::isnan(sse[r][f]) ? std::numeric_limits<double>::quiet_NaN()
@@ -339,10 +365,65 @@ bool differenceInSpan(const ThermalFeatureSet& fs, std::size_t g, const std::vec
  * adds a signal at order 1 or raises an included signal's order by one (with orders off, a step
  * adds a whole signal at its preset order). A step must lower the held-out RMS by min_gain.
  * Returns the path (the empty model first). */
-std::vector<Choice> selectForward(FoldSet& folds, const ThermalFeatureSet& fs, const std::vector<bool>& allowed,
-								  const std::vector<int>& max_order, bool orders, double min_gain, bool linear_base)
+/** The paired difference of two candidates' block SSEs (a - b), summed, and its standard error
+ * (blocks treated as independent: sqrt(blocks x variance of the per-block differences)).
+ * {0, 0} without blocks. */
+std::pair<double, double> pairedBlockDifference(const Choice& a, const Choice& b)
 {
+	double sum = 0, sum2 = 0;
+	std::size_t n = 0;
+	for (std::size_t u = 0; u < a.block_sse.size() && u < b.block_sse.size(); u++)
+		if (std::isfinite(a.block_sse[u]) && std::isfinite(b.block_sse[u]))
+		{
+			const double d = a.block_sse[u] - b.block_sse[u];
+			sum += d;
+			sum2 += d * d;
+			n++;
+		}
+	if (n < 2) return {sum, 0.0};
+	const double mean = sum / static_cast<double>(n);
+	const double var = std::max(0.0, (sum2 - static_cast<double>(n) * mean * mean) / static_cast<double>(n - 1));
+	return {sum, std::sqrt(static_cast<double>(n) * var)};
+}
+
+/** Whether `step` improves on `cur` enough to be taken (StepRule). */
+bool stepGains(const Choice& cur, const Choice& step, const FitOptions& opt)
+{
+	if (!(step.cv_rms < cur.cv_rms)) return false;
+	if (opt.step_rule == StepRule::Significant && !cur.block_sse.empty() && !step.block_sse.empty())
+	{
+		const auto [diff, se] = pairedBlockDifference(cur, step);
+		return diff > opt.step_z * se;
+	}
+	return step.cv_rms < cur.cv_rms * (1.0 - opt.min_relative_gain);
+}
+
+std::vector<Choice> selectForward(FoldSet& folds, const ThermalFeatureSet& fs, const std::vector<bool>& allowed,
+								  const std::vector<int>& max_order, const FitOptions& opt)
+{
+	const bool orders = opt.select_orders, linear_base = opt.linear_base;
 	const std::size_t ns = fs.signals().size();
+	if (opt.order_search == OrderSearch::Common)
+	{
+		// Every (temperature order, rate order) pair, applied to all allowed thermistors alike.
+		int max_t = 0, max_r = 0;
+		for (std::size_t g = 0; g < ns; g++)
+		{
+			if (!allowed[g] || fs.signals()[g].isDifference()) continue;
+			(fs.signals()[g].isRate() ? max_r : max_t) = std::max(fs.signals()[g].isRate() ? max_r : max_t, max_order[g]);
+		}
+		std::vector<Choice> all;
+		for (int kt = std::min(1, max_t); kt <= max_t; kt++)
+			for (int kr = std::min(1, max_r); kr <= max_r; kr++)
+			{
+				std::vector<int> order(ns, 0);
+				for (std::size_t g = 0; g < ns; g++)
+					if (allowed[g] && !fs.signals()[g].isDifference())
+						order[g] = std::min(max_order[g], fs.signals()[g].isRate() ? kr : kt);
+				all.push_back(scoreOrders(folds, fs, order, kRidgeGrid));
+			}
+		return all;
+	}
 	std::vector<int> start(ns, 0);
 	if (linear_base)  // every allowed thermistor's T and dT/dt at order 1 (Shupe is linear in the rates)
 		for (std::size_t g = 0; g < ns; g++)
@@ -366,7 +447,7 @@ std::vector<Choice> selectForward(FoldSet& folds, const ThermalFeatureSet& fs, c
 				if (c.cv_rms < step.cv_rms) step = c;
 			}
 		}
-		if (!(step.cv_rms < cur.cv_rms * (1.0 - min_gain))) break;
+		if (!stepGains(cur, step, opt)) break;
 		path.push_back(step);
 	}
 	return path;
@@ -378,6 +459,8 @@ std::vector<Choice> selectForward(FoldSet& folds, const ThermalFeatureSet& fs, c
  * (a soak against a 2 C/min ramp), which both candidates share; the paired spread does not. */
 double pairedSeMse(const Choice& a, const Choice& b)
 {
+	if (!a.block_sse.empty() && !b.block_sse.empty() && a.rows > 0)  // per block (StepRule::Significant)
+		return pairedBlockDifference(a, b).second / a.rows;
 	std::vector<double> d;
 	for (std::size_t f = 0; f < a.fold_mse.size() && f < b.fold_mse.size(); f++)
 		if (std::isfinite(a.fold_mse[f]) && std::isfinite(b.fold_mse[f])) d.push_back(a.fold_mse[f] - b.fold_mse[f]);
@@ -926,6 +1009,8 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 	// Resampling units for the stability of the choice: kStabilityBlocks contiguous time blocks per
 	// run, split by fold (a block is never in two folds).
 	const bool resample = opt.selection == "auto" && opt.stability_resamples > 0;
+	const bool significance = opt.selection == "auto" && opt.step_rule == StepRule::Significant;
+	const bool need_units = resample || significance;
 	constexpr std::size_t kStabilityBlocks = 40;
 	std::map<std::pair<std::size_t, std::size_t>, StreamingQr> units;  // (fold, run block) -> rows
 	// Selection judges candidates on time-bin means (FitOptions::selection_bin_s): the rows of
@@ -949,7 +1034,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 			const double inv = 1.0 / static_cast<double>(bin_n);
 			for (std::size_t q = 0; q < bin_f.size(); q++) bin_mean[q] = bin_f[q] * inv;
 			sel.held_out[bin_fold].add(bin_mean.data(), bin_y * inv);
-			if (resample)
+			if (need_units)
 			{
 				auto it = units.find({bin_fold, bin_block});
 				if (it == units.end())
@@ -968,7 +1053,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 			const std::size_t fold = foldOf(ri, t, regime);
 			const double y = r.y(c, j);
 			folds.held_out[fold].add(f.data(), y);
-			if (!binned && !resample) return;
+			if (!binned && !need_units) return;
 			const double u = std::clamp((t - t_front) / (t_back - t_front + 1e-300), 0.0, 1.0);
 			const std::size_t block =
 				ri * kStabilityBlocks + std::min(kStabilityBlocks - 1, static_cast<std::size_t>(u * kStabilityBlocks));
@@ -998,6 +1083,11 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 	folds.training = trainingSets(folds.held_out);
 	if (!binned) sel.held_out = folds.held_out;
 	sel.training = trainingSets(sel.held_out);
+	if (significance)
+	{
+		sel.units.assign(nfolds, {});
+		for (const auto& [key, acc] : units) sel.units[key.first].push_back(acc);
+	}
 
 	const std::vector<int> max_order = fs.signalOrders();
 	const auto allowedFor = [&](const std::vector<std::string>& pool, const std::string& dropped) {
@@ -1012,8 +1102,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 	};
 	const bool automatic = opt.selection == "auto";
 	const auto forward = [&](FoldSet& fset, const std::vector<std::string>& pool, const std::string& dropped) {
-		return selectForward(fset, fs, allowedFor(pool, dropped), max_order, opt.select_orders, opt.min_relative_gain,
-							 opt.linear_base);
+		return selectForward(fset, fs, allowedFor(pool, dropped), max_order, opt);
 	};
 	const auto choose = [&](FoldSet& fset, const std::vector<std::string>& pool, const std::string& dropped) {
 		Choice c;
@@ -1169,16 +1258,19 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 		{
 			FoldSet fr;
 			fr.held_out.assign(nfolds, StreamingQr(fs.termCount(), y_ref, x_ref));
+			if (significance) fr.units.assign(nfolds, {});
 			for (std::size_t u = 0; u < unit_list.size(); u++)
 			{
 				if (!flip(rng))
 				{
 					fr.held_out[unit_fold[u]].merge(*unit_list[u]);
+					if (significance) fr.units[unit_fold[u]].push_back(*unit_list[u]);
 					continue;
 				}
 				StreamingQr flipped = *unit_list[u];
 				flipped.flipResiduals(beta);
 				fr.held_out[unit_fold[u]].merge(flipped);
+				if (significance) fr.units[unit_fold[u]].push_back(flipped);
 			}
 			fr.training = trainingSets(fr.held_out);
 			const Choice c = selectMain(fr);

@@ -119,6 +119,56 @@ std::vector<BenchPreset> benchPresets()
 		o.paired_se = true;
 		out.push_back({"auto bin 100s paired", "multipoint", o, false});
 	}
+	if (std::getenv("FOG_BENCH_SCORING"))  // what the selection scores (issue 11, session 7)
+	{
+		mrpt_fog::FitOptions o;
+		o.stability_resamples = 0;
+		out.push_back({"auto @3/1", "multipoint@3/1", o, false});
+		o.selection_bin_s = 100.0;
+		out.push_back({"auto bin100", "multipoint", o, false});
+		out.push_back({"auto bin100 @3/1", "multipoint@3/1", o, false});
+		o.parsimony = false;
+		out.push_back({"auto bin100 lowest-cv", "multipoint", o, false});
+		o.parsimony = true;
+		o.min_relative_gain = 0.0;
+		out.push_back({"auto bin100 gain0", "multipoint", o, false});
+		o.min_relative_gain = 0.005;
+		o.step_rule = mrpt_fog::StepRule::Significant;
+		o.paired_se = true;
+		out.push_back({"auto sig bin100", "multipoint", o, false});
+		o.selection_bin_s = 0.0;
+		out.push_back({"auto sig", "multipoint", o, false});
+	}
+	if (std::getenv("FOG_BENCH_GAIN"))  // tau-binned scoring with a larger step threshold (issue 11, session 7)
+	{
+		mrpt_fog::FitOptions o;
+		o.stability_resamples = 0;
+		o.selection_bin_s = 100.0;
+		for (const double g : {0.02, 0.05})
+		{
+			o.min_relative_gain = g;
+			char label[40];
+			std::snprintf(label, sizeof label, "auto bin100 g%g", g);
+			out.push_back({label, "multipoint", o, false});
+			std::snprintf(label, sizeof label, "auto bin100 @3/1 g%g", g);
+			out.push_back({label, "multipoint@3/1", o, false});
+		}
+	}
+	if (std::getenv("FOG_BENCH_COMMON"))  // common orders for all thermistors (issue 11, session 7)
+	{
+		mrpt_fog::FitOptions o;
+		o.stability_resamples = 0;
+		o.order_search = mrpt_fog::OrderSearch::Common;
+		for (const double b : {0.0, 100.0})
+		{
+			o.selection_bin_s = b;
+			const std::string bin = b > 0 ? " bin100" : "";
+			o.parsimony = false;
+			out.push_back({"auto common" + bin + " lowest", "multipoint", o, false});
+			o.parsimony = true;
+			out.push_back({"auto common" + bin + " 1se", "multipoint", o, false});
+		}
+	}
 	out.push_back({"multipoint none 5/3", "multipoint", none, true});
 	out.push_back({"multipoint@3/1 none", "multipoint@3/1", none, true});
 	out.push_back({"multipoint@1/1 none", "multipoint@1/1", none, true});

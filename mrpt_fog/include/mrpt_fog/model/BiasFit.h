@@ -84,6 +84,15 @@ std::vector<double> crossValidatedRms(std::vector<StreamingQr>& folds, std::vect
 std::vector<std::vector<double>> crossValidatedFoldSse(std::vector<StreamingQr>& folds, std::vector<StreamingQr>& training,
 													   const std::vector<int>& columns, const std::vector<double>& ridges,
 													   double rcond = 1e-10);
+/** Per-block held-out residual sums of squares: sse[r][f][u] for ridge r, fold f and block u of
+ * that fold (units[f]: accumulators partitioning the fold's held-out rows, e.g. time blocks),
+ * each block predicted by the model fitted on training[f]. Summed over u it is
+ * crossValidatedFoldSse's sse[r][f]. NaN for an empty training set, +inf for ridge 0 on a
+ * rank-deficient one. The blocks' spread is what a paired comparison of two models needs. */
+std::vector<std::vector<std::vector<double>>> crossValidatedBlockSse(std::vector<StreamingQr>& training,
+																	 std::vector<std::vector<StreamingQr>>& units,
+																	 const std::vector<int>& columns,
+																	 const std::vector<double>& ridges, double rcond = 1e-10);
 /** The same, building the training sets itself. */
 std::vector<double> crossValidatedRms(std::vector<StreamingQr>& folds, const std::vector<int>& columns,
 									  const std::vector<double>& ridges, double rcond = 1e-10);

@@ -89,6 +89,35 @@ enum class TableSamples : unsigned char
 	Exclude = 1  //!< left out of the bias fit (they serve the scale-factor fit, ScaleFactorFit.h)
 };
 
+/** How selection "auto" judges whether a forward step (a new signal or a higher order) is worth
+ * taking (a closed set). */
+enum class StepRule : unsigned char
+{
+	/** The held-out RMS must drop by FitOptions::min_relative_gain (relative to the RMS itself:
+	 * at high sample rates the RMS is mostly the gyro's white noise, so a thermal gain that matters
+	 * can fall below the threshold). */
+	RelativeGain = 0,
+	/** The held-out mean squared error must drop by more than FitOptions::step_z standard errors
+	 * of the paired difference, the standard error from the per-block differences (the run cut
+	 * into 40 time blocks, split by fold): a test of whether the gain is real, which does not
+	 * depend on the sample rate for white noise (the per-sample noise grows as sqrt(rate), the
+	 * number of samples as rate). */
+	Significant = 1
+};
+
+/** Which models selection "auto" compares (a closed set). */
+enum class OrderSearch : unsigned char
+{
+	/** Forward stepwise: from the linear multipoint model, one signal's order raised (or a
+	 * physics candidate added) per step (FitOptions::linear_base, step_rule). */
+	PerSignal = 0,
+	/** Every thermistor's temperature at one common order (1 .. the preset's) and every rate at
+	 * one common order (1 .. the preset's): the preset's own shape at each order pair, no
+	 * physics candidates; the pair (and ridge) with the lowest held-out error is kept
+	 * (parsimony: the simplest within one standard error). */
+	Common = 1
+};
+
 struct FitOptions
 {
 	RateEstimatorSettings rate_estimator;  //!< default causal, 60 s window
@@ -110,12 +139,16 @@ struct FitOptions
 	double regime_rate_C_per_min = 0.2;  //!< |mean thermistor rate| below this: a soak
 	double min_regime_s = 600.0;  //!< shorter regime segments join the one before
 	std::size_t max_regime_folds = 8;  //!< regime segment j is fold j mod this
+	OrderSearch order_search = OrderSearch::PerSignal;
+	StepRule step_rule = StepRule::RelativeGain;
+	double step_z = 2.0;  //!< StepRule::Significant: standard errors a step's gain must exceed
 	/** "auto": choose each signal's order (T 1..5, rates 1..3, up to the preset's) by held-out
 	 * error; false: a signal enters with all the preset's powers (the earlier method). */
 	bool select_orders = true;
 	/** "auto": the simplest candidate within one standard error of the best held-out error. */
 	bool parsimony = true;
-	/** Parsimony's standard error: true, that of the paired per-fold difference between a
+	/** Parsimony's standard error: true, that of the paired per-fold difference (per block with
+	 * StepRule::Significant) between a
 	 * candidate and the best (the same folds judge both); false, the spread of the best's own
 	 * per-fold errors, which mostly measures how unlike the folds are. */
 	bool paired_se = false;
