@@ -4,12 +4,13 @@
  * profiles it never saw; per preset, the median and 90th percentile of held-out 100 s stability
  * divided by the device's noise floor.
  *
- *   bench_generalization [--seeds tuning|heldout|final|all|N[,N..]] [--sector-coil N] [--rate-cap HZ] [--cases]
+ *   bench_generalization [--seeds tuning|heldout|final|fresh|all|N[,N..]] [--sector-coil N] [--rate-cap HZ] [--cases]
  *                        [--extrapolation clamp|linear|polynomial] [--preset TEXT] [--extra PRESET]...
  *                        [--effects SEL] [--ideal-thermistors] [--oracle] [--rate-window S]
  *
  * Seeds 1..16 are the tuning devices, 17..24 were kept out of every tuning decision, 25..32
- * ("final") out of everything until the end of issue 11 session 5 (all: 1..24).
+ * ("final") out of everything until the end of issue 11 session 5, 33..40 ("fresh") until the
+ * end of session 7 (all: 1..24).
  * --sector-coil N adds sector-coil devices 1..N (the independent generator). --cases prints every
  * device x profile x preset line; --extrapolation overrides every preset's policy; --preset
  * keeps the presets whose label contains TEXT (--exclude TEXT drops them); --extra adds a fixed preset
@@ -97,6 +98,8 @@ int main(int argc, char** argv)
 		for (auto s : fogtest::heldOutSeeds()) seeds.push_back(s);
 	if (which == "final")
 		for (auto s : fogtest::finalSeeds()) seeds.push_back(s);
+	if (which == "fresh")
+		for (auto s : fogtest::freshSeeds()) seeds.push_back(s);
 	if (!which.empty() && which.find_first_not_of("0123456789,") == std::string::npos)  // e.g. 18 or 18,20
 		for (std::size_t i = 0; i < which.size();)
 		{
@@ -107,7 +110,7 @@ int main(int argc, char** argv)
 		}
 	if (seeds.empty())
 	{
-		std::fprintf(stderr, "bench_generalization: --seeds must be tuning, heldout, final, all or seed numbers (17,18)\n");
+		std::fprintf(stderr, "bench_generalization: --seeds must be tuning, heldout, final, fresh, all or seed numbers (17,18)\n");
 		return 2;
 	}
 	for (auto s : seeds) list.push_back({fogtest::Generator::FogSim, s, cap, effects, ideal});

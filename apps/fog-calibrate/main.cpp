@@ -66,6 +66,12 @@ HOW THE FIT GUARDS AGAINST OVER-FITTING (--selection)
     the run (cooling ramps, soaks, heating ramps) are held out, so the error is that of a
     temperature history the fit did not see; blocks = interleaved time blocks. points:K also
     searches thermistor subsets.
+  Options measured on the generalization bench, not the default (docs/generalization.md,
+  "Session 7"): --order-search common (one temperature order and one rate order for all
+  thermistors, 15 candidates), --selection-bin S (candidates scored on S-second bin means, e.g.
+  the --tau of the stability figure, so the white noise of high sample rates does not decide),
+  --step-rule significant (a step must beat two standard errors of the paired per-block
+  held-out difference instead of lowering the held-out RMS by 0.5 %).
   none: every preset term, plain least squares (plus --ridge): the seed's method; with several
     collinear thermistors it fits the calibration run and fails on others.
   The fit refuses (with the reason) too few samples, a temperature span too narrow for the
@@ -491,6 +497,12 @@ int main(int argc, char** argv)
 											  "significant over time blocks (significant)",
 											  false, FitOptions{}.step_rule == StepRule::Significant ? "significant" : "relative",
 											  "relative|significant", cmd);
+		TCLAP::ValueArg<std::string> arg_osearch("", "order-search",
+												 "auto: per-signal (forward, one order at a time) or common (one T order and "
+												 "one rate order for all thermistors)",
+												 false,
+												 FitOptions{}.order_search == OrderSearch::Common ? "common" : "per-signal",
+												 "per-signal|common", cmd);
 		TCLAP::ValueArg<unsigned> arg_folds("", "folds", "Cross-validation folds for a single run", false, 5, "K", cmd);
 		TCLAP::ValueArg<double> arg_tau("", "tau", "Averaging time of the stability figures [s]", false, 100.0, "S", cmd);
 		TCLAP::SwitchArg arg_nofb("", "no-fallbacks", "Do not fit per-thermistor fallback models", cmd);
@@ -550,6 +562,9 @@ int main(int argc, char** argv)
 		if (arg_step.getValue() != "relative" && arg_step.getValue() != "significant")
 			throw std::invalid_argument("--step-rule must be relative or significant, got '" + arg_step.getValue() + "'");
 		opt.step_rule = arg_step.getValue() == "significant" ? StepRule::Significant : StepRule::RelativeGain;
+		if (arg_osearch.getValue() != "per-signal" && arg_osearch.getValue() != "common")
+			throw std::invalid_argument("--order-search must be per-signal or common, got '" + arg_osearch.getValue() + "'");
+		opt.order_search = arg_osearch.getValue() == "common" ? OrderSearch::Common : OrderSearch::PerSignal;
 		opt.tau_s = arg_tau.getValue();
 		opt.fallbacks = !arg_nofb.getValue();
 		opt.extrapolation = extrapolationPolicyFromString(arg_extra.getValue());

@@ -957,6 +957,10 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 	if (!first.has_axis[static_cast<int>(axis)])
 		throw std::invalid_argument(runName(labels, 0) + " has no " + axisLetter(axis) + " axis to calibrate");
 	const ModelPreset preset = parseModelPreset(preset_text, first.thermistors);
+	// Common orders are defined for the thermistor presets (multipoint, points:K); M1..M4 and
+	// term lists (differences among their own signals) keep the per-signal search.
+	if (!(preset.kind == PresetKind::Multipoint || preset.kind == PresetKind::Points))
+		opt.order_search = OrderSearch::PerSignal;
 	const bool candidates_added =
 		opt.selection == "auto" && opt.physics_candidates && (preset.kind == PresetKind::Multipoint || preset.kind == PresetKind::Points);
 	ThermalFeatureSet fs = calibrationFeatures(preset, first, candidates_added);

@@ -81,4 +81,11 @@ std::vector<std::uint64_t> finalSeeds()
 	return s;
 }
 
+std::vector<std::uint64_t> freshSeeds()
+{
+	std::vector<std::uint64_t> s;
+	for (std::uint64_t i = 33; i <= 40; i++) s.push_back(i);
+	return s;
+}
+
 }  // namespace fogtest

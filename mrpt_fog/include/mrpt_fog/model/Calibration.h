@@ -114,7 +114,8 @@ enum class OrderSearch : unsigned char
 	/** Every thermistor's temperature at one common order (1 .. the preset's) and every rate at
 	 * one common order (1 .. the preset's): the preset's own shape at each order pair, no
 	 * physics candidates; the pair (and ridge) with the lowest held-out error is kept
-	 * (parsimony: the simplest within one standard error). */
+	 * (parsimony: the simplest within one standard error). multipoint and points:K only (other
+	 * presets keep PerSignal). */
 	Common = 1
 };
 
