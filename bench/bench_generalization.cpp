@@ -27,7 +27,9 @@
  * --causal-order 1|2 sets the causal estimator's order (default 2; 1 = the delayed slope used
  * before issue 11's diagnosis); --also-order1 adds every preset again with the order-1 estimator
  * (label " o1") and --also-window S with a rate window of S seconds (label " wS"), on the same
- * simulated runs. */
+ * simulated runs. Environment: FOG_BENCH_CAL2=PROFILE joins that evaluation profile's run to the
+ * calibration (two runs) and leaves it out of the evaluation; FOG_BENCH_SCORING / _GAIN / _COMMON /
+ * _BINS / _PARSIMONY / _VARIANTS add selection variants (GeneralizationBench.cpp). */
 #include "DeviceEnsemble.h"
 #include "GeneralizationBench.h"
 

@@ -287,6 +287,10 @@ std::vector<CaseResult> runBenchCase(const BenchCase& c, const std::vector<Bench
 		floor_dph.push_back(stats.stability_dph);
 	}
 	std::vector<CaseResult> out;
+	std::size_t cal2 = profiles.size();
+	if (const char* name = std::getenv("FOG_BENCH_CAL2"))
+		for (std::size_t i = 0; i < profiles.size(); i++)
+			if (profiles[i].name == name) cal2 = i;
 	for (const auto& bp : presets)
 	{
 		mrpt_fog::Calibration cal;
@@ -295,7 +299,12 @@ std::vector<CaseResult> runBenchCase(const BenchCase& c, const std::vector<Bench
 			error.clear();
 			try
 			{
-				cal = mrpt_fog::fitCalibration({run}, bp.preset, bp.options, {"calibration"});
+				// Diagnostic (FOG_BENCH_CAL2=PROFILE): that evaluation profile's run joins the
+				// calibration (two runs: leave-one-run-out selection) and is not evaluated.
+				if (cal2 < profiles.size() && !bp.fit_on_evaluation)
+					cal = mrpt_fog::fitCalibration({run, runs.eval[cal2]}, bp.preset, bp.options, {"calibration", "second"});
+				else
+					cal = mrpt_fog::fitCalibration({run}, bp.preset, bp.options, {"calibration"});
 			}
 			catch (const std::exception& e)
 			{
@@ -305,6 +314,7 @@ std::vector<CaseResult> runBenchCase(const BenchCase& c, const std::vector<Bench
 		if (!bp.fit_on_evaluation) fit(runs.cal);
 		for (std::size_t i = 0; i < profiles.size(); i++)
 		{
+			if (i == cal2 && !bp.fit_on_evaluation) continue;  // it was calibrated on
 			if (bp.fit_on_evaluation) fit(runs.eval[i]);
 			CaseResult r;
 			r.generator = c.generator;
