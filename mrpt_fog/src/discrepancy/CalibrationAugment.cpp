@@ -85,7 +85,13 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 	for (const auto& ne : named)
 	{
 		const bool pair = !in.empty() && !outer.empty();
-		if (ne.id == "radial_gradient" && pair) add("dT(" + in + "-" + outer + ")^1");
+		if (ne.id == "radial_gradient" && pair)
+		{
+			add("dT(" + in + "-" + outer + ")^1");
+			// the candidate's second column (RunSignals::outer_other_C) when the run has it
+			const std::string other = firstOnSide(run, CoilSide::Other);
+			if (!other.empty()) add("dT(" + outer + "-" + other + ")^1");
+		}
 		else if (ne.id == "gradient_rate" && pair) add("d/dt dT(" + in + "-" + outer + ")^1");
 		else if (ne.id == "shupe_rate")
 		{

@@ -172,6 +172,19 @@ Eigen::MatrixXd shupeColumns(const CandidateContext& ctx, double)
 	return m;
 }
 
+// Tin - Tout; with thermistors on neither side also Tout - Tother: a surface thermistor reads a
+// mixture of coil layers and its mount, so the coil's radial gradient is a combination of the
+// two differences with weights the run must tell (no coil geometry assumed).
+Eigen::MatrixXd radialGradientColumns(const CandidateContext& ctx, double)
+{
+	const auto& s = *ctx.sig;
+	if (s.outer_other_C.empty()) return column(s.gradient_C);
+	Mat m(static_cast<Eigen::Index>(s.size()), 2);
+	m.col(0) = column(s.gradient_C);
+	m.col(1) = column(s.outer_other_C);
+	return m;
+}
+
 Eigen::MatrixXd thermistorLagColumn(const CandidateContext& ctx, double)
 {
 	const auto d = localSlopePerMin(ctx.sig->time_s, ctx.base_static_dph, ctx.sig->block, 120.0);
@@ -291,7 +304,7 @@ std::vector<CandidateEffect> handWrittenCandidates()
 		"elasto-optic / thermal-stress term: bias proportional to the radial gradient Tin - Tout, "
 		"persisting while the gradient lasts",
 		"a sine sweep near the coil's radial time constant and soaks right after fast steps", "deg/h per degC",
-		[](const CandidateContext& ctx, double) { return column(ctx.sig->gradient_C); }, needInnerOuter));
+		radialGradientColumns, needInnerOuter));
 	lib.push_back(candidateOf(
 		Effect::GradientRate, "rate of the radial gradient d(Tin - Tout)/dt (radial heat-flow transients)",
 		"temperature steps and a sine sweep near the coil's radial time constant", "deg/h per degC/min",

@@ -156,13 +156,15 @@ RunSignals computeRunSignals(const FogSeries& run, const RunSignalsOptions& opt)
 		if (s.power[k] >= 0.5 && (k == 0 || s.power[k - 1] < 0.5)) s.power_on_s.push_back(run.time_s[k]);
 
 	// mean / inner / outer
-	std::size_t nIn = 0, nOut = 0;
+	std::size_t nIn = 0, nOut = 0, nOther = 0;
 	for (const auto& th : run.thermistors)
 	{
 		nIn += th.side == CoilSide::Inner;
 		nOut += th.side == CoilSide::Outer;
+		nOther += th.side == CoilSide::Other;
 	}
 	s.has_inner_outer = nIn > 0 && nOut > 0;
+	s.has_other = nOther > 0;
 	const double nan = std::numeric_limits<double>::quiet_NaN();
 	s.temp_mean_C.assign(n, nan);
 	s.temp_inner_C.assign(n, nan);
@@ -183,6 +185,17 @@ RunSignals computeRunSignals(const FogSeries& run, const RunSignalsOptions& opt)
 	}
 	s.gradient_C.resize(n);
 	for (std::size_t k = 0; k < n; ++k) s.gradient_C[k] = s.temp_inner_C[k] - s.temp_outer_C[k];
+	if (s.has_inner_outer && s.has_other)
+	{
+		s.outer_other_C.assign(n, nan);
+		for (std::size_t k = 0; k < n; ++k)
+		{
+			double so = 0;
+			for (std::size_t i = 0; i < nt; ++i)
+				if (run.thermistors[i].side == CoilSide::Other) so += s.thermistor_C[i][k];
+			s.outer_other_C[k] = s.temp_outer_C[k] - so / static_cast<double>(nOther);
+		}
+	}
 
 	// derivatives need finite values: replace unusable samples by 0 (never used: block -1)
 	auto finiteOrZero = [](std::vector<double> v)

@@ -37,6 +37,11 @@ struct RunSignals
 	std::vector<double> temp_inner_C;  //!< mean of inner thermistors (= mean when none)
 	std::vector<double> temp_outer_C;  //!< mean of outer thermistors (= mean when none)
 	std::vector<double> gradient_C;  //!< Tin - Tout
+	/** Tout - Tother: mean outer minus mean of the thermistors on neither side (housing,
+	 * electronics); empty unless has_inner_outer and has_other. A surface thermistor reads a
+	 * mixture of coil layers and its mount, so the radial gradient of the coil is a combination
+	 * of Tin - Tout and this difference with weights the run must tell. */
+	std::vector<double> outer_other_C;
 	std::vector<double> dtemp_dt_Cpm;  //!< d(temp_mean)/dt [degC/min]
 	std::vector<double> dgradient_dt_Cpm;  //!< d(Tin - Tout)/dt [degC/min]
 	/** Per thermistor (interpolated) temperature and its derivative [degC], [degC/min]. */
@@ -46,6 +51,7 @@ struct RunSignals
 	std::vector<double> field_uT;  //!< zeros when absent
 	std::vector<double> power;  //!< ones when absent
 	bool has_inner_outer = false;  //!< at least one inner and one outer thermistor
+	bool has_other = false;  //!< at least one thermistor on neither side (CoilSide::Other)
 	bool has_table = false;  //!< table_rate column present and varying
 	bool has_field = false;  //!< field column present and varying
 	bool has_power = false;  //!< power column present
