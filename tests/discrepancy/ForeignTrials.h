@@ -112,6 +112,17 @@ inline Outcome runForeignTrial(const std::string& hidden, double ratio, std::uin
 	std::snprintf(buf, sizeof buf, "seed %llu %s x%g: %s; gap share %.2f", static_cast<unsigned long long>(seed),
 				  hidden.empty() ? "null" : hidden.c_str(), ratio, rep.verdict().c_str(), out.gap_share);
 	out.summary = buf;
+	// the hidden effect's smallest nameable size on this run when it was not named (deg/h RMS
+	// beyond the model; the hidden part is ratio x the noise RMS)
+	if (!hidden.empty() && !out.named_ok && !rep.selection.rounds.empty())
+		for (const auto& t : rep.selection.rounds.back())
+			if (t.id == hidden && std::isfinite(t.detectable_rms_dph))
+			{
+				char b2[120];
+				std::snprintf(b2, sizeof b2, "; %s nameable from %.4f deg/h RMS (hidden part %.4f)", hidden.c_str(),
+							  t.detectable_rms_dph, ratio * r1.noise_rms_dph);
+				out.summary += b2;
+			}
 	// the held-out sizes of the effects the guard rails set aside ("explains R x the RMS left")
 	for (const auto& rj : rep.rejected)
 	{
@@ -167,10 +178,11 @@ inline Tally runCell(const std::string& hidden, double ratio, std::uint64_t firs
  * compensator on the confirmation run; the oracle is the same base calibration fitted on a twin
  * of run 1 WITHOUT the hidden effect (same seed: identical noise) and evaluated on the twin of
  * run 2. Returns the share (before - after) / (before - oracle) of the residual RMS. */
-inline double compensatorGapShare(const std::string& hidden, double ratio, std::uint64_t seed, std::string* line)
+inline double compensatorGapShare(const std::string& hidden, double ratio, std::uint64_t seed, std::string* line,
+								  double dt_s = 0.0)
 {
 	fogtest::LumpedCoilOptions o1, o2;
-	o1.dt_s = o2.dt_s = trialSamplePeriod_s();
+	o1.dt_s = o2.dt_s = dt_s > 0 ? dt_s : trialSamplePeriod_s();
 	o1.seed = 2 * seed;
 	o2.seed = 2 * seed + 1;
 	const auto t1 = fogtest::makeLumpedCoilRun(o1), t2 = fogtest::makeLumpedCoilRun(o2);
@@ -183,11 +195,25 @@ inline double compensatorGapShare(const std::string& hidden, double ratio, std::
 	const double share = (aug.before.rms_dph - aug.after.rms_dph) / (aug.before.rms_dph - oracle.rms_dph);
 	if (line)
 	{
-		char buf[300];
+		char buf[400];
 		std::snprintf(buf, sizeof buf, "seed %llu %s x%g: %s; added %zu terms; RMS %.4f -> %.4f (oracle %.4f): share %.2f",
 					  static_cast<unsigned long long>(seed), hidden.c_str(), ratio, rep.verdict().c_str(),
 					  aug.added_terms.size(), aug.before.rms_dph, aug.after.rms_dph, oracle.rms_dph, share);
 		*line = buf;
+		if (!aug.rate_window_note.empty())
+		{
+			// how much of "after" is the longer rate window alone: the oracle (twin without the
+			// effect) with the base's terms on the window --write-cal chose
+			mrpt_fog::FitOptions fo;
+			fo.fallbacks = false;
+			fo.stability_resamples = 0;
+			fo.window_for_quantum = false;
+			fo.rate_estimator = aug.augmented.rate_estimator;
+			const auto o2 = mrpt_fog::evaluateCalibration(mrpt_fog::fitCalibration({t1.series}, kBaseModel, fo), t2.series, "twin");
+			std::snprintf(buf, sizeof buf, "; window %gs chosen (oracle on that window %.4f)",
+						  aug.augmented.rate_estimator.window_s, o2.rms_dph);
+			*line += buf;
+		}
 	}
 	return share;
 }

@@ -32,6 +32,26 @@ TEST(ForeignTrials, NullAt5sSamplingNamesNothing)
 	EXPECT_EQ(t.false_naming, 0);
 }
 
+TEST(ForeignTrials, RadialGradientIsNamedWhenTheHousingThermistorCompletesIt)
+{
+	// the generator's I - O is 1.18 ((Ca - Cb) - 0.25 (Cb - Hs)) up to the thermistor lags: with
+	// Tin - Tout alone the candidate could not reproduce it and shupe_rate / gradient_rate were
+	// named (0/5, 0/5 on held-out seeds 9101-9105, session 6). Tuning seed 2 at 5 s.
+	const auto t = runCell("radial_gradient", 3.0, 2, 1, "lab", 5.0);
+	EXPECT_EQ(t.named, 1);
+}
+
+TEST(ForeignTrials, AddedRateTermGetsTheRateWindowTheAnalysedRunFitsBest)
+{
+	// gradient_rate at 5 s: the written d(Ca - Cb)/dt term on the base's 60 s order-2 causal rate
+	// removed 0.22 of the hidden gap (tuning seed 1, x1); --write-cal now picks the window (1, 2
+	// or 4 x 60 s) on the analysed run
+	std::string line;
+	const double share = compensatorGapShare("gradient_rate", 1.0, 1, &line, 5.0);
+	std::printf("  %s\n", line.c_str());
+	EXPECT_GE(share, 0.5);
+}
+
 TEST(ForeignTrials, MonotonicCoolingNeverNamesHysteresis)
 {
 	for (std::uint64_t seed = 1; seed <= 1; ++seed)

@@ -97,3 +97,37 @@ TEST(RunSignals, BiasIsRateMinusTableRate)
 	EXPECT_NEAR(s.bias_dph[25], 0.1, 1e-9);
 	EXPECT_NEAR(s.bias_dph[5], 0.1, 1e-12);
 }
+
+TEST(RunSignals, ThermistorsOnNeitherSideGiveOuterMinusOtherAndStayOutOfTheCoilTemperature)
+{
+	// inner 30 C, outer 28 C, a housing thermistor (CoilSide::Other) at 20 C + 1 C/min
+	FogSeries run;
+	run.thermistors = {{"Ca", CoilSide::Inner, 30}, {"Cb", CoilSide::Outer, 210}, {"Hs", CoilSide::Other, 0}};
+	run.temp_C.assign(3, {});
+	for (std::size_t k = 0; k < 100; ++k)
+	{
+		const double t = 10.0 * static_cast<double>(k);
+		run.time_s.push_back(t);
+		run.rate_dph[2].push_back(0.1);
+		run.temp_C[0].push_back(30.0);
+		run.temp_C[1].push_back(28.0);
+		run.temp_C[2].push_back(20.0 + t / 60.0);
+	}
+	const auto s = computeRunSignals(run);
+	EXPECT_TRUE(s.has_other);
+	ASSERT_EQ(s.outer_other_C.size(), s.size());
+	ASSERT_EQ(s.temp_coil_C.size(), s.size());
+	for (std::size_t k = 0; k < s.size(); ++k)
+	{
+		const double t = s.time_s[k];
+		EXPECT_NEAR(s.outer_other_C[k], 28.0 - (20.0 + t / 60.0), 1e-9);
+		EXPECT_NEAR(s.temp_coil_C[k], 29.0, 1e-12);  // the housing is not the coil
+		EXPECT_NEAR(s.dtemp_coil_dt_Cpm[k], 0.0, 1e-9);
+		EXPECT_NEAR(s.dtemp_dt_Cpm[k], 1.0 / 3.0, 1e-9);  // the mean of all three still moves
+	}
+	// without a thermistor on neither side: no second gradient column, coil = mean
+	const auto plain = computeRunSignals(makeRun(50, 10.0, [](double t, int i) { return 20.0 + t / 60.0 + i; }));
+	EXPECT_FALSE(plain.has_other);
+	EXPECT_TRUE(plain.outer_other_C.empty());
+	EXPECT_EQ(plain.temp_coil_C, plain.temp_mean_C);
+}

@@ -145,9 +145,43 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 		FitOptions fo;
 		fo.selection = "none";
 		fo.rate_estimator = out.base.rate_estimator;
+		fo.window_for_quantum = false;  // the base's window already is the one for the quantum
 		fo.extrapolation = out.base.extrapolation;
 		if (table) fo.table_samples = TableSamples::Exclude;  // as calibrationUnderTest / fog-calibrate
-		out.augmented = thermal_added == 0 ? out.base : fitCalibration({run}, preset, fo);
+		if (thermal_added == 0)
+			out.augmented = out.base;
+		else
+		{
+			out.augmented = fitCalibration({run}, preset, fo);
+			// an added term that reads a rate (gradient_rate, shupe_rate) carries the causal rate
+			// estimate's noise times its coefficient: the window is chosen among 1, 2 and 4 x the
+			// base's by the refit's residual RMS on the analysed run (same terms, same count of
+			// coefficients; the confirmation run is not looked at)
+			bool rate_added = false;
+			for (const auto& t : out.added_terms) rate_added = rate_added || t.find("/dt") != std::string::npos;
+			if (rate_added)
+			{
+				const double own_rms = evaluateCalibration(out.augmented, run, "analysed").rms_dph;
+				double best_rms = own_rms;
+				for (double factor : {2.0, 4.0})
+				{
+					FitOptions fw = fo;
+					fw.rate_estimator.window_s = factor * out.base.rate_estimator.window_s;
+					Calibration c = fitCalibration({run}, preset, fw);
+					const double rms = evaluateCalibration(c, run, "analysed").rms_dph;
+					if (rms < best_rms)
+					{
+						best_rms = rms;
+						out.augmented = std::move(c);
+					}
+				}
+				if (!(out.augmented.rate_estimator == out.base.rate_estimator))
+					out.rate_window_note = "rate estimator " + out.augmented.rate_estimator.describe() + " instead of " +
+										   out.base.rate_estimator.describe() + " (analysed-run RMS " +
+										   formatValue("%.4g", best_rms) + " vs " + formatValue("%.4g", own_rms) +
+										   " deg/h with the added terms)";
+			}
+		}
 		out.augmented.scale_factor.reset();
 		out.augmented.warmup = out.base.warmup;
 		if (refit_scale_factor)
@@ -207,6 +241,7 @@ std::string augmentedCalibrationText(const AugmentedCalibration& aug, const std:
 		for (const auto& a : aug.added_terms) t += " " + a;
 		t += " (refitted on the analysed run)\n";
 	}
+	if (!aug.rate_window_note.empty()) t += "  " + aug.rate_window_note + "\n";
 	for (const auto& [id, why] : aug.not_written) t += "  not written: " + id + " (" + why + ")\n";
 	if (aug.has_confirm)
 		t += "  through the compensator on the confirmation run: RMS " + formatValue("%.4g", aug.before.rms_dph) + " -> " +
@@ -220,6 +255,7 @@ JsonValue augmentedCalibrationJson(const AugmentedCalibration& aug, const std::s
 	JsonValue j = JsonValue::object();
 	j["path"] = path;
 	j["added_terms"] = JsonValue::arrayOf(aug.added_terms);
+	if (!aug.rate_window_note.empty()) j["rate_estimator_chosen"] = aug.rate_window_note;
 	j["not_written"] = JsonValue::arrayOf(
 		aug.not_written, [](const auto& nw) { return JsonValue::object({{"id", nw.first}, {"reason", nw.second}}); });
 	if (aug.has_confirm)

@@ -20,14 +20,17 @@ std::vector<double> hysteresisBranch(const RunSignals& s, double span_C)
 {
 	if (!(span_C > 0)) throw std::invalid_argument("hysteresisBranch: span_C must be > 0");
 	std::vector<double> h(s.size(), 0.0);
+	const bool coil = s.temp_coil_C.size() == s.size() && s.dtemp_coil_dt_Cpm.size() == s.size();
+	const auto& T = coil ? s.temp_coil_C : s.temp_mean_C;  // signals built by hand may lack the coil's
+	const auto& dT_dt = coil ? s.dtemp_coil_dt_Cpm : s.dtemp_dt_Cpm;
 	double state = 0.0;
 	for (std::size_t k = 1; k < s.size(); ++k)
 	{
 		double dT = 0.0;
 		if (s.block[k] >= 0 && s.block[k] == s.block[k - 1])
-			dT = 0.5 * (s.dtemp_dt_Cpm[k] + s.dtemp_dt_Cpm[k - 1]) * (s.time_s[k] - s.time_s[k - 1]) / 60.0;
-		else if (std::isfinite(s.temp_mean_C[k]) && std::isfinite(s.temp_mean_C[k - 1]))
-			dT = s.temp_mean_C[k] - s.temp_mean_C[k - 1];  // across a gap or power-off: raw change
+			dT = 0.5 * (dT_dt[k] + dT_dt[k - 1]) * (s.time_s[k] - s.time_s[k - 1]) / 60.0;
+		else if (std::isfinite(T[k]) && std::isfinite(T[k - 1]))
+			dT = T[k] - T[k - 1];  // across a gap or power-off: raw change
 		if (dT != 0.0)
 		{
 			const double target = dT > 0 ? 1.0 : -1.0;
@@ -81,10 +84,13 @@ HeatingCoolingCoverage heatingCoolingCoverage(const RunSignals& s, double moving
 {
 	HeatingCoolingCoverage c;
 	double hLo = INFINITY, hHi = -INFINITY, cLo = INFINITY, cHi = -INFINITY;
+	const bool coil = s.temp_coil_C.size() == s.size() && s.dtemp_coil_dt_Cpm.size() == s.size();
+	const auto& Tc = coil ? s.temp_coil_C : s.temp_mean_C;
+	const auto& rate = coil ? s.dtemp_coil_dt_Cpm : s.dtemp_dt_Cpm;
 	for (std::size_t k = 0; k < s.size(); ++k)
 	{
-		if (!s.usable[k] || !std::isfinite(s.temp_mean_C[k])) continue;
-		const double r = s.dtemp_dt_Cpm[k], T = s.temp_mean_C[k];
+		if (!s.usable[k] || !std::isfinite(Tc[k])) continue;
+		const double r = rate[k], T = Tc[k];
 		const double dt = k > 0 ? std::min(s.time_s[k] - s.time_s[k - 1], 3.0 * s.dt_s) : s.dt_s;
 		if (r >= moving_rate_Cpm)
 		{
@@ -178,7 +184,7 @@ Eigen::MatrixXd shupeColumns(const CandidateContext& ctx, double)
 Eigen::MatrixXd radialGradientColumns(const CandidateContext& ctx, double)
 {
 	const auto& s = *ctx.sig;
-	if (s.outer_other_C.empty()) return column(s.gradient_C);
+	if (s.outer_other_C.size() != s.size()) return column(s.gradient_C);
 	Mat m(static_cast<Eigen::Index>(s.size()), 2);
 	m.col(0) = column(s.gradient_C);
 	m.col(1) = column(s.outer_other_C);

@@ -135,6 +135,49 @@ Gls glsFit(const Mat& X, const Vec& y, const std::vector<std::size_t>& common, c
 	return g;
 }
 
+/** x with chi2Survival(x, dof) = p (bisection). */
+double chi2Quantile(double p, double dof)
+{
+	double lo = 0.0, hi = 10.0 * dof + 100.0;
+	while (chi2Survival(hi, dof) > p) hi *= 2.0;
+	for (int it = 0; it < 200; ++it)
+	{
+		const double mid = 0.5 * (lo + hi);
+		(chi2Survival(mid, dof) > p ? lo : hi) = mid;
+	}
+	return 0.5 * (lo + hi);
+}
+
+/** CandidateTest::detectable_rms_dph: with G the covariance of C beyond X (unwhitened, on the
+ * common rows) and A = (W C)' M (W C) (whitened, beyond W X), a contribution C b gives the
+ * expected chi-square b'A b / (sigma2 lrv) and RMS sqrt(b'G b); the smallest RMS reaching the
+ * threshold is sqrt(chi2* sigma2 lrv lambda_min(G, A)). */
+double detectableRms(const Mat& X, const Mat& C, const Vec& y, const std::vector<std::size_t>& common,
+					 const std::vector<int>& block, const Gls& g0, const SelectionOptions& opt, std::size_t m,
+					 std::size_t grid, double nEff)
+{
+	(void)y;
+	const double q = static_cast<double>(C.cols());
+	const double level = opt.alpha / std::max<double>(1.0, static_cast<double>(m) * static_cast<double>(std::max<std::size_t>(grid, 1)));
+	const double chi2star =
+		std::max(chi2Quantile(level, q), q * std::log(nEff) + std::log(static_cast<double>(std::max<std::size_t>(grid, 1))));
+	const Mat Xr = pick(X, common), Cr = pick(C, common);
+	Mat R(Cr.rows(), Cr.cols());
+	for (Eigen::Index j = 0; j < Cr.cols(); ++j) R.col(j) = leastSquares(Xr, Cr.col(j)).residual;
+	const Mat G = R.transpose() * R / std::max(1.0, static_cast<double>(common.size()));
+	const Mat WX = whiten(X, g0.ar, common, &block), WC = whiten(C, g0.ar, common, &block);
+	Mat RW(WC.rows(), WC.cols());
+	for (Eigen::Index j = 0; j < WC.cols(); ++j) RW.col(j) = leastSquares(WX, WC.col(j)).residual;
+	const Mat A = RW.transpose() * RW;
+	// min b'G b / b'A b: the smallest generalized eigenvalue (A regularised against a column the
+	// model spans in whitened terms)
+	const Mat Areg = A + 1e-12 * std::max(1e-300, A.trace()) * Mat::Identity(A.rows(), A.cols());
+	Eigen::GeneralizedSelfAdjointEigenSolver<Mat> es(G, Areg);
+	if (es.info() != Eigen::Success) return std::numeric_limits<double>::quiet_NaN();
+	const double lmin = std::max(0.0, es.eigenvalues().minCoeff());
+	return std::sqrt(chi2star * g0.sigma2 * g0.lrv * lmin);
+}
+
 /** Wald chi-square of the columns model 1 has beyond `Xsub`, with model 1's noise model:
  * (RSS_sub - RSS_1) / (sigma2_1 x long-run factor), both whitened alike. */
 double waldChi2(const Mat& Xsub, const Gls& m1, const Vec& y, const std::vector<std::size_t>& common,
@@ -425,6 +468,9 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 		for (std::size_t i = 0; i < m; ++i)
 			if (cands[i].test.significant && (bestIdx < 0 || cands[i].test.delta_bic > cands[bestIdx].test.delta_bic))
 				bestIdx = static_cast<int>(i);
+		if (bestIdx < 0)
+			for (auto& cs : cands)
+				cs.test.detectable_rms_dph = detectableRms(X, cs.C, y, common, sig.block, g0, opt, m, cs.thetas.size(), nEff);
 		for (const auto& cs : cands) report.push_back(cs.test);
 		if (bestIdx < 0)
 		{
@@ -435,6 +481,8 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 		NamedEffect ne;
 		ne.id = B.eff->id;
 		ne.alias_group = {ne.id};
+		ne.alias_theta = {B.theta};
+		ne.alias_sign = {0};
 		ne.theta_name = B.eff->theta_name;
 		ne.theta = B.theta;
 		ne.coefficient_unit = B.eff->coefficient_unit;
@@ -465,6 +513,15 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 			{
 				anyCollinear = anyCollinear || collinear;
 				ne.alias_group.push_back(cands[i].test.id);
+				ne.alias_theta.push_back(cands[i].theta);
+				int sign = 0;
+				if (cands[i].C.cols() == 1)
+				{
+					Vec ri;
+					const double c = olsOnRows(hcat(X, cands[i].C), y, rows, ri).coef(X.cols());
+					sign = c > 0 ? 1 : (c < 0 ? -1 : 0);
+				}
+				ne.alias_sign.push_back(sign);
 				ne.separating_profiles.push_back(separationAdvice(ne.id, cands[i].test.id));
 				aliasHalfBic.push_back(0.5 * cands[i].test.delta_bic);
 				excluded.push_back(cands[i].test.id);
@@ -510,6 +567,10 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 				const Vec grad = rms > 0 ? Vec(G * beta / rms) : Vec::Zero(q);
 				const double half = 1.96 * std::sqrt(std::max(0.0, double(grad.transpose() * cov * grad)));
 				ne.coefficient = rms;
+				// a candidate that has one column on other runs (radial_gradient without a
+				// thermistor on neither side) states a per-unit coefficient; here it is an RMS
+				if (ne.coefficient_unit.find("RMS") == std::string::npos)
+					ne.coefficient_unit = "deg/h (RMS of the fitted terms)";
 				ne.ci_low = std::max(0.0, rms - half);
 				ne.ci_high = rms + half;
 			}
@@ -547,9 +608,9 @@ void confirmOnRun(SelectionResult& result, const RunSignals& sig2, const BaseDes
 			ne.confirm_tested = false;
 			continue;
 		}
+		const auto common = whitenableRows(sig2.block, ok, 0);
 		const Mat C = eff.build(ctx, ne.theta);
 		const Mat K = hcat(X, C);
-		const auto common = whitenableRows(sig2.block, ok, 0);
 		const Gls g1 = glsFit(K, y, common, sig2.block, opt);
 		ne.confirm_p = chi2Survival(waldChi2(X, g1, y, common, sig2.block), double(C.cols()));
 		if (C.cols() == 1)
@@ -559,6 +620,24 @@ void confirmOnRun(SelectionResult& result, const RunSignals& sig2, const BaseDes
 		}
 		else
 			ne.confirmed = ne.confirm_p < opt.alias_alpha;
+		if (ne.confirmed) ne.confirmed_by = ne.id;
+		// the group is what was named: a look-alike may confirm it (its own theta and sign)
+		const std::size_t g = ne.alias_group.size();
+		for (std::size_t j = 1; j < g && !ne.confirmed && j < ne.alias_theta.size() && j < ne.alias_sign.size(); ++j)
+		{
+			const auto& effJ = candidateById(ne.alias_group[j]);
+			if (!effJ.untestable_reason(sig2).empty()) continue;
+			const Mat CJ = effJ.build(ctx, ne.alias_theta[j]);
+			const Gls gJ = glsFit(hcat(X, CJ), y, common, sig2.block, opt);
+			const double pJ = chi2Survival(waldChi2(X, gJ, y, common, sig2.block), double(CJ.cols()));
+			const bool signOk = CJ.cols() != 1 || ne.alias_sign[j] == 0 || gJ.fit.coef(X.cols()) * ne.alias_sign[j] > 0;
+			if (pJ < opt.alias_alpha / double(g) && signOk)
+			{
+				ne.confirmed = true;
+				ne.confirmed_by = ne.alias_group[j];
+				ne.confirm_p = pJ;
+			}
+		}
 		X = K;
 	}
 }

@@ -185,6 +185,15 @@ RunSignals computeRunSignals(const FogSeries& run, const RunSignalsOptions& opt)
 	}
 	s.gradient_C.resize(n);
 	for (std::size_t k = 0; k < n; ++k) s.gradient_C[k] = s.temp_inner_C[k] - s.temp_outer_C[k];
+	s.temp_coil_C = s.temp_mean_C;
+	if (s.has_other && nIn + nOut > 0)
+		for (std::size_t k = 0; k < n; ++k)
+		{
+			double sc = 0;
+			for (std::size_t i = 0; i < nt; ++i)
+				if (run.thermistors[i].side != CoilSide::Other) sc += s.thermistor_C[i][k];
+			s.temp_coil_C[k] = sc / static_cast<double>(nIn + nOut);
+		}
 	if (s.has_inner_outer && s.has_other)
 	{
 		s.outer_other_C.assign(n, nan);
@@ -206,6 +215,9 @@ RunSignals computeRunSignals(const FogSeries& run, const RunSignalsOptions& opt)
 	};
 	const double w = std::max(opt.derivative_window_s, 2.5 * s.dt_s);
 	s.dtemp_dt_Cpm = localSlopePerMin(s.time_s, finiteOrZero(s.temp_mean_C), s.block, w);
+	s.dtemp_coil_dt_Cpm = s.temp_coil_C == s.temp_mean_C
+							  ? s.dtemp_dt_Cpm
+							  : localSlopePerMin(s.time_s, finiteOrZero(s.temp_coil_C), s.block, w);
 	s.dgradient_dt_Cpm = localSlopePerMin(s.time_s, finiteOrZero(s.gradient_C), s.block, w);
 	s.dthermistor_dt_Cpm.resize(nt);
 	for (std::size_t i = 0; i < nt; ++i)

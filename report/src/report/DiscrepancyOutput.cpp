@@ -94,6 +94,7 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 		{
 			e["confirmed"] = ne.confirmed;
 			e["confirm_p"] = ne.confirm_p;
+			if (ne.confirmed) e["confirmed_by"] = ne.confirmed_by;
 		}
 		named.push_back(e);
 	}
@@ -156,6 +157,13 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 	noise["ar_phi_after_named"] = JsonValue::arrayOf(sel.ar_after.phi);
 	noise["ma_theta_after_named"] = sel.ar_after.theta;
 	j["noise_model"] = noise;
+	if (!sel.rounds.empty())
+	{
+		JsonValue d = JsonValue::object();
+		for (const auto& t : sel.rounds.back())
+			if (std::isfinite(t.detectable_rms_dph)) d[t.id] = t.detectable_rms_dph;
+		j["detectable_rms_dph"] = d;
+	}
 	j["gap"] = runGapJson(rep.gap, rep.tau_s);
 	if (rep.has_confirm) j["gap_confirm"] = runGapJson(rep.gap_confirm, rep.tau_s);
 	return j;
@@ -195,7 +203,11 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 			os << "    confidence of the alias group: " << formatValue("%.2f", ne.group_confidence) << "\n";
 		if (ne.confirm_tested)
 			os << "    confirmation run: " << (ne.confirmed ? "confirmed" : "NOT confirmed") << " (p "
-			   << formatValue("%.2g", ne.confirm_p) << ")\n";
+			   << formatValue("%.2g", ne.confirm_p)
+			   << (ne.confirmed && !ne.confirmed_by.empty() && ne.confirmed_by != ne.id
+					   ? ", by its alias " + ne.confirmed_by + ": the group is confirmed, not which member"
+					   : std::string())
+			   << ")\n";
 	}
 	for (const auto& ne : sel.not_confirmed)
 		os << "  not confirmed (named on " << rep.run_labels[0] << ", not added): " << ne.id << ", coefficient "
@@ -203,6 +215,17 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 		   << "; on the confirmation run p " << formatValue("%.2g", ne.confirm_p)
 		   << (ne.confirm_p < 0.01 ? " with the opposite sign" : "") << "\n";
 	for (const auto& r : rep.rejected) os << "  not named: " << r.id << " (" << r.reason << ")\n";
+	if (!sel.rounds.empty())
+	{
+		std::string list;
+		for (const auto& t : sel.rounds.back())
+			if (std::isfinite(t.detectable_rms_dph))
+				list += (list.empty() ? "" : ", ") + t.id + " " + formatValue("%.3g", t.detectable_rms_dph);
+		if (!list.empty())
+			os << "  cannot tell below (the smallest contribution this run could name, deg/h RMS beyond the model, at its "
+				  "noise): "
+			   << list << "\n";
+	}
 	if (rep.rate_estimator_gap.tested && rep.rate_estimator_gap.material)
 	{
 		const auto& g = rep.rate_estimator_gap;

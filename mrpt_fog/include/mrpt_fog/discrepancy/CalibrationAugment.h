@@ -10,7 +10,9 @@
  * Effect -> compensator terms (thermal terms as extra bias terms, model/ThermalFeatureSet.h;
  * IN = first inner thermistor, OUT = first outer one, S = the thermistor of the base's
  * temperature polynomial of order p):
- *   radial_gradient  dT(IN-OUT)^1          gradient_rate  d/dt dT(IN-OUT)^1
+ *   radial_gradient  dT(IN-OUT)^1, and dT(OUT-OTHER)^1 when a thermistor is on neither side
+ *                    (OTHER = the first such; the candidate's second column)
+ *   gradient_rate    d/dt dT(IN-OUT)^1
  *   shupe_rate       dT/dt(IN)^1 and d/dt dT(IN-OUT)^1 (without an OUT: dT/dt(S)^1)
  *   temp_poly_order  T(S)^(p+1), T(S)^(p+2) (at most 5)
  *   warmup           the calibration's (v2) warm-up term: amplitude and tau as named, when the
@@ -25,7 +27,10 @@
  * (what fog-calibrate writes). The augmented one: the base's selected terms plus the added
  * ones, fitted by plain least squares on the same run (selection "none": the named terms are
  * kept), same rate estimator and extrapolation, table samples left out when the run has table
- * rates (as fog-calibrate does).
+ * rates (as fog-calibrate does). Exception: when an added term reads a rate (gradient_rate,
+ * shupe_rate), the causal rate window is chosen among 1, 2 and 4 x the base's by the refit's
+ * residual RMS on the analysed run: the added rate term multiplies the estimate's noise (at 5 s
+ * sampling a 60 s order-2 window left a d(Ca - Cb)/dt term noisier than the gap it closes).
  */
 
 #include <mrpt_fog/common/JsonWriter.h>
@@ -44,6 +49,9 @@ struct AugmentedCalibration
 	Calibration augmented;  //!< base + added terms (== base when nothing could be added)
 	std::vector<std::string> added_terms;  //!< term names added
 	std::vector<std::pair<std::string, std::string>> not_written;  //!< effect id, why
+	/** When an added term reads a rate: the causal rate window chosen (1, 2 or 4 x the base's)
+	 * and why ("" when the base's was kept). */
+	std::string rate_window_note;
 	bool has_confirm = false;
 	FitFigures before, after;  //!< confirmation run through the compensator (base / augmented)
 };

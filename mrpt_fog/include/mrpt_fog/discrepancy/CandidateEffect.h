@@ -83,7 +83,7 @@ double heatingCoolingSign(double dtemp_dt_Cpm);
 
 /** Hysteresis regressor (play-type, the form of the simulator's hysteresis): the branch state
  * h in [-1, 1], h <- s + (h - s) exp(-|dT| / span_C) with s = sign(dT), dT the change of the
- * smoothed mean thermistor temperature over each sample (raw change across gaps and power-off);
+ * smoothed coil temperature (RunSignals::temp_coil_C) over each sample (raw change across gaps and power-off);
  * it keeps its value through soaks. h = 0 at the run start. Throws for span_C <= 0. */
 std::vector<double> hysteresisBranch(const RunSignals& sig, double span_C);
 

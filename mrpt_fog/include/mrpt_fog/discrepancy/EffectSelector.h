@@ -34,6 +34,7 @@
 #include <mrpt_fog/discrepancy/CandidateEffect.h>
 #include <mrpt_fog/discrepancy/WhitenedRegression.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -102,12 +103,22 @@ struct CandidateTest
 	double delta_bic = 0.0;
 	bool significant = false;
 	double collinearity_with_best = 0.0;  //!< shape reproduction of the named one (this round)
+	/** In the round where nothing more was named: the smallest contribution of this candidate
+	 * (RMS beyond what the model explains, deg/h, in its most favourable direction) whose
+	 * expected whitened chi-square reaches the naming threshold (Bonferroni level over the
+	 * candidates and the theta grid, and the BIC term), under the model's fitted noise (AR +
+	 * long-run factor). Below it the run cannot tell the effect from the noise. NaN elsewhere. */
+	double detectable_rms_dph = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct NamedEffect
 {
 	std::string id;
 	std::vector<std::string> alias_group;  //!< the id first, then look-alikes
+	/** Per alias_group member: its nonlinear parameter on the analysed run, and the sign of its
+	 * coefficient there when it has one column (0 otherwise); for confirming the group. */
+	std::vector<double> alias_theta;
+	std::vector<int> alias_sign;
 	std::vector<std::string> separating_profiles;  //!< one per look-alike
 	double confidence = 0.0;  //!< BIC weight of this id
 	double group_confidence = 0.0;  //!< BIC weight of the alias group
@@ -122,6 +133,10 @@ struct NamedEffect
 	bool confirmed = false;
 	double confirm_p = 1.0;
 	double confirm_coefficient = 0.0;
+	/** The group member that confirmed: the id itself, or a look-alike when the named id did
+	 * not confirm but a member of its alias group did (the data cannot tell them apart, so the
+	 * group is what is named); empty when not confirmed. */
+	std::string confirmed_by;
 };
 
 struct SelectionResult
@@ -150,7 +165,11 @@ struct SelectionResult
 SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& base, const SelectionOptions& opt = {});
 
 /** Re-tests each named effect (in order, theta fixed) on a second run: refit there, whitened
- * chi-square test at alias_alpha with the same coefficient sign. Fills confirm_* fields. */
+ * chi-square test at alias_alpha with the same coefficient sign. When the named id does not
+ * confirm, its alias group's other members are tested the same way (their own theta and sign
+ * from the analysed run), each at alias_alpha / group size (Bonferroni share: the group gets
+ * at most about twice the single test's chances on a null): the group is named, so any member
+ * may confirm it (confirmed_by says which). Fills confirm_* fields. */
 void confirmOnRun(SelectionResult& result, const RunSignals& sig2, const BaseDesign& base2,
 				  const SelectionOptions& opt = {});
 

@@ -34,6 +34,11 @@ struct RunSignals
 	std::vector<double> time_s;
 	std::vector<double> bias_dph;  //!< rate - table rate [deg/h]
 	std::vector<double> temp_mean_C;  //!< mean of all thermistors
+	/** Coil temperature: mean of the thermistors on the coil (inner or outer side), leaving out
+	 * those on neither side (housing, electronics); = temp_mean_C when every thermistor is on
+	 * the coil or none is. */
+	std::vector<double> temp_coil_C;
+	std::vector<double> dtemp_coil_dt_Cpm;  //!< d(temp_coil)/dt [degC/min]
 	std::vector<double> temp_inner_C;  //!< mean of inner thermistors (= mean when none)
 	std::vector<double> temp_outer_C;  //!< mean of outer thermistors (= mean when none)
 	std::vector<double> gradient_C;  //!< Tin - Tout
