@@ -3,6 +3,7 @@
 #include <mrpt_fog/metrics/BiasMetrics.h>
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <optional>
 #include <cstdio>
@@ -356,16 +357,23 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 					residualWithCoefficients(sel.model.design(*base2, *sig2), *sig2, coefWith).squaredNorm();
 				std::string worstId, worstWhy;
 				double worstRatio = INFINITY;
-				for (const auto& term : sel.model.effects)
-				{
+				// held-out residual mean square without the listed effects (coefficients from run 1)
+				auto heldOutWithout2 = [&](const std::vector<std::string>& ids) {
 					AugmentedModel without = sel.model;
 					without.effects.erase(std::remove_if(without.effects.begin(), without.effects.end(),
-														 [&](const EffectTerm& t) { return t.id == term.id; }),
+														 [&](const EffectTerm& t) {
+															 return std::find(ids.begin(), ids.end(), t.id) != ids.end();
+														 }),
 										  without.effects.end());
 					const Eigen::VectorXd coefWithout = fitOnRun1(without.design(base1, sig1));
-					const double without2 =
-						residualWithCoefficients(without.design(*base2, *sig2), *sig2, coefWithout).squaredNorm();
+					return residualWithCoefficients(without.design(*base2, *sig2), *sig2, coefWithout).squaredNorm();
+				};
+				std::map<std::string, double> ratioOf;
+				for (const auto& term : sel.model.effects)
+				{
+					const double without2 = heldOutWithout2({term.id});
 					const double ratio2 = with2 > 0 ? (without2 - with2) / with2 : INFINITY;
+					ratioOf[term.id] = ratio2;
 					if (ratio2 >= rmin2 || ratio2 >= worstRatio) continue;
 					worstRatio = ratio2;
 					worstId = term.id;
@@ -384,6 +392,35 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 					worstWhy = buf;
 				}
 				if (worstId.empty()) break;
+				// held-out alias: another named effect B that the other run cannot tell from this
+				// one either (B's own held-out part beyond it is also below the rail) while the
+				// two together are worth naming: the rejected one joins B's alias group
+				for (const auto& term : sel.model.effects)
+				{
+					if (term.id == worstId || !(ratioOf[term.id] < rmin2)) continue;
+					const double pair2 = with2 > 0 ? (heldOutWithout2({term.id, worstId}) - with2) / with2 : 0.0;
+					if (!(pair2 >= rmin2)) continue;
+					for (auto& ne : sel.named)
+						if (ne.id == term.id &&
+							std::find(ne.alias_group.begin(), ne.alias_group.end(), worstId) == ne.alias_group.end())
+						{
+							ne.alias_group.push_back(worstId);
+							ne.separating_profiles.push_back(separationAdvice(ne.id, worstId));
+							double theta = 0.0;
+							for (const auto& t : sel.model.effects)
+								if (t.id == worstId) theta = t.theta;
+							ne.alias_theta.push_back(theta);
+							ne.alias_sign.push_back(0);
+						}
+					char buf[300];
+					std::snprintf(buf, sizeof buf,
+								  "; the other run cannot tell it from %s (each explains %.2g and %.2g x the RMS left "
+								  "beyond the other, together %.2g): in %s's alias group",
+								  term.id.c_str(), std::sqrt(std::max(0.0, worstRatio)),
+								  std::sqrt(std::max(0.0, ratioOf[term.id])), std::sqrt(pair2), term.id.c_str());
+					worstWhy += buf;
+					break;
+				}
 				for (auto& ne : sel.named)
 					if (ne.id == worstId)
 					{
