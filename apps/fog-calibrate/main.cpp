@@ -487,7 +487,7 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<int> arg_order("", "savgol-order", "Savitzky-Golay polynomial order (1..4)", false, 2, "N", cmd);
 		TCLAP::ValueArg<int> arg_corder("", "causal-order",
 										"Causal estimator: 2 (default) extrapolates the window's slope to the newest sample "
-										"(no delay); 1 is the plain slope, about window/2 late (the method before issue 11)",
+										"(no delay); 1 is the plain slope, about window/2 late",
 										false, 2, "1|2", cmd);
 		TCLAP::ValueArg<double> arg_selbin("", "selection-bin",
 											"auto: score candidates on the means of S-second bins (0 = every sample)", false,

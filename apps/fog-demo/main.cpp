@@ -379,7 +379,7 @@ int main(int argc, char** argv)
 			md << "| " << g << " | " << fmt(drift.number(std::string("heading_error_final_deg.") + g)) << " | "
 			   << fmt(drift.number(std::string("heading_error_max_deg.") + g)) << " | "
 			   << fmt(drift.number(std::string("position_error_final_m.") + g)) << " |\n";
-		md << "\nTargets of issue 5 (compensated heading drift <= 1/10 of raw and within 2x of the ideal gyro): "
+		md << "\nRequirement (compensated heading drift <= 1/10 of raw and within 2x of the ideal gyro): "
 		   << "compensated/raw = " << ratio(hComp, hRaw) << ", compensated/ideal = " << ratio(hComp, hIdeal)
 		   << ". See README.md (Navigation) for why the simulated drive misses them where it does.\n";
 		if (have_localize)

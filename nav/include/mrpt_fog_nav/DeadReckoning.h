@@ -37,7 +37,7 @@ std::vector<OdometryIncrement> odometryFromSpeed(const std::vector<double>& t_s,
  * by the direction of travel along the body x axis. */
 std::vector<OdometryIncrement> odometryFromPoses2D(const std::vector<double>& t_s, const std::vector<double>& x_m,
 												   const std::vector<double>& y_m, const std::vector<double>& phi_rad);
-/** The same for the poses [first, last) alone (no copies of the range: long drives, issue 14);
+/** The same for the poses [first, last) alone (no copies of the range: long drives);
  * throws std::invalid_argument unless first <= last <= size. */
 std::vector<OdometryIncrement> odometryFromPoses2D(const std::vector<double>& t_s, const std::vector<double>& x_m,
 												   const std::vector<double>& y_m, const std::vector<double>& phi_rad,
@@ -50,7 +50,7 @@ OdometryIncrement odometryIncrement2D(double t1_s, double x0_m, double y0_m, dou
 
 /** One step of planar dead reckoning: from `last` (its yaw_rad is the heading at last.t_s)
  * by `inc` to the heading yaw1_rad at inc.t_s (what DeadReckoning2D::add does; also for a
- * caller that keeps only the last point: fog-drift's streaming evaluation, issue 14). Throws
+ * caller that keeps only the last point: fog-drift's streaming evaluation). Throws
  * std::invalid_argument on a non-finite increment or a time that does not follow last.t_s. */
 TrajectoryPoint deadReckonStep2D(const TrajectoryPoint& last, const OdometryIncrement& inc, double yaw1_rad);
 
@@ -65,7 +65,7 @@ class DeadReckoning2D
 	void add(const OdometryIncrement& inc, const AttitudeTrack& attitude);
 
 	const Trajectory& trajectory() const { return traj_; }
-	/** Room for n points (no regrowth: long drives, issue 14). */
+	/** Room for n points (no regrowth: long drives). */
 	void reserve(std::size_t n) { traj_.reserve(n); }
 	/** The trajectory, moved out (the object is spent). */
 	Trajectory takeTrajectory() { return std::move(traj_); }

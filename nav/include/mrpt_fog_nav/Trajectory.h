@@ -41,7 +41,7 @@ class AttitudeTrack
 	/** Yaw [rad] at t_s. */
 	double yawAt(double t_s) const;
 	std::size_t size() const { return t_s_.size(); }
-	/** Room for n attitudes (no regrowth: long drives, issue 14). */
+	/** Room for n attitudes (no regrowth: long drives). */
 	void reserve(std::size_t n)
 	{
 		t_s_.reserve(n);

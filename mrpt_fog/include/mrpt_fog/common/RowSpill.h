@@ -3,7 +3,7 @@
 
 /** \file RowSpill.h
  * Rows of a fixed number of doubles, appended in order and read back in sequential passes, with
- * memory that does not grow with the number of rows (issue 14: programs whose analysis needs
+ * memory that does not grow with the number of rows (programs whose analysis needs
  * several passes over a log keep it here instead of in columns). The first kBlockRows rows stay
  * in memory; beyond that, full blocks go to a temporary file created in $TMPDIR (else /tmp) with
  * mkstemp and unlinked at once, so nothing is left behind whatever happens to the process (the

@@ -18,7 +18,7 @@
  *   warmup           the calibration's (v2) warm-up term: amplitude and tau as named, when the
  *                    analysed run starts with the gyro off (else the amplitude is not separable)
  *   scale_factor_temp the scale factor versus temperature refitted by the calibration's own
- *                    fit (ScaleFactorFit.h, issue 12: table segments of the analysed run,
+ *                    fit (ScaleFactorFit.h: table segments of the analysed run,
  *                    thermistor and order chosen by leave-one-temperature-out error) after the
  *                    bias; when that fit keeps order 0 or refuses, it is listed as not written
  * Effects without a compensator term (magnetic: the compensator has no field input;

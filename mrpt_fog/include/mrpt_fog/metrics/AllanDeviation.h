@@ -74,7 +74,7 @@ UniformRecord resampleUniform(const std::vector<double>& time_s, const std::vect
 							  double period_s = 0, double max_gap_s = 0);
 
 
-// ---- The same for records longer than memory (issue 14): read from a RowSpill in passes. ----
+// ---- The same for records longer than memory: read from a RowSpill in passes. ----
 
 /** resampleUniform() of columns time_col / value_col of `rows`: the same numbers, the resampled
  * values appended to `out` (width 1; UniformRecord::value stays empty). Memory independent of

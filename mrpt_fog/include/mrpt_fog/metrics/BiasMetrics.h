@@ -54,7 +54,7 @@ struct BiasStats
  * fit in the run ("tau longer than the run"): stability needs at least 2 averages. */
 BiasStats biasStats(const std::vector<double>& time_s, const std::vector<double>& rate_dph, double tau_s = 100.0);
 
-/** A record read in passes (issue 14: logs longer than memory): each call of a RecordPass calls
+/** A record read in passes (logs longer than memory): each call of a RecordPass calls
  * the visitor with (time [s], value) for every sample, in order, the same values each time. */
 using RecordVisitor = std::function<void(double time_s, double value)>;
 using RecordPass = std::function<void(const RecordVisitor&)>;

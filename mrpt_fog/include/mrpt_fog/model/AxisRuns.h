@@ -49,7 +49,7 @@ std::vector<GyroAxis> commonAxes(const std::vector<FogSeries>& runs);
 AxisRunSet runsForAxis(std::vector<FogSeries>& runs, const std::vector<std::string>& labels, GyroAxis axis,
 					   bool consume = false);
 
-/** runsForAxis() of runs read in passes (obs/FogRun.h; issue 14): the same choice and messages,
+/** runsForAxis() of runs read in passes (obs/FogRun.h): the same choice and messages,
  * each kept run a FogRun::axisView() sharing the samples (nothing copied). */
 struct AxisRunViews
 {

@@ -28,7 +28,7 @@
  *    policy (Calibration.h: clamp, or the default linear continuation along the edge tangent;
  *    flag Clamped, counted with the largest excursion seen): a polynomial of order > 1 is never
  *    extrapolated as such. The kernel clamps; the linear part is added on the rare path.
- *  - start-up (issue 11): while a rate the main model reads is not yet estimable or its window
+ *  - start-up: while a rate the main model reads is not yet estimable or its window
  *    covers less than half its length (start of the log, each burst, after a gap), the
  *    calibration's rate-free start-up model is used when it has one and every temperature it
  *    reads is present (flag RateFree, Output::model kStartupModel). A model that reads no

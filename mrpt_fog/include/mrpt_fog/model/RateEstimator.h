@@ -11,7 +11,7 @@
  *    cannot drift). Delay: for a smooth signal the slope is the derivative at the centre of the
  *    window, i.e. about window_s / 2 late. This is what the real-time compensator uses, and the
  *    fit uses it by default so that the compensator reproduces the fitted model (to round-off).
- *    Order 2 (the default since issue 11) removes the delay: the slopes over the whole window
+ *    Order 2 (the default) removes the delay: the slopes over the whole window
  *    and over its last half are the derivative at their two centroids, and the line through
  *    them is evaluated at t (CausalRateTracker::extrapolatedRate): exact for a quadratic,
  *    still causal, about 5x the rate noise of order 1. The 30 s delay of order 1 was the
@@ -114,7 +114,7 @@ constexpr double kReferenceQuantum_C = 0.01;
  * a longer window no longer follows the rates the bias responds to. */
 constexpr double kMaxQuantumWindow_s = 1200.0;
 
-/** The rate window for readings of quantum `quantum_C` (issue 11): the quantisation error of a
+/** The rate window for readings of quantum `quantum_C`: the quantisation error of a
  * window's slope is bounded by about 1.5 q / window (7.5 q / window for the delay-compensated
  * order 2: its half-window slope counts twice), so the window grows in proportion to the
  * quantum to keep the bound of the reference (`base_window_s` at kReferenceQuantum_C):

@@ -3,8 +3,8 @@
 
 /** \file FogRun.h
  * A FOG run read in sequential passes, chunk by chunk, so that analyses that need several passes
- * over a log (the calibration fit, the figures) keep memory that does not grow with its length
- * (issue 14). Two forms, the same numbers:
+ * over a log (the calibration fit, the figures) keep memory that does not grow with its length.
+ * Two forms, the same numbers:
  *  - a view of a FogSeries in memory (one chunk: the series itself, no copy);
  *  - a run spilled row by row to an unlinked temporary file (common/RowSpill.h), read back in
  *    chunks of kChunkSamples (io/FogLogIO.h: readFogRun() reads a log file this way).

@@ -43,7 +43,7 @@ FogSeries simulateChamber(const ChamberProfile& profile, const FogDevice& device
  * hold one NaN (FogLogReader::header()'s form, what FogLogWriter takes). */
 FogSeries chamberRunHeader(const ChamberProfile& profile, const FogDevice& device, const SimSettings& settings);
 
-/** simulateChamber()'s samples one at a time, in order (issue 14: a long run need not be held):
+/** simulateChamber()'s samples one at a time, in order (a long run need not be held):
  * f(time_s, rate_z_dph, temp_C, table_rate_dph, field_uT, power) with the values simulateChamber()
  * stores (table / field are passed whether or not the run has the column). Stops after the last
  * sample whose time is <= max_time_s + 1e-9 (fog-sim --duration-s; infinity: the whole profile). */
