@@ -937,6 +937,54 @@ std::vector<double> featureMeans(const std::vector<PreparedRun>& prep, const The
 	return x_ref;
 }
 
+/** The in-sample figures (cal.in_sample): the calibration runs through the real-time compensator
+ * (only when the model can run in real time: the causal rate estimator), else through the fitted
+ * feature set directly. The (time, raw, compensated) rows go to a RowSpill (memory independent of
+ * the runs' length). */
+void addInSampleFigures(Calibration& cal, const std::vector<PreparedRun>& prep, const ThermalFeatureSet& fs,
+						const FitOptions& opt)
+{
+	constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+	const std::size_t ns = fs.signals().size(), nt = fs.thermistors().size();
+	std::vector<double> temp(nt), rate(nt), values(ns);
+	ConcatenatedRuns all;
+	for (std::size_t ri = 0; ri < prep.size(); ri++)
+	{
+		const auto& r = prep[ri];
+		all.beginRun(r);
+		const auto put = [&](const FogSeries& c, std::size_t k0, std::size_t j, double bias) {
+			const double y = r.y(c, j);
+			all.push(c.time_s[j], y, r.ok[k0 + j] ? y - bias : kNaN);
+		};
+		if (opt.rate_estimator.kind == RateEstimatorKind::Causal)
+			compensateRun(cal, *r.run,
+						  [&](const FogSeries& c, std::size_t k0, std::size_t j0, std::size_t m,
+							  const Compensator::Output* out) {
+							  for (std::size_t j = 0; j < m; j++) put(c, k0, j0 + j, out[j].bias_dph);
+						  });
+		else
+		{
+			RowCursor cur(r);
+			std::vector<double> mv(cal.model.features.signals().size());
+			forEachSample(r, &cur, [&](const FogSeries& c, std::size_t k0, std::size_t j) {
+				double bias = kNaN;
+				if (r.ok[k0 + j])
+				{
+					rowSignals(cur, fs, c, k0, j, temp, rate, values);
+					for (std::size_t s = 0; s < mv.size(); s++)
+						for (std::size_t q = 0; q < ns; q++)
+							if (fs.signals()[q] == cal.model.features.signals()[s]) mv[s] = values[q];
+					bias = cal.model.evaluate(mv.data(), cal.extrapolation);
+				}
+				put(c, k0, j, bias);
+			});
+		}
+		all.endRun(r, opt.tau_s);
+	}
+	cal.in_sample.label = "in-sample";
+	all.figuresInto(cal.in_sample, opt.tau_s);
+}
+
 }  // namespace
 
 Calibration fitCalibration(const std::vector<FogSeries>& series, const std::string& preset_text, const FitOptions& opt,
@@ -1378,48 +1426,9 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 		}
 	}
 
-	// In-sample figures: the calibration runs through the real-time compensator (only when the
-	// model can run in real time), else through the fitted feature set directly. The (time, raw,
-	// compensated) rows go to a RowSpill (memory independent of the runs' length, issue 14).
+	// In-sample figures, then held-out ones.
+	addInSampleFigures(cal, prep, fs, opt);
 	constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-	{
-		ConcatenatedRuns all;
-		for (std::size_t ri = 0; ri < runs.size(); ri++)
-		{
-			const auto& r = prep[ri];
-			all.beginRun(r);
-			const auto put = [&](const FogSeries& c, std::size_t k0, std::size_t j, double bias) {
-				const double y = r.y(c, j);
-				all.push(c.time_s[j], y, r.ok[k0 + j] ? y - bias : kNaN);
-			};
-			if (opt.rate_estimator.kind == RateEstimatorKind::Causal)
-				compensateRun(cal, *r.run,
-							  [&](const FogSeries& c, std::size_t k0, std::size_t j0, std::size_t m,
-								  const Compensator::Output* out) {
-								  for (std::size_t j = 0; j < m; j++) put(c, k0, j0 + j, out[j].bias_dph);
-							  });
-			else
-			{
-				RowCursor cur(r);
-				std::vector<double> mv(cal.model.features.signals().size());
-				forEachSample(r, &cur, [&](const FogSeries& c, std::size_t k0, std::size_t j) {
-					double bias = kNaN;
-					if (r.ok[k0 + j])
-					{
-						rowSignals(cur, fs, c, k0, j, temp, rate, values);
-						for (std::size_t s = 0; s < mv.size(); s++)
-							for (std::size_t q = 0; q < ns; q++)
-								if (fs.signals()[q] == cal.model.features.signals()[s]) mv[s] = values[q];
-						bias = cal.model.evaluate(mv.data(), cal.extrapolation);
-					}
-					put(c, k0, j, bias);
-				});
-			}
-			all.endRun(r, opt.tau_s);
-		}
-		cal.in_sample.label = "in-sample";
-		all.figuresInto(cal.in_sample, opt.tau_s);
-	}
 	// Held-out figures: every fold predicted by the chosen model fitted on the other folds.
 	{
 		const auto cols = columnsOf(fs, best.order);
