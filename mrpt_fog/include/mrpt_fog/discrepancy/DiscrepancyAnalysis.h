@@ -36,7 +36,7 @@ struct DiscrepancyOptions
 	/** With a confirmation run, an effect is named only when, with its coefficient from the
 	 * analysed run, it explains on the other run at least this x the RMS left there (the drop of
 	 * the residual's mean square >= this^2 x what remains): the smallest effect worth naming,
-	 * half the weakest effect-to-noise ratio the workflow is specified for (an effect-to-noise ratio of 1).
+	 * half the weakest effect-to-noise ratio the workflow is specified for, which is 1.
 	 * Smaller held-out parts may be real, but they are what slow bias wander, or the part of a
 	 * term a noisy rate estimate misses, leave behind. */
 	double min_held_out_effect_ratio = 0.5;
