@@ -54,6 +54,14 @@ std::string errorOf(const std::string& text)
 {
 	return parseError([](const std::string& t, const std::string& src) { calibrationFromYaml(t, src); }, text);
 }
+/** A one-exponential warm-up term: amplitude_dph * exp(-t / tau_s). */
+WarmupModel warmupTerm(double amplitude_dph, double tau_s)
+{
+	WarmupModel w;
+	w.amplitude_dph = amplitude_dph;
+	w.tau_s = tau_s;
+	return w;
+}
 }  // namespace
 
 // Exact round trip: identical coefficients, normalisation, and bit-identical compensation.
@@ -322,9 +330,7 @@ TEST(CalibrationYaml, Version2FileFromBeforeTheTriadLoadsAndCompensatesAsBefore)
 TEST(CalibrationYaml, WarmupSecondTermAndStartupOffsetRoundTrip)
 {
 	Calibration c = cal();
-	WarmupModel w;
-	w.amplitude_dph = 0.45;
-	w.tau_s = 140;
+	WarmupModel w = warmupTerm(0.45, 140);
 	w.amplitude2_dph = 0.08;
 	w.tau2_s = 520;
 	w.amplitude2_std_dph = 0.03;
@@ -344,10 +350,7 @@ TEST(CalibrationYaml, WarmupSecondTermAndStartupOffsetRoundTrip)
 	EXPECT_EQ(calibrationToYaml(back), text);
 	EXPECT_DOUBLE_EQ(back.warmup->bias_dph(100.0), 0.45 * std::exp(-100.0 / 140) + 0.08 * std::exp(-100.0 / 520));
 	EXPECT_NE(errorOf(replaced(text, "tau2_s: 520", "tau2_s: 0")).find("axes[0].warmup.tau2_s"), std::string::npos);
-	WarmupModel one;
-	one.amplitude_dph = 0.1;
-	one.tau_s = 600;
-	c.warmup = one;
+	c.warmup = warmupTerm(0.1, 600);
 	const std::string plain = calibrationToYaml(c);
 	EXPECT_EQ(plain.find("tau2_s"), std::string::npos);
 	EXPECT_EQ(plain.find("startup_offset_dph"), std::string::npos);
@@ -363,9 +366,7 @@ TEST(CalibrationYaml, ScaleFactorAndWarmupRoundTrip)
 	c.latitude_deg = 40.0;
 	c.earth_rate = EarthRateHandling::InTableRate;
 	c.scale_factor = someScaleFactor();
-	WarmupModel w;
-	w.amplitude_dph = 0.1;
-	w.tau_s = 600;
+	WarmupModel w = warmupTerm(0.1, 600);
 	w.amplitude_std_dph = 0.001;
 	w.tau_std_s = 12;
 	w.fitted_span_s = 5400;
