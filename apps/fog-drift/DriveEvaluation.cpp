@@ -39,6 +39,17 @@ bool noteCalibrationEarthRate(DriveEvaluation& e, const DriveSettings& st, const
 	return bias_holds_earth;
 }
 
+HeadingOptions headingOptionsFor(DriveEvaluation& e, const std::string& path, const DriveSettings& st)
+{
+	if (st.latitude_deg) e.latitude_deg = *st.latitude_deg;
+	else if (e.drive.latitude_deg) e.latitude_deg = *e.drive.latitude_deg;
+	else throw std::runtime_error(path + ": no latitude_deg in the metadata; give --latitude-deg");
+	if (!(std::abs(e.latitude_deg) <= 90)) throw std::runtime_error("--latitude-deg: must be within [-90, 90]");
+	HeadingOptions hopt = st.heading;
+	hopt.latitude_deg = e.latitude_deg;
+	return hopt;
+}
+
 DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 {
 	if (canStream(st))
@@ -51,12 +62,7 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 			progress.update(n, done, total);
 		});
 	}
-	if (st.latitude_deg) e.latitude_deg = *st.latitude_deg;
-	else if (e.drive.latitude_deg) e.latitude_deg = *e.drive.latitude_deg;
-	else throw std::runtime_error(path + ": no latitude_deg in the metadata; give --latitude-deg");
-	if (!(std::abs(e.latitude_deg) <= 90)) throw std::runtime_error("--latitude-deg: must be within [-90, 90]");
-	HeadingOptions hopt = st.heading;
-	hopt.latitude_deg = e.latitude_deg;
+	const HeadingOptions hopt = headingOptionsFor(e, path, st);
 
 	const FogSeries& fog = e.drive.fog;
 	const bool triad_log = fog.has_axis[0] && fog.has_axis[1] && fog.has_axis[2];

@@ -83,6 +83,10 @@ struct DriveEvaluation
 	std::map<std::string, std::array<double, 3>> rate_error_rms_dph;
 };
 
+/** The latitude the drive is integrated at (--latitude-deg, else the drive's metadata, else an
+ * error naming `path`) into e.latitude_deg, and the heading options with it. */
+HeadingOptions headingOptionsFor(DriveEvaluation& e, const std::string& path, const DriveSettings& settings);
+
 /** Throws std::runtime_error naming the file on any problem. Streams the drive (StreamingDrive.h:
  * memory that does not grow with it) when canStream(settings) and the FOG is single-axis; holds
  * it in memory otherwise. */

@@ -496,12 +496,7 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 		throw std::runtime_error(path + ": fewer than 2 CObservationOdometry with label '" + labels.odometry + "'");
 	if (scan.truth.n < 2)
 		throw std::runtime_error(path + ": fewer than 2 CObservationRobotPose with label '" + labels.truth + "'");
-	if (st.latitude_deg) e.latitude_deg = *st.latitude_deg;
-	else if (e.drive.latitude_deg) e.latitude_deg = *e.drive.latitude_deg;
-	else throw std::runtime_error(path + ": no latitude_deg in the metadata; give --latitude-deg");
-	if (!(std::abs(e.latitude_deg) <= 90)) throw std::runtime_error("--latitude-deg: must be within [-90, 90]");
-	HeadingOptions hopt = st.heading;
-	hopt.latitude_deg = e.latitude_deg;
+	const HeadingOptions hopt = headingOptionsFor(e, path, st);
 	const FogSeries& h = scan.header;
 
 	std::optional<CalibrationSet> cals;

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "SimulatedSeries.h"
+
 namespace mrpt_fog::sim
 {
 void SimSettings::validate() const
@@ -57,16 +59,6 @@ OptionalColumns optionalColumns(const ChamberProfile& profile)
 	return c;
 }
 
-FogSeries emptyChamberRun(const FogDevice& device)
-{
-	FogSeries out;
-	out.sensor_label = "FOG";
-	out.epoch_s = kSimEpoch_s;
-	out.has_axis = {false, false, true};
-	for (const auto& t : device.thermistors) out.thermistors.push_back(t.info);
-	out.temp_C.assign(device.thermistors.size(), {});
-	return out;
-}
 }  // namespace
 
 void simulateChamberSamples(const ChamberProfile& profile, const FogDevice& device, const SimSettings& settings,
@@ -88,7 +80,7 @@ void simulateChamberSamples(const ChamberProfile& profile, const FogDevice& devi
 
 FogSeries chamberRunHeader(const ChamberProfile& profile, const FogDevice& device, const SimSettings& settings)
 {
-	FogSeries h = emptyChamberRun(device);
+	FogSeries h = emptySimulatedSeries(device);
 	const OptionalColumns c = optionalColumns(profile);
 	if (c.table) h.table_rate_dph.assign(1, NAN);
 	if (c.field) h.field_uT.assign(1, NAN);
@@ -102,7 +94,7 @@ FogSeries simulateChamber(const ChamberProfile& profile, const FogDevice& device
 	settings.validate();
 	const auto n = static_cast<std::size_t>(std::floor(profile.duration_s() * settings.rate_hz + 1e-9)) + 1;
 	const OptionalColumns c = optionalColumns(profile);
-	FogSeries out = emptyChamberRun(device);
+	FogSeries out = emptySimulatedSeries(device);
 	out.time_s.reserve(n);
 	auto& rate = out.rate_dph[2];
 	rate.reserve(n);

@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "SimulatedSeries.h"
+
 namespace mrpt_fog::sim
 {
 DriveStep driveStep(std::size_t k, double rate_hz, const DriveTrajectory& traj, const ChamberProfile& cabin,
@@ -91,12 +93,7 @@ std::size_t driveSampleCount(const ChamberProfile& cabin, const SimSettings& set
 FogSeries driveRunHeader(const ChamberProfile& cabin, const FogDevice& device, const SimSettings& settings,
 						 const OdometryErrors& odo, double coil_transient_C)
 {
-	FogSeries fog;
-	fog.sensor_label = "FOG";
-	fog.epoch_s = kSimEpoch_s;
-	fog.has_axis = {false, false, true};
-	for (const auto& t : device.thermistors) fog.thermistors.push_back(t.info);
-	fog.temp_C.assign(device.thermistors.size(), {});
+	FogSeries fog = emptySimulatedSeries(device);
 	recordSimMetadata(fog, "vehicle", cabin, device, settings);
 	const double duration_s = static_cast<double>(driveSampleCount(cabin, settings) - 1) / settings.rate_hz;
 	const DriveTrajectory traj = DriveTrajectory::randomDrive(settings.seed, cabin.duration_s());
@@ -139,11 +136,7 @@ DriveOutput simulateDrive(const ChamberProfile& cabin, const FogDevice& device, 
 	DriveOutput out;
 	out.duration_s = static_cast<double>(n - 1) / settings.rate_hz;
 	FogSeries& fog = out.fog;
-	fog.sensor_label = "FOG";
-	fog.epoch_s = kSimEpoch_s;
-	fog.has_axis = {false, false, true};
-	for (const auto& t : device.thermistors) fog.thermistors.push_back(t.info);
-	fog.temp_C.assign(device.thermistors.size(), {});
+	fog = emptySimulatedSeries(device);
 	FogSeries& ideal = out.fog_ideal;
 	ideal = fog;
 	ideal.sensor_label = "FOG_IDEAL";
