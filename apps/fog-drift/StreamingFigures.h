@@ -102,9 +102,10 @@ class StreamSegmenter
 		const double a = std::max(t_front_, t - h_), b = done ? std::min(win_.back().first, t + h_) : t + h_;
 		const double rate = b > a ? (interp(b, done) - interp(a, done)) / (b - a) : 0.0;
 		classify(t, y, rate);
-		// drop what no later window reaches (the last point <= the next a stays)
+		// drop what no later window reaches (the last point <= the next a stays). next_ is already
+		// the next point to be rated (add() post-increments), so its window's start is at(next_) - h.
 		if (!done)
-			while (win_.size() > 2 && next_ + 1 < base_ + win_.size() && win_[1].first <= at(next_ + 1).first - h_)
+			while (win_.size() > 2 && next_ < base_ + win_.size() && win_[1].first <= at(next_).first - h_)
 			{
 				win_.pop_front();
 				base_++;
