@@ -1,4 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/model/Compensator.h>
 #include <mrpt_fog/model/WarmupFit.h>
 
@@ -7,7 +8,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
-#include <sstream>
 
 namespace mrpt_fog
 {
@@ -18,13 +18,8 @@ std::string runName(const std::vector<std::string>& labels, std::size_t i)
 	return i < labels.size() ? labels[i] : "run " + std::to_string(i + 1);
 }
 
-std::string fmt(double v)
-{
-	std::ostringstream o;
-	o.precision(4);
-	o << v;
-	return o.str();
-}
+/** 4 significant digits, as an ostream at precision 4 (the messages' format). */
+std::string fmt(double v) { return formatValue("%.4g", v); }
 
 /** The samples of one bin of one span: their times since the turn-on and the mean residual. */
 struct Bin
