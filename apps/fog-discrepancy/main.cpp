@@ -11,9 +11,11 @@
 #include <mrpt_fog/discrepancy/CalibrationAugment.h>
 #include <mrpt_fog/report/DiscrepancyOutput.h>
 #include <mrpt_fog/report/SimDiscrepancyOutput.h>
+#include <mrpt_fog/io/BlockMeanReader.h>
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 
@@ -64,6 +66,20 @@ int main(int argc, char** argv)
 								   "do not screen thermistor readings (stuck / spike / out of range -> dropout) before "
 								   "the analysis (fog-compensate's screening)",
 								   cmd);
+		TCLAP::ValueArg<double> block_s(
+			"", "block-s",
+			"analyse block means of at least this many seconds (default 1): a run sampled faster is reduced while it "
+			"is read to blocks of K = floor(S / sample period) consecutive samples (a block never mixes power "
+			"states, table rates or fields, nor bridges a gap); thermal effects vary over minutes, so blocks of "
+			"seconds keep them and average only the white part of the gyro noise: the residual RMS is that of "
+			"the block means. A run sampled at 1/S or slower is analysed sample by sample. 0: no reduction "
+			"(memory about 1.4 KB per sample)",
+			false, 1.0, "S", cmd);
+		TCLAP::ValueArg<std::size_t> max_rows(
+			"", "max-rows",
+			"at most this many rows per run (default 65536, 18 h of 1 s blocks): beyond it adjacent blocks are "
+			"merged in pairs (2 S, 4 S, ...), which bounds memory (about 1.4 KB per row) and time",
+			false, 65536, "N", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-discrepancy")) return *rc;
 
 		if (measured.getValue().size() > 2)
@@ -71,6 +87,10 @@ int main(int argc, char** argv)
 									 " times: at most two runs (the first is analysed, the second confirms)");
 		if (scale_factor.getValue() != "auto" && scale_factor.getValue() != "off")
 			throw std::runtime_error("--scale-factor: '" + scale_factor.getValue() + "' is not auto or off");
+		if (!(block_s.getValue() >= 0 && block_s.getValue() <= 3600))
+			throw std::runtime_error("--block-s " + std::to_string(block_s.getValue()) + ": must be in [0, 3600] s");
+		if (max_rows.getValue() < 1000)
+			throw std::runtime_error("--max-rows " + std::to_string(max_rows.getValue()) + ": must be at least 1000");
 		if (!(alpha.getValue() > 0 && alpha.getValue() < 0.5))
 			throw std::runtime_error("--alpha " + std::to_string(alpha.getValue()) + ": must be in (0, 0.5)");
 		if (plots.isSet())
@@ -90,9 +110,25 @@ int main(int argc, char** argv)
 		std::vector<std::string> labels;
 		for (const auto& f : measured.getValue())
 		{
-			runs.push_back(readFogLog(f, label.getValue()));
-			const ThermistorScreening sc = app::screenInPlace(runs.back(), !no_screen.getValue());
+			// read as a stream: screened sample by sample (as fog-compensate), then reduced to
+			// block means with bounded rows (io/BlockMeanReader.h)
+			BlockMeanOptions bopt;
+			bopt.min_block_s = block_s.getValue();
+			bopt.max_rows = max_rows.getValue();
+			BlockMeanInfo binfo;
+			app::StreamScreening screening(!no_screen.getValue());
+			runs.push_back(readFogLogBlockMeans(f, label.getValue(), bopt, binfo, screening.hook()));
+			const ThermistorScreening sc = screening.result(FogRun(runs.back()));
 			if (sc.rejected_readings > 0) std::cout << f << ":\n" << app::screeningText(sc, true);
+			if (binfo.reduced())
+			{
+				char buf[300];
+				std::snprintf(buf, sizeof buf,
+							  "%s: %zu samples (%.4g Hz) analysed as %zu block means of about %zu samples (%.4g s)\n",
+							  f.c_str(), binfo.samples, binfo.native_period_s > 0 ? 1.0 / binfo.native_period_s : 0.0,
+							  binfo.rows, binfo.samples_per_block, binfo.block_s);
+				std::cout << buf;
+			}
 			labels.push_back(std::filesystem::path(f).filename().string());
 		}
 		discrepancy::DiscrepancyOptions opt;
