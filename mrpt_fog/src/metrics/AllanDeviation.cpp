@@ -274,7 +274,7 @@ UniformRecord resampleUniform(const RowSpill& rows, std::size_t tc, std::size_t 
 }
 
 std::vector<AllanPoint> allanDeviationOverlapping(const RowSpill& y, double tau0_s,
-												  const std::vector<std::size_t>& cluster_sizes)
+												  const std::vector<std::size_t>& cluster_sizes, AllanOffsets offsets)
 {
 	if (!std::isfinite(tau0_s) || tau0_s <= 0)
 		throw std::invalid_argument("Allan deviation: sample period must be > 0 s, got " + std::to_string(tau0_s));
@@ -309,8 +309,17 @@ std::vector<AllanPoint> allanDeviationOverlapping(const RowSpill& y, double tau0
 			ring_top = std::max(ring_top, m);
 		}
 	}
+	// Linear: phases at multiples of the stride, kept during the pass, for the larger sizes
+	std::size_t stride = 256;
+	while (stride < n / (std::size_t{1} << 18)) stride *= 2;
+	bool strided = false;
+	if (offsets == AllanOffsets::Linear)
+		for (std::size_t m : cluster_sizes)
+			strided = strided || (m > kRingMax && 2 * m <= n && m % stride == 0);
+	std::vector<long double> phase_at_stride;
+	if (strided) phase_at_stride.reserve(n / stride + 1);
 	std::map<std::size_t, long double> sums;
-	if (!ring_m.empty())
+	if (!ring_m.empty() || strided)
 	{
 		// One pass: x[p] with p = 0..n, a ring of the last 2 m_max + 1 phases.
 		const std::size_t L = 2 * ring_top + 1;
@@ -321,6 +330,7 @@ std::vector<AllanPoint> allanDeviationOverlapping(const RowSpill& y, double tau0
 		const auto at = [&](std::size_t idx) -> long double { return ring[idx % L]; };
 		const auto visit = [&]() {
 			ring[p % L] = x;
+			if (strided && p % stride == 0) phase_at_stride.push_back(x);
 			for (std::size_t u = 0; u < ring_m.size(); u++)
 			{
 				const std::size_t m = ring_m[u];
@@ -345,7 +355,19 @@ std::vector<AllanPoint> allanDeviationOverlapping(const RowSpill& y, double tau0
 	{
 		if (2 * m > n) continue;
 		long double sum = 0;
+		std::size_t terms = n - 2 * m + 1;
 		if (m <= kRingMax) sum = sums.at(m);
+		else if (strided && m % stride == 0)
+		{
+			// offsets i = j s: x_i, x_{i+m}, x_{i+2m} are phases j, j + q, j + 2q of the stride
+			const std::size_t q = m / stride;
+			terms = 0;
+			for (std::size_t j = 0; j + 2 * q < phase_at_stride.size(); j++, terms++)
+			{
+				const long double d = (phase_at_stride[j + 2 * q] - 2 * phase_at_stride[j + q] + phase_at_stride[j]) / m;
+				sum += d * d;
+			}
+		}
 		else
 		{
 			// Three readers at phases i, i + m, i + 2m.
@@ -364,7 +386,6 @@ std::vector<AllanPoint> allanDeviationOverlapping(const RowSpill& y, double tau0
 				step(r2, x2);
 			}
 		}
-		const std::size_t terms = n - 2 * m + 1;
 		out.push_back(allanPointOf(m, tau0_s, sum, terms, n));
 	}
 	return out;

@@ -82,10 +82,29 @@ UniformRecord resampleUniform(const std::vector<double>& time_s, const std::vect
 UniformRecord resampleUniform(const RowSpill& rows, std::size_t time_col, std::size_t value_col, RowSpill& out,
 							  double period_s = 0, double max_gap_s = 0);
 
+/** Which offsets the overlapping estimator of a spilled record sums over. */
+enum class AllanOffsets : unsigned char
+{
+	/** Every offset i = 0 .. N - 2m (fully overlapping): one pass for m <= 65 536, then one pass
+	 * of three readers per larger octave, so O(N log N) in all. */
+	All = 0,
+	/** Every offset for m <= 65 536 (the same numbers, bit for bit); for larger m the offsets
+	 * that are multiples of a stride s = max(256, 2^ceil(log2(N / 2^18))) (at least 512 offsets
+	 * per cluster length, N / s + 1 terms), from phases kept during the one pass: O(N) in all,
+	 * memory at most 2^18 + 1 phases (4 MB). The estimate sums the same second differences at
+	 * fewer offsets: at m >= 512 s neighbouring offsets are nearly the same difference, so its
+	 * spread is that of full overlap within a few percent (docs/metrics.md, "Allan deviation of
+	 * long records"). */
+	Linear = 1
+};
+
 /** allanDeviation(y, tau0_s, cluster_sizes, AllanKind::Overlapping) of a record held in a RowSpill
- * of width 1: the same numbers, bit for bit. Memory: a ring of the phase for cluster sizes up to
- * 65 536 (2 MB), beyond that three readers of the spill per cluster size. */
+ * of width 1: with AllanOffsets::All the same numbers, bit for bit; with Linear (default) the
+ * same for m <= 65 536 and the strided estimate above. Memory: a ring of the phase for cluster
+ * sizes up to 65 536 (2 MB) and the strided phases; All reads the spill again with three readers
+ * per larger cluster size. */
 std::vector<AllanPoint> allanDeviationOverlapping(const RowSpill& y, double tau0_s,
-												  const std::vector<std::size_t>& cluster_sizes);
+												  const std::vector<std::size_t>& cluster_sizes,
+												  AllanOffsets offsets = AllanOffsets::Linear);
 
 }  // namespace mrpt_fog
