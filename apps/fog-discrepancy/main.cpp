@@ -21,6 +21,7 @@
 
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "Progress.h"
 #include "ThermistorScreeningReport.h"
 
 using namespace mrpt_fog;
@@ -80,6 +81,7 @@ int main(int argc, char** argv)
 			"at most this many rows per run (default 65536, 18 h of 1 s blocks): beyond it adjacent blocks are "
 			"merged in pairs (2 S, 4 S, ...), which bounds memory (about 1.4 KB per row) and time",
 			false, 65536, "N", cmd);
+		TCLAP::SwitchArg quiet("q", "quiet", "No progress line on stderr while the runs are read", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-discrepancy")) return *rc;
 
 		if (measured.getValue().size() > 2)
@@ -117,7 +119,11 @@ int main(int argc, char** argv)
 			bopt.max_rows = max_rows.getValue();
 			BlockMeanInfo binfo;
 			app::StreamScreening screening(!no_screen.getValue());
-			runs.push_back(readFogLogBlockMeans(f, label.getValue(), bopt, binfo, screening.hook()));
+			app::Progress progress("fog-discrepancy: reading " + f, quiet.getValue());
+			runs.push_back(readFogLogBlockMeans(
+				f, label.getValue(), bopt, binfo, screening.hook(),
+				[&](std::uint64_t n, std::uint64_t done, std::uint64_t total) { progress.update(n, done, total); }));
+			progress.finish();
 			const ThermistorScreening sc = screening.result(FogRun(runs.back()));
 			if (sc.rejected_readings > 0) std::cout << f << ":\n" << app::screeningText(sc, true);
 			if (binfo.reduced())
