@@ -6,6 +6,7 @@
 #include <mrpt/system/filesystem.h>
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/common/JsonWriter.h>
+#include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/plot/PlotCanvas.h>
 #include <mrpt_fog_nav/OdometryRawlog.h>
 
@@ -79,6 +80,33 @@ JsonValue driveJson(const DriveEvaluation& e, const DriftContext& ctx)
 		sg["straights"] = static_cast<unsigned long>(f.straights);
 		sg["straight_time_s"] = f.straight_time_s;
 	}
+	{
+		// the gyro-off stretches (always present: total_s 0 and no stretch on a powered drive)
+		JsonValue& g = j["gyro_off"] = JsonValue::object();
+		double total = 0;
+		JsonValue list = JsonValue::array();
+		for (const auto& s : e.gyro_off)
+		{
+			total += s.duration_s();
+			JsonValue o = JsonValue::object();
+			o["off_s"] = s.off_s - e.drive.fog.epoch_s;
+			o["on_s"] = s.on_s - e.drive.fog.epoch_s;
+			o["duration_s"] = s.duration_s();
+			o["samples"] = static_cast<unsigned long>(s.samples);
+			o["from_start"] = s.from_start;
+			o["to_end"] = s.to_end;
+			o["truth_heading_change_deg"] =
+				std::isfinite(s.truth_heading_change_deg) ? JsonValue(s.truth_heading_change_deg) : JsonValue();
+			list.push_back(o);
+		}
+		g["total_s"] = total;
+		g["stretches"] = list;
+		g["powered_spans"] = static_cast<unsigned long>(e.powered_spans);
+		g["powered_spans_navigated"] = static_cast<unsigned long>(e.powered_spans_navigated);
+		g["figures_over"] = e.gyro_off.empty() ? "the whole drive"
+											   : "powered spans only, each re-aligned from the truth (heading and "
+												 "position) at its start; heading not observable while the gyro is off";
+	}
 	j["distance_m"] = report.distance_m;
 	j["duration_s"] = report.duration_s;
 	j["latitude_deg"] = ctx.latitude_deg;
@@ -93,6 +121,28 @@ JsonValue driveJson(const DriveEvaluation& e, const DriftContext& ctx)
 	return j;
 }
 }  // namespace
+
+std::string gyroOffText(const DriveEvaluation& e)
+{
+	if (e.gyro_off.empty()) return "";
+	double total = 0;
+	for (const auto& s : e.gyro_off) total += s.duration_s();
+	std::string out = formatValue("  gyro off %.1f s", total) + " in " + std::to_string(e.gyro_off.size()) +
+					  (e.gyro_off.size() == 1 ? " stretch" : " stretches") +
+					  ": heading not observable there; drift figures computed on the powered spans only (" +
+					  std::to_string(e.powered_spans_navigated) + " of " + std::to_string(e.powered_spans) +
+					  " navigated), each re-aligned from the truth (heading and position) at its start\n";
+	for (const auto& s : e.gyro_off)
+	{
+		out += formatValue("    off %.1f", s.off_s - e.drive.fog.epoch_s) + formatValue(" .. %.1f s", s.on_s - e.drive.fog.epoch_s) +
+			   formatValue(" (%.1f s", s.duration_s()) + ", " + std::to_string(s.samples) + " samples" +
+			   (s.from_start ? ", from the start" : "") + (s.to_end ? ", to the end" : "") + "): truth heading change " +
+			   (std::isfinite(s.truth_heading_change_deg) ? formatValue("%.1f deg", s.truth_heading_change_deg)
+														  : std::string("unknown (outside the truth)")) +
+			   "\n";
+	}
+	return out;
+}
 
 void writeDriftJson(const std::string& path, const std::vector<DriveEvaluation>& drives,
 					const std::vector<DriftContext>& ctxs, const std::map<std::string, Spread>& over)

@@ -29,6 +29,9 @@ struct DriftContext
 	std::string calibration_latitude_source;  //!< "option", "calibration", "drive" ("" without calibration)
 };
 
+/** The text lines on the drive's gyro-off stretches ("" without any; GyroOff.h). */
+std::string gyroOffText(const DriveEvaluation& e);
+
 /** One drive: the report's tables at the top level (as before) plus the navigation figures.
  * Several drives: {"drives": [one object per drive], "over_drives": {figure: spread}}. */
 void writeDriftJson(const std::string& path, const std::vector<DriveEvaluation>& drives,

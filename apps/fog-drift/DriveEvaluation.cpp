@@ -50,6 +50,25 @@ HeadingOptions headingOptionsFor(DriveEvaluation& e, const std::string& path, co
 	return hopt;
 }
 
+void appendDriftSeries(nav::DriftSeries& into, nav::DriftSeries&& part, double distance_m)
+{
+	if (into.t_s.empty() && into.name.empty())
+	{
+		into = std::move(part);
+		return;
+	}
+	into.t_s.insert(into.t_s.end(), part.t_s.begin(), part.t_s.end());
+	into.heading_error_deg.insert(into.heading_error_deg.end(), part.heading_error_deg.begin(), part.heading_error_deg.end());
+	into.position_error_m.insert(into.position_error_m.end(), part.position_error_m.begin(), part.position_error_m.end());
+	into.heading_error_max_deg = std::max(into.heading_error_max_deg, part.heading_error_max_deg);
+	into.position_error_max_m = std::max(into.position_error_max_m, part.position_error_max_m);
+	into.heading_error_final_deg = part.heading_error_final_deg;
+	into.heading_error_final_signed_deg = part.heading_error_final_signed_deg;
+	into.position_error_final_m = part.position_error_final_m;
+	into.position_error_final_pct = part.position_error_final_pct;
+	if (distance_m > 0) into.position_error_max_pct = 100.0 * into.position_error_max_m / distance_m;
+}
+
 DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 {
 	if (canStream(st))
@@ -76,30 +95,86 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 		e.three_axis_note = cals && !cal_all ? "the calibration does not cover x, y and z: the vertical gyro alone"
 											 : "FOG_IDEAL is not a triad: the vertical gyro alone";
 
+	// The gyro-off stretches of the FOG (GyroOff.h): each powered span is navigated alone.
+	std::vector<PoweredSpan> spans;
+	{
+		PowerSpanBuilder power;
+		for (std::size_t k = 0; k < fog.size(); k++) power.add(fog.epoch_s + fog.time_s[k], fog.gyroOn(k));
+		power.finish();
+		e.gyro_off = power.stretches();
+		spans = power.powered();
+		if (spans.empty()) throw std::runtime_error(path + ": FOG '" + fog.sensor_label + "': the gyro is off throughout");
+		TruthYawAt yaw(stretchQueryTimes(e.gyro_off));
+		for (const auto& p : e.drive.truth) yaw.add(p.t_s, p.yaw_rad);
+		yaw.finish();
+		setTruthHeadingChanges(e.gyro_off, yaw);
+	}
+	const bool gyro_off = !e.gyro_off.empty();
+	e.powered_spans = spans.size();
 	auto run = [&](const std::string& name, const std::vector<double>& t, const std::array<const std::vector<double>*, 3>& r) {
 		// The times and rates of a variant serve the triad's attitude figures and --odometry-out
 		// (compensated, else raw): the others, single-axis, are not kept.
 		const bool odometry_variant = name == (st.cal_path.empty() ? "raw" : "compensated");
-		HeadingOptions o = hopt;
-		o.keep_rates = e.three_axis || (odometry_variant && st.keep_trajectories != KeptTrajectories::None);
-		e.results.push_back(e.three_axis ? deadReckonVariant(t, *r[0], *r[1], *r[2], e.drive, o)
-										 : deadReckonVariant(t, *r[2], e.drive, o));
-		// The trajectory lives in variants alone (results[i].trajectory is left empty): one copy
-		// of each (~80 B per sample, issue 14).
-		e.variants.emplace_back(name, std::move(e.results.back().trajectory));
-		e.results.back().trajectory = {};
-		// Its drift figures now (computeDriftReport treats each variant alone), then the
-		// trajectory goes unless kept: the variants' trajectories are not all held at once.
-		std::vector<nav::NamedTrajectory> alone(1);
-		alone.front() = std::move(e.variants.back());  // moved, not copied ({e.variants.back()} copies)
-		nav::DriftReport one = nav::computeDriftReport(e.drive.truth, alone);
-		e.variants.back() = std::move(alone.front());
-		e.report.distance_m = one.distance_m;
-		e.report.duration_s = one.duration_s;
-		e.report.variants.push_back(std::move(one.variants.front()));
 		const bool keep = st.keep_trajectories == KeptTrajectories::All ||
 						  (st.keep_trajectories == KeptTrajectories::ForOdometry && odometry_variant);
-		if (!keep) nav::Trajectory().swap(e.variants.back().second);
+		HeadingOptions o = hopt;
+		o.keep_rates = e.three_axis || (odometry_variant && st.keep_trajectories != KeptTrajectories::None);
+		o.empty_if_no_odometry = gyro_off;
+		VariantResult all;
+		nav::Trajectory kept;
+		nav::DriftSeries series;
+		std::size_t navigated = 0;
+		for (const PoweredSpan& span : spans)
+		{
+			if (gyro_off)
+			{
+				if (t.empty()) break;
+				const auto w = navigationWindow(span, t.front(), t.back(), e.drive.odometry.t_s.front(),
+												e.drive.odometry.t_s.back(), e.drive.truth.front().t_s,
+												e.drive.truth.back().t_s);
+				if (!w) continue;
+				o.window_t0_s = w->first, o.window_t1_s = w->second;
+			}
+			VariantResult part = e.three_axis ? deadReckonVariant(t, *r[0], *r[1], *r[2], e.drive, o)
+											  : deadReckonVariant(t, *r[2], e.drive, o);
+			if (part.trajectory.empty()) continue;  // too short to navigate (gyro_off only)
+			navigated++;
+			if (gyro_off)  // a span between two truth poses has no error to give (the streamed path skips it too)
+			{
+				const auto& tr = e.drive.truth;
+				const auto it = std::lower_bound(tr.begin(), tr.end(), part.trajectory.front().t_s,
+												 [](const nav::TrajectoryPoint& p, double v) { return p.t_s < v; });
+				if (it == tr.end() || it->t_s > part.trajectory.back().t_s) continue;
+			}
+			// Its drift figures now (computeDriftReport treats each variant alone), then the
+			// trajectory goes unless kept: the variants' trajectories are not all held at once.
+			std::vector<nav::NamedTrajectory> alone(1);
+			alone.front() = {name, std::move(part.trajectory)};
+			nav::DriftReport one = nav::computeDriftReport(e.drive.truth, alone);
+			e.report.distance_m = one.distance_m;
+			e.report.duration_s = one.duration_s;
+			appendDriftSeries(series, std::move(one.variants.front()), one.distance_m);
+			if (keep)
+			{
+				if (kept.empty()) kept = std::move(alone.front().second);
+				else kept.insert(kept.end(), alone.front().second.begin(), alone.front().second.end());
+			}
+			for (auto [to, from] : {std::pair{&all.t_s, &part.t_s}, {&all.yaw_rate_rad_s, &part.yaw_rate_rad_s},
+								   {&all.roll_rad, &part.roll_rad}, {&all.pitch_rad, &part.pitch_rad}})
+			{
+				if (to->empty()) *to = std::move(*from);
+				else to->insert(to->end(), from->begin(), from->end());
+			}
+		}
+		if (navigated == 0)
+			throw std::runtime_error("no powered span of the gyro overlaps the odometry and the truth long enough to "
+									 "navigate");
+		if (name == "raw") e.powered_spans_navigated = navigated;
+		// The trajectory lives in variants alone (results[i].trajectory is left empty): one copy
+		// of each (~80 B per sample, issue 14).
+		e.results.push_back(std::move(all));
+		e.variants.emplace_back(name, std::move(kept));
+		e.report.variants.push_back(std::move(series));
 	};
 	// The heading gyro is the vertical (z) axis; a triad's x / y enter the 3-D strapdown.
 	auto rates = [&](const FogSeries& s) -> std::array<const std::vector<double>*, 3> {
@@ -217,6 +292,7 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 	e.drive.odometry = OdometryPoses{};
 
 	e.segments = nav::segmentDrive(e.drive.truth, st.figures);
+	cutSegmentsAtGyroOff(e.segments, nullptr, e.gyro_off, st.figures);
 	for (const auto& v : e.report.variants)
 		e.figures[v.name] = nav::computeHeadingFigures(v.t_s, v.heading_error_deg, e.drive.truth, e.segments);
 	return e;

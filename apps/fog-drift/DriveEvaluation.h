@@ -9,6 +9,7 @@
  * (median, quartiles, min, max of each figure and ratio). */
 
 #include "DriveData.h"
+#include "GyroOff.h"
 #include "HeadingDeadReckoning.h"
 
 #include <mrpt_fog/model/Calibration.h>
@@ -73,6 +74,12 @@ struct DriveEvaluation
 	nav::DriftReport report;
 	nav::DriveSegments segments;
 	std::map<std::string, nav::HeadingFigures> figures;  //!< by variant name
+	/** The FOG's gyro-off stretches (GyroOff.h; empty without power 0 rows): the heading is not
+	 * observable there; each powered span is navigated alone, re-aligned from the truth at its
+	 * start, and the figures above are those of the powered spans. */
+	std::vector<GyroOffStretch> gyro_off;
+	std::size_t powered_spans = 1;  //!< powered spans of the FOG (1 without gyro-off stretches)
+	std::size_t powered_spans_navigated = 1;  //!< of them, long enough to navigate (the raw gyro's)
 	/** Triad FOG (x, y, z) and a calibration of all three axes (or none): the 3-D strapdown
 	 * (heading = its yaw), attitude figures and per-axis rate errors below. */
 	bool three_axis = false;
@@ -96,6 +103,10 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& sett
  * (option, file, else the drive's: e.latitude_deg) into e.calibration_earth_rate_dph and
  * e.calibration_latitude_source; returns whether the bias holds it. */
 bool noteCalibrationEarthRate(DriveEvaluation& e, const DriveSettings& settings, const Calibration& zcal);
+
+/** Appends the drift series of a later powered span to `into` (the maxima over both, the
+ * finals of `part`; `distance_m`: the drive's, for the percentages). */
+void appendDriftSeries(nav::DriftSeries& into, nav::DriftSeries&& part, double distance_m);
 
 /** Median, quartiles (linear interpolation between order statistics) and extremes. */
 struct Spread

@@ -37,8 +37,8 @@ VariantResult deadReckonImpl(const std::vector<double>& t_s, const std::vector<d
 		(triad && (rate_x_dph->size() != t_s.size() || rate_y_dph->size() != t_s.size())))
 		throw std::runtime_error("gyro series: sizes differ or fewer than 2 samples");
 	const auto& odo = drive.odometry;
-	const double t0 = std::max({t_s.front(), odo.t_s.front(), drive.truth.front().t_s});
-	const double t_end = std::min({t_s.back(), odo.t_s.back(), drive.truth.back().t_s});
+	const double t0 = std::max({options.window_t0_s, t_s.front(), odo.t_s.front(), drive.truth.front().t_s});
+	const double t_end = std::min({options.window_t1_s, t_s.back(), odo.t_s.back(), drive.truth.back().t_s});
 	if (!(t_end > t0)) throw std::runtime_error("the gyro, the odometry and the truth do not overlap in time");
 
 	nav::StrapdownOptions so;
@@ -99,7 +99,11 @@ VariantResult deadReckonImpl(const std::vector<double>& t_s, const std::vector<d
 	// from the truth position.
 	const auto first = static_cast<std::size_t>(std::lower_bound(odo.t_s.begin(), odo.t_s.end(), t0) - odo.t_s.begin());
 	const auto last = static_cast<std::size_t>(std::upper_bound(odo.t_s.begin(), odo.t_s.end(), track.backTime()) - odo.t_s.begin());
-	if (last < first + 2) throw std::runtime_error("fewer than 2 odometry samples inside the gyro's time span");
+	if (last < first + 2)
+	{
+		if (options.empty_if_no_odometry) return out;
+		throw std::runtime_error("fewer than 2 odometry samples inside the gyro's time span");
+	}
 	const nav::TrajectoryPoint p0 = nav::interpolate(drive.truth, odo.t_s[first]);
 	out.trajectory = nav::deadReckon2D(odo.t_s[first], p0.x_m, p0.y_m,
 									   nav::odometryFromPoses2D(odo.t_s, odo.x_m, odo.y_m, odo.phi_rad, first, last), track);

@@ -15,6 +15,7 @@
 #include <mrpt_fog_nav/StrapdownAttitude.h>
 #include <mrpt_fog_nav/Trajectory.h>
 
+#include <limits>
 #include <vector>
 
 namespace mrpt_fog::drift
@@ -26,6 +27,13 @@ struct HeadingOptions
 	nav::RateSampling sampling = nav::RateSampling::IntervalAverage;  //!< fog-sim: mean over (t - dt, t]
 	/** false: VariantResult::t_s and yaw_rate_rad_s are left empty (not needed: memory) */
 	bool keep_rates = true;
+	/** Navigate only within [window_t0_s, window_t1_s] (absolute s): one powered span of a drive
+	 * with the gyro off in places (GyroOff.h), aligned from the truth at its start. */
+	double window_t0_s = -std::numeric_limits<double>::infinity();
+	double window_t1_s = std::numeric_limits<double>::infinity();
+	/** true: fewer than 2 odometry samples inside the gyro's span give an empty trajectory
+	 * (a powered span too short to navigate) instead of an error */
+	bool empty_if_no_odometry = false;
 };
 
 struct VariantResult

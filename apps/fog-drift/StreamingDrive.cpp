@@ -1,6 +1,7 @@
 /* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
 #include "StreamingDrive.h"
 
+#include "GyroOff.h"
 #include "StreamingFigures.h"
 
 #include "Progress.h"
@@ -74,6 +75,8 @@ struct DriveScan
 	double distance_m = 0;
 	nav::DriveSegments segments;
 	std::vector<TurnSpan> turns;
+	std::vector<PoweredSpan> powered;  //!< the FOG's powered spans
+	std::vector<GyroOffStretch> gyro_off;  //!< and its gyro-off stretches (GyroOff.h)
 };
 
 /** A queue with global indices: the samples not yet needed by no one. */
@@ -100,45 +103,72 @@ struct OdoPose
 class VariantStream
 {
    public:
-	VariantStream(std::string name, double t0, double t_end, const HeadingOptions& hopt, const DriveScan& scan)
-		: name_(std::move(name)), t0_(t0), t_end_(t_end), hopt_(hopt), acc_(scan.segments, scan.turns)
+	/** windows: the time spans navigated, each aligned from the truth at its start (one
+	 * without gyro-off stretches; GyroOff.h); skip_short: a window with fewer than 2 odometry
+	 * samples is skipped (else an error). */
+	VariantStream(std::string name, std::vector<std::pair<double, double>> windows, bool skip_short,
+				  const HeadingOptions& hopt, const DriveScan& scan)
+		: name_(std::move(name)), windows_(std::move(windows)), skip_short_(skip_short), hopt_(hopt),
+		  acc_(scan.segments, scan.turns)
 	{
 		nav::StrapdownOptions so;
 		so.latitude_rad = hopt.latitude_deg * units::kDegToRad;
 		so.use_transport_rate = false;
 		so.sampling = hopt.sampling;
 		att_ = std::make_unique<nav::StrapdownAttitude>(so, nav::StrapdownAttitude::Mode::VerticalOnly);
+		t0_ = windows_.front().first, t_end_ = windows_.front().second;
 	}
 
 	/** Sample k of the variant's gyro: absolute time [s], vertical rate [deg/h]. */
 	void addGyro(double t, double rate_dph, std::size_t k)
 	{
-		if (!gyro_stopped_) gyro_.push_back({t, rate_dph, k});
+		if (!gyro_stopped_ || window_ + 1 < windows_.size()) gyro_.push_back({t, rate_dph, k});
 	}
 	void gyroDone() { gyro_done_ = true; }
 
 	/** Advances as far as the data allow. */
 	void pump(const IndexedQueue<nav::TrajectoryPoint>& truth, const IndexedQueue<OdoPose>& odo)
 	{
-		if (!initialised_)
+		for (;;)
 		{
-			if (!truthReady(truth, t0_)) return;
-			const nav::TrajectoryPoint start = interpolateTruth(truth, t0_);
-			att_->initialize(t0_, nav::quatFromYawPitchRoll(start.yaw_rad, 0, 0));
-			track_.push_back({t0_, att_->attitude()});
-			initialised_ = true;
+			if (!initialised_)
+			{
+				if (!truthReady(truth, t0_)) return;
+				const nav::TrajectoryPoint start = interpolateTruth(truth, t0_);
+				att_->initialize(t0_, nav::quatFromYawPitchRoll(start.yaw_rad, 0, 0));
+				track_.push_back({t0_, att_->attitude()});
+				initialised_ = true;
+			}
+			integrate();
+			deadReckon(truth, odo);
+			compare(truth);
+			if (!compared_all_ || window_ + 1 >= windows_.size()) return;
+			nextWindow();
 		}
-		integrate();
-		deadReckon(truth, odo);
-		compare(truth);
 	}
 
-	bool done() const { return compared_all_; }
-	/** Truth and odometry indices this variant still needs (its lower bounds). */
-	std::size_t truthNeeded() const { return initialised_ && dr_started_ ? next_truth_ : 0; }
+	bool done() const { return compared_all_ && window_ + 1 >= windows_.size(); }
+	/** Windows navigated (at least 2 odometry samples). */
+	std::size_t windowsNavigated() const { return navigated_; }
+	/** Truth and odometry indices this variant still needs (its lower bounds). Before the
+	 * dead reckoning of a later window starts: the last truth pose at or before its start. */
+	std::size_t truthNeeded(const IndexedQueue<nav::TrajectoryPoint>& truth) const
+	{
+		if (initialised_ && dr_started_) return next_truth_;
+		if (window_ == 0) return 0;
+		std::size_t i = truth.base;
+		while (i + 1 < truth.end() && truth.at(i + 1).t_s <= t0_) i++;
+		return i;
+	}
 	std::size_t odoNeeded() const { return next_odo_ > 0 ? next_odo_ - 1 : 0; }
 
-	void finish(double distance_m, nav::DriftSeries& s, nav::HeadingFigures& f) { acc_.finish(name_, distance_m, s, f); }
+	void finish(double distance_m, nav::DriftSeries& s, nav::HeadingFigures& f)
+	{
+		if (navigated_ == 0)
+			throw std::runtime_error("no powered span of the gyro overlaps the odometry and the truth long enough to "
+									 "navigate");
+		acc_.finish(name_, distance_m, s, f);
+	}
 
    private:
 	struct Att
@@ -184,7 +214,8 @@ class VariantStream
 			if (t > t_end_)
 			{
 				gyro_stopped_ = true;
-				gyro_.clear();
+				if (window_ + 1 < windows_.size()) gyro_.push_front({t, rate, k});  // a later window's
+				else gyro_.clear();
 				break;
 			}
 			if (!std::isfinite(rate))
@@ -284,8 +315,26 @@ class VariantStream
 	void finishDeadReckoning()
 	{
 		if (dr_done_) return;
-		if (dr_points_ < 2) throw std::runtime_error("fewer than 2 odometry samples inside the gyro's time span");
+		if (dr_points_ < 2)
+		{
+			if (!skip_short_) throw std::runtime_error("fewer than 2 odometry samples inside the gyro's time span");
+			dr_done_ = compared_all_ = true;  // too short to navigate: nothing compared
+			return;
+		}
+		navigated_++;
 		dr_done_ = true;
+	}
+
+	/** The next window: navigated afresh from the truth at its start (GyroOff.h). */
+	void nextWindow()
+	{
+		window_++;
+		t0_ = windows_[window_].first, t_end_ = windows_[window_].second;
+		initialised_ = gyro_stopped_ = false;
+		dr_started_ = dr_done_ = first_pending_ = compared_all_ = false;
+		dr_points_ = 0;
+		track_.clear();
+		traj_.clear();
 	}
 
 	/** computeDriftReport: each truth pose inside the trajectory's span, the trajectory
@@ -323,7 +372,10 @@ class VariantStream
 	}
 
 	std::string name_;
-	double t0_, t_end_;
+	std::vector<std::pair<double, double>> windows_;
+	bool skip_short_ = false;
+	std::size_t window_ = 0, navigated_ = 0;
+	double t0_ = 0, t_end_ = 0;
 	HeadingOptions hopt_;
 	FigureAccumulator acc_;
 	std::unique_ptr<nav::StrapdownAttitude> att_;
@@ -433,6 +485,7 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 	// ---- pass 1: ends, path length, segments
 	{
 		StreamSegmenter seg(st.figures);
+		PowerSpanBuilder power;
 		IdealTimes ideal;
 		nav::TrajectoryPoint prev_truth;
 		OtherObservations others{labels, {}, {}, {}};
@@ -474,6 +527,7 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 			{
 				checkFogSample(h, x, scan.fog.n, has_power);
 				scan.fog.add(h.epoch_s + x.time_s);
+				power.add(h.epoch_s + x.time_s, !has_power || x.power != 0.0);  // FogSeries::gyroOn
 			}
 		}
 		catch (const FogIoError&)
@@ -486,8 +540,15 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 		}
 		scan.header = h;
 		seg.finish(scan.segments, scan.turns);
+		power.finish();
+		scan.powered = power.powered();
+		scan.gyro_off = power.stretches();
+		// what a gyro-off stretch touches is not judged (as evaluateDrive: GyroOff.h)
+		cutSegmentsAtGyroOff(scan.segments, &scan.turns, scan.gyro_off, st.figures);
 	}
 	if (scan.fog.n < 2) throw std::runtime_error(path + ": FOG '" + labels.fog + "' has fewer than 2 samples");
+	if (scan.powered.empty())
+		throw std::runtime_error(path + ": FOG '" + scan.header.sensor_label + "': the gyro is off throughout");
 
 	DriveEvaluation e;
 	e.input = path;
@@ -525,9 +586,21 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 	};
 	std::vector<std::unique_ptr<VariantStream>> vars;
 	std::vector<std::string> names;
+	const bool gyro_off = !scan.gyro_off.empty();
 	const auto addVariant = [&](const std::string& name, const Ends& g) {
-		const auto [t0, t_end] = overlap(g);
-		vars.push_back(std::make_unique<VariantStream>(name, t0, t_end, hopt, scan));
+		std::vector<std::pair<double, double>> windows;
+		if (!gyro_off) windows.push_back(overlap(g));
+		else
+		{
+			for (const PoweredSpan& span : scan.powered)
+				if (const auto w = navigationWindow(span, g.first, g.last, scan.odometry.first, scan.odometry.last,
+													scan.truth.first, scan.truth.last))
+					windows.push_back(*w);
+			if (windows.empty())
+				throw std::runtime_error("no powered span of the gyro overlaps the odometry and the truth long enough "
+										 "to navigate");
+		}
+		vars.push_back(std::make_unique<VariantStream>(name, std::move(windows), gyro_off, hopt, scan));
 		names.push_back(name);
 	};
 	addVariant("raw", scan.fog);
@@ -572,7 +645,7 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 		std::size_t tn = truth.end(), on = odo.end();
 		for (const auto& v : vars)
 		{
-			tn = std::min(tn, v->truthNeeded());
+			tn = std::min(tn, v->truthNeeded(truth));
 			on = std::min(on, v->odoNeeded());
 		}
 		truth.dropBefore(tn);
@@ -584,7 +657,11 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 		if (ideal_var) ideal_var->addGyro(t, o.rate_dph[2], ideal_times.n - 1);
 	};
 	others.on_odometry = [&](const OdoPose& p) { odo.q.push_back(p); };
-	others.on_truth = [&](const nav::TrajectoryPoint& p) { truth.q.push_back(p); };
+	TruthYawAt off_yaw(stretchQueryTimes(scan.gyro_off));
+	others.on_truth = [&](const nav::TrajectoryPoint& p) {
+		off_yaw.add(p.t_s, p.yaw_rad);
+		truth.q.push_back(p);
+	};
 	{
 		app::Progress progress("fog-drift: dead reckoning " + path + " (2/2)", st.quiet);
 		const FogLogReader* reading = nullptr;
@@ -645,6 +722,11 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 		std::fputs(app::outOfRangeWarning(c, zcal->extrapolation).c_str(), stdout);
 	}
 
+	off_yaw.finish();
+	setTruthHeadingChanges(scan.gyro_off, off_yaw);
+	e.gyro_off = scan.gyro_off;
+	e.powered_spans = scan.powered.size();
+	e.powered_spans_navigated = raw->windowsNavigated();
 	e.report.distance_m = scan.distance_m;
 	e.report.duration_s = scan.truth.last - scan.truth.first;
 	e.segments = scan.segments;

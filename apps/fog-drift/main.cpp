@@ -46,6 +46,15 @@ WHAT IT SHOWS
   Turns and straights are found on the truth's yaw rate (> 1 deg/s turn, < 0.2 deg/s for
   >= 30 s straight).
 
+GYRO OFF (power 0 rows: an empty rate, or any value, which is no measurement)
+  What the vehicle turned while the gyro was off cannot be known from the gyro. Each powered
+  span is navigated as a drive of its own: at its start (the turn-on) heading and position
+  are re-aligned from the truth, as at the start of the drive, and every figure above is
+  computed on the powered spans only (straights are cut at the stretches, turns overlapping
+  one are left out; "final" is the last span's). The stretches are listed with the truth's
+  heading change over each (what no gyro saw); JSON: gyro_off. The compensator restarts its
+  warm-up term at each turn-on.
+
 THREE-AXIS FOG (a triad: rate_x/y/z_dph, fog-sim --profile drive --triad)
   With a calibration of all three axes (or none), each gyro variant runs the 3-D strapdown
   (ThreeAxis: the full Earth rate removed, started from the true attitude); the heading
@@ -188,6 +197,7 @@ int main(int argc, char** argv)
 			std::printf("  %zu turns (%.0f deg turned), %zu straights (%.0f s) found on the truth\n", e.segments.turns.size(),
 						e.figures.begin()->second.turned_deg, e.segments.straights.size(),
 						e.figures.begin()->second.straight_time_s);
+			if (!e.gyro_off.empty()) std::fputs(drift::gyroOffText(e).c_str(), stdout);
 			std::printf("  %-12s %10s %10s %10s %14s %12s %12s\n", "gyro", "hdg RMS", "hdg max", "hdg final",
 						"drift betw.", "turn SF", "pos final");
 			std::printf("  %-12s %10s %10s %10s %14s %12s %12s\n", "", "[deg]", "[deg]", "[deg]", "turns [deg/h]", "[ppm]",

@@ -135,7 +135,7 @@ SimRunSummary writeDriveStreamed(const std::string& path, const sim::ChamberProf
 		if (rawlog)
 		{
 			ideal.time_s[0] = t;
-			ideal.rate_dph[2][0] = s.ideal_rate_dph;
+			ideal.rate_dph[2][0] = s.power_on ? s.ideal_rate_dph : NAN;  // off: no gyro sample
 			for (std::size_t i = 0; i < nt; i++) ideal.temp_C[i][0] = s.temp_C[i];
 			ideal.table_rate_dph[0] = r.table_rate_dph;
 			ideal.power[0] = power;
@@ -155,7 +155,7 @@ SimRunSummary writeDriveStreamed(const std::string& path, const sim::ChamberProf
 				pending.pop_front();
 			}
 			x.time_s = t;
-			x.rate_dph = {NAN, NAN, s.rate_dph};
+			x.rate_dph = {NAN, NAN, power != 0.0 ? s.rate_dph : NAN};  // off: no gyro sample (empty cell)
 			x.temp_C = s.temp_C;
 			x.table_rate_dph = r.table_rate_dph;
 			x.field_uT = NAN;

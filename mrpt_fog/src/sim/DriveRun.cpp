@@ -151,8 +151,10 @@ DriveOutput simulateDrive(const ChamberProfile& cabin, const FogDevice& device, 
 			f->power.push_back(s.power_on ? 1.0 : 0.0);
 			f->table_rate_dph.push_back(r.table_rate_dph);
 		}
-		fog.rate_dph[2].push_back(s.rate_dph);
-		ideal.rate_dph[2].push_back(s.ideal_rate_dph);
+		// A gyro that is off gives no sample: an empty rate (NaN) where power is 0, not a 0 deg/h
+		// a navigator would integrate as "no turn".
+		fog.rate_dph[2].push_back(s.power_on ? s.rate_dph : NAN);
+		ideal.rate_dph[2].push_back(s.power_on ? s.ideal_rate_dph : NAN);
 		odo_obs.push_back(odometryObservation(r));
 		truth_obs.push_back(truthObservation(r));
 		return true;

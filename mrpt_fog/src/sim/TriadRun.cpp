@@ -203,6 +203,10 @@ DriveOutput simulateTriadDrive(const ChamberProfile& cabin, const FogDevice& dev
 	}
 	for (FogSeries* f : {&out.fog, &out.fog_ideal})
 	{
+		// no gyro sample where the gyro is off (an empty rate, as simulateDrive writes)
+		for (std::size_t k = 0; k < f->size(); k++)
+			if (!f->gyroOn(k))
+				for (auto& r : f->rate_dph) r[k] = NAN;
 		f->has_axis = {true, true, true};
 		f->setMetadata("sim.scenario", "vehicle (three-axis FOG)");
 		recordTriadMetadata(*f, device, settings, GyroAxis::Z, true);
