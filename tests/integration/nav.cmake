@@ -66,6 +66,15 @@ if(TARGET fog-drift)
     LABELS "nav;integration")
   add_test(NAME nav.fog_drift.check COMMAND nav_test_drive check ${NAV_DRIVE_DIR}/drift.json)
   set_tests_properties(nav.fog_drift.check PROPERTIES FIXTURES_REQUIRED nav_drift_json LABELS "nav;integration")
+  # The same drive with the gyro off for 250 s (power 0 rows), and a fog-sim drive with a
+  # power-off cabin: the stretch reported, each powered span re-aligned from the truth, the
+  # figures in closed form, streamed == --in-memory (tests/nav/integration/gyro_off_check.sh).
+  if(TARGET fog-sim)
+    add_test(NAME nav.fog_drift.gyro_off
+      COMMAND bash ${FOG_SOURCE_DIR}/tests/nav/integration/gyro_off_check.sh $<TARGET_FILE:nav_test_drive>
+        $<TARGET_FILE:fog-drift> $<TARGET_FILE:fog-sim> ${CMAKE_CURRENT_BINARY_DIR}/nav_gyro_off)
+    set_tests_properties(nav.fog_drift.gyro_off PROPERTIES LABELS "nav;integration" TIMEOUT 300)
+  endif()
   # fog-drift's --odometry-out (the compensated trajectory) read by pf-localization: the circle.
   set(NAV_PF_RAWLOG ${NAV_DRIVE_DIR}/odometry.rawlog)
   set(NAV_PF_LOGDIR ${NAV_DRIVE_DIR}/LOG_LOCALIZATION)
