@@ -116,6 +116,9 @@ struct PreparedRun
 	 * out of the fit. */
 	double y(const FogSeries& c, std::size_t j) const
 	{
+		// gyro off (power 0): no gyro sample, whatever the cell holds (fog-sim's chamber writes 0 deg/h
+		// there), so that the raw figures do not count it either (issue 13 item 1)
+		if (!c.power.empty() && c.power[j] == 0.0) return std::numeric_limits<double>::quiet_NaN();
 		const double table = c.table_rate_dph.empty() ? 0.0 : c.table_rate_dph[j];
 		if (exclude_table && table != 0.0) return std::numeric_limits<double>::quiet_NaN();
 		return c.rate_dph[axis][j] - table;
@@ -1489,10 +1492,10 @@ FitFigures evaluateCalibration(const Calibration& cal, const FogRun& run, const 
 		cal, run, [&](const FogSeries& c, std::size_t, std::size_t j0, std::size_t m, const Compensator::Output* out) {
 			for (std::size_t j = j0; j < j0 + m; j++)
 			{
-				double raw = c.rate_dph[axis][j];
+				const bool on = c.power.empty() || c.power[j] != 0.0;  // off: no gyro sample, raw or compensated
+				double raw = on ? c.rate_dph[axis][j] : std::numeric_limits<double>::quiet_NaN();
 				if (!c.table_rate_dph.empty()) raw -= c.table_rate_dph[j];
-				const double comp = (c.power.empty() || c.power[j] != 0.0) ? raw - out[j - j0].bias_dph
-																		  : std::numeric_limits<double>::quiet_NaN();
+				const double comp = on ? raw - out[j - j0].bias_dph : std::numeric_limits<double>::quiet_NaN();
 				const double row[3] = {c.time_s[j], raw, comp};
 				rows.push(row);
 			}
