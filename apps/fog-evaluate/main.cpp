@@ -97,6 +97,15 @@ int main(int argc, char** argv)
 			if (!c.power.empty() && c.power[j] == 0.0) rate = NAN;
 			return rate;
 		};
+		// Gyro-off rows and turn-on events (0 -> 1 power steps), counted in the raw pass (issue 13).
+		std::size_t gyro_off_rows = 0, turn_ons = 0;
+		bool prev_on = true;  // sample 0 is never a turn-on
+		const auto notePower = [&](const FogSeries& c, std::size_t j) {
+			const bool on = c.power.empty() || c.power[j] != 0.0;
+			if (!on) gyro_off_rows++;
+			else if (!prev_on) turn_ons++;
+			prev_on = on;
+		};
 		if (with_cal)
 		{
 			GyroAxis cal_axis = GyroAxis::Z;
@@ -118,6 +127,7 @@ int main(int argc, char** argv)
 				for (std::size_t j = 0; j < c.size(); j++)
 				{
 					const double* r = rd.next();
+					notePower(c, j);
 					const double row[3] = {r[0], biasAt(c, j, c.rate_dph[a][j]), r[2]};
 					with_raw.push(row);
 				}
@@ -130,6 +140,7 @@ int main(int argc, char** argv)
 			run.forEachChunk([&](const FogSeries& c, std::size_t) {
 				for (std::size_t j = 0; j < c.size(); j++)
 				{
+					notePower(c, j);
 					const double row[2] = {c.time_s[j], biasAt(c, j, c.rate_dph[a][j])};
 					rows.push(row);
 				}
@@ -177,6 +188,10 @@ int main(int argc, char** argv)
 			std::fputs(app::outOfRangeWarning(k, comp_series->extrapolation).c_str(), stdout);
 		}
 		if (comp_series) std::fputs(app::screeningText(screening, !no_screen.getValue()).c_str(), stdout);
+		if (gyro_off_rows)
+			std::printf("  gyro off: %zu rows (no gyro sample: left out of every figure, thermistors kept); turn-on "
+						"events: %zu\n",
+						gyro_off_rows, turn_ons);
 		std::printf("  (Earth rate is not removed: it is in the mean only; stability, range and Allan terms "
 					"measure spread)\n");
 
@@ -204,6 +219,8 @@ int main(int argc, char** argv)
 			j["tau_s"] = tau_s;
 			j["stability_definition"] = "std (N-1) of non-overlapping tau_s averages of gyro rate minus table rate";
 			j["earth_rate"] = "not removed: a constant, it moves mean_dph only";
+			j["gyro_off_rows"] = static_cast<unsigned long>(gyro_off_rows);
+			j["turn_on_events"] = static_cast<unsigned long>(turn_ons);
 			j["raw"] = toJson(raw);
 			if (comp)
 			{

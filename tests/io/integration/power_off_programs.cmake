@@ -64,6 +64,8 @@ endforeach()
 run(fog-compensate -i ${in} --cal ${WORK}/cal.yaml -o ${WORK}/comp.rawlog)
 
 run(fog-evaluate -i ${in} --cal ${WORK}/cal.yaml --json ${WORK}/ev.json)
+expect_json(${WORK}/ev.json gyro_off_rows 225)
+expect_json(${WORK}/ev.json turn_on_events 1)
 file(READ ${WORK}/ev.json ev)
 string(JSON stab GET "${ev}" compensated stability_dph)
 if(NOT stab MATCHES "^[0-9]")
