@@ -16,6 +16,8 @@
 #include <gtest/gtest.h>
 #include <mrpt_fog/discrepancy/CalibrationAugment.h>
 #include <mrpt_fog/discrepancy/DiscrepancyAnalysis.h>
+#include <mrpt_fog/discrepancy/EffectSelector.h>
+#include <mrpt_fog/discrepancy/RunGapFigures.h>
 
 #include <algorithm>
 #include <cmath>

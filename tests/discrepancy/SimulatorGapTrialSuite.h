@@ -25,6 +25,11 @@
  * effects, noise-free, i.e. the pure noise floor); null: false naming = anything named.
  */
 #include <mrpt_fog/discrepancy/SimulatorGap.h>
+#include <mrpt_fog/discrepancy/EffectSelector.h>
+#include <mrpt_fog/discrepancy/HeatSourceCandidate.h>
+#include <mrpt_fog/discrepancy/RunGapFigures.h>
+#include <mrpt_fog/discrepancy/SimulatorCalibration.h>
+#include <mrpt_fog/discrepancy/ThermalFit.h>
 #include <mrpt_fog/sim/ChamberRun.h>
 
 #include <algorithm>

@@ -1,6 +1,8 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <gtest/gtest.h>
 #include <mrpt_fog/report/DiscrepancyOutput.h>
+#include <mrpt_fog/discrepancy/EffectSelector.h>
+#include <mrpt_fog/discrepancy/RunGapFigures.h>
 #include "support/SyntheticChamberRun.h"
 
 #include <cmath>

@@ -1,5 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/CalibrationAugment.h>
+#include <mrpt_fog/discrepancy/BaseModelDesign.h>
+#include <mrpt_fog/discrepancy/EffectSelector.h>
 #include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/ScaleFactorFit.h>

@@ -425,6 +425,8 @@ const CandidateEffect& candidateById(const std::string& id)
 	throw std::invalid_argument("unknown candidate effect id '" + id + "'");
 }
 
+const std::string& candidateDescription(const std::string& id) { return candidateById(id).description; }
+
 std::string separationAdvice(const std::string& a, const std::string& b)
 {
 	auto is = [&](const char* x, const char* y)

@@ -1,5 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/DiscrepancyAnalysis.h>
+#include <mrpt_fog/discrepancy/EffectSelector.h>
+#include <mrpt_fog/discrepancy/RunGapFigures.h>
 #include <mrpt_fog/metrics/BiasMetrics.h>
 
 #include <algorithm>

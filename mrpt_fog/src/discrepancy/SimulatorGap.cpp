@@ -1,5 +1,10 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/SimulatorGap.h>
+#include <mrpt_fog/discrepancy/EffectSelector.h>
+#include <mrpt_fog/discrepancy/HeatSourceCandidate.h>
+#include <mrpt_fog/discrepancy/RunGapFigures.h>
+#include <mrpt_fog/discrepancy/SimulatorCalibration.h>
+#include <mrpt_fog/discrepancy/ThermalFit.h>
 
 #include <algorithm>
 #include <cmath>

@@ -190,7 +190,7 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 	os << "Verdict: " << rep.verdict() << "\n";
 	for (const auto& ne : sel.named)
 	{
-		os << "  " << ne.id << ": " << candidateById(ne.id).description << "\n";
+		os << "  " << ne.id << ": " << candidateDescription(ne.id) << "\n";
 		os << "    coefficient " << formatValue("%.4g", ne.coefficient) << " " << ne.coefficient_unit << " (95 % CI "
 		   << formatValue("%.4g", ne.ci_low) << " .. " << formatValue("%.4g", ne.ci_high) << ")";
 		if (!ne.theta_name.empty()) os << ", " << ne.theta_name << " = " << formatValue("%g", ne.theta);

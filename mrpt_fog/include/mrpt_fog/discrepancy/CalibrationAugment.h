@@ -34,7 +34,8 @@
  */
 
 #include <mrpt_fog/common/JsonWriter.h>
-#include <mrpt_fog/discrepancy/EffectSelector.h>
+#include <mrpt_fog/discrepancy/DiscrepancyOptions.h>
+#include <mrpt_fog/discrepancy/SelectionResult.h>
 #include <mrpt_fog/model/Calibration.h>
 
 #include <string>

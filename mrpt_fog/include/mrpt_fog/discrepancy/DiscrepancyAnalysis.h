@@ -10,38 +10,16 @@
  * Returns data only; fog-discrepancy shows it (report/DiscrepancyOutput.h).
  */
 
-#include <mrpt_fog/discrepancy/EffectSelector.h>
-#include <mrpt_fog/discrepancy/RunSegmenter.h>
+#include <mrpt_fog/discrepancy/DiscrepancyOptions.h>
+#include <mrpt_fog/discrepancy/Segments.h>
+#include <mrpt_fog/discrepancy/SelectionResult.h>
+#include <mrpt_fog/obs/FogSeries.h>
 
 #include <string>
 #include <vector>
 
 namespace mrpt_fog::discrepancy
 {
-struct DiscrepancyOptions
-{
-	SelectionOptions selection;
-	SegmentationOptions segmentation;
-	RunSignalsOptions signals;
-	double tau_s = 100.0;  //!< averaging time of the stability / range figures [s]
-	/** A preset's calibration: scale factor versus temperature fitted from table segments (as
-	 * fog-calibrate) or not (--scale-factor off). Ignored for a calibration YAML. */
-	ScaleFactorFitting scale_factor = ScaleFactorFitting::Auto;
-	// Information needed before anything is named ("cannot tell" otherwise):
-	double min_usable_s = 3600.0;  //!< usable (powered, thermistors known) time on the analysed run [s]
-	double min_temp_span_C = 3.0;  //!< span (1st..99th percentile) of the mean temperature [degC]
-	double min_span_quanta = 30.0;  //!< that span in thermistor quanta (coarse quantisation)
-	double min_wander_spans = 5.0;  //!< run length in correlation times of the residual's AR(1) part
-	double flag_rms_ratio = 1.5;  //!< a segment is flagged when its RMS >= this x the run's
-	/** With a confirmation run, an effect is named only when, with its coefficient from the
-	 * analysed run, it explains on the other run at least this x the RMS left there (the drop of
-	 * the residual's mean square >= this^2 x what remains): the smallest effect worth naming,
-	 * half the weakest effect-to-noise ratio the workflow is specified for, which is 1.
-	 * Smaller held-out parts may be real, but they are what slow bias wander, or the part of a
-	 * term a noisy rate estimate misses, leave behind. */
-	double min_held_out_effect_ratio = 0.5;
-};
-
 /** Residual figures of one run [deg/h]. Stability/range are NaN when the run holds fewer than
  * two tau-s windows. */
 struct GapFigures
@@ -116,15 +94,5 @@ struct DiscrepancyReport
  * std::invalid_argument. `model` is a preset or a calibration YAML (BaseModelDesign.h). */
 DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const std::vector<std::string>& run_labels,
 									 const std::string& model, const DiscrepancyOptions& opt = {});
-
-/** Residual figures of one run over rows. */
-GapFigures gapFigures(const std::vector<double>& time_s, const Eigen::VectorXd& residual_dph,
-					  const std::vector<unsigned char>& rows, double tau_s);
-
-/** Gap figures of one run from two residuals (before / after) over rows, segments ranked by the
- * energy before (what analyseDiscrepancy reports; also used by the simulator path). */
-RunGap runGapFromResiduals(const std::string& label, const RunSignals& sig, const std::vector<Segment>& segments,
-						   const Eigen::VectorXd& before_dph, const Eigen::VectorXd& after_dph,
-						   const std::vector<unsigned char>& rows, const DiscrepancyOptions& opt = {});
 
 }  // namespace mrpt_fog::discrepancy

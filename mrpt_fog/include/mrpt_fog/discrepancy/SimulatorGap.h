@@ -29,9 +29,9 @@
  */
 
 #include <mrpt_fog/discrepancy/DiscrepancyAnalysis.h>
-#include <mrpt_fog/discrepancy/HeatSourceCandidate.h>
-#include <mrpt_fog/discrepancy/SimulatorCalibration.h>
-#include <mrpt_fog/discrepancy/ThermalFit.h>
+#include <mrpt_fog/discrepancy/SimulatorConfig.h>
+#include <mrpt_fog/discrepancy/TemperatureChannel.h>
+#include <mrpt_fog/obs/FogSeries.h>
 
 #include <string>
 #include <utility>

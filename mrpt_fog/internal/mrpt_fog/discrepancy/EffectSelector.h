@@ -32,6 +32,8 @@
 
 #include <mrpt_fog/discrepancy/BaseModelDesign.h>
 #include <mrpt_fog/discrepancy/CandidateEffect.h>
+#include <mrpt_fog/discrepancy/DiscrepancyOptions.h>
+#include <mrpt_fog/discrepancy/SelectionResult.h>
 #include <mrpt_fog/discrepancy/WhitenedRegression.h>
 
 #include <limits>
@@ -40,125 +42,8 @@
 
 namespace mrpt_fog::discrepancy
 {
-struct SelectionOptions
-{
-	/** Family-wise significance level (Holm over candidates). 0.005, not 0.01: with the noise
-	 * model estimated from the same run the null chi-squares come out ~1.1-1.2x nominal, and at
-	 * 0.01 the false-naming rate on 200 null trials was 2.5 % (target <= 2 %). */
-	double alpha = 0.005;
-	double alias_alpha = 0.01;  //!< conditional-test level for "distinguishable"
-	/** Shape reproduction (whitened, model projected out; see step 5) at or above which a
-	 * candidate is an alias of the named one whatever the significance. */
-	double alias_collinearity = 0.95;
-	int max_effects = 3;
-	int max_ar_order = 3;
-	double span_tolerance = 1e-3;  //!< relative projection residual below which "spanned"
-	double outlier_sigma = 6.0;
-	int lrv_max_lag = 30;  //!< Bartlett window of the long-run variance factor [samples]
-	/** Candidate ids to consider (empty = every bias-channel candidate). */
-	std::vector<std::string> candidates;
-};
-
-/** One added effect term (id + nonlinear parameter). */
-struct EffectTerm
-{
-	std::string id;
-	double theta = 0.0;
-};
-
-/** Base model plus named effect terms: what "add the effect and refit" means. */
-struct AugmentedModel
-{
-	std::vector<EffectTerm> effects;
-	/** Base-column coefficients used to build the thermistor_lag column (size = base columns). */
-	Eigen::VectorXd lag_base_coef;
-	/** Full design on a run: base columns then each effect's columns. */
-	Eigen::MatrixXd design(const BaseDesign& base, const RunSignals& sig) const;
-};
-
 /** Context for candidate columns given base-column coefficients. */
 CandidateContext makeCandidateContext(const RunSignals& sig, const BaseDesign& base, const Eigen::VectorXd& base_coef);
-
-/** What became of a candidate in a selection round. */
-enum class CandidateStatus
-{
-	Tested,  //!< fitted and judged (chi2, p, BIC below)
-	Spanned,  //!< its columns lie in the model's span: nothing to add
-	Untestable  //!< the run lacks what excites it (note says what)
-};
-/** "tested", "spanned", "untestable" (the JSON / text spelling). */
-const char* toString(CandidateStatus s);
-
-/** Status of one candidate in one selection round. */
-struct CandidateTest
-{
-	std::string id;
-	CandidateStatus status = CandidateStatus::Tested;
-	std::string note;  //!< why untestable / by what explained
-	double theta = 0.0;
-	double chi2 = 0.0;
-	int dof = 0;
-	double p = 1.0;
-	double p_adjusted = 1.0;
-	double delta_bic = 0.0;
-	bool significant = false;
-	double collinearity_with_best = 0.0;  //!< shape reproduction of the named one (this round)
-	/** In the round where nothing more was named: the smallest contribution of this candidate
-	 * (RMS beyond what the model explains, deg/h, in its most favourable direction) whose
-	 * expected whitened chi-square reaches the naming threshold (Bonferroni level over the
-	 * candidates and the theta grid, and the BIC term), under the model's fitted noise (AR +
-	 * long-run factor). Below it the run cannot tell the effect from the noise. NaN elsewhere. */
-	double detectable_rms_dph = std::numeric_limits<double>::quiet_NaN();
-};
-
-struct NamedEffect
-{
-	std::string id;
-	std::vector<std::string> alias_group;  //!< the id first, then look-alikes
-	/** Per alias_group member: its nonlinear parameter on the analysed run, and the sign of its
-	 * coefficient there when it has one column (0 otherwise); for confirming the group. */
-	std::vector<double> alias_theta;
-	std::vector<int> alias_sign;
-	std::vector<std::string> separating_profiles;  //!< one per look-alike
-	double confidence = 0.0;  //!< BIC weight of this id
-	double group_confidence = 0.0;  //!< BIC weight of the alias group
-	double coefficient = 0.0;
-	double ci_low = 0.0, ci_high = 0.0;  //!< 95 %
-	std::string coefficient_unit;
-	std::string theta_name;
-	double theta = 0.0;
-	double chi2 = 0.0, p_adjusted = 1.0, delta_bic = 0.0;
-	// confirmation run
-	bool confirm_tested = false;
-	bool confirmed = false;
-	double confirm_p = 1.0;
-	double confirm_coefficient = 0.0;
-	/** The group member that confirmed: the id itself, or a look-alike when the named id did
-	 * not confirm but a member of its alias group did (the data cannot tell them apart, so the
-	 * group is what is named); empty when not confirmed. */
-	std::string confirmed_by;
-};
-
-struct SelectionResult
-{
-	std::vector<NamedEffect> named;
-	/** Named on the analysed run but not confirmed on the confirmation run (keepConfirmedEffects):
-	 * reported, not added to the model. */
-	std::vector<NamedEffect> not_confirmed;
-	std::vector<std::vector<CandidateTest>> rounds;
-	AugmentedModel model;
-	std::vector<unsigned char> fit_rows;  //!< usable and not an outlier
-	std::size_t outliers = 0;
-	ArNoiseModel ar;  //!< noise model of the first round
-	/** Noise model of the model with every named effect (the last named effect's GLS fit); empty
-	 * when nothing was named. What is left after the named effects is what may wander. */
-	ArNoiseModel ar_after;
-	double lrv_factor = 1.0;
-	Eigen::VectorXd coef_before;  //!< base fit
-	Eigen::VectorXd coef_after;  //!< augmented fit
-	Eigen::VectorXd residual_before;  //!< all samples (meaningful where fit_rows)
-	Eigen::VectorXd residual_after;
-};
 
 /** Runs the selection on one run. Throws std::invalid_argument when fewer usable samples than
  * 10 x the number of base columns. */

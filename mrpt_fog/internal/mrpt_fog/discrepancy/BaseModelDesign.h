@@ -27,6 +27,7 @@
  * power of it (table rate x 1e-6 x z^k, its normalisation, clamped as the compensator does).
  */
 
+#include <mrpt_fog/discrepancy/DiscrepancyOptions.h>
 #include <mrpt_fog/discrepancy/RunSignals.h>
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/model/ThermalFeatureSet.h>
@@ -60,14 +61,6 @@ enum class FitScope : unsigned char
 {
 	Full = 0,  //!< what fog-calibrate writes (fallback models, selection-stability refits)
 	MainModelOnly = 1  //!< the same main model (and scale factor) without the fallbacks and the stability refits
-};
-
-/** Whether a preset's calibration fits the scale factor versus temperature from the run's
- * table segments (fog-calibrate --scale-factor auto|off). */
-enum class ScaleFactorFitting : unsigned char
-{
-	Auto = 0,  //!< as fog-calibrate by default: table samples serve the scale-factor fit
-	Off = 1  //!< fog-calibrate --scale-factor off: a bias-only calibration (table rate subtracted)
 };
 
 /** The calibration under test: a calibration YAML (*.yaml, *.yml) loaded as is, or the preset

@@ -13,6 +13,8 @@
  * that inflates the test variance.
  */
 
+#include <mrpt_fog/discrepancy/SelectionResult.h>
+
 #include <Eigen/Dense>
 #include <cstddef>
 #include <vector>
@@ -31,15 +33,6 @@ struct LsFit
 	Eigen::MatrixXd cov_unscaled;
 };
 LsFit leastSquares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y, bool wantCov = false);
-
-/** ARMA(p,1) noise model: e_k = sum_j phi_j e_{k-j} + a_k - theta a_{k-1}. */
-struct ArNoiseModel
-{
-	std::vector<double> phi;
-	double theta = 0.0;  //!< MA(1) coefficient in [0, 1)
-	double innovation_sd = 0.0;
-	int order() const { return static_cast<int>(phi.size()); }
-};
 
 /** Fits ARMA(p,1), p = 0..max_order and theta on a grid chosen by BIC, to a residual series (values at samples
  * whose `ok` is 0 are ignored; lags never cross a block edge). */

@@ -13,6 +13,7 @@
  * than `max_dropout_bridge_s`; longer dropouts make those samples unusable.
  */
 
+#include <mrpt_fog/discrepancy/DiscrepancyOptions.h>
 #include <mrpt_fog/obs/FogSeries.h>
 
 #include <cstddef>
@@ -21,14 +22,6 @@
 
 namespace mrpt_fog::discrepancy
 {
-struct RunSignalsOptions
-{
-	/** Width of the local linear fit used for temperature derivatives [s]. */
-	double derivative_window_s = 120.0;
-	/** Longest thermistor dropout bridged by interpolation [s]. */
-	double max_dropout_bridge_s = 300.0;
-};
-
 struct RunSignals
 {
 	std::vector<double> time_s;

@@ -20,6 +20,7 @@
  * Needs a power change (power cycle) in the run: a constant power is absorbed by the offsets.
  */
 
+#include <mrpt_fog/discrepancy/TemperatureChannel.h>
 #include <mrpt_fog/obs/FogSeries.h>
 
 #include <string>
@@ -27,36 +28,6 @@
 
 namespace mrpt_fog::discrepancy
 {
-struct HeatSourceOptions
-{
-	double alpha = 0.005;  //!< significance level after the Sidak correction over the grid
-	std::vector<double> tau_grid_s = {120, 300, 600, 1200, 2400, 4800};
-	int lrv_max_lag = 30;
-};
-
-struct ThermistorHeatResponse
-{
-	ThermistorInfo info;
-	double amplitude_C = 0;  //!< residual at full power relative to unpowered [degC]
-	double se_C = 0;  //!< its standard error (long-run corrected)
-};
-
-struct HeatSourceResult
-{
-	bool tested = false;
-	std::string untestable_reason;  //!< e.g. "the run has no power change"
-	bool named = false;  //!< significant, positive and same sign on all thermistors
-	bool significant = false;  //!< the common-mode test alone
-	bool same_sign = false;
-	double tau_s = 0;
-	double amplitude_C = 0, ci_low_C = 0, ci_high_C = 0;  //!< common mode, 95 %
-	double chi2 = 0, p = 1, p_adjusted = 1, delta_bic = 0, confidence = 0;
-	double lrv_factor = 1;
-	std::vector<ThermistorHeatResponse> thermistors;
-	std::string nearest;  //!< thermistor with the largest amplitude
-	std::string sentence;  //!< one readable sentence
-};
-
 /** The regressor h_tau at the given times (see file comment). */
 std::vector<double> powerResponse(const std::vector<double>& time_s, const std::vector<double>& power, double tau_s);
 
@@ -66,14 +37,7 @@ HeatSourceResult testHeatSource(const std::vector<double>& time_s, const std::ve
 								const std::vector<std::vector<double>>& residual_C,
 								const std::vector<ThermistorInfo>& thermistors, const HeatSourceOptions& opt = {});
 
-/** Confirmation on another run with tau fixed: p-value of the common-mode amplitude (one
- * test, no grid) and whether it has the same (positive) sign. */
-struct HeatSourceConfirm
-{
-	bool tested = false;
-	bool confirmed = false;
-	double p = 1, amplitude_C = 0;
-};
+/** Confirmation on another run with tau fixed (HeatSourceConfirm, TemperatureChannel.h). */
 HeatSourceConfirm confirmHeatSource(const std::vector<double>& time_s, const std::vector<double>& power,
 									const std::vector<std::vector<double>>& residual_C, double tau_s, double alpha,
 									int lrv_max_lag = 30);

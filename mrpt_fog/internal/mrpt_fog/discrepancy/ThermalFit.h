@@ -25,6 +25,7 @@
  * The larger explained share wins when it reaches 0.5.
  */
 
+#include <mrpt_fog/discrepancy/TemperatureChannel.h>
 #include <mrpt_fog/obs/FogSeries.h>
 
 #include <string>
@@ -32,38 +33,6 @@
 
 namespace mrpt_fog::discrepancy
 {
-enum class ThermalFix
-{
-	None,  //!< the fit is good (below the threshold)
-	Lag,
-	HeatSource,
-	MissingNode
-};
-const char* toString(ThermalFix f);
-
-struct ThermalFitOptions
-{
-	double misfit_rms_C = 0.1;  //!< see the file comment
-	double min_explained_share = 0.5;
-};
-
-struct ThermalFit
-{
-	double rms_C = 0;  //!< all finite readings
-	std::vector<std::string> names;
-	std::vector<double> rms_per_C;  //!< per run thermistor
-	std::string worst_thermistor;
-	double worst_rms_C = 0;
-	std::string max_abs_thermistor;  //!< where the largest |residual| is
-	double max_abs_C = 0, max_abs_time_s = 0;
-	double threshold_C = 0.1;
-	bool misfit = false;
-	ThermalFix fix = ThermalFix::None;
-	double lag_share = 0, lag_tau_s = 0;  //!< variance share explained by -tau dT/dt, and tau
-	double power_share = 0, power_tau_s = 0;  //!< by the lagged power, and its tau
-	std::string sentence;  //!< one readable paragraph
-};
-
 /** Judges the thermistor residual (measured - simulated, per run thermistor, NaN where unknown)
  * of `run`. Never throws on NaN; an empty residual gives rms 0 and no misfit. */
 ThermalFit assessThermalFit(const FogSeries& run, const std::vector<std::vector<double>>& residual_C,
