@@ -122,7 +122,11 @@ class VariantStream
 	/** Sample k of the variant's gyro: absolute time [s], vertical rate [deg/h]. */
 	void addGyro(double t, double rate_dph, std::size_t k)
 	{
-		if (!gyro_stopped_ || window_ + 1 < windows_.size()) gyro_.push_back({t, rate_dph, k});
+		// a sample before the window being navigated (or, once it has stopped, before the next one) is
+		// never integrated: not held (a long gyro-off stretch does not fill the queue)
+		if (t < t0_) return;
+		if (gyro_stopped_ && (window_ + 1 >= windows_.size() || t < windows_[window_ + 1].first)) return;
+		gyro_.push_back({t, rate_dph, k});
 	}
 	void gyroDone() { gyro_done_ = true; }
 
@@ -160,7 +164,16 @@ class VariantStream
 		while (i + 1 < truth.end() && truth.at(i + 1).t_s <= t0_) i++;
 		return i;
 	}
-	std::size_t odoNeeded() const { return next_odo_ > 0 ? next_odo_ - 1 : 0; }
+	std::size_t odoNeeded(const IndexedQueue<OdoPose>& odo) const
+	{
+		if (window_ > 0 && !dr_started_)  // a later window starts at the first odometry at or after its start
+		{
+			std::size_t i = std::max(next_odo_, odo.base);
+			while (i < odo.end() && odo.at(i).t_s < t0_) i++;
+			return i;
+		}
+		return next_odo_ > 0 ? next_odo_ - 1 : 0;
+	}
 
 	void finish(double distance_m, nav::DriftSeries& s, nav::HeadingFigures& f)
 	{
@@ -646,7 +659,7 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 		for (const auto& v : vars)
 		{
 			tn = std::min(tn, v->truthNeeded(truth));
-			on = std::min(on, v->odoNeeded());
+			on = std::min(on, v->odoNeeded(odo));
 		}
 		truth.dropBefore(tn);
 		odo.dropBefore(on);
