@@ -81,7 +81,10 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<std::string> cabin("", "cabin",
 										   "cabin profile of the vehicle scenario (--profile drive): a preset "
 										   "(drive_cabin: winter cold start, the default; drive_cabin_mild; "
-										   "drive_cabin_hot) or a profile YAML file",
+										   "drive_cabin_hot) or a profile YAML file; a {type: power, on: false} "
+										   "segment switches the gyro off until {type: power, on: true}: those rows "
+										   "have power 0 and no rate (an empty cell; fog-drift navigates each "
+										   "powered span alone, docs/nav.md)",
 										   false, "drive_cabin", "NAME|FILE.yaml", cmd);
 		TCLAP::SwitchArg triad("", "triad",
 							   "a three-axis FOG (x, y, z coils sharing one thermal network and the thermistors; per-axis "
