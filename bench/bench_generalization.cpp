@@ -27,8 +27,13 @@
  * --causal-order 1|2 sets the causal estimator's order (default 2; 1 = the delayed slope used
  * before issue 11's diagnosis); --also-order1 adds every preset again with the order-1 estimator
  * (label " o1") and --also-window S with a rate window of S seconds (label " wS"), on the same
- * simulated runs. Environment: FOG_BENCH_CAL2=PROFILE joins that evaluation profile's run to the
- * calibration (two runs) and leaves it out of the evaluation; FOG_BENCH_SCORING / _GAIN / _COMMON /
+ * simulated runs.
+ * Calibration on more than the seed run: --cal2 PROFILE adds a second calibration run (two runs:
+ * the selection leaves out whole runs): cal_sine (not an evaluation profile: every profile stays
+ * evaluated), or an evaluation profile's name (its run joins the calibration and that profile
+ * is not evaluated; FOG_BENCH_CAL2=PROFILE is the same); --warmup-cal adds the turn-on run
+ * cal_turn_on (10 C ambient) and fits the warm-up term on it (fitWarmup, as fog-calibrate
+ * --warmup-run; fog-sim devices). Environment: FOG_BENCH_SCORING / _GAIN / _COMMON /
  * _BINS / _PARSIMONY / _VARIANTS add selection variants (GeneralizationBench.cpp). */
 #include "DeviceEnsemble.h"
 #include "GeneralizationBench.h"
@@ -52,6 +57,9 @@ int main(int argc, char** argv)
 	bool savgol = false;
 	int causal_order = 0;
 	std::vector<double> also_windows_s;
+	std::string second_calibration;
+	if (const char* name = std::getenv("FOG_BENCH_CAL2")) second_calibration = name;  // the session-7 spelling of --cal2
+	bool warmup_calibration = false;
 	for (int i = 1; i < argc; i++)
 	{
 		const std::string a = argv[i];
@@ -81,6 +89,8 @@ int main(int argc, char** argv)
 			effects = mrpt_fog::sim::effectsFromSelection(sel);
 		}
 		else if (a == "--ideal-thermistors") ideal = true;
+		else if (a == "--cal2" && i + 1 < argc) second_calibration = argv[++i];
+		else if (a == "--warmup-cal") warmup_calibration = true;
 		else if (a == "--oracle") oracle = true;
 		else if (a == "--rate-window" && i + 1 < argc) rate_window_s = std::atof(argv[++i]);
 		else if (a == "--savgol") savgol = true;
@@ -115,8 +125,10 @@ int main(int argc, char** argv)
 		std::fprintf(stderr, "bench_generalization: --seeds must be tuning, heldout, final, fresh, all or seed numbers (17,18)\n");
 		return 2;
 	}
-	for (auto s : seeds) list.push_back({fogtest::Generator::FogSim, s, cap, effects, ideal});
-	for (int s = 1; s <= sector_coil; s++) list.push_back({fogtest::Generator::SectorCoil, static_cast<std::uint64_t>(s), cap});
+	for (auto s : seeds) list.push_back({fogtest::Generator::FogSim, s, cap, effects, ideal, second_calibration, warmup_calibration});
+	for (int s = 1; s <= sector_coil; s++)
+		list.push_back({fogtest::Generator::SectorCoil, static_cast<std::uint64_t>(s), cap, mrpt_fog::sim::defaultEffects(),
+						false, second_calibration, false});
 	auto presets = fogtest::benchPresets();
 	for (const auto& e : extra)
 	{

@@ -471,3 +471,59 @@ TEST(Calibration, SignificantStepsFindTheQuadraticOnlyWhenItIsThere)
 	EXPECT_GE(maxTempPower(q), 2);
 	EXPECT_EQ(maxTempPower(l), 1);
 }
+
+namespace
+{
+/** One thermistor reading the chamber exactly, 1 s samples, bias 0.001 T^2 [deg/h] (no noise):
+ * T0 -> T0 + 20 C at 1 C/min, 20 min soak, back to T0 at 1 C/min, 20 min soak (heating, soak,
+ * cooling, soak: four thermal regimes). */
+FogSeries quadraticBiasRun(double T0_C)
+{
+	FogSeries s;
+	s.sensor_label = "FOG";
+	s.thermistors = {{"Ti1", CoilSide::Inner, 0}};
+	s.has_axis = {{false, false, true}};
+	s.temp_C.assign(1, {});
+	for (int k = 0; k < 4800; k++)
+	{
+		const double t = k;
+		const double T = t < 1200 ? T0_C + t / 60.0 : t < 2400 ? T0_C + 20 : t < 3600 ? T0_C + 20 - (t - 2400) / 60.0 : T0_C;
+		s.time_s.push_back(t);
+		s.temp_C[0].push_back(T);
+		s.rate_dph[2].push_back(0.001 * T * T);
+	}
+	return s;
+}
+}  // namespace
+
+TEST(Calibration, RegimeFoldsWithinRunsTrainOnTheOtherRuns)
+{
+	// A line fitted to 0.001 T^2 on 0..20 C alone and extrapolated to 20..40 C (and the reverse)
+	// is what leave-one-run-out folds score; folds cut within each run train every fold on the
+	// other run too (the whole 0..40 C). Truth: plain least squares of a line (10 lines of Python
+	// on the same samples) with the folds the regimes give, each run cut at 1270, 2428 and
+	// 3670 s (a regime ends when the 60 s slope of the readings crosses 0.2 C/min):
+	// leave-one-run-out RMS 0.32897 deg/h, regime folds within the runs 0.23046, in-sample 0.16799.
+	const std::vector<FogSeries> runs{quadraticBiasRun(0), quadraticBiasRun(20)};
+	FitOptions o;
+	o.selection = "none";
+	const Calibration by_run = fitCalibration(runs, "terms:T(Ti1)^1", o);
+	o.run_folds = RunFolds::RegimesWithinRuns;
+	const Calibration within = fitCalibration(runs, "terms:T(Ti1)^1", o);
+	EXPECT_EQ(by_run.held_out.label, "held-out (leave-one-run-out, 2 runs)");
+	EXPECT_EQ(within.held_out.label, "held-out (leave-regime-out within 2 runs, 8 folds)");
+	EXPECT_NEAR(by_run.held_out.rms_dph, 0.32897, 1e-4);
+	EXPECT_NEAR(within.held_out.rms_dph, 0.23046, 1e-4);
+	EXPECT_NEAR(within.in_sample.rms_dph, 0.16799, 1e-4);
+	// the same model fitted on all the samples: the folds change only the held-out figures
+	ASSERT_EQ(by_run.model.coef_dph.size(), within.model.coef_dph.size());
+	for (Eigen::Index i = 0; i < within.model.coef_dph.size(); i++)
+		EXPECT_NEAR(by_run.model.coef_dph[i], within.model.coef_dph[i], 1e-9);
+	// one run: the option changes nothing
+	FitOptions one;
+	one.run_folds = RunFolds::RegimesWithinRuns;
+	const Calibration a = fitCalibration({runs[0]}, "terms:T(Ti1)^1", one);
+	const Calibration b = fitCalibration({runs[0]}, "terms:T(Ti1)^1");
+	EXPECT_EQ(a.held_out.label, b.held_out.label);
+	EXPECT_EQ(a.held_out.rms_dph, b.held_out.rms_dph);
+}

@@ -1040,22 +1040,31 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 	// Pass 2: streaming QR factor per fold. Folds: one per run when several runs are given;
 	// else whole thermal regimes of the run (FoldScheme::Regimes), or interleaved time blocks.
 	const bool by_run = runs.size() >= 2;
-	std::vector<RegimeSegment> regimes;
+	const bool run_regimes = by_run && opt.run_folds == RunFolds::RegimesWithinRuns;
+	// regimes_of[r]: run r's regime segments (one run: the run's, Regimes scheme; several runs:
+	// RunFolds::RegimesWithinRuns); a run with fewer than 3 is not cut (blocks / one fold).
+	std::vector<std::vector<RegimeSegment>> regimes_of(runs.size());
 	std::size_t regime_segments = 0;
-	if (!by_run && opt.fold_scheme == FoldScheme::Regimes)
-	{
-		regimes = regimeSegments(prep[0], opt.regime_rate_C_per_min, opt.min_regime_s, opt.rate_estimator.window_s);
-		regime_segments = regimes.size();
-		if (regime_segments < 3) regimes.clear();  // a single soak or ramp: blocks instead
-	}
-	const bool by_regime = !regimes.empty();
+	if ((!by_run && opt.fold_scheme == FoldScheme::Regimes) || run_regimes)
+		for (std::size_t ri = 0; ri < runs.size(); ri++)
+		{
+			regimes_of[ri] = regimeSegments(prep[ri], opt.regime_rate_C_per_min, opt.min_regime_s, opt.rate_estimator.window_s);
+			if (regimes_of[ri].size() < 3)
+				regimes_of[ri].clear();  // a single soak or ramp: blocks instead (one run) or the whole run
+			regime_segments += regimes_of[ri].size();
+		}
+	const bool by_regime = !by_run && !regimes_of[0].empty();
+	// The first fold of each run (several runs): one fold per run, or per regime fold of each run.
+	std::vector<std::size_t> run_fold0(runs.size() + 1, 0);
+	for (std::size_t ri = 0; ri < runs.size(); ri++)
+		run_fold0[ri + 1] = run_fold0[ri] + (regimes_of[ri].empty() || !run_regimes ? 1 : std::min(regimes_of[ri].size(), opt.max_regime_folds));
 	const std::size_t nfolds =
-		by_run ? runs.size() : (by_regime ? std::min(regime_segments, opt.max_regime_folds) : opt.folds);
+		by_run ? run_fold0[runs.size()] : (by_regime ? std::min(regime_segments, opt.max_regime_folds) : opt.folds);
 	FoldSet folds;
 	folds.held_out.assign(nfolds, StreamingQr(fs.termCount(), y_ref, x_ref));
 	// The fold of a usable sample at time t of run `run` (passes in time order: the regime cursor).
 	const auto foldOf = [&](std::size_t run, double t, RegimeFoldCursor& regime) -> std::size_t {
-		if (by_run) return run;
+		if (by_run) return run_fold0[run] + (regimes_of[run].empty() || !run_regimes ? 0 : regime.fold(t));
 		if (by_regime) return regime.fold(t);
 		const double u = (t - runs[0].frontTime_s()) / (runs[0].backTime_s() - runs[0].frontTime_s() + 1e-300);
 		const std::size_t nblocks = nfolds * opt.blocks_per_fold;
@@ -1081,7 +1090,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 		const auto& r = prep[ri];
 		const double t_front = r.run->frontTime_s(), t_back = r.run->backTime_s();
 		RowCursor cur(r);
-		RegimeFoldCursor regime(regimes, opt.max_regime_folds);
+		RegimeFoldCursor regime(regimes_of[ri], opt.max_regime_folds);
 		double bin_t0 = 0, bin_y = 0;
 		std::size_t bin_n = 0, bin_fold = 0, bin_block = 0;
 		const auto flush = [&]() {
@@ -1450,7 +1459,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 			const auto& r = prep[ri];
 			all.beginRun(r);
 			RowCursor cur(r);
-			RegimeFoldCursor regime(regimes, opt.max_regime_folds);
+			RegimeFoldCursor regime(regimes_of[ri], opt.max_regime_folds);
 			forEachSample(r, &cur, [&](const FogSeries& c, std::size_t k0, std::size_t j) {
 				double comp = kNaN;
 				if (r.ok[k0 + j])
@@ -1469,7 +1478,9 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 			});
 			all.endRun(r, opt.tau_s);
 		}
-		cal.held_out.label = by_run      ? "held-out (leave-one-run-out, " + std::to_string(nfolds) + " runs)"
+		cal.held_out.label = run_regimes ? "held-out (leave-regime-out within " + std::to_string(runs.size()) + " runs, " +
+											   std::to_string(nfolds) + " folds)"
+							 : by_run    ? "held-out (leave-one-run-out, " + std::to_string(nfolds) + " runs)"
 							 : by_regime ? "held-out (leave-regime-out, " + std::to_string(regime_segments) + " regimes in " +
 											   std::to_string(nfolds) + " folds)"
 										 : "held-out (blocked " + std::to_string(nfolds) + "-fold)";

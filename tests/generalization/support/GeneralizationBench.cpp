@@ -8,13 +8,16 @@
 #include <mrpt_fog/metrics/BiasMetrics.h>
 #include <mrpt_fog/model/Compensator.h>
 #include <mrpt_fog/model/RateEstimator.h>
+#include <mrpt_fog/model/WarmupFit.h>
 #include <mrpt_fog/sim/ChamberRun.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <stdexcept>
 
 namespace fogtest
 {
@@ -61,6 +64,25 @@ std::vector<BenchProfile> evaluationProfiles()
 														  "  - {type: ramp, to_C: 75, rate_C_per_min: 1}\n"
 														  "  - {type: hold, duration_min: 60}\n"),
 				 true});
+	return p;
+}
+
+std::vector<BenchProfile> secondCalibrationProfiles()
+{
+	std::vector<BenchProfile> p;
+	p.push_back({"cal_sine", fromText("cal_sine", "name: cal_sine\ninitial_temp_C: 5\npower_initially: true\n"
+												  "initial_state: steady\nsegments:\n"
+												  "  - {type: hold, duration_min: 30}\n"
+												  "  - {type: sine, amplitude_C: 20, period_min: 30, cycles: 3}\n"
+												  "  - {type: ramp, to_C: -35, rate_C_per_min: 2}\n"
+												  "  - {type: hold, duration_min: 45}\n"
+												  "  - {type: ramp, to_C: 55, rate_C_per_min: 3}\n"
+												  "  - {type: hold, duration_min: 45}\n"),
+				 false});
+	p.push_back({"cal_turn_on", fromText("cal_turn_on", "name: cal_turn_on\ninitial_temp_C: 10\npower_initially: true\n"
+														"initial_state: cold\nsegments:\n"
+														"  - {type: hold, duration_min: 180}\n"),
+				 false});
 	return p;
 }
 
@@ -169,6 +191,21 @@ std::vector<BenchPreset> benchPresets()
 			out.push_back({"auto common" + bin + " 1se", "multipoint", o, false});
 		}
 	}
+	if (std::getenv("FOG_BENCH_RUNFOLDS"))  // several calibration runs: regime folds within each run (session 8)
+	{
+		mrpt_fog::FitOptions o;
+		o.stability_resamples = 0;
+		o.run_folds = mrpt_fog::RunFolds::RegimesWithinRuns;
+		out.push_back({"auto run-regimes", "multipoint", o, false});
+		o.order_search = mrpt_fog::OrderSearch::Common;
+		o.selection_bin_s = 100.0;
+		out.push_back({"auto run-regimes common bin100", "multipoint", o, false});
+		mrpt_fog::FitOptions c;
+		c.stability_resamples = 0;
+		c.order_search = mrpt_fog::OrderSearch::Common;
+		c.selection_bin_s = 100.0;
+		out.push_back({"auto runs common bin100", "multipoint", c, false});
+	}
 	out.push_back({"multipoint none 5/3", "multipoint", none, true});
 	out.push_back({"multipoint@3/1 none", "multipoint@3/1", none, true});
 	out.push_back({"multipoint@1/1 none", "multipoint@1/1", none, true});
@@ -181,13 +218,28 @@ const char* toString(Generator g) { return g == Generator::FogSim ? "fog-sim" : 
 
 namespace
 {
+bool isEvaluationProfile(const std::vector<BenchProfile>& profiles, const std::string& name)
+{
+	for (const auto& p : profiles)
+		if (p.name == name) return true;
+	return false;
+}
+
 struct DeviceRuns
 {
 	double rate_hz = 0;
 	int thermistors = 0;
 	mrpt_fog::FogSeries cal;
 	std::vector<mrpt_fog::FogSeries> eval, floor;
+	std::vector<mrpt_fog::FogSeries> cal2, turn_on;  //!< empty or one run each (BenchCase)
 };
+
+mrpt_fog::sim::ChamberProfile secondCalibrationProfile(const std::string& name)
+{
+	for (const auto& p : secondCalibrationProfiles())
+		if (p.name == name) return p.profile;
+	throw std::invalid_argument("bench: no second calibration profile '" + name + "'");
+}
 
 DeviceRuns simulate(const BenchCase& c, const std::vector<BenchProfile>& profiles)
 {
@@ -207,6 +259,16 @@ DeviceRuns simulate(const BenchCase& c, const std::vector<BenchProfile>& profile
 		r.thermistors = static_cast<int>(d.device.thermistors.size());
 		st.seed = 1000 * c.seed + 1;
 		r.cal = mrpt_fog::sim::simulateChamber(calibrationProfile(), d.device, st);
+		if (!c.second_calibration.empty() && !isEvaluationProfile(profiles, c.second_calibration))
+		{
+			st.seed = 1000 * c.seed + 50;
+			r.cal2.push_back(mrpt_fog::sim::simulateChamber(secondCalibrationProfile(c.second_calibration), d.device, st));
+		}
+		if (c.warmup_calibration)
+		{
+			st.seed = 1000 * c.seed + 51;
+			r.turn_on.push_back(mrpt_fog::sim::simulateChamber(secondCalibrationProfile("cal_turn_on"), d.device, st));
+		}
 		for (std::size_t i = 0; i < profiles.size(); i++)
 		{
 			st.seed = 1000 * c.seed + 2 + i;
@@ -223,6 +285,8 @@ DeviceRuns simulate(const BenchCase& c, const std::vector<BenchProfile>& profile
 		r.rate_hz = p.rate_hz;
 		r.thermistors = p.thermistors;
 		r.cal = simulateSectorCoil(p, calibrationProfile(), 1000 * c.seed + 1);
+		if (!c.second_calibration.empty() && !isEvaluationProfile(profiles, c.second_calibration))
+			r.cal2.push_back(simulateSectorCoil(p, secondCalibrationProfile(c.second_calibration), 1000 * c.seed + 50));
 		for (std::size_t i = 0; i < profiles.size(); i++)
 		{
 			r.eval.push_back(simulateSectorCoil(p, profiles[i].profile, 1000 * c.seed + 2 + i));
@@ -265,6 +329,45 @@ double offlineStability_dph(const mrpt_fog::Calibration& cal, const mrpt_fog::Fo
 	return mrpt_fog::biasStats(t, comp, 100.0).stability_dph;
 }
 
+/** Diagnostic (FOG_BENCH_TRACE=DIR): 100 s bin means of time, raw rate, the calibration's bias
+ * estimate and every thermistor of one evaluation, to DIR/seed<N>_<profile>_<preset>.csv. */
+void traceEvaluation(const char* dir, std::uint64_t seed, const std::string& profile, const std::string& preset,
+					 const mrpt_fog::Calibration& cal, const mrpt_fog::FogSeries& s)
+{
+	std::string name = preset;
+	for (char& ch : name)
+		if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+	const std::string path = std::string(dir) + "/seed" + std::to_string(seed) + "_" + profile + "_" + name + ".csv";
+	FILE* out = std::fopen(path.c_str(), "w");
+	if (!out) return;
+	const auto bias = mrpt_fog::compensatedBias_dph(cal, s);
+	const auto& raw = s.primaryRate_dph();
+	std::fprintf(out, "t_s,raw_dph,bias_dph");
+	for (const auto& th : s.thermistors) std::fprintf(out, ",%s", th.name.c_str());
+	std::fprintf(out, "\n");
+	const std::size_t nt = s.temp_C.size();
+	std::vector<double> sum(3 + nt, 0.0);
+	std::size_t n = 0;
+	double t0 = s.time_s.empty() ? 0 : s.time_s[0];
+	for (std::size_t k = 0; k < s.size(); k++)
+	{
+		if (s.time_s[k] - t0 >= 100.0 && n > 0)
+		{
+			for (std::size_t q = 0; q < sum.size(); q++) std::fprintf(out, q ? ",%.6g" : "%.6g", sum[q] / static_cast<double>(n));
+			std::fprintf(out, "\n");
+			std::fill(sum.begin(), sum.end(), 0.0);
+			n = 0;
+			t0 = s.time_s[k];
+		}
+		sum[0] += s.time_s[k];
+		sum[1] += raw[k];
+		sum[2] += bias[k];
+		for (std::size_t i = 0; i < nt; i++) sum[3 + i] += s.temp_C[i][k];
+		n++;
+	}
+	std::fclose(out);
+}
+
 std::string describeTerms(const mrpt_fog::Calibration& cal)
 {
 	const auto names = cal.model.features.termNames();
@@ -287,24 +390,40 @@ std::vector<CaseResult> runBenchCase(const BenchCase& c, const std::vector<Bench
 		floor_dph.push_back(stats.stability_dph);
 	}
 	std::vector<CaseResult> out;
+	// A second calibration run: a profile of secondCalibrationProfiles() (runs.cal2), or an
+	// evaluation profile's run (index cal2; that profile is then not evaluated).
+	const std::string& second = c.second_calibration;
 	std::size_t cal2 = profiles.size();
-	if (const char* name = std::getenv("FOG_BENCH_CAL2"))
-		for (std::size_t i = 0; i < profiles.size(); i++)
-			if (profiles[i].name == name) cal2 = i;
+	for (std::size_t i = 0; i < profiles.size(); i++)
+		if (profiles[i].name == second) cal2 = i;
 	for (const auto& bp : presets)
 	{
 		mrpt_fog::Calibration cal;
-		std::string error;
+		std::string error, note;
 		const auto fit = [&](const mrpt_fog::FogSeries& run) {
 			error.clear();
+			note.clear();
 			try
 			{
-				// Diagnostic (FOG_BENCH_CAL2=PROFILE): that evaluation profile's run joins the
-				// calibration (two runs: leave-one-run-out selection) and is not evaluated.
-				if (cal2 < profiles.size() && !bp.fit_on_evaluation)
+				if (bp.fit_on_evaluation)
+					cal = mrpt_fog::fitCalibration({run}, bp.preset, bp.options, {"calibration"});
+				else if (cal2 < profiles.size())
 					cal = mrpt_fog::fitCalibration({run, runs.eval[cal2]}, bp.preset, bp.options, {"calibration", "second"});
+				else if (!runs.cal2.empty())
+					cal = mrpt_fog::fitCalibration({run, runs.cal2[0]}, bp.preset, bp.options, {"calibration", second});
 				else
 					cal = mrpt_fog::fitCalibration({run}, bp.preset, bp.options, {"calibration"});
+				if (!runs.turn_on.empty() && !bp.fit_on_evaluation)
+				{
+					try
+					{
+						cal.warmup = mrpt_fog::fitWarmup(runs.turn_on, cal, {}, nullptr, {"cal_turn_on"});
+					}
+					catch (const mrpt_fog::WarmupFitError& e)
+					{
+						note = std::string(" (no warm-up term: ") + e.what() + ")";
+					}
+				}
 			}
 			catch (const std::exception& e)
 			{
@@ -342,7 +461,9 @@ std::vector<CaseResult> runBenchCase(const BenchCase& c, const std::vector<Bench
 				r.raw_stability_dph = f.raw_stability_dph;
 				r.ratio = f.stability_dph / floor_dph[i];
 				r.raw_over_comp = f.raw_stability_dph / f.stability_dph;
-				r.model_terms = describeTerms(cal);
+				r.model_terms = describeTerms(cal) + note;
+				if (const char* dir = std::getenv("FOG_BENCH_TRACE"))
+					traceEvaluation(dir, c.seed, profiles[i].name, bp.label, cal, runs.eval[i]);
 				if (!f.valid) r.error = "evaluation run shorter than 2 windows";
 			}
 			out.push_back(r);

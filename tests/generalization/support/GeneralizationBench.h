@@ -64,7 +64,21 @@ struct BenchCase
 	 * evaluation runs (default: all), and thermistors without reading noise or quantisation. */
 	mrpt_fog::sim::EffectSet effects = mrpt_fog::sim::defaultEffects();
 	bool ideal_thermistors = false;
+	/** A second calibration run (two runs: the fit's selection leaves out whole runs): the name of
+	 * a profile of secondCalibrationProfiles() (not evaluated: none is an evaluation profile), or
+	 * of an evaluation profile (then that profile's evaluation run is the second calibration run
+	 * and is not evaluated). Empty: the seed run alone. */
+	std::string second_calibration;
+	/** A turn-on run (cal_turn_on, fog-sim devices) fits the warm-up term (fitWarmup) on top of
+	 * each bias calibration, as fog-calibrate --warmup-run does. */
+	bool warmup_calibration = false;
 };
+
+/** Calibration runs a user with a chamber could add to the seed run, none of them an
+ * evaluation profile: cal_sine (a 30 min sine of +-20 C about 5 C, then 2 and 3 C/min ramps to
+ * -35 and 55 C with 45 min soaks) and cal_turn_on (a turn-on from unpowered equilibrium at
+ * 10 C, 3 h: the cold start's history at another ambient). */
+std::vector<BenchProfile> secondCalibrationProfiles();
 
 struct CaseResult
 {

@@ -82,6 +82,17 @@ enum class FoldScheme : unsigned char
 	Blocks = 1  //!< folds x blocks_per_fold interleaved time blocks
 };
 
+/** How several calibration runs are cut into validation folds (a closed set). */
+enum class RunFolds : unsigned char
+{
+	/** One fold per run: each run is predicted by the model fitted on the other runs alone. */
+	Runs = 0,
+	/** Each run's thermal regimes (as FoldScheme::Regimes cuts one run, at most max_regime_folds
+	 * folds per run; a run with fewer than 3 regimes is one fold): each fold is predicted by the
+	 * model fitted on everything else, the other runs included. */
+	RegimesWithinRuns = 1
+};
+
 /** What the bias fit does with samples taken while the table applied a rate (a closed set). */
 enum class TableSamples : unsigned char
 {
@@ -140,6 +151,7 @@ struct FitOptions
 	double regime_rate_C_per_min = 0.2;  //!< |mean thermistor rate| below this: a soak
 	double min_regime_s = 600.0;  //!< shorter regime segments join the one before
 	std::size_t max_regime_folds = 8;  //!< regime segment j is fold j mod this
+	RunFolds run_folds = RunFolds::Runs;  //!< folds of several runs
 	OrderSearch order_search = OrderSearch::PerSignal;
 	StepRule step_rule = StepRule::RelativeGain;
 	double step_z = 2.0;  //!< StepRule::Significant: standard errors a step's gain must exceed
