@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/common/EnumNames.h>
+#include <mrpt_fog/common/IntervalMask.h>
 #include <mrpt_fog/metrics/BiasMetrics.h>
 #include <mrpt_fog/model/BiasFit.h>
 #include <mrpt_fog/model/Calibration.h>
@@ -94,7 +95,8 @@ namespace
 const std::vector<double> kRidgeGrid = {0.0, 1e-9, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1};
 
 /** One calibration run prepared for the fit: which samples are usable, the bias and the
- * thermistor rates. Memory does not grow with the log beyond one bit per sample (issue 14): the
+ * thermistor rates. Memory does not grow with the log (issue 14; the usable flags are intervals,
+ * common/IntervalMask.h, at most one bit per sample for a log whose flags flip very often): the
  * run is read in chunks (obs/FogRun.h: in memory, or spilled to a temporary file), the bias is
  * computed from the chunk when asked (y()), and the causal rates are recomputed in each
  * sequential pass by a RowCursor (the tracker is deterministic: the same numbers as storing
@@ -107,7 +109,7 @@ struct PreparedRun
 	bool exclude_table = false;
 	RateEstimatorSettings est;
 	std::vector<std::vector<double>> rate;  // [thermistor][sample] degC/s (non-causal estimator only)
-	std::vector<bool> ok;  // usable sample
+	IntervalMask ok;  // usable sample (intervals: a few words for a clean run of any length)
 	std::size_t usable = 0;
 	/** Usable samples whose rate window covers less than half its length for some thermistor:
 	 * the compensator does not trust those rates (it uses the rate-free start-up model there). */
@@ -233,7 +235,7 @@ PreparedRun prepare(const FogRun& s, const ThermalFeatureSet& fs, const RateEsti
 		cur.row(c, k0, k0 + j, temp.data(), rate.data());
 		bool ok = std::isfinite(r.y(c, j)) && (c.power.empty() || c.power[j] != 0.0);
 		for (std::size_t i = 0; i < nt && ok; i++) ok = std::isfinite(temp[i]) && std::isfinite(rate[i]);
-		r.ok[k0 + j] = ok;
+		r.ok.set(k0 + j, ok);
 		r.usable += ok;
 		r.short_rate_span += ok && cur.shortSpan();
 	});
