@@ -8,8 +8,8 @@
  * are stable (files and command lines refer to them; never rename one) and the table's order is
  * the order of ErrorEffects.h's allEffectIds() and of the "sim.effects" metadata.
  *
- * Adding an effect: one enumerator below and one descriptor in EffectRegistry.cpp, which holds
- * all that is known about it: its id and what it means, the default of its coefficient (the
+ * Adding an effect: one FOG_EFFECT row at the end of EffectTable.inc, which holds all that is
+ * known about it (the enumerator and the descriptor are both generated from that row): its id and what it means, the default of its coefficient (the
  * device keeps one value per effect, ErrorCoefficients::coefficients), its simulator term when
  * it is an additive bias, and from that term its missing-effect candidate (a hand-written one in
  * the discrepancy room's CandidateEffect.cpp replaces it when the effect needs more, e.g. a
@@ -31,21 +31,19 @@ namespace mrpt_fog::sim
 struct ErrorCoefficients;
 struct FogDevice;
 
+/** The switchable error sources, generated from EffectTable.inc (one row per effect). */
 enum class Effect : unsigned char
 {
-	ShupeRate,
-	RadialGradient,
-	GradientRate,
-	ThermistorLag,
-	Hysteresis,
-	Warmup,
-	ScaleFactorTemp,
-	Magnetic,
-	TempPolyOrder,
-	HeatSource,
-	EarthRate
+#define FOG_EFFECT(enumerator, ...) enumerator,
+#include <mrpt_fog/sim/EffectTable.inc>
+#undef FOG_EFFECT
 };
-constexpr std::size_t kEffectCount = 11;
+/** How many effects EffectTable.inc lists. */
+constexpr std::size_t kEffectCount = 0
+#define FOG_EFFECT(enumerator, ...) +1
+#include <mrpt_fog/sim/EffectTable.inc>
+#undef FOG_EFFECT
+	;
 
 /** The effect's position in effectDescriptors() and in ErrorCoefficients::coefficients. */
 constexpr std::size_t indexOf(Effect effect) { return static_cast<std::size_t>(effect); }
