@@ -110,6 +110,7 @@ int main(int argc, char** argv)
 
 		std::vector<FogSeries> runs;
 		std::vector<std::string> labels;
+		double analysed_quantum_C = 0;  // the first run's raw thermistor quantum, when reduced
 		for (const auto& f : measured.getValue())
 		{
 			// read as a stream: screened sample by sample (as fog-compensate), then reduced to
@@ -126,6 +127,7 @@ int main(int argc, char** argv)
 			progress.finish();
 			const ThermistorScreening sc = screening.result(FogRun(runs.back()));
 			if (sc.rejected_readings > 0) std::cout << f << ":\n" << app::screeningText(sc, true);
+			if (runs.size() == 1 && binfo.reduced()) analysed_quantum_C = binfo.thermistor_step_p05_C;
 			if (binfo.reduced())
 			{
 				char buf[300];
@@ -139,6 +141,7 @@ int main(int argc, char** argv)
 		}
 		discrepancy::DiscrepancyOptions opt;
 		opt.selection.alpha = alpha.getValue();
+		opt.thermistor_quantum_C = analysed_quantum_C;
 		opt.scale_factor = scale_factor.getValue() == "off" ? discrepancy::ScaleFactorFitting::Off
 															 : discrepancy::ScaleFactorFitting::Auto;
 		discrepancy::DiscrepancyReport rep;

@@ -96,3 +96,18 @@ TEST(DiscrepancyAnalysis, GapFiguresClosedForm)
 	EXPECT_NEAR(g.range_dph, 0.2, 1e-12);
 	EXPECT_NEAR(g.stability_dph, 0.1 * std::sqrt(10.0 / 9.0), 1e-9);  // N-1 std of 10 values +-0.1
 }
+
+// A run reduced to block means (io/BlockMeanReader.h) steps by fractions of the thermistors'
+// quantum: the quantum of the raw readings, when given, is what the coarse-quantisation rule
+// judges.
+TEST(DiscrepancyAnalysis, RawQuantumGivenIsWhatTheQuantisationRuleJudges)
+{
+	const auto runs = twoRuns({{"hysteresis", 3.0}});
+	DiscrepancyOptions opt;
+	const auto plain = analyseDiscrepancy({runs[0]}, {"A"}, "static:3", opt);
+	EXPECT_EQ(plain.cannot_tell.find("quantised"), std::string::npos) << plain.cannot_tell;
+	opt.thermistor_quantum_C = 5.0;  // a span of tens of degrees in fewer than 30 levels
+	const auto coarse = analyseDiscrepancy({runs[0]}, {"A"}, "static:3", opt);
+	EXPECT_NE(coarse.cannot_tell.find("quantised to about 5 C"), std::string::npos) << coarse.cannot_tell;
+	EXPECT_NE(coarse.verdict().find("cannot tell"), std::string::npos);
+}

@@ -6,6 +6,7 @@
 #include <mrpt_fog/io/BlockMeanReader.h>
 #include <mrpt_fog/obs/FogSeriesLayout.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "IoTestUtil.h"
@@ -207,4 +208,26 @@ TEST(BlockMeanReader, RawlogEqualsMeansOfTheWholeRead)
 		ASSERT_NEAR(s.rate_dph[2][j], r / c, 1e-9) << j;
 		for (std::size_t i = 0; i < th.size(); i++) ASSERT_NEAR(s.temp_C[i][j], th[i] / c, 1e-9) << j;
 	}
+}
+
+TEST(BlockMeanReader, RawQuantumOfTheThermistors)
+{
+	// 10 Hz, a 0.01 C/s ramp read through a 0.1 C quantiser: raw steps are 0.1 C, the 1 s means
+	// step by 0.01 C
+	BlockMeanAccumulator acc(layout(false, false), BlockMeanOptions{});
+	for (std::size_t k = 0; k < 20000; k++)
+	{
+		const double t = 0.1 * static_cast<double>(k);
+		const double q = 0.1 * std::round((20.0 + 0.01 * t) / 0.1);
+		acc.add(sample(t, 0.0, q, q));
+	}
+	BlockMeanInfo info;
+	const FogSeries s = acc.finish(info);
+	EXPECT_NEAR(info.thermistor_step_p05_C, 0.1, 1e-9);
+	std::vector<double> row_steps;
+	for (std::size_t j = 1; j < s.size(); j++)
+		if (s.temp_C[0][j] != s.temp_C[0][j - 1]) row_steps.push_back(std::fabs(s.temp_C[0][j] - s.temp_C[0][j - 1]));
+	ASSERT_GT(row_steps.size(), 100u);
+	std::sort(row_steps.begin(), row_steps.end());
+	EXPECT_LT(row_steps[row_steps.size() / 20], 0.05);  // why the analysis needs the raw figure
 }

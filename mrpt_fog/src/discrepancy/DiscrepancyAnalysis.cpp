@@ -150,7 +150,8 @@ std::string informationShortfall(const RunSignals& sig, const FogSeries& run, co
 			const double d = std::fabs(col[k] - col[k - 1]);
 			if (std::isfinite(d) && d > 0) steps.push_back(d);
 		}
-	const double quantum = steps.size() >= 20 ? percentile(steps, 0.05) : 0.0;
+	const double quantum =
+		opt.thermistor_quantum_C > 0 ? opt.thermistor_quantum_C : (steps.size() >= 20 ? percentile(steps, 0.05) : 0.0);
 	if (quantum > 0 && span / quantum < opt.min_span_quanta)
 	{
 		std::snprintf(buf, sizeof buf,

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <stdexcept>
 
 namespace mrpt_fog
@@ -14,6 +15,7 @@ namespace
 {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::size_t kPeriodSteps = 64;  // time steps used for the native period
+constexpr std::size_t kStepReservoir = 65536;  // thermistor steps kept for the quantum
 
 bool sameValue(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
 
@@ -48,6 +50,28 @@ struct BlockMeanAccumulator::Impl
 	Block cur;
 	std::vector<double> cur_temp_sum;
 	std::vector<std::size_t> cur_temp_count;
+	// raw thermistor steps (the quantum): previous reading, a reservoir of the non-zero steps
+	std::vector<double> prev_temp;
+	std::vector<double> steps;
+	std::size_t steps_seen = 0;
+	std::mt19937_64 rng{20261202};
+
+	void noteSteps(const FogSample& x)
+	{
+		for (std::size_t i = 0; i < n_th; i++)
+		{
+			const double d = std::fabs(x.temp_C[i] - prev_temp[i]);
+			prev_temp[i] = x.temp_C[i];
+			if (!(std::isfinite(d) && d > 0)) continue;
+			steps_seen++;
+			if (steps.size() < kStepReservoir) steps.push_back(d);
+			else
+			{
+				const std::uint64_t j = rng() % steps_seen;
+				if (j < kStepReservoir) steps[j] = d;
+			}
+		}
+	}
 
 	bool unlimited() const { return !(opt.min_block_s > 0); }
 
@@ -190,6 +214,7 @@ BlockMeanAccumulator::BlockMeanAccumulator(const FogSeries& layout, const BlockM
 	impl_->n_th = layout.thermistors.size();
 	impl_->cur_temp_sum.assign(impl_->n_th, 0.0);
 	impl_->cur_temp_count.assign(impl_->n_th, 0);
+	impl_->prev_temp.assign(impl_->n_th, kNaN);
 }
 
 BlockMeanAccumulator::~BlockMeanAccumulator() = default;
@@ -199,6 +224,7 @@ void BlockMeanAccumulator::add(const FogSample& x)
 	if (x.temp_C.size() != impl_->n_th)
 		throw std::invalid_argument("block means: a sample with " + std::to_string(x.temp_C.size()) +
 									" thermistors, the layout has " + std::to_string(impl_->n_th));
+	impl_->noteSteps(x);
 	if (impl_->period_known)
 	{
 		impl_->feed(x);
@@ -247,6 +273,13 @@ FogSeries BlockMeanAccumulator::finish(BlockMeanInfo& info)
 	info.samples_per_block = m.k_nominal;
 	info.block_s = static_cast<double>(m.k_nominal) * m.period_s;
 	info.doublings = m.doublings;
+	if (m.steps.size() >= 20)
+	{
+		// percentile(steps, 0.05) as the analysis takes it: element floor(0.05 (n - 1)) in order
+		const auto kth = m.steps.begin() + static_cast<std::ptrdiff_t>(std::floor(0.05 * static_cast<double>(m.steps.size() - 1)));
+		std::nth_element(m.steps.begin(), kth, m.steps.end());
+		info.thermistor_step_p05_C = *kth;
+	}
 	m.rows.clear();
 	m.rows.shrink_to_fit();
 	return out;

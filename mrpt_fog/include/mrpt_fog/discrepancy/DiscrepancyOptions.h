@@ -74,6 +74,11 @@ struct DiscrepancyOptions
 	double min_usable_s = 3600.0;  //!< usable (powered, thermistors known) time on the analysed run [s]
 	double min_temp_span_C = 3.0;  //!< span (1st..99th percentile) of the mean temperature [degC]
 	double min_span_quanta = 30.0;  //!< that span in thermistor quanta (coarse quantisation)
+	/** > 0: the thermistors' quantum from the raw readings [degC], used instead of the steps
+	 * between the analysed run's rows; set when the run was reduced to block means
+	 * (io/BlockMeanReader.h: BlockMeanInfo::thermistor_step_p05_C), whose steps are fractions
+	 * of it. */
+	double thermistor_quantum_C = 0.0;
 	double min_wander_spans = 5.0;  //!< run length in correlation times of the residual's AR(1) part
 	double flag_rms_ratio = 1.5;  //!< a segment is flagged when its RMS >= this x the run's
 	/** With a confirmation run, an effect is named only when, with its coefficient from the

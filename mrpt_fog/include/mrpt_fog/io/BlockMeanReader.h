@@ -56,6 +56,11 @@ struct BlockMeanInfo
 	std::size_t samples_per_block = 1;  //!< K x 2^doublings: the nominal block
 	double block_s = 0;  //!< samples_per_block x native_period_s
 	int doublings = 0;  //!< times the blocks were merged in pairs to stay within max_rows
+	/** The thermistors' quantum as the raw readings show it: 5th percentile of the non-zero
+	 * steps between consecutive readings of each thermistor (all pooled; a reservoir of 65 536
+	 * of them, fixed seed), 0 with fewer than 20. Block means step by fractions of it, so an
+	 * analysis of the rows that judges the quantisation needs this figure. */
+	double thermistor_step_p05_C = 0;
 	bool reduced() const { return rows < samples; }
 };
 
