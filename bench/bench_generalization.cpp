@@ -33,7 +33,9 @@
  * evaluated), or an evaluation profile's name (its run joins the calibration and that profile
  * is not evaluated; FOG_BENCH_CAL2=PROFILE is the same); --warmup-cal adds the turn-on run
  * cal_turn_on (10 C ambient) and fits the warm-up term on it (fitWarmup, as fog-calibrate
- * --warmup-run; fog-sim devices). Environment: FOG_BENCH_SCORING / _GAIN / _COMMON /
+ * --warmup-run; fog-sim devices); --also-seed-run-only adds every preset again fitted on the seed
+ * run alone (label " 1run"), --also-no-warmup without the warm-up term (label " nowarm"), on the
+ * same simulated runs. Environment: FOG_BENCH_SCORING / _GAIN / _COMMON /
  * _BINS / _PARSIMONY / _VARIANTS add selection variants (GeneralizationBench.cpp). */
 #include "DeviceEnsemble.h"
 #include "GeneralizationBench.h"
@@ -59,7 +61,7 @@ int main(int argc, char** argv)
 	std::vector<double> also_windows_s;
 	std::string second_calibration;
 	if (const char* name = std::getenv("FOG_BENCH_CAL2")) second_calibration = name;  // the session-7 spelling of --cal2
-	bool warmup_calibration = false;
+	bool warmup_calibration = false, also_seed_run_only = false, also_no_warmup = false;
 	for (int i = 1; i < argc; i++)
 	{
 		const std::string a = argv[i];
@@ -91,6 +93,8 @@ int main(int argc, char** argv)
 		else if (a == "--ideal-thermistors") ideal = true;
 		else if (a == "--cal2" && i + 1 < argc) second_calibration = argv[++i];
 		else if (a == "--warmup-cal") warmup_calibration = true;
+		else if (a == "--also-seed-run-only") also_seed_run_only = true;
+		else if (a == "--also-no-warmup") also_no_warmup = true;
 		else if (a == "--oracle") oracle = true;
 		else if (a == "--rate-window" && i + 1 < argc) rate_window_s = std::atof(argv[++i]);
 		else if (a == "--savgol") savgol = true;
@@ -181,6 +185,30 @@ int main(int argc, char** argv)
 				}
 				presets.push_back(o);
 			}
+	}
+	if (also_no_warmup)  // the same presets without the warm-up term (label " nowarm"), same simulated runs
+	{
+		const std::size_t n = presets.size();
+		for (std::size_t i = 0; i < n; i++)
+		{
+			fogtest::BenchPreset o = presets[i];
+			o.label += " nowarm";
+			o.no_warmup = true;
+			presets.push_back(o);
+		}
+	}
+	if (also_seed_run_only)  // the same presets fitted on the seed run alone (label " 1run"), same simulated runs
+	{
+		const std::size_t n = presets.size();
+		for (std::size_t i = 0; i < n; i++)
+		{
+			// one run: no warm-up term, and the run folds of several runs do not apply
+			if (presets[i].no_warmup || presets[i].options.run_folds != mrpt_fog::RunFolds::Runs) continue;
+			fogtest::BenchPreset o = presets[i];
+			o.label += " 1run";
+			o.seed_run_only = true;
+			presets.push_back(o);
+		}
 	}
 	if (oracle)
 	{

@@ -191,20 +191,24 @@ std::vector<BenchPreset> benchPresets()
 			out.push_back({"auto common" + bin + " 1se", "multipoint", o, false});
 		}
 	}
-	if (std::getenv("FOG_BENCH_RUNFOLDS"))  // several calibration runs: regime folds within each run (session 8)
+	// several calibration runs: regime folds within each run (session 8); =all: also with common orders
+	if (std::getenv("FOG_BENCH_RUNFOLDS"))
 	{
 		mrpt_fog::FitOptions o;
 		o.stability_resamples = 0;
 		o.run_folds = mrpt_fog::RunFolds::RegimesWithinRuns;
 		out.push_back({"auto run-regimes", "multipoint", o, false});
-		o.order_search = mrpt_fog::OrderSearch::Common;
-		o.selection_bin_s = 100.0;
-		out.push_back({"auto run-regimes common bin100", "multipoint", o, false});
-		mrpt_fog::FitOptions c;
-		c.stability_resamples = 0;
-		c.order_search = mrpt_fog::OrderSearch::Common;
-		c.selection_bin_s = 100.0;
-		out.push_back({"auto runs common bin100", "multipoint", c, false});
+		if (std::string(std::getenv("FOG_BENCH_RUNFOLDS")) == "all")
+		{
+			o.order_search = mrpt_fog::OrderSearch::Common;
+			o.selection_bin_s = 100.0;
+			out.push_back({"auto run-regimes common bin100", "multipoint", o, false});
+			mrpt_fog::FitOptions c;
+			c.stability_resamples = 0;
+			c.order_search = mrpt_fog::OrderSearch::Common;
+			c.selection_bin_s = 100.0;
+			out.push_back({"auto runs common bin100", "multipoint", c, false});
+		}
 	}
 	out.push_back({"multipoint none 5/3", "multipoint", none, true});
 	out.push_back({"multipoint@3/1 none", "multipoint@3/1", none, true});
@@ -405,7 +409,7 @@ std::vector<CaseResult> runBenchCase(const BenchCase& c, const std::vector<Bench
 			note.clear();
 			try
 			{
-				if (bp.fit_on_evaluation)
+				if (bp.fit_on_evaluation || bp.seed_run_only)
 					cal = mrpt_fog::fitCalibration({run}, bp.preset, bp.options, {"calibration"});
 				else if (cal2 < profiles.size())
 					cal = mrpt_fog::fitCalibration({run, runs.eval[cal2]}, bp.preset, bp.options, {"calibration", "second"});
@@ -413,7 +417,7 @@ std::vector<CaseResult> runBenchCase(const BenchCase& c, const std::vector<Bench
 					cal = mrpt_fog::fitCalibration({run, runs.cal2[0]}, bp.preset, bp.options, {"calibration", second});
 				else
 					cal = mrpt_fog::fitCalibration({run}, bp.preset, bp.options, {"calibration"});
-				if (!runs.turn_on.empty() && !bp.fit_on_evaluation)
+				if (!runs.turn_on.empty() && !bp.fit_on_evaluation && !bp.seed_run_only && !bp.no_warmup)
 				{
 					try
 					{

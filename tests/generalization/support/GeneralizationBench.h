@@ -44,6 +44,10 @@ struct BenchPreset
 	/** Diagnostic only: fitted on each evaluation run itself (in-sample there), the best that
 	 * model family and selection can do on that profile; not a held-out figure. */
 	bool fit_on_evaluation = false;
+	/** Fitted on the seed run alone (no second calibration run, no warm-up term) even when the
+	 * case has them: one and several calibration runs compared on the same simulated runs. */
+	bool seed_run_only = false;
+	bool no_warmup = false;  //!< without the warm-up term even when the case has a turn-on run
 };
 /** The default (`multipoint`, default options) and fixed presets (selection none). */
 std::vector<BenchPreset> benchPresets();
