@@ -72,6 +72,11 @@ HOW THE FIT GUARDS AGAINST OVER-FITTING (--selection)
   the --tau of the stability figure, so the white noise of high sample rates does not decide),
   --step-rule significant (a step must beat two standard errors of the paired per-block
   held-out difference instead of lowering the held-out RMS by 0.5 %).
+  Several -i runs: by default each run is one fold (leave-one-run-out: a model fitted on the
+  other runs alone must predict it); --run-folds regimes cuts each run into its thermal regimes
+  and fits every fold on all the rest, the other runs included (docs/generalization.md,
+  "Session 8"). A second run with another temperature history (a sine, other ramp rates) is
+  what pins the rate (Shupe) coefficients that one 1 C/min profile leaves open.
   none: every preset term, plain least squares (plus --ridge): the seed's method; with several
     collinear thermistors it fits the calibration run and fails on others.
   The fit refuses (with the reason) too few samples, a temperature span too narrow for the
@@ -503,6 +508,11 @@ int main(int argc, char** argv)
 												 false,
 												 FitOptions{}.order_search == OrderSearch::Common ? "common" : "per-signal",
 												 "per-signal|common", cmd);
+		TCLAP::ValueArg<std::string> arg_runfolds("", "run-folds",
+												  "several -i runs: one fold per run (runs) or each run's thermal regimes, every "
+												  "fold trained on the other runs too (regimes)",
+												  false, FitOptions{}.run_folds == RunFolds::RegimesWithinRuns ? "regimes" : "runs",
+												  "runs|regimes", cmd);
 		TCLAP::ValueArg<unsigned> arg_folds("", "folds", "Cross-validation folds for a single run", false, 5, "K", cmd);
 		TCLAP::ValueArg<double> arg_tau("", "tau", "Averaging time of the stability figures [s]", false, 100.0, "S", cmd);
 		TCLAP::SwitchArg arg_nofb("", "no-fallbacks", "Do not fit per-thermistor fallback models", cmd);
@@ -565,6 +575,9 @@ int main(int argc, char** argv)
 		if (arg_osearch.getValue() != "per-signal" && arg_osearch.getValue() != "common")
 			throw std::invalid_argument("--order-search must be per-signal or common, got '" + arg_osearch.getValue() + "'");
 		opt.order_search = arg_osearch.getValue() == "common" ? OrderSearch::Common : OrderSearch::PerSignal;
+		if (arg_runfolds.getValue() != "runs" && arg_runfolds.getValue() != "regimes")
+			throw std::invalid_argument("--run-folds must be runs or regimes, got '" + arg_runfolds.getValue() + "'");
+		opt.run_folds = arg_runfolds.getValue() == "regimes" ? RunFolds::RegimesWithinRuns : RunFolds::Runs;
 		opt.tau_s = arg_tau.getValue();
 		opt.fallbacks = !arg_nofb.getValue();
 		opt.extrapolation = extrapolationPolicyFromString(arg_extra.getValue());
