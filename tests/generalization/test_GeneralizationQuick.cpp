@@ -97,3 +97,44 @@ TEST(GeneralizationBench, QuickSubsetMeetsTheIssueTargetsItCan)
 	EXPECT_GT(quick().of("default (multipoint)").oor_median_raw_over_comp,
 			  quick().of("default, clamp").oor_median_raw_over_comp);
 }
+
+TEST(GeneralizationBench, SecondCalibrationRunKeepsTheEvaluationRuns)
+{
+	// fog-sim device 1 at 0.5 Hz, the fixed multipoint@3/1, and the same preset fitted on the
+	// seed run alone in the same case (seed_run_only): the second calibration run and the turn-on
+	// run are simulated with their own noise seeds, so the evaluation runs, and the seed-run fit's
+	// ratios, are those of the plain case exactly.
+	BenchPreset fixed;
+	for (const auto& p : benchPresets())
+		if (p.label == "multipoint@3/1 none") fixed = p;
+	ASSERT_EQ(fixed.label, "multipoint@3/1 none");
+	BenchPreset alone = fixed;
+	alone.label += " 1run";
+	alone.seed_run_only = true;
+	const auto profiles = evaluationProfiles();
+	BenchCase plain{Generator::FogSim, 1, 0.5};
+	BenchCase two = plain;
+	two.second_calibration = "cal_sine";
+	two.warmup_calibration = true;
+	const auto r0 = runBenchCase(plain, {fixed}, profiles);
+	const auto r2 = runBenchCase(two, {fixed, alone}, profiles);
+	ASSERT_EQ(r0.size(), profiles.size());
+	ASSERT_EQ(r2.size(), 2 * profiles.size());  // cal_sine is no evaluation profile: all evaluated
+	bool any_differs = false;
+	for (std::size_t i = 0; i < profiles.size(); i++)
+	{
+		ASSERT_TRUE(r0[i].ok && r2[i].ok && r2[profiles.size() + i].ok) << profiles[i].name;
+		EXPECT_EQ(r2[profiles.size() + i].profile, r0[i].profile);
+		EXPECT_EQ(r2[profiles.size() + i].ratio, r0[i].ratio) << profiles[i].name;
+		any_differs |= r2[i].ratio != r0[i].ratio;
+	}
+	EXPECT_TRUE(any_differs);  // the two-run fit is another model
+	// an evaluation profile named as the second run joins the calibration and is not evaluated
+	BenchCase legacy = plain;
+	legacy.second_calibration = "sine_soaks";
+	const auto r1 = runBenchCase(legacy, {fixed}, profiles);
+	ASSERT_EQ(r1.size(), profiles.size() - 1);
+	for (const auto& r : r1) EXPECT_NE(r.profile, "sine_soaks");
+	EXPECT_THROW(runBenchCase(BenchCase{Generator::FogSim, 1, 0.5, mrpt_fog::sim::defaultEffects(), false, "no_such"}, {fixed}, profiles),
+				 std::invalid_argument);
+}
