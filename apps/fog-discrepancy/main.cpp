@@ -79,7 +79,8 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<std::size_t> max_rows(
 			"", "max-rows",
 			"at most this many rows per run (default 65536, 18 h of 1 s blocks): beyond it adjacent blocks are "
-			"merged in pairs (2 S, 4 S, ...), which bounds memory (about 1.4 KB per row) and time",
+			"merged in pairs (2 S, 4 S, ...), which bounds memory (about 1.4 KB per row) and time; blocks stop "
+			"growing at 16 s (the compensator's rate window is 60 s), so beyond 12 days the rows grow",
 			false, 65536, "N", cmd);
 		TCLAP::SwitchArg quiet("q", "quiet", "No progress line on stderr while the runs are read", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-discrepancy")) return *rc;

@@ -5,7 +5,8 @@
 # wall and CPU time (user + sys), peak RSS (/usr/bin/time), and the ratio of the time to
 # `gzip -dc` of the same rawlog in the same run. Programs: fog-convert rawlog -> .csv.gz,
 # fog-compensate rawlog -> rawlog, fog-calibrate (default model), fog-evaluate (the 100 Hz
-# calibration), fog-drift is not here (a drive: docs/io.md). Everything under `nice`.
+# calibration), fog-discrepancy (the same calibration; 1 s block means), fog-drift is not here (a
+# drive: docs/io.md). Everything under `nice`.
 #   bench/io/seed_scaling.sh BIN_DIR WORK ["100 1000"]
 # WORK needs about 1 GB at 1 kHz (rawlog 280 MB, .csv.gz, compensated rawlog; $TMPDIR holds
 # fog-calibrate's spill, 2.7 GB at 28.8 M); the large files are deleted after each rate.
@@ -55,5 +56,6 @@ for rate in $rates; do
 	measure "$rate" "$n" "fog-compensate rawlog -> rawlog" "$bin/fog-compensate" -i "$log" --cal cal.yaml -o comp_$rate.rawlog -q
 	rm -f comp_$rate.rawlog
 	measure "$rate" "$n" "fog-evaluate --cal" "$bin/fog-evaluate" -i "$log" --cal cal.yaml -q
+	measure "$rate" "$n" "fog-discrepancy --model cal.yaml" "$bin/fog-discrepancy" --measured "$log" --model cal.yaml -q
 	rm -f "$log"
 done

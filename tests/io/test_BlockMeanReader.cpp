@@ -231,3 +231,23 @@ TEST(BlockMeanReader, RawQuantumOfTheThermistors)
 	std::sort(row_steps.begin(), row_steps.end());
 	EXPECT_LT(row_steps[row_steps.size() / 20], 0.05);  // why the analysis needs the raw figure
 }
+
+TEST(BlockMeanReader, BlocksStopGrowingAtTheirLongest)
+{
+	// 10 Hz for 40 000 s with at most 1000 rows: blocks would reach 64 s, they stop at 16 s and
+	// the rows grow to 2500 instead
+	BlockMeanOptions opt;
+	opt.max_rows = 1000;
+	BlockMeanAccumulator acc(layout(false, false), opt);
+	for (std::size_t k = 0; k < 400000; k++)
+	{
+		const double t = 0.1 * static_cast<double>(k);
+		acc.add(sample(t, 1.0, t, t));
+	}
+	BlockMeanInfo info;
+	const FogSeries s = acc.finish(info);
+	EXPECT_EQ(info.doublings, 4);
+	EXPECT_NEAR(info.block_s, 16.0, 1e-9);
+	EXPECT_EQ(s.size(), 2500u);
+	for (std::size_t j = 0; j < s.size(); j++) ASSERT_NEAR(s.time_s[j], 0.1 * (160.0 * static_cast<double>(j) + 79.5), 1e-6) << j;
+}

@@ -136,6 +136,11 @@ struct BlockMeanAccumulator::Impl
 	/** Merges adjacent rows in pairs (in place). */
 	void cascade()
 	{
+		if (opt.max_block_s > 0 && static_cast<double>(2 * k_nominal) * period_s > opt.max_block_s * (1.0 + 1e-9))
+		{
+			cascade_at = std::numeric_limits<std::size_t>::max();  // blocks at their longest: rows grow
+			return;
+		}
 		std::size_t out = 0, merged = 0;
 		for (std::size_t i = 0; i < rows.size();)
 		{

@@ -17,7 +17,7 @@
  *  - when the rows exceed max_rows, adjacent blocks of the same power, table rate and field
  *    with no gap between them are merged in pairs (the block length doubles: 2 K, 4 K, ...),
  *    so the rows stay at most max_rows (unless the log changes power, table rate or field more
- *    often than that).
+ *    often than that, or the blocks would exceed max_block_s: then the rows grow).
  * A row is the mean over its block's samples: time, gyro rates, table rate, field, power; each
  * thermistor over its finite readings (NaN when the whole block is a dropout). The mean of a
  * quantity linear in the samples (bias = rate - table rate, a temperature rate) is the quantity
@@ -45,6 +45,10 @@ struct BlockMeanOptions
 	double min_block_s = 1.0;
 	/** Rows kept at most (blocks double beyond it); at least 2. */
 	std::size_t max_rows = 65536;
+	/** Blocks never grow beyond this [s] (<= 0: no limit): past it the rows grow instead. A block
+	 * must stay well inside the slowest-varying estimate the analysis makes from the rows (the
+	 * compensator's rate window, 60 s by default: with 32 s blocks it has too few points). */
+	double max_block_s = 16.0;
 };
 
 /** What the reduction did. */
