@@ -119,6 +119,9 @@ int main(int argc, char** argv)
 			BlockMeanOptions bopt;
 			bopt.min_block_s = block_s.getValue();
 			bopt.max_rows = max_rows.getValue();
+			// the simulator path puts each row on the profile's time grid: rows at their block's
+			// first sample (the log's own grid); the means lag that time by half a block
+			if (sim.isSet()) bopt.row_time = BlockMeanOptions::RowTime::FirstSample;
 			BlockMeanInfo binfo;
 			app::StreamScreening screening(!no_screen.getValue());
 			app::Progress progress("fog-discrepancy: reading " + f, quiet.getValue());

@@ -251,3 +251,23 @@ TEST(BlockMeanReader, BlocksStopGrowingAtTheirLongest)
 	EXPECT_EQ(s.size(), 2500u);
 	for (std::size_t j = 0; j < s.size(); j++) ASSERT_NEAR(s.time_s[j], 0.1 * (160.0 * static_cast<double>(j) + 79.5), 1e-6) << j;
 }
+
+TEST(BlockMeanReader, RowsAtTheirFirstSampleStayOnTheLogsGrid)
+{
+	BlockMeanOptions opt;
+	opt.row_time = BlockMeanOptions::RowTime::FirstSample;
+	BlockMeanAccumulator acc(layout(false, false), opt);
+	for (std::size_t k = 0; k < 1000; k++)
+	{
+		const double t = 0.1 * static_cast<double>(k);
+		acc.add(sample(t, 0.0, t, t));
+	}
+	BlockMeanInfo info;
+	const FogSeries s = acc.finish(info);
+	ASSERT_EQ(s.size(), 100u);
+	for (std::size_t j = 0; j < s.size(); j++)
+	{
+		EXPECT_DOUBLE_EQ(s.time_s[j], 0.1 * static_cast<double>(10 * j)) << j;  // sample 10 j
+		EXPECT_NEAR(s.temp_C[0][j], s.time_s[j] + 0.45, 1e-9) << j;  // the mean lags by half a block
+	}
+}

@@ -259,7 +259,7 @@ FogSeries BlockMeanAccumulator::finish(BlockMeanInfo& info)
 	{
 		const Block& b = m.rows[r];
 		const double c = static_cast<double>(b.count);
-		out.time_s[r] = b.t_sum / c;
+		out.time_s[r] = m.opt.row_time == BlockMeanOptions::RowTime::FirstSample ? b.t_first : b.t_sum / c;
 		for (int a = 0; a < 3; a++)
 			if (out.has_axis[a]) out.rate_dph[a][r] = b.rate_sum[a] / c;
 		for (std::size_t i = 0; i < m.n_th; i++)

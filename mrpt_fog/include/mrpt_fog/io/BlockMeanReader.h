@@ -49,6 +49,14 @@ struct BlockMeanOptions
 	 * must stay well inside the slowest-varying estimate the analysis makes from the rows (the
 	 * compensator's rate window, 60 s by default: with 32 s blocks it has too few points). */
 	double max_block_s = 16.0;
+	/** The row's time: the mean of its block's times (default: the time of the means of signals
+	 * linear in time), or the time of its first sample (on the log's own time grid, for analyses
+	 * that need rows on a simulator profile's grid; the means then lag it by half a block). */
+	enum class RowTime : unsigned char
+	{
+		Mean = 0,
+		FirstSample = 1
+	} row_time = RowTime::Mean;
 };
 
 /** What the reduction did. */
