@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/ChamberReconstruction.h>
+#include <mrpt_fog/metrics/LongRunVariance.h>
 #include <mrpt_fog/sim/FogSimulator.h>
 
 #include <Eigen/Dense>
@@ -166,33 +167,15 @@ AirReconstruction reconstructChamberAir(const sim::FogDevice& device, const sim:
 	const Eigen::VectorXd res = y - G * bestX;
 	best.fit_rms_C = std::sqrt(res.squaredNorm() / static_cast<double>(n));
 	// Long-run residual variance by batch means, per thermistor (rows are in time order within one).
-	double s2sum = 0;
-	int s2n = 0;
+	std::vector<std::vector<double>> perThermistor;
 	Eigen::Index r0 = 0;
 	for (std::size_t m : rowsPerTherm)
 	{
-		const auto b = static_cast<std::size_t>(std::max<long>(1, std::lround(std::sqrt(static_cast<double>(m)))));
-		const std::size_t nb = b > 0 ? m / b : 0;
-		if (nb >= 2)
-		{
-			std::vector<double> means(nb, 0.0);
-			for (std::size_t blk = 0; blk < nb; ++blk)
-			{
-				for (std::size_t u = 0; u < b; ++u) means[blk] += res(r0 + static_cast<Eigen::Index>(blk * b + u));
-				means[blk] /= static_cast<double>(b);
-			}
-			double mu = 0;
-			for (double v : means) mu += v;
-			mu /= static_cast<double>(nb);
-			double var = 0;
-			for (double v : means) var += (v - mu) * (v - mu);
-			var /= static_cast<double>(nb - 1);
-			s2sum += std::max(var * static_cast<double>(b), 0.0);
-			s2n++;
-		}
+		perThermistor.emplace_back(res.data() + r0, res.data() + r0 + static_cast<Eigen::Index>(m));
 		r0 += static_cast<Eigen::Index>(m);
 	}
-	const double s2 = s2n > 0 ? s2sum / s2n : res.squaredNorm() / static_cast<double>(n);
+	const double s2_batch = batchMeansLongRunVariance(perThermistor, BatchPooling::MeanOfSeries);
+	const double s2 = std::isfinite(s2_batch) ? s2_batch : res.squaredNorm() / static_cast<double>(n);
 	if (!opt.uncertainty || bestInv.size() == 0)
 	{
 		double air0 = bestX(0);

@@ -2,6 +2,7 @@
 #include <mrpt_fog/common/GoldenSection.h>
 #include <mrpt_fog/discrepancy/SimulatorCalibration.h>
 #include <mrpt_fog/discrepancy/WhitenedRegression.h>
+#include <mrpt_fog/metrics/LongRunVariance.h>
 #include <mrpt_fog/sim/EffectRegistry.h>
 
 #include <algorithm>
@@ -134,31 +135,6 @@ Eigen::MatrixXd biasJacobian(const SimModel& m, const std::vector<ParamSlot>& sl
 	return J;
 }
 
-/** Long-run variance of a residual by batch means: blocks of round(sqrt(m)) consecutive entries
- * of each series (NaN/excluded entries skipped), pooled; NaN with fewer than 2 blocks. */
-double blockAveragedVariance(const std::vector<std::vector<double>>& series)
-{
-	std::size_t m = 0;
-	for (const auto& s : series) m += s.size();
-	if (m < 8) return kNaN;
-	const auto b = static_cast<std::size_t>(std::max(1.0, std::round(std::sqrt(static_cast<double>(m) / series.size()))));
-	std::vector<double> means;
-	double grand = 0;
-	for (const auto& s : series)
-		for (std::size_t i = 0; i + b <= s.size(); i += b)
-		{
-			double x = 0;
-			for (std::size_t j = i; j < i + b; ++j) x += s[j];
-			means.push_back(x / b);
-			grand += x / b;
-		}
-	if (means.size() < 2) return kNaN;
-	grand /= means.size();
-	double v = 0;
-	for (double x : means) v += (x - grand) * (x - grand);
-	return static_cast<double>(b) * v / (means.size() - 1);
-}
-
 std::vector<double> ciHalfWidths(const Eigen::MatrixXd& J, double s2)
 {
 	std::vector<double> out(static_cast<std::size_t>(J.cols()), kNaN);
@@ -187,7 +163,7 @@ void finish(SimCalibration& c, const FogSeries& run, const ChamberDrive& drive, 
 	std::vector<double> rbUsed;
 	for (std::size_t k = 0; k < rows.size(); ++k)
 		if (rows[k]) rbUsed.push_back(rb(static_cast<Eigen::Index>(k)));
-	c.bias_ci95_half = ciHalfWidths(c.bias_jacobian, blockAveragedVariance({rbUsed}));
+	c.bias_ci95_half = ciHalfWidths(c.bias_jacobian, batchMeansLongRunVariance({rbUsed}, BatchPooling::PooledBlocks));
 	// temperatures: Jacobian of the stacked residual (offsets projected out when free)
 	if (!c.temp_slots.empty())
 	{
@@ -213,7 +189,7 @@ void finish(SimCalibration& c, const FogSeries& run, const ChamberDrive& drive, 
 				if (std::isfinite(rt[i][k])) s.push_back(r0(static_cast<Eigen::Index>(i * n + k)));
 			perThermistor.push_back(std::move(s));
 		}
-		c.temp_ci95_half = ciHalfWidths(JT, blockAveragedVariance(perThermistor));
+		c.temp_ci95_half = ciHalfWidths(JT, batchMeansLongRunVariance(perThermistor, BatchPooling::PooledBlocks));
 	}
 }
 }  // namespace

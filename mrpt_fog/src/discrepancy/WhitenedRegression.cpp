@@ -254,23 +254,6 @@ ArNoiseModel fitNoiseReml(const Eigen::MatrixXd& X, const Eigen::VectorXd& y, co
 	return m;
 }
 
-double longRunVarianceFactor(const Eigen::VectorXd& e, int max_lag)
-{
-	const Eigen::Index n = e.size();
-	if (n < 3) return 1.0;
-	const double mean = e.mean();
-	const Eigen::VectorXd c = e.array() - mean;
-	const double c0 = c.squaredNorm();
-	if (c0 <= 0) return 1.0;
-	double f = 1.0;
-	for (int l = 1; l <= max_lag && l < n; ++l)
-	{
-		const double rho = c.head(n - l).dot(c.tail(n - l)) / c0;
-		f += 2.0 * (1.0 - double(l) / (max_lag + 1)) * rho;
-	}
-	return std::max(1.0, f);
-}
-
 namespace
 {
 /** Regularised upper incomplete gamma Q(a, x) (series / continued fraction). */

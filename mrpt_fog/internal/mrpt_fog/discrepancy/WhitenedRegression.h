@@ -14,6 +14,7 @@
  */
 
 #include <mrpt_fog/discrepancy/SelectionResult.h>
+#include <mrpt_fog/metrics/LongRunVariance.h>
 
 #include <Eigen/Dense>
 #include <cstddef>
@@ -68,9 +69,8 @@ Eigen::MatrixXd whiten(const Eigen::MatrixXd& M, const ArNoiseModel& ar, const s
 /** gamma_0 / sigma_a^2 of an ARMA(1,1): (1 + theta^2 - 2 phi theta) / (1 - phi^2). */
 double armaVarianceRatio(const ArNoiseModel& ar);
 
-/** Long-run variance factor 1 + 2 sum_{l=1..L} (1 - l/(L+1)) rho_l of a (whitened) residual,
- * clamped to >= 1. */
-double longRunVarianceFactor(const Eigen::VectorXd& e, int max_lag);
+/** The Bartlett long-run variance factor of a whitened residual (metrics/LongRunVariance.h). */
+using ::mrpt_fog::longRunVarianceFactor;
 
 /** Upper tail P(X > x) of a chi-square variable with `dof` degrees of freedom. */
 double chi2Survival(double x, double dof);
