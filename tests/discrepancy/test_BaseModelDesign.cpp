@@ -91,7 +91,7 @@ TEST(BaseModelDesign, ColumnsAreWhatTheCompensatorEvaluates)
 		for (std::size_t k = 0; k < run->size(); ++k)
 		{
 			if (!std::isfinite(comp.bias_dph[k]) || !d.defined[k]) continue;
-			if (comp.flags[k] & mrpt_fog::compflags::RateFree) continue;  // the rate-free start-up model, not the main one
+			if (comp.flags[k] & mrpt_fog::CompensationFlag::RateFree) continue;  // the rate-free start-up model, not the main one
 			double b = 0;
 			for (std::size_t t = 0; t < cal.model.coef_dph.size(); ++t)
 				b += cal.model.coef_dph[t] * d.X(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(t));

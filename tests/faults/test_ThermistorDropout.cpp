@@ -66,7 +66,7 @@ TEST(ThermistorDropout, TwoMissingUsesMeanBias)
 	EXPECT_GE(c.counters.no_model_samples, k1 - k0);
 	for (std::size_t k = k0; k < k1; k++)
 	{
-		ASSERT_TRUE(c.flags[k] & compflags::NoModel) << k;
+		ASSERT_TRUE(c.flags[k] & CompensationFlag::NoModel) << k;
 		ASSERT_DOUBLE_EQ(c.bias_dph[k], cal.mean_bias_dph) << k;
 	}
 }

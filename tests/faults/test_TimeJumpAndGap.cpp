@@ -37,21 +37,21 @@ TEST(TimeJumpAndGap, GapIsCompensatedAndRoundTrips)
 	// after the gap: no rate yet, then a window shorter than half: the rate-free start-up model
 	// (flag RateFree), neither the mean bias nor the main model with a rate from a few samples
 	ASSERT_TRUE(cal.startup.has_value());
-	const std::uint8_t old_flags = compflags::NoModel | compflags::RateWarmup | compflags::Fallback;
+	const std::uint8_t old_flags = CompensationFlag::NoModel | CompensationFlag::RateWarmup | CompensationFlag::Fallback;
 	for (std::size_t k : {k_after, k_after + 1})
 	{
-		EXPECT_TRUE(c.flags[k] & compflags::RateFree) << k;
+		EXPECT_TRUE(c.flags[k] & CompensationFlag::RateFree) << k;
 		EXPECT_FALSE(c.flags[k] & old_flags) << k;
 	}
-	EXPECT_FALSE(c.flags[k_after - 1] & (old_flags | compflags::RateFree));
+	EXPECT_FALSE(c.flags[k_after - 1] & (old_flags | CompensationFlag::RateFree));
 	// a calibration without the start-up model (a file written before it): as before, no rate
 	// yet (mean bias, NoModel), then RateWarmup for a while
 	Calibration old = cal;
 	old.startup.reset();
 	const CompensatedSeries c_old = compensate(old, g);
-	EXPECT_TRUE(c_old.flags[k_after] & compflags::NoModel);
-	EXPECT_TRUE(c_old.flags[k_after + 1] & compflags::RateWarmup);
-	EXPECT_FALSE(c_old.flags[k_after - 1] & (compflags::RateWarmup | compflags::NoModel));
+	EXPECT_TRUE(c_old.flags[k_after] & CompensationFlag::NoModel);
+	EXPECT_TRUE(c_old.flags[k_after + 1] & CompensationFlag::RateWarmup);
+	EXPECT_FALSE(c_old.flags[k_after - 1] & (CompensationFlag::RateWarmup | CompensationFlag::NoModel));
 	for (double v : c.compensated_dph) ASSERT_TRUE(std::isfinite(v));
 	const double s = faulttest::stability100_dph(c);
 	std::cout << "10 min gap: stability " << s << " deg/h (" << s / s_clean << " x the gap-free " << s_clean << ")\n";
@@ -78,8 +78,8 @@ TEST(TimeJumpAndGap, ForwardJumpIsAGap)
 	const std::size_t k_jump = r.size() / 2;
 	for (std::size_t k = k_jump; k < j.size(); k++) j.time_s[k] += 3600.0;
 	const CompensatedSeries c = compensate(cal, j), c0 = compensate(cal, r);
-	EXPECT_TRUE(c.flags[k_jump] & compflags::RateFree);  // the rate-free start-up model
-	EXPECT_TRUE(c.flags[k_jump + 1] & compflags::RateFree);
+	EXPECT_TRUE(c.flags[k_jump] & CompensationFlag::RateFree);  // the rate-free start-up model
+	EXPECT_TRUE(c.flags[k_jump + 1] & CompensationFlag::RateFree);
 	for (std::size_t k = 0; k < k_jump; k++) ASSERT_EQ(c.compensated_dph[k], c0.compensated_dph[k]);
 	for (double v : c.compensated_dph) ASSERT_TRUE(std::isfinite(v));
 }

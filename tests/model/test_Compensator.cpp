@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/model/Compensator.h>
-#include <mrpt_fog/model/CompensatorKernel.h>  // internal: kernel::cpuHasAvx2
+#include <mrpt_fog/model/CompensatorKernel.h>  // internal: detail::cpuHasAvx2
 
 #include <cmath>
 #include <cstring>
@@ -64,7 +64,7 @@ TEST(Compensator, StreamingEqualsBatchModel)
 	{
 		const double n = static_cast<double>(k + 1);
 		const bool warming = k < 1000 && dt * std::sqrt(n * n - 1.0) < half * (1 - 1e-9);
-		ASSERT_EQ((c.flags[k] & compflags::RateFree) != 0, warming) << k;
+		ASSERT_EQ((c.flags[k] & CompensationFlag::RateFree) != 0, warming) << k;
 		ASSERT_EQ(c.compensated_dph[k], c.raw_dph[k] - c.bias_dph[k]);
 		if (warming)
 		{
@@ -110,8 +110,8 @@ TEST(Compensator, DropoutUsesFallbackAndSwitchesBack)
 	for (std::size_t k = 5000; k < 8000; k++)
 	{
 		const bool in = k >= 6000 && k < 6600;
-		ASSERT_EQ((c.flags[k] & compflags::Fallback) != 0, in) << k;
-		ASSERT_EQ((c.flags[k] & compflags::RateFree) != 0, k >= 6600 && k < back) << k;
+		ASSERT_EQ((c.flags[k] & CompensationFlag::Fallback) != 0, in) << k;
+		ASSERT_EQ((c.flags[k] & CompensationFlag::RateFree) != 0, k >= 6600 && k < back) << k;
 		ASSERT_TRUE(std::isfinite(c.compensated_dph[k]));
 		if (in) ASSERT_NEAR(c.bias_dph[k], fb[k], 1e-9) << k;
 	}
@@ -124,7 +124,7 @@ TEST(Compensator, DropoutUsesFallbackAndSwitchesBack)
 	const CompensatedSeries c2 = compensate(calA(), B);
 	if (calA().fallbackFor(used)->features.references(other) || calA().model.features.references(other))
 	{
-		EXPECT_EQ(c2.flags[6150] & compflags::NoModel, compflags::NoModel);
+		EXPECT_EQ(c2.flags[6150] & CompensationFlag::NoModel, CompensationFlag::NoModel);
 		EXPECT_EQ(c2.bias_dph[6150], calA().mean_bias_dph);
 	}
 }
@@ -152,7 +152,7 @@ TEST(Compensator, OutOfRangeTemperaturesAreClampedAndCounted)
 	}
 	EXPECT_GT(excursion, 100.0);
 	EXPECT_NEAR(c.counters.max_temp_excursion_C, excursion, 1e-9);
-	for (std::size_t k = 1100; k < 1400; k++) ASSERT_TRUE(c.flags[k] & compflags::Clamped) << k;
+	for (std::size_t k = 1100; k < 1400; k++) ASSERT_TRUE(c.flags[k] & CompensationFlag::Clamped) << k;
 	// Independent check at k = 1300 (step out of the rate window): the model evaluated with
 	// the temperatures clamped to the calibrated maximum and the column-wise causal rates.
 	const auto& m = calA().model;
@@ -337,7 +337,7 @@ CompensatedSeries runSteps(const Calibration& cal, const FogSeries& s, KernelBui
 // and with the layout's columns in another order than the calibration's.
 TEST(Compensator, Avx2BuildEqualsPortableBitwise)
 {
-	if (!kernel::cpuHasAvx2()) GTEST_SKIP() << "this CPU has no AVX2";
+	if (!detail::cpuHasAvx2()) GTEST_SKIP() << "this CPU has no AVX2";
 	FogSeries s = stressRun(61, 12000);
 	FogSeries swapped = s;
 	std::swap(swapped.thermistors[0], swapped.thermistors[3]);
@@ -452,10 +452,10 @@ TEST(Compensator, HostileLogMatchesIndependentReference)
 			}
 			ASSERT_NEAR(c.bias_dph[k], expected, 1e-9) << k;
 			const bool is_startup = cal->startup && m == &*cal->startup;
-			ASSERT_EQ((c.flags[k] & compflags::Fallback) != 0, m && m != &cal->model && !is_startup) << k;
-			ASSERT_EQ((c.flags[k] & compflags::RateFree) != 0, is_startup) << k;
-			ASSERT_EQ((c.flags[k] & compflags::NoModel) != 0, m == nullptr) << k;
-			ASSERT_EQ((c.flags[k] & compflags::Clamped) != 0, clamped > 0) << k;
+			ASSERT_EQ((c.flags[k] & CompensationFlag::Fallback) != 0, m && m != &cal->model && !is_startup) << k;
+			ASSERT_EQ((c.flags[k] & CompensationFlag::RateFree) != 0, is_startup) << k;
+			ASSERT_EQ((c.flags[k] & CompensationFlag::NoModel) != 0, m == nullptr) << k;
+			ASSERT_EQ((c.flags[k] & CompensationFlag::Clamped) != 0, clamped > 0) << k;
 			clamped_signals += static_cast<std::size_t>(clamped);
 			fallback += m && m != &cal->model && !is_startup;
 			none += m == nullptr;
@@ -472,7 +472,7 @@ TEST(Compensator, Avx2RequestedWithoutAvx2IsRefused)
 {
 	FogSeries s = fogtest::makeCoilRun("A", 56);
 	s.resize(10);
-	if (kernel::cpuHasAvx2())
+	if (detail::cpuHasAvx2())
 		EXPECT_STREQ(Compensator(calA(), s.thermistors, KernelBuild::Avx2).kernelBuild(), "avx2");
 	else
 		EXPECT_THROW(Compensator(calA(), s.thermistors, KernelBuild::Avx2), std::invalid_argument);
@@ -489,7 +489,7 @@ TEST(Compensator, BatchEqualsStreamingBitwise)
 	for (std::size_t k = 0; k < n; k++)
 		for (std::size_t i = 0; i < nt; i++) rows[k * nt + i] = s.temp_C[i][k];
 	std::vector<KernelBuild> builds{KernelBuild::Portable};
-	if (kernel::cpuHasAvx2()) builds.push_back(KernelBuild::Avx2);
+	if (detail::cpuHasAvx2()) builds.push_back(KernelBuild::Avx2);
 	for (const Calibration* cal : {&calPlain(), &calA()})
 		for (const KernelBuild build : builds)
 		{

@@ -103,7 +103,7 @@ TEST(CompensatorExtras, StartupOffsetOnlyWhileTheStartupModelRunsAfterATurnOn)
 	for (std::size_t k = 0; k < b.size(); k++)
 	{
 		const double dt = b.time_s[k] - t_on;
-		const bool startup = (plain.flags[k] & compflags::RateFree) != 0 && dt <= cal.rate_estimator.window_s;
+		const bool startup = (plain.flags[k] & CompensationFlag::RateFree) != 0 && dt <= cal.rate_estimator.window_s;
 		with_offset += startup;
 		const double extra = 0.2 * std::exp(-dt / 900.0) - 0.05 * std::exp(-dt / 3000.0) + (startup ? -1.5 : 0.0);
 		ASSERT_NEAR(out.bias_dph[k] - plain.bias_dph[k], extra, 1e-12) << k;

@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/model/Compensator.h>
+#include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/model/CompensatorStep.h>
 
 #include <Eigen/Core>
@@ -15,18 +16,13 @@ namespace mrpt_fog
 {
 namespace
 {
-std::string degText(double a)
-{
-	std::ostringstream o;
-	o << a;
-	return o.str();
-}
+std::string degText(double a) { return formatValue("%g", a); }
 
 std::string describeLayout(const std::vector<ThermistorInfo>& layout)
 {
 	std::ostringstream o;
 	for (std::size_t i = 0; i < layout.size(); i++)
-		o << (i ? ", " : "") << layout[i].name << " " << toString(layout[i].side) << " " << layout[i].angle_deg << "deg";
+		o << (i ? ", " : "") << layout[i].name << " " << toString(layout[i].side) << " " << formatValue("%g", layout[i].angle_deg) << "deg";
 	return layout.empty() ? "(no thermistors)" : o.str();
 }
 }  // namespace
@@ -47,9 +43,9 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 			degree[fs.termSignal(i)] = std::max(degree[fs.termSignal(i)], fs.terms()[i].power);
 	const std::size_t nc = names.size();
 	const double inf = std::numeric_limits<double>::infinity();
-	std::vector<kernel::KernelBlock>& K = c.kernel;
+	std::vector<detail::KernelBlock>& K = c.kernel;
 	K.resize((nc + 3) / 4);
-	for (kernel::KernelBlock& b : K)
+	for (detail::KernelBlock& b : K)
 		for (int j = 0; j < 4; j++)
 		{
 			b.t_centre[j] = b.r_centre[j] = 0.0;
@@ -64,7 +60,7 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 		if (sig.isDifference()) continue;
 		const auto& nm = fs.normalisation()[s];
 		const int ch = chan(sig.a);
-		kernel::KernelBlock& b = K[ch / 4];
+		detail::KernelBlock& b = K[ch / 4];
 		const int j = ch % 4;
 		const bool t = sig.kind == SignalKind::Temp;
 		(t ? b.t_centre : b.r_centre)[j] = nm.centre;
@@ -135,7 +131,7 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 			const double inv_scale = 1.0 / fs.normalisation()[s].scale;
 			double q = m.coef_dph.at(i);
 			for (int e = 0; e < k; e++) q *= inv_scale;
-			kernel::KernelBlock& b = K[ch / 4];
+			detail::KernelBlock& b = K[ch / 4];
 			(sig.kind == SignalKind::Temp ? b.t_q : b.r_q)[k - 1][ch % 4] += q;
 			continue;
 		}
@@ -161,9 +157,9 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 	  tracker_(1, cal.rate_estimator.window_s),
 	  half_tracker_(1, 0.5 * cal.rate_estimator.window_s)
 {
-	if (build == KernelBuild::Avx2 && !kernel::cpuHasAvx2())
+	if (build == KernelBuild::Avx2 && !detail::cpuHasAvx2())
 		throw std::invalid_argument("compensator: the AVX2 build was requested but this CPU lacks AVX2");
-	const bool avx2 = build == KernelBuild::Avx2 || (build == KernelBuild::Auto && kernel::cpuHasAvx2());
+	const bool avx2 = build == KernelBuild::Avx2 || (build == KernelBuild::Auto && detail::cpuHasAvx2());
 	cal.rate_estimator.validate();
 	if (cal.rate_estimator.kind != RateEstimatorKind::Causal)
 		throw std::invalid_argument("calibration was fitted with the non-causal rate estimator " +
@@ -363,7 +359,7 @@ double groupSumAnyDegree(int degree, const int* a, const int* b, const double* s
 }
 }  // namespace
 
-namespace kernel
+namespace detail
 {
 int countClamped(const KernelBlock* K, std::size_t blocks, const double* T, const double* R)
 {
@@ -377,7 +373,7 @@ int countClamped(const KernelBlock* K, std::size_t blocks, const double* T, cons
 		}
 	return cl;
 }
-}  // namespace kernel
+}  // namespace detail
 
 [[gnu::noinline]] double Compensator::addGroups(const Compiled& m, const double* temp_C, double sum, int& clamped) const
 {

@@ -13,7 +13,7 @@
 namespace mrpt_fog
 {
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-bool kernel::cpuHasAvx2()
+bool detail::cpuHasAvx2()
 {
 	// __builtin_cpu_supports also requires that the OS saves the AVX state (OSXSAVE / XCR0).
 	__builtin_cpu_init();
@@ -43,7 +43,7 @@ bool kernel::cpuHasAvx2()
 	}
 }
 #else
-bool kernel::cpuHasAvx2() { return false; }
+bool detail::cpuHasAvx2() { return false; }
 void Compensator::stepBatchAvx2(std::size_t n, const double* time_s, const double* raw_dph, const double* temp_C,
 								std::size_t stride, Output* out)
 {

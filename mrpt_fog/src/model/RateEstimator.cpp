@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/common/EnumNames.h>
+#include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/model/CausalRateTrackerInline.h>
 #include <mrpt_fog/model/RateEstimator.h>
 
@@ -47,7 +48,7 @@ RateEstimatorKind rateEstimatorKindFromString(const std::string& text)
 std::string RateEstimatorSettings::describe() const
 {
 	std::ostringstream o;
-	o << toString(kind) << "(window_s=" << window_s;
+	o << toString(kind) << "(window_s=" << formatValue("%g", window_s);
 	if (kind == RateEstimatorKind::SavitzkyGolay || poly_order != 1) o << ", order=" << poly_order;
 	o << ")";
 	return o.str();

@@ -1,10 +1,10 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/model/ThermistorHealth.h>
+#include <mrpt_fog/common/NumberFormat.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 
 namespace mrpt_fog
@@ -18,13 +18,7 @@ void requireField(bool ok, const char* field, const char* reason)
 	if (!ok) throw std::invalid_argument(std::string("thermistor health: ") + field + ": " + reason);
 }
 
-std::string timeText(double t)
-{
-	std::ostringstream o;
-	o.precision(17);
-	o << t;
-	return o.str();
-}
+std::string timeText(double t) { return formatValue("%.17g", t); }
 }  // namespace
 
 const char* toString(ThermistorState s)

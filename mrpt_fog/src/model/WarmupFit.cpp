@@ -145,11 +145,11 @@ WarmupModel fitWarmup(const std::vector<FogSeries>& runs, const Calibration& cal
 				// what that model leaves after a turn-on; the rate-free start-up model of the first half
 				// rate window is another model, whose own error would otherwise pull the fit (on the
 				// bundled warm-up run -1.4 deg/h for 30 s, and the time constant to its search edge).
-				const bool startup_sample = (comp.flags[k] & (compflags::RateFree | compflags::RateWarmup)) != 0;
+				const bool startup_sample = (comp.flags[k] & (CompensationFlag::RateFree | CompensationFlag::RateWarmup)) != 0;
 				const double dt = s.time_s[k] - t_on;
 				// ... but that model's error right after a turn-on is fitted apart (startup_offset_dph),
 				// on the samples where the compensator adds it (WarmupModel.h)
-				if (!table && std::isfinite(e) && (comp.flags[k] & compflags::RateFree) != 0 &&
+				if (!table && std::isfinite(e) && (comp.flags[k] & CompensationFlag::RateFree) != 0 &&
 					dt <= cal.rate_estimator.window_s)
 					startup.push_back({span_index, dt, e});
 				if (table || startup_sample || !std::isfinite(e)) continue;
@@ -396,7 +396,7 @@ WarmupTermsChoice selectWarmupTerms(const std::vector<FogSeries>& runs, const Ca
 				}
 				const double e = comp.compensated_dph[k];
 				const bool table = !s.table_rate_dph.empty() && s.table_rate_dph[k] != 0.0;
-				const bool skip = (comp.flags[k] & (compflags::RateFree | compflags::RateWarmup)) != 0;
+				const bool skip = (comp.flags[k] & (CompensationFlag::RateFree | CompensationFlag::RateWarmup)) != 0;
 				if (table || skip || !std::isfinite(e) || !s.has_axis[axis]) continue;
 				const auto id = static_cast<long long>(std::floor((s.time_s[k] - t_on) / opt.bin_s));
 				if (id != bid) flushBin(), bid = id;

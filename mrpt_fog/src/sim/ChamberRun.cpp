@@ -1,9 +1,9 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/sim/ChamberRun.h>
+#include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/sim/FogSimulator.h>
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include "SimulatedSeries.h"
@@ -20,21 +20,15 @@ void SimSettings::validate() const
 void recordSimMetadata(FogSeries& series, const std::string& scenario, const ChamberProfile& profile,
 					   const FogDevice& device, const SimSettings& settings)
 {
-	std::ostringstream rate;
-	rate.precision(10);
-	rate << settings.rate_hz;
 	series.setMetadata("sim.generator", "fog-sim (mrpt_fog simulator v1)");
 	series.setMetadata("sim.scenario", scenario);
 	series.setMetadata("sim.profile", settings.profile_source.empty() ? profile.name() : settings.profile_source);
 	series.setMetadata("sim.profile_name", profile.name());
 	series.setMetadata("sim.seed", std::to_string(settings.seed));
 	series.setMetadata("sim.rng", "mt19937_64 + splitmix64 streams + Box-Muller");
-	series.setMetadata("sim.rate_hz", rate.str());
+	series.setMetadata("sim.rate_hz", formatValue("%.10g", settings.rate_hz));
 	series.setMetadata("sim.effects", effectsToString(settings.effects));
-	std::ostringstream lat;
-	lat.precision(10);
-	lat << device.latitude_deg;
-	series.setMetadata("latitude_deg", lat.str());
+	series.setMetadata("latitude_deg", formatValue("%.10g", device.latitude_deg));
 	for (const auto& kv : device.describe()) series.setMetadata("sim." + kv.first, kv.second);
 	// A run that starts cold and powered is a turn-on at t = 0 (the simulator's warm-up clock
 	// starts there): said for the compensator's and the warm-up fit's turn-on bookkeeping.

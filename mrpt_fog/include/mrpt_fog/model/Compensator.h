@@ -56,16 +56,17 @@
 
 namespace mrpt_fog
 {
-namespace compflags
+/** Bits of Compensator::Output::flags (why a sample's bias is not the main model's alone). */
+enum CompensationFlag : std::uint8_t
 {
-constexpr std::uint8_t Fallback = 1;
-constexpr std::uint8_t NoModel = 2;
-constexpr std::uint8_t Clamped = 4;
-constexpr std::uint8_t RateWarmup = 8;
-/** The rate-free start-up model (Calibration::startup) is in use: a rate the main model reads is
- * not yet estimable or its window covers less than half its length (start, burst, gap). */
-constexpr std::uint8_t RateFree = 16;
-}  // namespace compflags
+	Fallback = 1,
+	NoModel = 2,
+	Clamped = 4,
+	RateWarmup = 8,
+	/** The rate-free start-up model (Calibration::startup) is in use: a rate the main model reads is
+	 * not yet estimable or its window covers less than half its length (start, burst, gap). */
+	RateFree = 16
+};
 
 struct CompensationCounters
 {
@@ -196,7 +197,7 @@ struct CompensatedSeries
 	std::vector<double> raw_dph;  //!< primary-axis gyro rate [deg/h]
 	std::vector<double> bias_dph;  //!< estimated thermal bias [deg/h]
 	std::vector<double> compensated_dph;  //!< raw - bias [deg/h]
-	std::vector<std::uint8_t> flags;  //!< compflags bits per sample
+	std::vector<std::uint8_t> flags;  //!< CompensationFlag bits per sample
 	CompensationCounters counters;
 };
 

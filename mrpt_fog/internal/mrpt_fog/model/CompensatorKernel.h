@@ -29,7 +29,7 @@
 
 namespace mrpt_fog
 {
-namespace kernel
+namespace detail
 {
 struct alignas(32) KernelBlock
 {
@@ -144,5 +144,5 @@ template <std::size_t NB, int W = 2>
 }
 #pragma GCC diagnostic pop
 
-}  // namespace kernel
+}  // namespace detail
 }  // namespace mrpt_fog

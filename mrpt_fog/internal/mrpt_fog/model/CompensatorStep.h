@@ -44,7 +44,7 @@ struct Compensator::Compiled
 {
 	double c0 = 0;
 	std::vector<EdgeSignal> edges;
-	std::vector<kernel::KernelBlock> kernel;
+	std::vector<detail::KernelBlock> kernel;
 	std::vector<SignalGroup> groups;  // differences and their rates
 	std::uint32_t uses = 0;  // bit mask of the channels the model reads (temperature or rate)
 	std::uint32_t uses_rate = 0;  // the channels whose rate (or a difference's rate) it reads
@@ -55,7 +55,7 @@ template <std::size_t NB, int W>
 {
 	// The per-channel kernel inline; the difference groups (other presets) out of line.
 	double sum = m.c0;
-	sum += kernel::kernelSum<NB, W>(m.kernel.data(), m.kernel.size(), temp_C, rate_.data(), clamped);
+	sum += detail::kernelSum<NB, W>(m.kernel.data(), m.kernel.size(), temp_C, rate_.data(), clamped);
 	if (!m.groups.empty()) sum = addGroups(m, temp_C, sum, clamped);
 	return sum;
 }
@@ -86,7 +86,7 @@ template <std::size_t NC, int W>
 	// missing channels is built element by element; an infinite value is not missing.)
 	bool any_nan;
 	if constexpr (NC == 4)
-		any_nan = kernel::vec::anyNaNSum<W>(T, rate_.data()) || (W == 2 && kernel::vec::anyNaNSum<W>(T + 2, rate_.data() + 2));
+		any_nan = detail::vec::anyNaNSum<W>(T, rate_.data()) || (W == 2 && detail::vec::anyNaNSum<W>(T + 2, rate_.data() + 2));
 	else
 	{
 		double all = 0.0;
@@ -167,11 +167,11 @@ template <std::size_t NC, int W>
 		out.bias_dph += outsideRange(models_[model], T);
 		out.compensated_dph = raw_dph - out.bias_dph;
 	}
-	if (model > 0 && !rate_free) out.flags |= compflags::Fallback;
-	if (rate_free) out.flags |= compflags::RateFree;
-	if (model < 0) out.flags |= compflags::NoModel;
-	if (clamped) out.flags |= compflags::Clamped;
-	if (warm) out.flags |= compflags::RateWarmup;
+	if (model > 0 && !rate_free) out.flags |= CompensationFlag::Fallback;
+	if (rate_free) out.flags |= CompensationFlag::RateFree;
+	if (model < 0) out.flags |= CompensationFlag::NoModel;
+	if (clamped) out.flags |= CompensationFlag::Clamped;
+	if (warm) out.flags |= CompensationFlag::RateWarmup;
 	counters_.fallback_samples += model > 0 && !rate_free;
 	counters_.rate_free_samples += rate_free;
 	counters_.no_model_samples += model < 0;
