@@ -990,6 +990,567 @@ void addInSampleFigures(Calibration& cal, const std::vector<PreparedRun>& prep, 
 	all.figuresInto(cal.in_sample, opt.tau_s);
 }
 
+/** How the calibration samples are split into folds: one per run when several runs are given
+ * (or each run's regimes, FitOptions::run_folds), else whole thermal regimes of the run
+ * (FoldScheme::Regimes) or interleaved time blocks. */
+struct FoldPlan
+{
+	bool by_run = false, run_regimes = false, by_regime = false;
+	/** regimes_of[r]: run r's regime segments (one run: the run's, Regimes scheme; several runs:
+	 * RunFolds::RegimesWithinRuns); a run with fewer than 3 is not cut (blocks / one fold). */
+	std::vector<std::vector<RegimeSegment>> regimes_of;
+	std::size_t regime_segments = 0;
+	/** The first fold of each run (several runs): one fold per run, or per regime fold of each run. */
+	std::vector<std::size_t> run_fold0;
+	std::size_t nfolds = 0;
+	double front_s = 0, back_s = 0;  //!< the first run's time span (interleaved blocks)
+	std::size_t blocks_per_fold = 1;
+
+	/** The fold of a usable sample at time t of run `run` (passes in time order: the regime cursor). */
+	std::size_t foldOf(std::size_t run, double t, RegimeFoldCursor& regime) const
+	{
+		if (by_run) return run_fold0[run] + (regimes_of[run].empty() || !run_regimes ? 0 : regime.fold(t));
+		if (by_regime) return regime.fold(t);
+		const double u = (t - front_s) / (back_s - front_s + 1e-300);
+		const std::size_t nblocks = nfolds * blocks_per_fold;
+		return std::min(nblocks - 1, static_cast<std::size_t>(u * static_cast<double>(nblocks))) % nfolds;
+	}
+	/** The label of the held-out figures. */
+	std::string heldOutLabel(std::size_t runs) const
+	{
+		return run_regimes ? "held-out (leave-regime-out within " + std::to_string(runs) + " runs, " +
+								 std::to_string(nfolds) + " folds)"
+			   : by_run    ? "held-out (leave-one-run-out, " + std::to_string(nfolds) + " runs)"
+			   : by_regime ? "held-out (leave-regime-out, " + std::to_string(regime_segments) + " regimes in " +
+								 std::to_string(nfolds) + " folds)"
+						   : "held-out (blocked " + std::to_string(nfolds) + "-fold)";
+	}
+};
+
+FoldPlan planFolds(const std::vector<FogRun>& runs, const std::vector<PreparedRun>& prep, const FitOptions& opt)
+{
+	FoldPlan p;
+	p.by_run = runs.size() >= 2;
+	p.run_regimes = p.by_run && opt.run_folds == RunFolds::RegimesWithinRuns;
+	// regimes_of[r]: run r's regime segments (one run: the run's, Regimes scheme; several runs:
+	// RunFolds::RegimesWithinRuns); a run with fewer than 3 is not cut (blocks / one fold).
+	p.regimes_of.assign(runs.size(), {});
+	if ((!p.by_run && opt.fold_scheme == FoldScheme::Regimes) || p.run_regimes)
+		for (std::size_t ri = 0; ri < runs.size(); ri++)
+		{
+			p.regimes_of[ri] = regimeSegments(prep[ri], opt.regime_rate_C_per_min, opt.min_regime_s, opt.rate_estimator.window_s);
+			if (p.regimes_of[ri].size() < 3)
+				p.regimes_of[ri].clear();  // a single soak or ramp: blocks instead (one run) or the whole run
+			p.regime_segments += p.regimes_of[ri].size();
+		}
+	p.by_regime = !p.by_run && !p.regimes_of[0].empty();
+	// The first fold of each run (several runs): one fold per run, or per regime fold of each run.
+	p.run_fold0.assign(runs.size() + 1, 0);
+	for (std::size_t ri = 0; ri < runs.size(); ri++)
+		p.run_fold0[ri + 1] = p.run_fold0[ri] + (p.regimes_of[ri].empty() || !p.run_regimes ? 1 : std::min(p.regimes_of[ri].size(), opt.max_regime_folds));
+	p.nfolds =
+		p.by_run ? p.run_fold0[runs.size()] : (p.by_regime ? std::min(p.regime_segments, opt.max_regime_folds) : opt.folds);
+	p.front_s = runs[0].frontTime_s();
+	p.back_s = runs[0].backTime_s();
+	p.blocks_per_fold = opt.blocks_per_fold;
+	return p;
+}
+
+/** Pass 2: what the folds accumulate. */
+struct FoldAccumulation
+{
+	FoldSet folds;  //!< every sample, per fold (the fit and its held-out figures)
+	FoldSet sel;  //!< what the selection judges (time-bin means, FitOptions::selection_bin_s)
+	StreamingQr total;  //!< every fold merged
+	/** Resampling units for the stability of the choice: (fold, run block) -> rows. */
+	std::map<std::pair<std::size_t, std::size_t>, StreamingQr> units;
+};
+
+/** Pass 2: a streaming QR factor per fold, the selection's time-bin means and the resampling
+ * units (kStabilityBlocks contiguous time blocks per run, split by fold: a block is never in two
+ * folds), in one pass over the runs. */
+FoldAccumulation accumulateFolds(const std::vector<PreparedRun>& prep, const ThermalFeatureSet& fs, const FoldPlan& plan,
+								 const FitOptions& opt, double y_ref, const std::vector<double>& x_ref)
+{
+	const std::size_t nfolds = plan.nfolds;
+	const std::size_t ns = fs.signals().size();
+	const std::size_t nt = fs.thermistors().size();
+	std::vector<double> temp(nt), rate(nt), values(ns), f(fs.termCount());  // one row
+	FoldAccumulation acc{FoldSet{}, FoldSet{}, StreamingQr(fs.termCount(), y_ref, x_ref), {}};
+	FoldSet& folds = acc.folds;
+	folds.held_out.assign(nfolds, StreamingQr(fs.termCount(), y_ref, x_ref));
+	const bool resample = opt.selection == "auto" && opt.stability_resamples > 0;
+	const bool significance = opt.selection == "auto" && opt.step_rule == StepRule::Significant;
+	const bool need_units = resample || significance;
+	constexpr std::size_t kStabilityBlocks = 40;
+	auto& units = acc.units;
+	// Selection judges candidates on time-bin means (FitOptions::selection_bin_s): the rows of
+	// `sel` are the means of features and bias over bins of that length (never across a fold or
+	// run boundary), so the gyro's white noise, which grows with the sample rate, does not drown
+	// the differences between thermal models. The fit itself uses every sample (`folds`).
+	const bool binned = opt.selection_bin_s > 0;
+	FoldSet& sel = acc.sel;
+	sel.held_out.assign(nfolds, StreamingQr(fs.termCount(), y_ref, x_ref));
+	std::vector<double> bin_f(fs.termCount()), bin_mean(fs.termCount());
+	for (std::size_t ri = 0; ri < prep.size(); ri++)
+	{
+		const auto& r = prep[ri];
+		const double t_front = r.run->frontTime_s(), t_back = r.run->backTime_s();
+		RowCursor cur(r);
+		RegimeFoldCursor regime(plan.regimes_of[ri], opt.max_regime_folds);
+		double bin_t0 = 0, bin_y = 0;
+		std::size_t bin_n = 0, bin_fold = 0, bin_block = 0;
+		const auto flush = [&]() {
+			if (bin_n == 0) return;
+			const double inv = 1.0 / static_cast<double>(bin_n);
+			for (std::size_t q = 0; q < bin_f.size(); q++) bin_mean[q] = bin_f[q] * inv;
+			sel.held_out[bin_fold].add(bin_mean.data(), bin_y * inv);
+			if (need_units)
+			{
+				auto it = units.find({bin_fold, bin_block});
+				if (it == units.end())
+					it = units.emplace(std::make_pair(bin_fold, bin_block), StreamingQr(fs.termCount(), y_ref, x_ref)).first;
+				it->second.add(bin_mean.data(), bin_y * inv);
+			}
+			std::fill(bin_f.begin(), bin_f.end(), 0.0);
+			bin_y = 0;
+			bin_n = 0;
+		};
+		forEachSample(r, &cur, [&](const FogSeries& c, std::size_t k0, std::size_t j) {
+			if (!r.ok[k0 + j]) return;
+			rowSignals(cur, fs, c, k0, j, temp, rate, values);
+			fs.features(values.data(), f.data(), false);
+			const double t = c.time_s[j];
+			const std::size_t fold = plan.foldOf(ri, t, regime);
+			const double y = r.y(c, j);
+			folds.held_out[fold].add(f.data(), y);
+			if (!binned && !need_units) return;
+			const double u = std::clamp((t - t_front) / (t_back - t_front + 1e-300), 0.0, 1.0);
+			const std::size_t block =
+				ri * kStabilityBlocks + std::min(kStabilityBlocks - 1, static_cast<std::size_t>(u * kStabilityBlocks));
+			if (!binned)  // per sample: `sel` is `folds` (copied below); only the stability units
+			{
+				auto it = units.find({fold, block});
+				if (it == units.end())
+					it = units.emplace(std::make_pair(fold, block), StreamingQr(fs.termCount(), y_ref, x_ref)).first;
+				it->second.add(f.data(), y);
+				return;
+			}
+			if (bin_n > 0 && (fold != bin_fold || block != bin_block || !(t - bin_t0 < opt.selection_bin_s))) flush();
+			if (bin_n == 0)
+			{
+				bin_t0 = t;
+				bin_fold = fold;
+				bin_block = block;
+			}
+			for (std::size_t q = 0; q < bin_f.size(); q++) bin_f[q] += f[q];
+			bin_y += y;
+			bin_n++;
+		});
+		flush();
+	}
+	StreamingQr& total = acc.total;
+	for (auto& fo : folds.held_out) total.merge(fo);
+	folds.training = trainingSets(folds.held_out);
+	if (!binned) sel.held_out = folds.held_out;
+	sel.training = trainingSets(sel.held_out);
+	if (significance)
+	{
+		sel.units.assign(nfolds, {});
+		for (const auto& [key, unit] : units) sel.units[key.first].push_back(unit);
+	}
+	return acc;
+}
+
+/** The choice of terms (FitOptions::selection): the main model among the preset's thermistor
+ * pools (nested over thermistor subsets when automatic), and a fallback model per thermistor. */
+class TermSearch
+{
+public:
+	TermSearch(const ThermalFeatureSet& fs, const ModelPreset& preset, const FitOptions& opt)
+		: fs_(fs), preset_(preset), opt_(opt), ns_(fs.signals().size()), max_order_(fs.signalOrders()),
+		  automatic_(opt.selection == "auto"), names_(fs.thermistors()),
+		  nested_(automatic_ && (preset.kind == PresetKind::Points || (preset.kind == PresetKind::Multipoint && !opt.linear_base)))
+	{
+	}
+
+	struct Result
+	{
+		Choice best;
+		std::vector<Choice> fallback_choices;  //!< the best choice without each thermistor of best
+	};
+
+	/** The main model (and, with FitOptions::fallbacks, the fallbacks) judged on `sel`; `folds`
+	 * where every sample counts (selection none, a fallback without any thermistor). */
+	Result select(FoldSet& sel, FoldSet& folds) const
+	{
+		const auto& fs = fs_;
+		const auto& preset = preset_;
+		const auto& opt = opt_;
+		const auto& names = names_;
+		const bool nested = nested_, automatic = automatic_;
+		const std::size_t ns = ns_;
+		const auto forward = [&](FoldSet& fset, const std::vector<std::string>& pool, const std::string& dropped) {
+			return this->forward(fset, pool, dropped);
+		};
+		const auto choose = [&](FoldSet& fset, const std::vector<std::string>& pool, const std::string& dropped) {
+			return this->choose(fset, pool, dropped);
+		};
+		Result res;
+		Choice& best = res.best;
+		std::vector<Choice>& fallback_choices = res.fallback_choices;
+		if (nested)
+		{
+			NestedSelection search(names, [&](const std::vector<std::string>& pool) { return forward(sel, pool, ""); });
+			std::size_t base = search.fullMask();
+			if (preset.kind == PresetKind::Points)
+			{
+				// points:K = the best choice among all K-thermistor subsets (each with its subsets).
+				const auto K = static_cast<std::size_t>(preset.points_k);
+				bool first_set = true;
+				for (std::size_t mask = 1; mask <= search.fullMask(); mask++)
+				{
+					if (static_cast<std::size_t>(__builtin_popcountll(mask)) != K) continue;
+					const Choice c = search.best(mask, false);
+					if (first_set || c.cv_rms < best.cv_rms)
+					{
+						best = c;
+						base = mask;
+						first_set = false;
+					}
+				}
+			}
+			best = search.best(base, opt.parsimony, opt.paired_se);
+			if (opt.fallbacks)
+			{
+				const ThermalFeatureSet chosen = fs.selectOrders(best.order);
+				for (const auto& name : chosen.thermistors())
+				{
+					const std::size_t without = base & ~search.bit(name);
+					fallback_choices.push_back(without ? search.best(without, opt.parsimony, opt.paired_se)
+													   : scoreOrders(folds, fs, std::vector<int>(ns, 0), {0.0}));
+				}
+			}
+		}
+		else
+		{
+			// Candidate pools: the preset's thermistors, or every K-subset for points:K (selection none).
+			std::vector<std::vector<std::string>> pools;
+			if (preset.kind == PresetKind::Points)
+			{
+				const std::size_t n = names.size(), K = static_cast<std::size_t>(preset.points_k);
+				std::vector<bool> pick(n, false);
+				std::fill(pick.begin(), pick.begin() + static_cast<long>(K), true);
+				do
+				{
+					std::vector<std::string> sub;
+					for (std::size_t i = 0; i < n; i++)
+						if (pick[i]) sub.push_back(names[i]);
+					pools.push_back(sub);
+				} while (std::prev_permutation(pick.begin(), pick.end()) && pools.size() < 256);
+			}
+			else
+				pools.push_back(names);
+			bool first_pool = true;
+			for (const auto& pool : pools)
+			{
+				const Choice c = choose(automatic ? sel : folds, pool, "");
+				if (first_pool || c.cv_rms < best.cv_rms)
+				{
+					best = c;
+					first_pool = false;
+				}
+			}
+			if (opt.fallbacks)
+			{
+				const ThermalFeatureSet chosen = fs.selectOrders(best.order);
+				for (const auto& name : chosen.thermistors()) fallback_choices.push_back(choose(automatic ? sel : folds, best.pool, name));
+			}
+		}
+		return res;
+	}
+
+	/** The main-model selection alone on other folds (the stability resamples). */
+	Choice selectMain(FoldSet& fset, const Choice& best) const
+	{
+		const auto& opt = opt_;
+		const auto& preset = preset_;
+		if (nested_)
+		{
+			NestedSelection search(names_, [&](const std::vector<std::string>& pool) { return forward(fset, pool, ""); });
+			std::size_t base = search.fullMask();
+			if (preset.kind == PresetKind::Points)
+			{
+				double lowest = std::numeric_limits<double>::infinity();
+				for (std::size_t mask = 1; mask <= search.fullMask(); mask++)
+				{
+					if (static_cast<std::size_t>(__builtin_popcountll(mask)) != static_cast<std::size_t>(preset.points_k))
+						continue;
+					const Choice c = search.best(mask, false);
+					if (c.cv_rms < lowest)
+					{
+						lowest = c.cv_rms;
+						base = mask;
+					}
+				}
+			}
+			return search.best(base, opt.parsimony, opt.paired_se);
+		}
+		return choose(fset, best.pool, "");
+	}
+
+private:
+	std::vector<bool> allowedFor(const std::vector<std::string>& pool, const std::string& dropped) const
+	{
+		std::vector<bool> allowed(ns_);
+		for (std::size_t s = 0; s < ns_; s++)
+		{
+			const auto& sig = fs_.signals()[s];
+			const auto in = [&](const std::string& n) { return std::find(pool.begin(), pool.end(), n) != pool.end(); };
+			allowed[s] = in(sig.a) && (!sig.isDifference() || in(sig.b)) && !sig.references(dropped);
+		}
+		return allowed;
+	}
+	std::vector<Choice> forward(FoldSet& fset, const std::vector<std::string>& pool, const std::string& dropped) const
+	{
+		return selectForward(fset, fs_, allowedFor(pool, dropped), max_order_, opt_);
+	}
+	Choice choose(FoldSet& fset, const std::vector<std::string>& pool, const std::string& dropped) const
+	{
+		const auto& opt = opt_;
+		Choice c;
+		if (automatic_)
+		{
+			const auto path = forward(fset, pool, dropped);
+			std::vector<const Choice*> cands;
+			for (const auto& x : path) cands.push_back(&x);
+			c = opt.parsimony ? oneStandardError(cands, opt.paired_se) : *std::min_element(path.begin(), path.end(), [](const Choice& a, const Choice& b) {
+				return a.cv_rms < b.cv_rms;
+			});
+		}
+		else
+		{
+			auto order = max_order_;
+			const auto allowed = allowedFor(pool, dropped);
+			for (std::size_t s = 0; s < ns_; s++)
+				if (!allowed[s]) order[s] = 0;
+			c = scoreOrders(fset, fs_, order, {opt.ridge});
+		}
+		c.pool = pool;
+		return c;
+	}
+
+	const ThermalFeatureSet& fs_;
+	const ModelPreset& preset_;
+	const FitOptions& opt_;
+	std::size_t ns_;
+	std::vector<int> max_order_;
+	bool automatic_;
+	const std::vector<std::string>& names_;  // the subsets of thermistors are masks over these
+	bool nested_;
+};
+
+/** Stability of the choice: the main-model selection rerun on wild (sign-flip) block-bootstrap
+ * resamples of the calibration data (every unit kept in its fold, its residual sign-flipped
+ * with probability 1/2). Empty unless automatic selection with resamples asked for. */
+SelectionStability selectionStability(const TermSearch& terms, FoldAccumulation& acc, const Choice& best,
+									  const ThermalFeatureSet& fs, const FoldPlan& plan, const FitOptions& opt, double y_ref,
+									  const std::vector<double>& x_ref)
+{
+	SelectionStability stability;
+	const bool resample = opt.selection == "auto" && opt.stability_resamples > 0;
+	const bool significance = opt.selection == "auto" && opt.step_rule == StepRule::Significant;
+	if (!resample || acc.units.empty()) return stability;
+	const std::size_t nfolds = plan.nfolds;
+	auto& units = acc.units;
+	auto& total = acc.total;
+	auto& folds = acc.folds;
+	const auto selectMain = [&](FoldSet& fset) -> Choice { return terms.selectMain(fset, best); };
+	const auto termsOf = [&](const Choice& c) {
+		std::string s;
+		for (const auto& n : fs.selectOrders(c.order).termNames())
+			if (n != "1") s += (s.empty() ? "" : " + ") + n;
+		return s.empty() ? std::string("1") : s;
+	};
+	std::vector<const StreamingQr*> unit_list;
+	std::vector<std::size_t> unit_fold;
+	for (const auto& [key, acc] : units)
+	{
+		unit_list.push_back(&acc);
+		unit_fold.push_back(key.first);
+	}
+	// Wild (sign-flip) block bootstrap: the rows (the thermal history) stay, the residual of
+	// the chosen model changes sign block by block: another noise realisation of the same
+	// calibration run, which is what "the same choice with another noise seed" asks about.
+	// (A bootstrap that redraws the blocks themselves also changes which temperatures are
+	// seen, a much larger change: it called every fit unstable.)
+	const LinearFit chosen_fit = solveBiasFit(total, columnsOf(fs, best.order), best.ridge);
+	const Eigen::VectorXd beta = shiftedFullCoefficients(total, chosen_fit.columns, chosen_fit.coef_dph);
+	std::mt19937_64 rng(opt.stability_seed);
+	std::bernoulli_distribution flip(0.5);
+	std::map<std::string, std::size_t> model_count, term_count;
+	std::map<std::string, std::vector<int>> model_order;
+	for (std::size_t b = 0; b < opt.stability_resamples; b++)
+	{
+		FoldSet fr;
+		fr.held_out.assign(nfolds, StreamingQr(fs.termCount(), y_ref, x_ref));
+		if (significance) fr.units.assign(nfolds, {});
+		for (std::size_t u = 0; u < unit_list.size(); u++)
+		{
+			if (!flip(rng))
+			{
+				fr.held_out[unit_fold[u]].merge(*unit_list[u]);
+				if (significance) fr.units[unit_fold[u]].push_back(*unit_list[u]);
+				continue;
+			}
+			StreamingQr flipped = *unit_list[u];
+			flipped.flipResiduals(beta);
+			fr.held_out[unit_fold[u]].merge(flipped);
+			if (significance) fr.units[unit_fold[u]].push_back(flipped);
+		}
+		fr.training = trainingSets(fr.held_out);
+		const Choice c = selectMain(fr);
+		const std::string key = termsOf(c);
+		model_count[key]++;
+		model_order[key] = c.order;
+		for (const auto& n : fs.selectOrders(c.order).termNames())
+			if (n != "1") term_count[n]++;
+	}
+	const double nb = static_cast<double>(opt.stability_resamples);
+	stability.resamples = opt.stability_resamples;
+	const std::string chosen = termsOf(best);
+	stability.chosen_share = model_count.count(chosen) ? static_cast<double>(model_count[chosen]) / nb : 0.0;
+	stability.stable = stability.chosen_share >= opt.stable_share;
+	for (const auto& [key, n] : model_count)
+	{
+		if (key == chosen) continue;
+		SelectionStability::Alternative a;
+		a.terms = key;
+		a.share = static_cast<double>(n) / nb;
+		a.held_out_rms_dph = scoreOrders(folds, fs, model_order[key], kRidgeGrid).cv_rms;  // on the real folds
+		stability.alternatives.push_back(a);
+	}
+	const Choice chosen_score = scoreOrders(folds, fs, best.order, kRidgeGrid);
+	stability.chosen_held_out_rms_dph = chosen_score.cv_rms;
+	stability.held_out_se_mse = chosen_score.cv_se_mse;
+	stability.alternatives_equivalent = !stability.alternatives.empty();
+	for (const auto& a : stability.alternatives)
+		stability.alternatives_equivalent &= std::abs(a.held_out_rms_dph * a.held_out_rms_dph -
+													  chosen_score.cv_rms * chosen_score.cv_rms) <= chosen_score.cv_se_mse;
+	std::sort(stability.alternatives.begin(), stability.alternatives.end(),
+			  [](const auto& a, const auto& b) { return a.share > b.share; });
+	for (const auto& [term, n] : term_count) stability.term_share.push_back({term, static_cast<double>(n) / nb});
+	return stability;
+}
+
+/** Gaps between consecutive samples longer than the rate window, over every run. */
+std::size_t rateGapCount(const std::vector<FogRun>& runs, double window_s)
+{
+	std::size_t rate_gaps = 0;
+	for (const auto& r : runs)
+	{
+		bool first_sample = true;
+		double prev_t = 0;
+		r.forEachChunk([&](const FogSeries& c, std::size_t) {
+			for (double t : c.time_s)
+			{
+				if (!first_sample) rate_gaps += t - prev_t > window_s;
+				first_sample = false;
+				prev_t = t;
+			}
+		});
+	}
+	return rate_gaps;
+}
+
+/** Rate-free start-up model (FitOptions::startup_model): the main model's orders with every rate
+ * signal left out, refitted (ridge by the same held-out error) on the same samples. */
+void addStartupModel(Calibration& cal, FoldAccumulation& acc, const ThermalFeatureSet& fs, const Choice& best,
+					 const FitOptions& opt)
+{
+	const std::size_t ns = fs.signals().size();
+	auto& total = acc.total;
+	auto& folds = acc.folds;
+	if (opt.startup_model)
+	{
+		std::vector<int> order = best.order;
+		bool reads_rates = false;
+		for (std::size_t s = 0; s < ns; s++)
+		{
+			const SignalKind kind = fs.signals()[s].kind;
+			if ((kind == SignalKind::Rate || kind == SignalKind::DiffRate) && order[s] > 0)
+			{
+				order[s] = 0;
+				reads_rates = true;
+			}
+		}
+		if (reads_rates)
+		{
+			try
+			{
+				cal.startup = makeModel(total, fs, scoreOrders(folds, fs, order, kRidgeGrid), "", opt);
+			}
+			catch (const std::invalid_argument&)
+			{
+				// cannot be fitted on these data (too few samples for its terms): the start-up is
+				// then compensated as without one (documented in Calibration::startup)
+			}
+		}
+	}
+}
+
+/** Held-out figures: every fold predicted by the chosen model fitted on the other folds. */
+void addHeldOutFigures(Calibration& cal, const std::vector<PreparedRun>& prep, const ThermalFeatureSet& fs,
+					   FoldAccumulation& acc, const FoldPlan& plan, const Choice& best, std::size_t runs, const FitOptions& opt)
+{
+	constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+	const std::size_t nfolds = plan.nfolds;
+	const std::size_t ns = fs.signals().size();
+	const std::size_t nt = fs.thermistors().size();
+	std::vector<double> temp(nt), rate(nt), values(ns), f(fs.termCount());  // one row
+	auto& folds = acc.folds;
+	// Held-out figures: every fold predicted by the chosen model fitted on the other folds.
+	{
+		const auto cols = columnsOf(fs, best.order);
+		std::vector<Eigen::VectorXd> coef(nfolds);
+		std::vector<bool> has(nfolds, false);
+		for (std::size_t fo = 0; fo < nfolds; fo++)
+		{
+			auto& train = folds.training[fo];
+			if (train.count() < cols.size()) continue;
+			coef[fo] = solveBiasFit(train, cols, best.ridge).coef_dph;
+			has[fo] = true;
+		}
+		ConcatenatedRuns all;
+		for (std::size_t ri = 0; ri < prep.size(); ri++)
+		{
+			const auto& r = prep[ri];
+			all.beginRun(r);
+			RowCursor cur(r);
+			RegimeFoldCursor regime(plan.regimes_of[ri], opt.max_regime_folds);
+			forEachSample(r, &cur, [&](const FogSeries& c, std::size_t k0, std::size_t j) {
+				double comp = kNaN;
+				if (r.ok[k0 + j])
+				{
+					const std::size_t fo = plan.foldOf(ri, c.time_s[j], regime);
+					if (has[fo])
+					{
+						rowSignals(cur, fs, c, k0, j, temp, rate, values);
+						fs.features(values.data(), f.data(), false);
+						double pred = 0;
+						for (std::size_t q = 0; q < cols.size(); q++) pred += coef[fo][static_cast<Eigen::Index>(q)] * f[cols[q]];
+						comp = r.y(c, j) - pred;
+					}
+				}
+				all.push(c.time_s[j], r.y(c, j), comp);
+			});
+			all.endRun(r, opt.tau_s);
+		}
+		cal.held_out.label = plan.heldOutLabel(runs);
+		all.figuresInto(cal.held_out, opt.tau_s);
+	}
+}
+
 }  // namespace
 
 Calibration fitCalibration(const std::vector<FogSeries>& series, const std::string& preset_text, const FitOptions& opt,
@@ -1032,362 +1593,25 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 	const double y_ref = ranges.y_ref;
 	if (candidates_added) leaveOutConstantDifferences(fs, ranges);
 	setNormalisation(fs, ranges, opt);
-	const std::size_t ns = fs.signals().size();
-	const std::size_t nt = fs.thermistors().size();
-	std::vector<double> temp(nt), rate(nt), values(ns), f(fs.termCount());  // one row (the passes below)
-
 	// Feature means (the accumulation reference: the sums then hold centred features).
 	const std::vector<double> x_ref = featureMeans(prep, fs, usable);
 
-	// Pass 2: streaming QR factor per fold. Folds: one per run when several runs are given;
-	// else whole thermal regimes of the run (FoldScheme::Regimes), or interleaved time blocks.
-	const bool by_run = runs.size() >= 2;
-	const bool run_regimes = by_run && opt.run_folds == RunFolds::RegimesWithinRuns;
-	// regimes_of[r]: run r's regime segments (one run: the run's, Regimes scheme; several runs:
-	// RunFolds::RegimesWithinRuns); a run with fewer than 3 is not cut (blocks / one fold).
-	std::vector<std::vector<RegimeSegment>> regimes_of(runs.size());
-	std::size_t regime_segments = 0;
-	if ((!by_run && opt.fold_scheme == FoldScheme::Regimes) || run_regimes)
-		for (std::size_t ri = 0; ri < runs.size(); ri++)
-		{
-			regimes_of[ri] = regimeSegments(prep[ri], opt.regime_rate_C_per_min, opt.min_regime_s, opt.rate_estimator.window_s);
-			if (regimes_of[ri].size() < 3)
-				regimes_of[ri].clear();  // a single soak or ramp: blocks instead (one run) or the whole run
-			regime_segments += regimes_of[ri].size();
-		}
-	const bool by_regime = !by_run && !regimes_of[0].empty();
-	// The first fold of each run (several runs): one fold per run, or per regime fold of each run.
-	std::vector<std::size_t> run_fold0(runs.size() + 1, 0);
-	for (std::size_t ri = 0; ri < runs.size(); ri++)
-		run_fold0[ri + 1] = run_fold0[ri] + (regimes_of[ri].empty() || !run_regimes ? 1 : std::min(regimes_of[ri].size(), opt.max_regime_folds));
-	const std::size_t nfolds =
-		by_run ? run_fold0[runs.size()] : (by_regime ? std::min(regime_segments, opt.max_regime_folds) : opt.folds);
-	FoldSet folds;
-	folds.held_out.assign(nfolds, StreamingQr(fs.termCount(), y_ref, x_ref));
-	// The fold of a usable sample at time t of run `run` (passes in time order: the regime cursor).
-	const auto foldOf = [&](std::size_t run, double t, RegimeFoldCursor& regime) -> std::size_t {
-		if (by_run) return run_fold0[run] + (regimes_of[run].empty() || !run_regimes ? 0 : regime.fold(t));
-		if (by_regime) return regime.fold(t);
-		const double u = (t - runs[0].frontTime_s()) / (runs[0].backTime_s() - runs[0].frontTime_s() + 1e-300);
-		const std::size_t nblocks = nfolds * opt.blocks_per_fold;
-		return std::min(nblocks - 1, static_cast<std::size_t>(u * static_cast<double>(nblocks))) % nfolds;
-	};
-	// Resampling units for the stability of the choice: kStabilityBlocks contiguous time blocks per
-	// run, split by fold (a block is never in two folds).
-	const bool resample = opt.selection == "auto" && opt.stability_resamples > 0;
-	const bool significance = opt.selection == "auto" && opt.step_rule == StepRule::Significant;
-	const bool need_units = resample || significance;
-	constexpr std::size_t kStabilityBlocks = 40;
-	std::map<std::pair<std::size_t, std::size_t>, StreamingQr> units;  // (fold, run block) -> rows
-	// Selection judges candidates on time-bin means (FitOptions::selection_bin_s): the rows of
-	// `sel` are the means of features and bias over bins of that length (never across a fold or
-	// run boundary), so the gyro's white noise, which grows with the sample rate, does not drown
-	// the differences between thermal models. The fit itself uses every sample (`folds`).
-	const bool binned = opt.selection_bin_s > 0;
-	FoldSet sel;
-	sel.held_out.assign(nfolds, StreamingQr(fs.termCount(), y_ref, x_ref));
-	std::vector<double> bin_f(fs.termCount()), bin_mean(fs.termCount());
-	for (std::size_t ri = 0; ri < prep.size(); ri++)
-	{
-		const auto& r = prep[ri];
-		const double t_front = r.run->frontTime_s(), t_back = r.run->backTime_s();
-		RowCursor cur(r);
-		RegimeFoldCursor regime(regimes_of[ri], opt.max_regime_folds);
-		double bin_t0 = 0, bin_y = 0;
-		std::size_t bin_n = 0, bin_fold = 0, bin_block = 0;
-		const auto flush = [&]() {
-			if (bin_n == 0) return;
-			const double inv = 1.0 / static_cast<double>(bin_n);
-			for (std::size_t q = 0; q < bin_f.size(); q++) bin_mean[q] = bin_f[q] * inv;
-			sel.held_out[bin_fold].add(bin_mean.data(), bin_y * inv);
-			if (need_units)
-			{
-				auto it = units.find({bin_fold, bin_block});
-				if (it == units.end())
-					it = units.emplace(std::make_pair(bin_fold, bin_block), StreamingQr(fs.termCount(), y_ref, x_ref)).first;
-				it->second.add(bin_mean.data(), bin_y * inv);
-			}
-			std::fill(bin_f.begin(), bin_f.end(), 0.0);
-			bin_y = 0;
-			bin_n = 0;
-		};
-		forEachSample(r, &cur, [&](const FogSeries& c, std::size_t k0, std::size_t j) {
-			if (!r.ok[k0 + j]) return;
-			rowSignals(cur, fs, c, k0, j, temp, rate, values);
-			fs.features(values.data(), f.data(), false);
-			const double t = c.time_s[j];
-			const std::size_t fold = foldOf(ri, t, regime);
-			const double y = r.y(c, j);
-			folds.held_out[fold].add(f.data(), y);
-			if (!binned && !need_units) return;
-			const double u = std::clamp((t - t_front) / (t_back - t_front + 1e-300), 0.0, 1.0);
-			const std::size_t block =
-				ri * kStabilityBlocks + std::min(kStabilityBlocks - 1, static_cast<std::size_t>(u * kStabilityBlocks));
-			if (!binned)  // per sample: `sel` is `folds` (copied below); only the stability units
-			{
-				auto it = units.find({fold, block});
-				if (it == units.end())
-					it = units.emplace(std::make_pair(fold, block), StreamingQr(fs.termCount(), y_ref, x_ref)).first;
-				it->second.add(f.data(), y);
-				return;
-			}
-			if (bin_n > 0 && (fold != bin_fold || block != bin_block || !(t - bin_t0 < opt.selection_bin_s))) flush();
-			if (bin_n == 0)
-			{
-				bin_t0 = t;
-				bin_fold = fold;
-				bin_block = block;
-			}
-			for (std::size_t q = 0; q < bin_f.size(); q++) bin_f[q] += f[q];
-			bin_y += y;
-			bin_n++;
-		});
-		flush();
-	}
-	StreamingQr total(fs.termCount(), y_ref, x_ref);
-	for (auto& fo : folds.held_out) total.merge(fo);
-	folds.training = trainingSets(folds.held_out);
-	if (!binned) sel.held_out = folds.held_out;
-	sel.training = trainingSets(sel.held_out);
-	if (significance)
-	{
-		sel.units.assign(nfolds, {});
-		for (const auto& [key, acc] : units) sel.units[key.first].push_back(acc);
-	}
+	// Pass 2: the folds (FoldPlan) and what they accumulate.
+	const FoldPlan plan = planFolds(runs, prep, opt);
+	FoldAccumulation acc = accumulateFolds(prep, fs, plan, opt, y_ref, x_ref);
+	StreamingQr& total = acc.total;
 
-	const std::vector<int> max_order = fs.signalOrders();
-	const auto allowedFor = [&](const std::vector<std::string>& pool, const std::string& dropped) {
-		std::vector<bool> allowed(ns);
-		for (std::size_t s = 0; s < ns; s++)
-		{
-			const auto& sig = fs.signals()[s];
-			const auto in = [&](const std::string& n) { return std::find(pool.begin(), pool.end(), n) != pool.end(); };
-			allowed[s] = in(sig.a) && (!sig.isDifference() || in(sig.b)) && !sig.references(dropped);
-		}
-		return allowed;
-	};
-	const bool automatic = opt.selection == "auto";
-	const auto forward = [&](FoldSet& fset, const std::vector<std::string>& pool, const std::string& dropped) {
-		return selectForward(fset, fs, allowedFor(pool, dropped), max_order, opt);
-	};
-	const auto choose = [&](FoldSet& fset, const std::vector<std::string>& pool, const std::string& dropped) {
-		Choice c;
-		if (automatic)
-		{
-			const auto path = forward(fset, pool, dropped);
-			std::vector<const Choice*> cands;
-			for (const auto& x : path) cands.push_back(&x);
-			c = opt.parsimony ? oneStandardError(cands, opt.paired_se) : *std::min_element(path.begin(), path.end(), [](const Choice& a, const Choice& b) {
-				return a.cv_rms < b.cv_rms;
-			});
-		}
-		else
-		{
-			auto order = max_order;
-			const auto allowed = allowedFor(pool, dropped);
-			for (std::size_t s = 0; s < ns; s++)
-				if (!allowed[s]) order[s] = 0;
-			c = scoreOrders(fset, fs, order, {opt.ridge});
-		}
-		c.pool = pool;
-		return c;
-	};
-	// The subsets of thermistors to consider, as masks over fs.thermistors().
-	const auto& names = fs.thermistors();
-	const bool nested = automatic && (preset.kind == PresetKind::Points || (preset.kind == PresetKind::Multipoint && !opt.linear_base));
-	Choice best;
-	std::vector<Choice> fallback_choices;  // for nested: the best choice without each thermistor
-	if (nested)
-	{
-		NestedSelection search(names, [&](const std::vector<std::string>& pool) { return forward(sel, pool, ""); });
-		std::size_t base = search.fullMask();
-		if (preset.kind == PresetKind::Points)
-		{
-			// points:K = the best choice among all K-thermistor subsets (each with its subsets).
-			const auto K = static_cast<std::size_t>(preset.points_k);
-			bool first_set = true;
-			for (std::size_t mask = 1; mask <= search.fullMask(); mask++)
-			{
-				if (static_cast<std::size_t>(__builtin_popcountll(mask)) != K) continue;
-				const Choice c = search.best(mask, false);
-				if (first_set || c.cv_rms < best.cv_rms)
-				{
-					best = c;
-					base = mask;
-					first_set = false;
-				}
-			}
-		}
-		best = search.best(base, opt.parsimony, opt.paired_se);
-		if (opt.fallbacks)
-		{
-			const ThermalFeatureSet chosen = fs.selectOrders(best.order);
-			for (const auto& name : chosen.thermistors())
-			{
-				const std::size_t without = base & ~search.bit(name);
-				fallback_choices.push_back(without ? search.best(without, opt.parsimony, opt.paired_se)
-												   : scoreOrders(folds, fs, std::vector<int>(ns, 0), {0.0}));
-			}
-		}
-	}
-	else
-	{
-		// Candidate pools: the preset's thermistors, or every K-subset for points:K (selection none).
-		std::vector<std::vector<std::string>> pools;
-		if (preset.kind == PresetKind::Points)
-		{
-			const std::size_t n = names.size(), K = static_cast<std::size_t>(preset.points_k);
-			std::vector<bool> pick(n, false);
-			std::fill(pick.begin(), pick.begin() + static_cast<long>(K), true);
-			do
-			{
-				std::vector<std::string> sub;
-				for (std::size_t i = 0; i < n; i++)
-					if (pick[i]) sub.push_back(names[i]);
-				pools.push_back(sub);
-			} while (std::prev_permutation(pick.begin(), pick.end()) && pools.size() < 256);
-		}
-		else
-			pools.push_back(names);
-		bool first_pool = true;
-		for (const auto& pool : pools)
-		{
-			const Choice c = choose(automatic ? sel : folds, pool, "");
-			if (first_pool || c.cv_rms < best.cv_rms)
-			{
-				best = c;
-				first_pool = false;
-			}
-		}
-		if (opt.fallbacks)
-		{
-			const ThermalFeatureSet chosen = fs.selectOrders(best.order);
-			for (const auto& name : chosen.thermistors()) fallback_choices.push_back(choose(automatic ? sel : folds, best.pool, name));
-		}
-	}
-
-	// Stability of the choice: the main-model selection rerun on wild (sign-flip) block-bootstrap
-	// resamples of the calibration data (every unit kept in its fold, its residual sign-flipped
-	// with probability 1/2).
-	SelectionStability stability;
-	if (resample && !units.empty())
-	{
-		const auto termsOf = [&](const Choice& c) {
-			std::string s;
-			for (const auto& n : fs.selectOrders(c.order).termNames())
-				if (n != "1") s += (s.empty() ? "" : " + ") + n;
-			return s.empty() ? std::string("1") : s;
-		};
-		const auto selectMain = [&](FoldSet& fset) -> Choice {
-			if (nested)
-			{
-				NestedSelection search(names, [&](const std::vector<std::string>& pool) { return forward(fset, pool, ""); });
-				std::size_t base = search.fullMask();
-				if (preset.kind == PresetKind::Points)
-				{
-					double lowest = std::numeric_limits<double>::infinity();
-					for (std::size_t mask = 1; mask <= search.fullMask(); mask++)
-					{
-						if (static_cast<std::size_t>(__builtin_popcountll(mask)) != static_cast<std::size_t>(preset.points_k))
-							continue;
-						const Choice c = search.best(mask, false);
-						if (c.cv_rms < lowest)
-						{
-							lowest = c.cv_rms;
-							base = mask;
-						}
-					}
-				}
-				return search.best(base, opt.parsimony, opt.paired_se);
-			}
-			return choose(fset, best.pool, "");
-		};
-		std::vector<const StreamingQr*> unit_list;
-		std::vector<std::size_t> unit_fold;
-		for (const auto& [key, acc] : units)
-		{
-			unit_list.push_back(&acc);
-			unit_fold.push_back(key.first);
-		}
-		// Wild (sign-flip) block bootstrap: the rows (the thermal history) stay, the residual of
-		// the chosen model changes sign block by block: another noise realisation of the same
-		// calibration run, which is what "the same choice with another noise seed" asks about.
-		// (A bootstrap that redraws the blocks themselves also changes which temperatures are
-		// seen, a much larger change: it called every fit unstable.)
-		const LinearFit chosen_fit = solveBiasFit(total, columnsOf(fs, best.order), best.ridge);
-		const Eigen::VectorXd beta = shiftedFullCoefficients(total, chosen_fit.columns, chosen_fit.coef_dph);
-		std::mt19937_64 rng(opt.stability_seed);
-		std::bernoulli_distribution flip(0.5);
-		std::map<std::string, std::size_t> model_count, term_count;
-		std::map<std::string, std::vector<int>> model_order;
-		for (std::size_t b = 0; b < opt.stability_resamples; b++)
-		{
-			FoldSet fr;
-			fr.held_out.assign(nfolds, StreamingQr(fs.termCount(), y_ref, x_ref));
-			if (significance) fr.units.assign(nfolds, {});
-			for (std::size_t u = 0; u < unit_list.size(); u++)
-			{
-				if (!flip(rng))
-				{
-					fr.held_out[unit_fold[u]].merge(*unit_list[u]);
-					if (significance) fr.units[unit_fold[u]].push_back(*unit_list[u]);
-					continue;
-				}
-				StreamingQr flipped = *unit_list[u];
-				flipped.flipResiduals(beta);
-				fr.held_out[unit_fold[u]].merge(flipped);
-				if (significance) fr.units[unit_fold[u]].push_back(flipped);
-			}
-			fr.training = trainingSets(fr.held_out);
-			const Choice c = selectMain(fr);
-			const std::string key = termsOf(c);
-			model_count[key]++;
-			model_order[key] = c.order;
-			for (const auto& n : fs.selectOrders(c.order).termNames())
-				if (n != "1") term_count[n]++;
-		}
-		const double nb = static_cast<double>(opt.stability_resamples);
-		stability.resamples = opt.stability_resamples;
-		const std::string chosen = termsOf(best);
-		stability.chosen_share = model_count.count(chosen) ? static_cast<double>(model_count[chosen]) / nb : 0.0;
-		stability.stable = stability.chosen_share >= opt.stable_share;
-		for (const auto& [key, n] : model_count)
-		{
-			if (key == chosen) continue;
-			SelectionStability::Alternative a;
-			a.terms = key;
-			a.share = static_cast<double>(n) / nb;
-			a.held_out_rms_dph = scoreOrders(folds, fs, model_order[key], kRidgeGrid).cv_rms;  // on the real folds
-			stability.alternatives.push_back(a);
-		}
-		const Choice chosen_score = scoreOrders(folds, fs, best.order, kRidgeGrid);
-		stability.chosen_held_out_rms_dph = chosen_score.cv_rms;
-		stability.held_out_se_mse = chosen_score.cv_se_mse;
-		stability.alternatives_equivalent = !stability.alternatives.empty();
-		for (const auto& a : stability.alternatives)
-			stability.alternatives_equivalent &= std::abs(a.held_out_rms_dph * a.held_out_rms_dph -
-														  chosen_score.cv_rms * chosen_score.cv_rms) <= chosen_score.cv_se_mse;
-		std::sort(stability.alternatives.begin(), stability.alternatives.end(),
-				  [](const auto& a, const auto& b) { return a.share > b.share; });
-		for (const auto& [term, n] : term_count) stability.term_share.push_back({term, static_cast<double>(n) / nb});
-	}
+	// The terms, the fallbacks and how stable the choice is.
+	const TermSearch terms(fs, preset, opt);
+	const TermSearch::Result chosen = terms.select(acc.sel, acc.folds);
+	const Choice& best = chosen.best;
+	const std::vector<Choice>& fallback_choices = chosen.fallback_choices;
+	const SelectionStability stability = selectionStability(terms, acc, best, fs, plan, opt, y_ref, x_ref);
 
 	Calibration cal;
 	cal.selection_stability = stability;
 	cal.rates_unavailable = rates_unavailable;
-	for (const auto& r : runs)
-	{
-		bool first_sample = true;
-		double prev_t = 0;
-		r.forEachChunk([&](const FogSeries& c, std::size_t) {
-			for (double t : c.time_s)
-			{
-				if (!first_sample) cal.rate_gaps += t - prev_t > opt.rate_estimator.window_s;
-				first_sample = false;
-				prev_t = t;
-			}
-		});
-	}
+	cal.rate_gaps = rateGapCount(runs, opt.rate_estimator.window_s);
 	cal.sensor_label = first.sensor_label;
 	cal.axis = axis;
 	cal.layout = first.thermistors;
@@ -1411,83 +1635,11 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 			cal.fallbacks.push_back(makeModel(total, fs, fallback_choices[i], used[i], opt));
 	}
 
-	// Rate-free start-up model: the main model's orders with every rate signal left out, refitted
-	// (ridge by the same held-out error) on the same samples.
-	if (opt.startup_model)
-	{
-		std::vector<int> order = best.order;
-		bool reads_rates = false;
-		for (std::size_t s = 0; s < ns; s++)
-		{
-			const SignalKind kind = fs.signals()[s].kind;
-			if ((kind == SignalKind::Rate || kind == SignalKind::DiffRate) && order[s] > 0)
-			{
-				order[s] = 0;
-				reads_rates = true;
-			}
-		}
-		if (reads_rates)
-		{
-			try
-			{
-				cal.startup = makeModel(total, fs, scoreOrders(folds, fs, order, kRidgeGrid), "", opt);
-			}
-			catch (const std::invalid_argument&)
-			{
-				// cannot be fitted on these data (too few samples for its terms): the start-up is
-				// then compensated as without one (documented in Calibration::startup)
-			}
-		}
-	}
+	addStartupModel(cal, acc, fs, best, opt);
 
 	// In-sample figures, then held-out ones.
 	addInSampleFigures(cal, prep, fs, opt);
-	constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-	// Held-out figures: every fold predicted by the chosen model fitted on the other folds.
-	{
-		const auto cols = columnsOf(fs, best.order);
-		std::vector<Eigen::VectorXd> coef(nfolds);
-		std::vector<bool> has(nfolds, false);
-		for (std::size_t fo = 0; fo < nfolds; fo++)
-		{
-			auto& train = folds.training[fo];
-			if (train.count() < cols.size()) continue;
-			coef[fo] = solveBiasFit(train, cols, best.ridge).coef_dph;
-			has[fo] = true;
-		}
-		ConcatenatedRuns all;
-		for (std::size_t ri = 0; ri < prep.size(); ri++)
-		{
-			const auto& r = prep[ri];
-			all.beginRun(r);
-			RowCursor cur(r);
-			RegimeFoldCursor regime(regimes_of[ri], opt.max_regime_folds);
-			forEachSample(r, &cur, [&](const FogSeries& c, std::size_t k0, std::size_t j) {
-				double comp = kNaN;
-				if (r.ok[k0 + j])
-				{
-					const std::size_t fo = foldOf(ri, c.time_s[j], regime);
-					if (has[fo])
-					{
-						rowSignals(cur, fs, c, k0, j, temp, rate, values);
-						fs.features(values.data(), f.data(), false);
-						double pred = 0;
-						for (std::size_t q = 0; q < cols.size(); q++) pred += coef[fo][static_cast<Eigen::Index>(q)] * f[cols[q]];
-						comp = r.y(c, j) - pred;
-					}
-				}
-				all.push(c.time_s[j], r.y(c, j), comp);
-			});
-			all.endRun(r, opt.tau_s);
-		}
-		cal.held_out.label = run_regimes ? "held-out (leave-regime-out within " + std::to_string(runs.size()) + " runs, " +
-											   std::to_string(nfolds) + " folds)"
-							 : by_run    ? "held-out (leave-one-run-out, " + std::to_string(nfolds) + " runs)"
-							 : by_regime ? "held-out (leave-regime-out, " + std::to_string(regime_segments) + " regimes in " +
-											   std::to_string(nfolds) + " folds)"
-										 : "held-out (blocked " + std::to_string(nfolds) + "-fold)";
-		all.figuresInto(cal.held_out, opt.tau_s);
-	}
+	addHeldOutFigures(cal, prep, fs, acc, plan, best, runs.size(), opt);
 	return cal;
 }
 
