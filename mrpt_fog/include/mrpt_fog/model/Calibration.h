@@ -133,7 +133,7 @@ enum class OrderSearch : unsigned char
 struct FitOptions
 {
 	RateEstimatorSettings rate_estimator;  //!< default causal, 60 s window
-	/** Lengthen the rate window for coarsely quantised thermistors (issue 11): the window used is
+	/** Lengthen the rate window for coarsely quantised thermistors: the window used is
 	 * windowForQuantum_s(rate_estimator.window_s, q) with q the largest reading quantum
 	 * (readingQuantum_C) of the preset's thermistors in the runs, recorded in the calibration.
 	 * false: rate_estimator.window_s as given (fog-calibrate --window sets it false). */
@@ -302,7 +302,7 @@ struct Calibration
 	ExtrapolationPolicy extrapolation = ExtrapolationPolicy::Linear;  //!< outside the calibrated range
 	BiasModel model;
 	std::vector<BiasModel> fallbacks;  //!< one per thermistor of the model
-	/** Rate-free start-up model (issue 11): the main model's temperature (and difference)
+	/** Rate-free start-up model: the main model's temperature (and difference)
 	 * terms refitted without any rate signal. The compensator uses it while a rate the main
 	 * model reads is not yet estimable or its window covers less than half its length (the
 	 * start of a log, each burst of a burst log, after a gap longer than the window), instead

@@ -63,7 +63,7 @@ struct DriveRecord
  * the end, for the coil transient). */
 using DriveStepSink = std::function<bool(const DriveRecord&)>;
 
-/** simulateDrive()'s steps one at a time (issue 14: a long drive need not be held); returns the
+/** simulateDrive()'s steps one at a time (a long drive need not be held); returns the
  * coil's thermal transient over the whole drive (max - min of the coil mean temperature). */
 double simulateDriveSteps(const ChamberProfile& cabin, const FogDevice& device, const SimSettings& settings,
 						  const OdometryErrors& odo, const DriveStepSink& f);
