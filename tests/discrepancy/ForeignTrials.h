@@ -70,6 +70,8 @@ inline Outcome runForeignTrial(const std::string& hidden, double ratio, std::uin
 	o2.seed = 2 * seed + 1;
 	o1.profile = o2.profile = profile;
 	if (!hidden.empty()) o1.hidden[hidden] = o2.hidden[hidden] = ratio;
+	if (const char* w = std::getenv("FOG_FOREIGN_HYST_HALF_WIDTH_C"))  // robustness of the candidate's grid
+		o1.hysteresis_half_width_C = o2.hysteresis_half_width_C = std::atof(w);
 	const auto r1 = fogtest::makeLumpedCoilRun(o1), r2 = fogtest::makeLumpedCoilRun(o2);
 	const auto rep = analyseDiscrepancy({r1.series, r2.series}, {"run1", "run2"}, kBaseModel, trialOptions());
 	Outcome out;
@@ -132,6 +134,21 @@ inline Outcome runForeignTrial(const std::string& hidden, double ratio, std::uin
 		out.summary += "; not named " + rj.id +
 					   (at == std::string::npos ? std::string(" (") + rj.reason.substr(0, 40) + ")"
 												: " (held out " + rj.reason.substr(at + 9, rj.reason.find(' ', at + 9) - at - 9) + ")");
+	}
+	if (std::getenv("FOG_FOREIGN_DEBUG"))
+	{
+		std::printf("    lrv %.2f ar order %d phi0 %.3f theta %.3f\n", rep.selection.lrv_factor, rep.selection.ar.order(),
+					rep.selection.ar.order() > 0 ? rep.selection.ar.phi[0] : 0.0, rep.selection.ar.theta);
+		for (std::size_t r = 0; r < rep.selection.rounds.size(); ++r)
+			for (const auto& t : rep.selection.rounds[r])
+				if (t.status == CandidateStatus::Tested)
+					std::printf("    round %zu %s theta %g chi2 %.1f p %.2g padj %.2g dbic %.1f sig %d\n", r, t.id.c_str(), t.theta,
+								t.chi2, t.p, t.p_adjusted, t.delta_bic, int(t.significant));
+		for (const auto& ne : rep.selection.named)
+			std::printf("    named %s confirm_p %.3g confirmed %d\n", ne.id.c_str(), ne.confirm_p, int(ne.confirmed));
+		for (const auto& ne : rep.selection.not_confirmed)
+			std::printf("    not confirmed %s confirm_p %.3g\n", ne.id.c_str(), ne.confirm_p);
+		for (const auto& rj : rep.rejected) std::printf("    rejected %s: %s\n", rj.id.c_str(), rj.reason.c_str());
 	}
 	std::printf("  trial: %s\n", out.summary.c_str());
 	std::fflush(stdout);
@@ -202,6 +219,7 @@ inline double compensatorGapShare(const std::string& hidden, double ratio, std::
 					  static_cast<unsigned long long>(seed), hidden.c_str(), ratio, rep.verdict().c_str(),
 					  aug.added_terms.size(), aug.before.rms_dph, aug.after.rms_dph, oracle.rms_dph, share);
 		*line = buf;
+		for (const auto& [id, why] : aug.not_written) *line += "; not written " + id + " (" + why + ")";
 		if (!aug.rate_window_note.empty())
 		{
 			// how much of "after" is the longer rate window alone: the oracle (twin without the

@@ -106,8 +106,48 @@ TEST(CandidateEffect, HysteresisIsPlayTypeAndKeepsItsBranchThroughSoaks)
 	// cooling: 0.25 C into sample 61, then 0.5 C per sample
 	EXPECT_NEAR(h[70], -1 + (top + 1) * std::exp(-(0.25 + 0.5 * 9) / 5.0), 1e-12);
 	const auto col = candidateById("hysteresis");
-	EXPECT_EQ(col.theta_name, "span_C");
+	EXPECT_EQ(col.theta_name, "width_C");
 	EXPECT_THROW(hysteresisBranch(s, 0.0), std::invalid_argument);
+}
+
+TEST(CandidateEffect, HysteresisPlayOperatorIsLinearAfterAReversalUntilItSaturates)
+{
+	// heat 0 -> 20 C at 0.5 C per sample, soak, cool: the play of half-width w = 2 C follows
+	// h = x / w until x = w (4 samples), then stays at 1; cooling from the top it falls by
+	// dx / w per sample and reaches -1 after 2 w = 4 C (8 samples), as the backlash definition
+	// p <- min(max(p, x - w), x + w), h = (x - p) / w gives by hand
+	RunSignals s;
+	for (int k = 0; k <= 80; ++k)
+	{
+		const double rate = k <= 40 ? 0.5 : (k <= 60 ? 0.0 : -0.5);
+		s.time_s.push_back(60.0 * k);
+		s.dtemp_dt_Cpm.push_back(rate);
+		s.temp_mean_C.push_back(k <= 40 ? 0.5 * k : (k <= 60 ? 20.0 : 20.0 - 0.5 * (k - 60)));
+		s.block.push_back(0);
+	}
+	const auto h = hysteresisPlay(s, 2.0);
+	// trapezoid of the rates: 0.5 C per sample up to 40, 0.25 C into 41; soak; 0.25 C into 61
+	for (int k = 0; k <= 4; ++k) EXPECT_NEAR(h[k], 0.25 * k, 1e-12) << k;
+	for (int k = 4; k <= 60; ++k) EXPECT_NEAR(h[k], 1.0, 1e-12) << "saturated and kept through the soak, k " << k;
+	EXPECT_NEAR(h[61], 1.0 - 0.25 / 2.0, 1e-12);
+	for (int k = 62; k <= 68; ++k) EXPECT_NEAR(h[k], 1.0 - (0.25 + 0.5 * (k - 61)) / 2.0, 1e-12) << k;
+	for (int k = 69; k <= 80; ++k) EXPECT_NEAR(h[k], -1.0, 1e-12) << k;
+	EXPECT_THROW(hysteresisPlay(s, 0.0), std::invalid_argument);
+
+	// the candidate's parameter carries the shape: > 0 exponential branch, < 0 play
+	const auto& c = candidateById("hysteresis");
+	EXPECT_EQ(hysteresisColumn(s, -2.0), h);
+	EXPECT_EQ(hysteresisColumn(s, 5.0), hysteresisBranch(s, 5.0));
+	EXPECT_EQ(c.theta_grid, hysteresisThetaGrid());
+	int play = 0, branch = 0;
+	for (double th : c.theta_grid) (hysteresisShapeOf(th).kind == HysteresisShape::Kind::Play ? play : branch)++;
+	EXPECT_EQ(play, 6);
+	EXPECT_EQ(branch, 6);
+	ASSERT_TRUE(static_cast<bool>(c.describe_theta));
+	EXPECT_EQ(c.describe_theta(-2.0), "play operator, half-width 2 C");
+	EXPECT_EQ(c.describe_theta(5.0), "exponential branch, span 5 C");
+	EXPECT_THROW(hysteresisShapeOf(0.0), std::invalid_argument);
+	EXPECT_THROW(hysteresisTheta({HysteresisShape::Kind::Play, -1.0}), std::invalid_argument);
 }
 
 TEST(CandidateEffect, ShupeRateHoldsTheMeanRateAndTheRadialRateDifference)

@@ -216,11 +216,13 @@ LumpedCoilRun makeLumpedCoilRun(const LumpedCoilOptions& opt)
 		std::vector<double> shape(n, 0.0);
 		if (id == "hysteresis")
 		{
+			const double w = opt.hysteresis_half_width_C;
+			if (!(w > 0)) throw std::invalid_argument("lumped-coil generator: hysteresis_half_width_C must be > 0");
 			double p = M[0];
 			for (std::size_t k = 0; k < n; ++k)
 			{
-				p = std::min(std::max(p, M[k] - 2.0), M[k] + 2.0);
-				shape[k] = (M[k] - p) / 2.0;
+				p = std::min(std::max(p, M[k] - w), M[k] + w);
+				shape[k] = (M[k] - p) / w;
 			}
 		}
 		else if (id == "warmup")

@@ -26,8 +26,8 @@
  *  - Sampling 1 s; gyro-off rows carry an empty rate (NaN) and power 0; temperatures go on.
  *  - Hidden effects (ids of the discrepancy candidate library), shapes from the TRUE node
  *    temperatures:
- *      hysteresis        play (backlash) operator of width 2 C on the coil mean M = (I+O)/2:
- *                        p <- min(max(p, M - 2), M + 2); shape (M - p)/2 (in [-1, 1])
+ *      hysteresis        play (backlash) operator of half-width w = 2 C (option) on the coil mean M = (I+O)/2:
+ *                        p <- min(max(p, M - w), M + w); shape (M - p)/w (in [-1, 1])
  *      warmup            exp(-(t - t_on)/400 s) after each turn-on (not before the first one)
  *      scale_factor_temp (M - 25) x table rate x 1e-6
  *      magnetic          axial field [uT]
@@ -77,6 +77,9 @@ struct LumpedCoilOptions
 	double wander_dph = 0.01;  //!< stationary sd of the AR(1) bias wander [deg/h]
 	double wander_tau_s = 1800.0;  //!< its time constant [s]
 	double offset_sd_dph = 0.05;  //!< turn-on-to-turn-on offset of b0, drawn per run [deg/h]
+	/** Half-width of the hidden hysteresis' play operator [degC] (2 C unless a trial asks how a
+	 * candidate fares on another width). */
+	double hysteresis_half_width_C = 2.0;
 };
 
 struct LumpedCoilRun

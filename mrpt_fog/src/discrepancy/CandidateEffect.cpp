@@ -41,6 +41,68 @@ std::vector<double> hysteresisBranch(const RunSignals& s, double span_C)
 	return h;
 }
 
+std::vector<double> hysteresisPlay(const RunSignals& s, double half_width_C)
+{
+	if (!(half_width_C > 0)) throw std::invalid_argument("hysteresisPlay: half_width_C must be > 0");
+	std::vector<double> h(s.size(), 0.0);
+	const bool coil = s.temp_coil_C.size() == s.size() && s.dtemp_coil_dt_Cpm.size() == s.size();
+	const auto& T = coil ? s.temp_coil_C : s.temp_mean_C;
+	const auto& dT_dt = coil ? s.dtemp_coil_dt_Cpm : s.dtemp_dt_Cpm;
+	// x: the coil temperature's change since the run start, from the same per-sample changes as
+	// hysteresisBranch (smoothed rate within a block, raw change across gaps); p: the play's
+	// output, which moves only when x leaves [p - w, p + w]
+	double x = 0.0, p = 0.0;
+	for (std::size_t k = 1; k < s.size(); ++k)
+	{
+		if (s.block[k] >= 0 && s.block[k] == s.block[k - 1])
+			x += 0.5 * (dT_dt[k] + dT_dt[k - 1]) * (s.time_s[k] - s.time_s[k - 1]) / 60.0;
+		else if (std::isfinite(T[k]) && std::isfinite(T[k - 1]))
+			x += T[k] - T[k - 1];
+		p = std::min(std::max(p, x - half_width_C), x + half_width_C);
+		h[k] = (x - p) / half_width_C;
+	}
+	return h;
+}
+
+HysteresisShape hysteresisShapeOf(double theta)
+{
+	if (!(theta != 0.0) || !std::isfinite(theta)) throw std::invalid_argument("hysteresis theta must be finite and non-zero");
+	return {theta > 0 ? HysteresisShape::Kind::ExponentialBranch : HysteresisShape::Kind::Play, std::fabs(theta)};
+}
+
+double hysteresisTheta(HysteresisShape shape)
+{
+	if (!(shape.width_C > 0) || !std::isfinite(shape.width_C))
+		throw std::invalid_argument("hysteresis width_C must be finite and > 0");
+	return shape.kind == HysteresisShape::Kind::ExponentialBranch ? shape.width_C : -shape.width_C;
+}
+
+std::vector<double> hysteresisColumn(const RunSignals& s, double theta)
+{
+	const auto shape = hysteresisShapeOf(theta);
+	return shape.kind == HysteresisShape::Kind::ExponentialBranch ? hysteresisBranch(s, shape.width_C)
+																  : hysteresisPlay(s, shape.width_C);
+}
+
+std::vector<double> hysteresisThetaGrid()
+{
+	std::vector<double> g;
+	for (auto kind : {HysteresisShape::Kind::ExponentialBranch, HysteresisShape::Kind::Play})
+		for (double w : {0.5, 1.0, 2.0, 5.0, 10.0, 20.0}) g.push_back(hysteresisTheta({kind, w}));
+	return g;
+}
+
+std::string describeHysteresisTheta(double theta)
+{
+	const auto shape = hysteresisShapeOf(theta);
+	char buf[96];
+	if (shape.kind == HysteresisShape::Kind::ExponentialBranch)
+		std::snprintf(buf, sizeof buf, "exponential branch, span %g C", shape.width_C);
+	else
+		std::snprintf(buf, sizeof buf, "play operator, half-width %g C", shape.width_C);
+	return buf;
+}
+
 namespace
 {
 using Mat = Eigen::MatrixXd;
@@ -326,13 +388,15 @@ std::vector<CandidateEffect> handWrittenCandidates()
 	lib.push_back(withTheta(
 		candidateOf(Effect::Hysteresis,
 					"heating vs cooling hysteresis: a bias offset of opposite sign on the heating and the cooling "
-					"branch, kept through soaks, swapping over a temperature span (play-type)",
+					"branch, kept through soaks, swapping over a temperature span (an exponential branch, or a "
+					"play (backlash) operator: adhesive and jacket stress in a wound coil)",
 					"ramps at several rates (the offset does not scale with the rate) and soaks after heating "
 					"and after cooling",
 					"deg/h (half heating-cooling difference)",
-					[](const CandidateContext& ctx, double span_C) { return column(hysteresisBranch(*ctx.sig, span_C)); },
+					[](const CandidateContext& ctx, double theta) { return column(hysteresisColumn(*ctx.sig, theta)); },
 					hysteresisUntestableReason),
-		"span_C", {0.5, 1.0, 2.0, 5.0, 10.0, 20.0}));
+		"width_C", hysteresisThetaGrid()));
+	lib.back().describe_theta = describeHysteresisTheta;
 	lib.push_back(withTheta(
 		candidateOf(Effect::Warmup,
 					"turn-on warm-up: a bias decaying as exp(-(t - t_on)/tau) after each power-on (a run that starts "

@@ -367,16 +367,18 @@ std::vector<CandState> screenCandidates(const std::vector<std::string>& ids, con
  * grid size) and its BIC gain with nEff effective samples. */
 void testCandidate(CandState& cs, const CandidateContext& ctx, const Mat& X, const Vec& y,
 				   const std::vector<std::size_t>& rows, const std::vector<std::size_t>& common,
-				   const std::vector<int>& block, const SelectionOptions& opt, double nEff)
+				   const std::vector<int>& block, const SelectionOptions& opt, double nEff, const Gls& g0)
 {
-	// nonlinear parameter: profile search on the OLS residual sum of squares (the GLS test
-	// below is Sidak-corrected for the grid size)
+	(void)rows;
+	// nonlinear parameter: profile search on the residual sum of squares whitened by the
+	// model's noise model (the GLS test below is Sidak-corrected for the grid size)
 	double bestRss = std::numeric_limits<double>::infinity();
+	const Mat WX = whiten(X, g0.ar, common, &block);
+	const Vec Wy = whiten(y, g0.ar, common, &block).col(0);
 	for (double th : cs.thetas)
 	{
 		const Mat C = cs.eff->build(ctx, th);
-		Vec rc;
-		const double rss = olsOnRows(hcat(X, C), y, rows, rc).rss;
+		const double rss = leastSquares(hcat(WX, whiten(C, g0.ar, common, &block)), Wy).rss;
 		if (rss < bestRss)
 		{
 			bestRss = rss;
@@ -461,7 +463,7 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 			res.lrv_factor = g0.lrv;
 		}
 		const double nEff = std::max(2.0, nRows / std::max(1.0, g0.lrv));
-		for (auto& cs : cands) testCandidate(cs, ctx, X, y, rows, common, sig.block, opt, nEff);
+		for (auto& cs : cands) testCandidate(cs, ctx, X, y, rows, common, sig.block, opt, nEff, g0);
 		holmAdjust(cands, opt);
 		const std::size_t m = cands.size();
 		int bestIdx = -1;

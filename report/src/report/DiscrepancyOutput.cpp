@@ -86,6 +86,8 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 		e["coefficient_unit"] = ne.coefficient_unit;
 		e["ci"] = JsonValue::array({ne.ci_low, ne.ci_high});
 		if (!ne.theta_name.empty()) e[ne.theta_name] = ne.theta;
+		if (!ne.theta_name.empty() && candidateById(ne.id).describe_theta)
+			e[ne.theta_name + "_meaning"] = candidateById(ne.id).describe_theta(ne.theta);
 		e["chi2"] = ne.chi2;
 		e["p_adjusted"] = ne.p_adjusted;
 		e["delta_bic"] = ne.delta_bic;
@@ -193,7 +195,11 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 		os << "  " << ne.id << ": " << candidateDescription(ne.id) << "\n";
 		os << "    coefficient " << formatValue("%.4g", ne.coefficient) << " " << ne.coefficient_unit << " (95 % CI "
 		   << formatValue("%.4g", ne.ci_low) << " .. " << formatValue("%.4g", ne.ci_high) << ")";
-		if (!ne.theta_name.empty()) os << ", " << ne.theta_name << " = " << formatValue("%g", ne.theta);
+		if (!ne.theta_name.empty())
+		{
+			os << ", " << ne.theta_name << " = " << formatValue("%g", ne.theta);
+			if (candidateById(ne.id).describe_theta) os << " (" << candidateById(ne.id).describe_theta(ne.theta) << ")";
+		}
 		os << "; confidence " << formatValue("%.2f", ne.confidence) << ", chi2 " << formatValue("%.1f", ne.chi2) << ", Holm p "
 		   << formatValue("%.2g", ne.p_adjusted) << "\n";
 		for (std::size_t a = 1; a < ne.alias_group.size(); ++a)

@@ -3,7 +3,11 @@
  * (fogtest::kHeldOutSeedFirst.. = 9101..; FOG_FOREIGN_FIRST_SEED=1 runs the tuning seeds), label "long". Per effect: FOG_FOREIGN_SEEDS trials
  * (default 20) at effect/noise 3 and 1; nulls: 5 x that many. Targets (issue 13): named in
  * >= 95 % at 3 and >= 80 % at 1; false naming on nulls <= 2 % (Clopper-Pearson upper bound
- * printed); gap share >= 0.5. Regenerate: test_discrepancy_long --gtest_filter='ForeignTrialsLong*' | grep -A3 FOREIGN */
+ * printed); gap share >= 0.5. Regenerate: test_discrepancy_long --gtest_filter='ForeignTrialsLong*' | grep -A3 FOREIGN
+ * Other knobs (ForeignTrials.h): FOG_FOREIGN_DT_S (sample period), FOG_FOREIGN_EFFECTS=a,b,
+ * FOG_FOREIGN_DEBUG=1 (per-round chi-squares, confirmation, guard-rail rejections per trial),
+ * FOG_FOREIGN_HYST_HALF_WIDTH_C (the generator's play half-width, default 2 C: how the
+ * hysteresis candidate's grid fares off its grid points). */
 #include <algorithm>
 #include <cstdlib>
 

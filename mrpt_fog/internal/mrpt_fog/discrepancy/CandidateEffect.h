@@ -61,6 +61,8 @@ struct CandidateEffect
 	double coefficient_scale = 1.0;
 	/** Empty when testable on this run, else why not (e.g. "no table-rate segments"). */
 	std::function<std::string(const RunSignals&)> untestable_reason;
+	/** What a value of the nonlinear parameter means, in words (unset: "theta_name = value"). */
+	std::function<std::string(double theta)> describe_theta;
 };
 
 /** The candidate an effect's simulator term per coefficient gives (EffectDescriptor::
@@ -86,6 +88,36 @@ double heatingCoolingSign(double dtemp_dt_Cpm);
  * smoothed coil temperature (RunSignals::temp_coil_C) over each sample (raw change across gaps and power-off);
  * it keeps its value through soaks. h = 0 at the run start. Throws for span_C <= 0. */
 std::vector<double> hysteresisBranch(const RunSignals& sig, double span_C);
+
+/** Hysteresis regressor of the play (backlash) type, the elementary operator of a
+ * Prandtl-Ishlinskii model (adhesive and jacket stress in a wound coil sticks until the
+ * temperature has moved by the half-width w): with x the coil temperature's change since the run
+ * start (the per-sample changes of hysteresisBranch), p <- min(max(p, x - w), x + w) and
+ * h = (x - p) / w in [-1, 1], linear in the temperature after a reversal until it saturates,
+ * constant through soaks; h = 0 at the run start. Throws for half_width_C <= 0. */
+std::vector<double> hysteresisPlay(const RunSignals& sig, double half_width_C);
+
+/** The hysteresis candidate's nonlinear parameter carries its branch shape and width: theta > 0
+ * is an exponential branch of span theta, theta < 0 a play operator of half-width -theta. */
+struct HysteresisShape
+{
+	enum class Kind
+	{
+		ExponentialBranch,
+		Play
+	};
+	Kind kind = Kind::ExponentialBranch;
+	double width_C = 1.0;  //!< span (exponential branch) or half-width (play) [degC]
+};
+HysteresisShape hysteresisShapeOf(double theta);  //!< throws for theta 0 or not finite
+double hysteresisTheta(HysteresisShape shape);  //!< throws for width_C <= 0 or not finite
+/** hysteresisBranch or hysteresisPlay, as theta says. */
+std::vector<double> hysteresisColumn(const RunSignals& sig, double theta);
+/** The grid searched: both shapes at widths 0.5, 1, 2, 5, 10, 20 C (one 1-2-5 series for both;
+ * the data choose shape and width by the profile search of EffectSelector). */
+std::vector<double> hysteresisThetaGrid();
+/** "play operator, half-width 2 C" / "exponential branch, span 5 C". */
+std::string describeHysteresisTheta(double theta);
 
 /** Where a run heats and where it cools (usable samples, |d(mean T)/dt| >= moving_rate_Cpm). */
 struct HeatingCoolingCoverage

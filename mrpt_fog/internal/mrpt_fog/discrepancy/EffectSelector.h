@@ -15,8 +15,12 @@
  *     whitening left. (A single noise model for all candidates was tried: from the current
  *     model's residual it swallows localized effects such as warm-up, power 1/30 at ratio 1;
  *     from model + all candidates, null chi-squares were ~1.5x too big.)
- *  4. per candidate: that chi-square, nonlinear parameters by profile search (Sidak-corrected
- *     over the grid), BIC gain vs the model, Holm correction over the candidates;
+ *  4. per candidate: that chi-square, nonlinear parameters by profile search on the residual
+ *     sum of squares whitened by the current model's noise model (Sidak-corrected over the
+ *     grid; an OLS profile let the slow bias wander choose the grid value: on the lumped-coil
+ *     generator the hysteresis width went to the grid's widest play, chi-square 11, where the
+ *     whitened profile picks the one giving 50), BIC gain vs the model, Holm correction over
+ *     the candidates;
  *     significant = adjusted p < alpha and BIC gain > 0;
  *  5. the best significant candidate (largest BIC gain) is named; identifiability check: a
  *     candidate c joins its alias group when its columns reproduce the best's fitted shape on
