@@ -51,7 +51,8 @@
  * built on them, so they count as tuning seeds now. kHeldOutSeedFirst.. (9101..9200) are the
  * fresh held-out block (issue 13, session 5): untouched while tuning, run once at the end.
  * Session 7 tuned on 9101..9105 (effects) and kept 9401..9410 fresh for its final run
- * (FOG_FOREIGN_FIRST_SEED=9401); 9101..9300 serve as the null block.
+ * (FOG_FOREIGN_FIRST_SEED=9401); 9101..9300 serve as the null block. Session 8 tuned on
+ * 9101..9105 again and kept 9501..9510 (5 s) and 9511.. (1 s) fresh for its final runs.
  */
 
 #include <mrpt_fog/obs/FogSeries.h>

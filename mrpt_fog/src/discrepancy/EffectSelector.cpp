@@ -487,6 +487,7 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 		ne.alias_sign = {0};
 		ne.theta_name = B.eff->theta_name;
 		ne.theta = B.theta;
+		if (B.eff->describe_theta) ne.theta_meaning = B.eff->describe_theta(B.theta);
 		ne.coefficient_unit = B.eff->coefficient_unit;
 		ne.chi2 = B.test.chi2;
 		ne.p_adjusted = B.test.p_adjusted;

@@ -86,8 +86,7 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 		e["coefficient_unit"] = ne.coefficient_unit;
 		e["ci"] = JsonValue::array({ne.ci_low, ne.ci_high});
 		if (!ne.theta_name.empty()) e[ne.theta_name] = ne.theta;
-		if (!ne.theta_name.empty() && candidateById(ne.id).describe_theta)
-			e[ne.theta_name + "_meaning"] = candidateById(ne.id).describe_theta(ne.theta);
+		if (!ne.theta_name.empty() && !ne.theta_meaning.empty()) e[ne.theta_name + "_meaning"] = ne.theta_meaning;
 		e["chi2"] = ne.chi2;
 		e["p_adjusted"] = ne.p_adjusted;
 		e["delta_bic"] = ne.delta_bic;
@@ -198,7 +197,7 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 		if (!ne.theta_name.empty())
 		{
 			os << ", " << ne.theta_name << " = " << formatValue("%g", ne.theta);
-			if (candidateById(ne.id).describe_theta) os << " (" << candidateById(ne.id).describe_theta(ne.theta) << ")";
+			if (!ne.theta_meaning.empty()) os << " (" << ne.theta_meaning << ")";
 		}
 		os << "; confidence " << formatValue("%.2f", ne.confidence) << ", chi2 " << formatValue("%.1f", ne.chi2) << ", Holm p "
 		   << formatValue("%.2g", ne.p_adjusted) << "\n";

@@ -97,6 +97,7 @@ struct NamedEffect
 	std::string coefficient_unit;
 	std::string theta_name;
 	double theta = 0.0;
+	std::string theta_meaning;  //!< the value in words when the candidate says more ("play operator, half-width 2 C")
 	double chi2 = 0.0, p_adjusted = 1.0, delta_bic = 0.0;
 	// confirmation run
 	bool confirm_tested = false;
