@@ -8,6 +8,7 @@
 # WORK needs about 320 MB (the 1 kHz rawlogs; deleted at the end). cal.yaml: fog-calibrate on
 # the 2.88 M log. Prints a markdown table, also WORK/evaluate_scaling.md.
 set -euo pipefail
+profile_dir=$(cd "$(dirname "$0")" && pwd)
 work=$1
 repeats=$2
 shift 2
@@ -15,17 +16,7 @@ bins=()
 for b in "$@"; do bins+=("$(cd "$b" && pwd)"); done
 mkdir -p "$work"
 cd "$work"
-cat >seed8h.yaml <<'YAML'
-name: seed8h
-initial_temp_C: 25
-power_initially: true
-initial_state: steady
-segments:
-  - {type: ramp, to_C: -40, rate_C_per_min: 1}
-  - {type: hold, duration_min: 120}
-  - {type: ramp, to_C: 60, rate_C_per_min: 1}
-  - {type: hold, duration_min: 195}
-YAML
+cp "$profile_dir/seed8h.yaml" seed8h.yaml
 sim=${bins[0]}/fog-sim
 [ -f short.rawlog ] || nice "$sim" -p seed8h.yaml --rate-hz 1000 --duration-s 2880 -o short.rawlog >/dev/null
 [ -f long.rawlog ] || nice "$sim" -p seed8h.yaml --rate-hz 1000 -o long.rawlog >/dev/null

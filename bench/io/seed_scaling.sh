@@ -12,22 +12,13 @@
 # fog-calibrate's spill, 2.7 GB at 28.8 M); the large files are deleted after each rate.
 # Prints a markdown table, also WORK/seed_scaling.md. Last run: docs/io.md, "Size and speed".
 set -euo pipefail
+profile_dir=$(cd "$(dirname "$0")" && pwd)
 bin=$(cd "$1" && pwd)
 work=$2
 rates=${3:-"100 1000"}
 mkdir -p "$work"
 cd "$work"
-cat >seed8h.yaml <<'YAML'
-name: seed8h
-initial_temp_C: 25
-power_initially: true
-initial_state: steady
-segments:
-  - {type: ramp, to_C: -40, rate_C_per_min: 1}
-  - {type: hold, duration_min: 120}
-  - {type: ramp, to_C: 60, rate_C_per_min: 1}
-  - {type: hold, duration_min: 195}
-YAML
+cp "$profile_dir/seed8h.yaml" seed8h.yaml
 table=seed_scaling.md
 echo "| rate | samples | program | wall [s] | CPU [s] | peak RSS [MB] | wall / gzip -dc | CPU / gzip -dc |" >$table
 echo "|---|---|---|---|---|---|---|---|" >>$table

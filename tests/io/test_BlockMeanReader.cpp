@@ -35,6 +35,16 @@ FogSample sample(double t, double rate, double t1, double t2, double table = NAN
 	x.power = power;
 	return x;
 }
+
+// n samples at 10 Hz from t = 0 with a constant rate and both thermistors reading t (C = s)
+void addTenHzRamp(BlockMeanAccumulator& acc, std::size_t n, double rate_dph)
+{
+	for (std::size_t k = 0; k < n; k++)
+	{
+		const double t = 0.1 * static_cast<double>(k);
+		acc.add(sample(t, rate_dph, t, t));
+	}
+}
 }  // namespace
 
 TEST(BlockMeanReader, SlowLogPassesThroughBitForBit)
@@ -239,11 +249,7 @@ TEST(BlockMeanReader, BlocksStopGrowingAtTheirLongest)
 	BlockMeanOptions opt;
 	opt.max_rows = 1000;
 	BlockMeanAccumulator acc(layout(false, false), opt);
-	for (std::size_t k = 0; k < 400000; k++)
-	{
-		const double t = 0.1 * static_cast<double>(k);
-		acc.add(sample(t, 1.0, t, t));
-	}
+	addTenHzRamp(acc, 400000, 1.0);
 	BlockMeanInfo info;
 	const FogSeries s = acc.finish(info);
 	EXPECT_EQ(info.doublings, 4);
@@ -257,11 +263,7 @@ TEST(BlockMeanReader, RowsAtTheirFirstSampleStayOnTheLogsGrid)
 	BlockMeanOptions opt;
 	opt.row_time = BlockMeanOptions::RowTime::FirstSample;
 	BlockMeanAccumulator acc(layout(false, false), opt);
-	for (std::size_t k = 0; k < 1000; k++)
-	{
-		const double t = 0.1 * static_cast<double>(k);
-		acc.add(sample(t, 0.0, t, t));
-	}
+	addTenHzRamp(acc, 1000, 0.0);
 	BlockMeanInfo info;
 	const FogSeries s = acc.finish(info);
 	ASSERT_EQ(s.size(), 100u);

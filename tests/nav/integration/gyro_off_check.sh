@@ -12,6 +12,7 @@
 #     (an empty cell), and fog-drift's two paths agree.
 #   gyro_off_check.sh NAV_TEST_DRIVE FOG_DRIFT FOG_SIM WORK_DIR
 set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
 GEN=$1 DRIFT=$2 SIM=$3 WORK=$4
 rm -rf "$WORK" && mkdir -p "$WORK" && cd "$WORK"
 "$GEN" write-gap gap.rawlog cal.yaml >/dev/null
@@ -27,21 +28,8 @@ grep -q "truth heading change 300.0 deg" s.txt || { echo "no truth heading chang
 # the CSV leaves the stretch out (no error where the heading is not observable)
 awk -F, 'NR > 1 && $1 > 401 && $1 < 649 && $3 != "" { bad = 1 } END { exit bad }' gap.csv || { echo "CSV has errors inside the gyro-off stretch"; exit 1; }
 
-cat > cabin_off.yaml <<'YAML'
-name: cabin_power_off
-initial_temp_C: -5
-power_initially: true
-initial_state: cold
-segments:
-  - {type: hold, duration_min: 2}
-  - {type: ramp, to_C: 15, rate_C_per_min: 2}
-  - {type: power, on: false}
-  - {type: hold, duration_min: 4}
-  - {type: power, on: true}
-  - {type: hold, duration_min: 8}
-YAML
-"$SIM" -p drive --cabin cabin_off.yaml --rate-hz 2 -o sim.rawlog >/dev/null 2>&1
-"$SIM" -p drive --cabin cabin_off.yaml --rate-hz 2 -o sim.csv >/dev/null 2>&1
+"$SIM" -p drive --cabin "$here/cabin_power_off.yaml" --rate-hz 2 -o sim.rawlog >/dev/null 2>&1
+"$SIM" -p drive --cabin "$here/cabin_power_off.yaml" --rate-hz 2 -o sim.csv >/dev/null 2>&1
 # power 0 rows carry no rate (column 2 empty), power 1 rows a number
 awk -F, '!/^#/ && NR > 1 && $1 != "time_s" { if ($NF == 0 && $2 != "") bad = 1; if ($NF == 1 && $2 == "") bad = 1; if ($NF == 0) off++ }
   END { if (bad || off < 400) { print "fog-sim CSV: off rows " off ", bad " bad; exit 1 } }' sim.csv

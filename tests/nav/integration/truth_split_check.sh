@@ -3,25 +3,16 @@
 # reproduce fog-drift's own compensated/ideal heading RMS on the same drive, within 2 %: the split
 # integrates the rates itself (first order in the scale factor), fog-drift through its strapdown
 # with the Earth rate removed, so agreement checks both the split's algebra and that nothing else
-# (integration, Earth rate, latitude) sits in the budget. A 12 min cold-start drive (cabin below),
+# (integration, Earth rate, latitude) sits in the budget. A 12 min cold-start drive (cabin_cold_start.yaml beside this script),
 # calibration tests/data/model/cal_v2_full_A.yaml (bias + scale factor + warm-up term).
 #   truth_split_check.sh FOG_SIM FOG_DRIFT DRIVE_TRUTH SOURCE_DIR WORK_DIR
 set -euo pipefail
 SIM=$1 DRIFT=$2 TRUTH=$3 SRC=$4 WORK=$5
 rm -rf "$WORK" && mkdir -p "$WORK" && cd "$WORK"
-cat > cabin.yaml <<'YAML'
-name: short_cold_start
-initial_temp_C: -10
-power_initially: true
-initial_state: cold
-segments:
-  - {type: hold, duration_min: 2}
-  - {type: ramp, to_C: 10, rate_C_per_min: 2}
-YAML
 CAL="$SRC/tests/data/model/cal_v2_full_A.yaml"
-"$SIM" --profile drive --cabin cabin.yaml --seed 7 -o drive.rawlog >/dev/null
+"$SIM" --profile drive --cabin "$SRC/tests/nav/integration/cabin_cold_start.yaml" --seed 7 -o drive.rawlog >/dev/null
 "$DRIFT" -i drive.rawlog --cal "$CAL" --json drift.json >/dev/null
-"$TRUTH" --seed 7 --cabin cabin.yaml --cal "$CAL" -o truth.csv
+"$TRUTH" --seed 7 --cabin "$SRC/tests/nav/integration/cabin_cold_start.yaml" --cal "$CAL" -o truth.csv
 /usr/bin/python3 "$SRC/scripts/heading_budget_truth.py" truth.csv --json split.json >/dev/null
 /usr/bin/python3 - <<'PY'
 import json, sys
