@@ -22,6 +22,7 @@
 #include "RangeWarning.h"
 #include "CommandLine.h"
 #include "Progress.h"
+#include "PowerCycles.h"
 #include "ThermistorScreeningReport.h"
 
 using namespace mrpt_fog;
@@ -214,13 +215,12 @@ int main(int argc, char** argv)
 		FogSample x;
 		std::vector<double> temps, raw(comps.size());
 		std::vector<Compensator::Output> r(comps.size());
-		std::size_t gyro_off_rows = 0, turn_ons = 0;
-		double prev_power = NAN;
+		app::PowerCycles power_cycles;
 		while (reader.next(x))
 		{
 			temps = x.temp_C;  // the output keeps the temperatures as read
 			if (screen) health.step(x.time_s, temps.data());
-			const bool turn_on = x.power == 1.0 && prev_power == 0.0;
+			const bool turn_on = power_cycles.add(x.power);
 			for (std::size_t i = 0; i < comps.size(); i++)
 			{
 				if (turn_on && cals.axes[i].warmup) comps[i]->notePowerOn(x.time_s);
@@ -233,9 +233,6 @@ int main(int argc, char** argv)
 				for (std::size_t i = 0; i < comps.size(); i++) x.rate_dph[axis_index[i]] = r[i].compensated_dph;
 				rawlog_out->write(x);
 			}
-			if (x.power == 0.0) gyro_off_rows++;
-			if (turn_on) turn_ons++;
-			prev_power = x.power;
 			progress.update(reader.samplesRead(), reader.fileBytesRead(), reader.fileBytes());
 		}
 		if (csv_out) csv_out->close();
@@ -272,7 +269,7 @@ int main(int argc, char** argv)
 		if (reader.hasPower())
 			std::printf("  gyro off: %zu rows (bias tracked on the thermistors, no compensated sample where the rate "
 						"is empty); turn-on events: %zu\n",
-						gyro_off_rows, turn_ons);
+						power_cycles.gyro_off_rows, power_cycles.turn_ons);
 		std::fputs(app::screeningText(screening, screen).c_str(), stdout);
 		for (std::size_t i = 0; i < comps.size(); i++)
 			std::fputs(app::outOfRangeWarning(comps[i]->counters(), cals.axes[i].extrapolation).c_str(), stdout);
@@ -285,8 +282,8 @@ int main(int argc, char** argv)
 			const auto& k = comps.front()->counters();
 			const Calibration& cal = cals.axes.front();
 			putCounters(j, k, true);
-			j["gyro_off_rows"] = static_cast<unsigned long>(gyro_off_rows);
-			j["turn_on_events"] = static_cast<unsigned long>(turn_ons);
+			j["gyro_off_rows"] = static_cast<unsigned long>(power_cycles.gyro_off_rows);
+			j["turn_on_events"] = static_cast<unsigned long>(power_cycles.turn_ons);
 			j["screening"] = app::screeningJson(screening, screen);
 			j["out_of_range"] = app::outOfRangeJson(k, cal.extrapolation);
 			if (several)  // the counters above are the first calibrated axis'; every axis here

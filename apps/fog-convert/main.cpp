@@ -21,6 +21,7 @@
 #include "AppMain.h"
 #include "CommandLine.h"
 #include "Progress.h"
+#include "PowerCycles.h"
 
 using namespace mrpt_fog;
 
@@ -132,8 +133,8 @@ int main(int argc, char** argv)
 			pending.clear();
 		};
 		std::vector<std::size_t> dropouts_of(s.thermistorCount(), 0);
-		std::size_t gyro_off_rows = 0, turn_ons = 0;
-		double t0 = 0, t1 = 0, prev_power = NAN;
+		app::PowerCycles power_cycles;
+		double t0 = 0, t1 = 0;
 		app::Progress progress("fog-convert", arg_quiet.getValue());
 		FogSample x;
 		while (reader.next(x))
@@ -143,9 +144,7 @@ int main(int argc, char** argv)
 			if (reader.samplesRead() == 1) t0 = x.time_s;
 			t1 = x.time_s;
 			for (std::size_t i = 0; i < x.temp_C.size(); i++) dropouts_of[i] += std::isnan(x.temp_C[i]);
-			if (x.power == 0.0) gyro_off_rows++;
-			if (x.power == 1.0 && prev_power == 0.0) turn_ons++;
-			prev_power = x.power;
+			power_cycles.add(x.power);
 			progress.update(reader.samplesRead(), reader.fileBytesRead(), reader.fileBytes());
 		}
 		flushOthers();
@@ -168,7 +167,7 @@ int main(int argc, char** argv)
 				  << " thermistors, " << dropouts << " dropouts, time " << io::formatNumber(t0) << " .. "
 				  << io::formatNumber(t1) << " s\n";
 		if (reader.hasPower())
-			std::cout << "  gyro off on " << gyro_off_rows << " rows (thermistors kept, no gyro sample), " << turn_ons
+			std::cout << "  gyro off on " << power_cycles.gyro_off_rows << " rows (thermistors kept, no gyro sample), " << power_cycles.turn_ons
 					  << " turn-on events\n";
 		if (to_rawlog)
 			std::cout << "  wrote " << writer.objectsWritten() << " objects (" << others_written << " other observations)\n";
@@ -206,8 +205,8 @@ int main(int argc, char** argv)
 				th.push_back(t);
 			}
 			j["dropouts"] = static_cast<unsigned long>(dropouts);
-			j["gyro_off_rows"] = static_cast<unsigned long>(gyro_off_rows);
-			j["turn_on_events"] = static_cast<unsigned long>(turn_ons);
+			j["gyro_off_rows"] = static_cast<unsigned long>(power_cycles.gyro_off_rows);
+			j["turn_on_events"] = static_cast<unsigned long>(power_cycles.turn_ons);
 			JsonValue& opt = j["optional_columns"] = JsonValue::array();
 			if (reader.hasTableRate()) opt.push_back("table_rate_dph");
 			if (reader.hasField()) opt.push_back("field_uT");

@@ -10,6 +10,7 @@
 #include "AppMain.h"
 #include "CommandLine.h"
 #include "Progress.h"
+#include "PowerCycles.h"
 #include "ThermistorScreeningReport.h"
 #include "CalibrationSource.h"
 #include "RangeWarning.h"
@@ -97,14 +98,10 @@ int main(int argc, char** argv)
 			if (!c.power.empty() && c.power[j] == 0.0) rate = NAN;
 			return rate;
 		};
-		// Gyro-off rows and turn-on events (0 -> 1 power steps), counted in the raw pass (issue 13).
-		std::size_t gyro_off_rows = 0, turn_ons = 0;
-		bool prev_on = true;  // sample 0 is never a turn-on
+		// Gyro-off rows and turn-on events (0 -> 1 power steps), counted in the raw pass (apps/common/PowerCycles.h).
+		app::PowerCycles power_cycles;
 		const auto notePower = [&](const FogSeries& c, std::size_t j) {
-			const bool on = c.power.empty() || c.power[j] != 0.0;
-			if (!on) gyro_off_rows++;
-			else if (!prev_on) turn_ons++;
-			prev_on = on;
+			power_cycles.add(c.power.empty() ? NAN : c.power[j]);
 		};
 		if (with_cal)
 		{
@@ -188,10 +185,10 @@ int main(int argc, char** argv)
 			std::fputs(app::outOfRangeWarning(k, comp_series->extrapolation).c_str(), stdout);
 		}
 		if (comp_series) std::fputs(app::screeningText(screening, !no_screen.getValue()).c_str(), stdout);
-		if (gyro_off_rows)
+		if (power_cycles.gyro_off_rows)
 			std::printf("  gyro off: %zu rows (no gyro sample: left out of every figure, thermistors kept); turn-on "
 						"events: %zu\n",
-						gyro_off_rows, turn_ons);
+						power_cycles.gyro_off_rows, power_cycles.turn_ons);
 		std::printf("  (Earth rate is not removed: it is in the mean only; stability, range and Allan terms "
 					"measure spread)\n");
 
@@ -219,8 +216,8 @@ int main(int argc, char** argv)
 			j["tau_s"] = tau_s;
 			j["stability_definition"] = "std (N-1) of non-overlapping tau_s averages of gyro rate minus table rate";
 			j["earth_rate"] = "not removed: a constant, it moves mean_dph only";
-			j["gyro_off_rows"] = static_cast<unsigned long>(gyro_off_rows);
-			j["turn_on_events"] = static_cast<unsigned long>(turn_ons);
+			j["gyro_off_rows"] = static_cast<unsigned long>(power_cycles.gyro_off_rows);
+			j["turn_on_events"] = static_cast<unsigned long>(power_cycles.turn_ons);
 			j["raw"] = toJson(raw);
 			if (comp)
 			{

@@ -1,0 +1,35 @@
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#pragma once
+
+/** \file PowerCycles.h
+ * Gyro-off rows and turn-on events of a log, counted row by row as the programs read it
+ * (fog-convert, fog-compensate, fog-evaluate report them; docs/io.md). A row is gyro-off when
+ * its power is 0; a turn-on is a row with power 1 right after a row with power 0. A row without
+ * a power value (no power column) is neither, and a 0 -> missing -> 1 sequence is no turn-on:
+ * the compensator restarts its warm-up only at an explicit 0 -> 1 step. */
+
+#include <cmath>
+#include <cstddef>
+
+namespace mrpt_fog::app
+{
+class PowerCycles
+{
+   public:
+	/** Counts one row; returns whether it is a turn-on. */
+	bool add(double power)
+	{
+		const bool turn_on = power == 1.0 && prev_power_ == 0.0;
+		if (power == 0.0) gyro_off_rows++;
+		if (turn_on) turn_ons++;
+		prev_power_ = power;
+		return turn_on;
+	}
+
+	std::size_t gyro_off_rows = 0;
+	std::size_t turn_ons = 0;
+
+   private:
+	double prev_power_ = NAN;
+};
+}  // namespace mrpt_fog::app
