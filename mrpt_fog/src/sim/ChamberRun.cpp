@@ -68,7 +68,8 @@ void simulateChamberSamples(const ChamberProfile& profile, const FogDevice& devi
 		if (!(t <= max_time_s + 1e-9)) break;
 		const ChamberState st = profile.stateAt(t);
 		const FogSample s = k == 0 ? sim.start(st, profile.initialState()) : sim.advance(dt, st);
-		f(t, s.rate_dph, s.temp_C, st.table_rate_dph, st.field_uT, s.power_on ? 1.0 : 0.0);
+		// gyro off: no gyro sample (an empty rate cell, as the drive writes); the thermistors keep logging
+		f(t, s.power_on ? s.rate_dph : NAN, s.temp_C, st.table_rate_dph, st.field_uT, s.power_on ? 1.0 : 0.0);
 	}
 }
 

@@ -162,6 +162,10 @@ FogSeries simulateTriadChamber(const ChamberProfile& profile, const FogDevice& d
 											 trig, k == 2);
 		s.rate_dph[idx(a)] = std::move(r.rate_dph);
 	}
+	// no gyro sample where the gyro is off (an empty rate on every axis, as the drive writes)
+	for (std::size_t k = 0; k < n; k++)
+		if (!s.gyroOn(k))
+			for (auto& r : s.rate_dph) r[k] = NAN;
 	s.has_axis = {true, true, true};
 	// the single-axis metadata describe the up axis' run; the run seed is the triad's
 	s.setMetadata("sim.seed", std::to_string(settings.seed));
