@@ -20,6 +20,7 @@
 
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "PowerCycles.h"
 #include "Progress.h"
 #include "RangeWarning.h"
 #include "ThermistorScreeningReport.h"
@@ -591,7 +592,15 @@ int main(int argc, char** argv)
 		std::string screening_text;
 		// Each log is read once into a run spilled to a temporary file (memory independent of the
 		// log's length, issue 14), screened on the way as fog-compensate screens it.
-		const auto readScreened = [&](const std::string& path) {
+		// Gyro-off rows and turn-on events of each log read (apps/common/PowerCycles.h, the rule of
+		// fog-evaluate and fog-compensate): those rows give no gyro sample to any fit or figure.
+		struct RunPower
+		{
+			std::string role, path;
+			app::PowerCycles counts;
+		};
+		std::vector<RunPower> run_power;
+		const auto readScreened = [&](const std::string& path, const char* role) {
 			app::StreamScreening sc(screen);
 			app::Progress progress("fog-calibrate: reading " + path, arg_quiet.getValue());
 			FogRun run = readFogRun(path, arg_label.getValue(), sc.hook(),
@@ -599,6 +608,11 @@ int main(int argc, char** argv)
 			progress.finish();
 			const ThermistorScreening counts = sc.result(run);
 			if (!screen || counts.rejected_readings > 0) screening_text += "  " + path + ":\n" + app::screeningText(counts, screen);
+			RunPower rp{role, path, {}};
+			run.forEachChunk([&](const FogSeries& c, std::size_t) {
+				for (std::size_t k = 0; k < c.size(); k++) rp.counts.add(c.power.empty() ? NAN : c.power[k]);
+			});
+			run_power.push_back(std::move(rp));
 			return run;
 		};
 		// The scale-factor and warm-up fits take their runs in memory (rate-table and turn-on runs).
@@ -621,7 +635,7 @@ int main(int argc, char** argv)
 			return any;
 		};
 		std::vector<FogRun> runs;
-		for (const auto& path : arg_in.getValue()) runs.push_back(readScreened(path));
+		for (const auto& path : arg_in.getValue()) runs.push_back(readScreened(path, "-i"));
 
 		// The axes to calibrate: --axis, else every axis the -i runs share.
 		std::vector<GyroAxis> axes;
@@ -684,7 +698,7 @@ int main(int argc, char** argv)
 		if (!arg_warm.getValue().empty())
 		{
 			std::vector<FogRun> warm;
-			for (const auto& path : arg_warm.getValue()) warm.push_back(readScreened(path));
+			for (const auto& path : arg_warm.getValue()) warm.push_back(readScreened(path, "--warmup-run"));
 			for (std::size_t ia = 0; ia < fits.size(); ia++)
 			{
 				Calibration& cal = fits[ia].cal;
@@ -724,7 +738,7 @@ int main(int argc, char** argv)
 		if (!arg_val.getValue().empty())
 		{
 			std::vector<FogRun> val;
-			val.push_back(readScreened(arg_val.getValue()));
+			val.push_back(readScreened(arg_val.getValue(), "--validate"));
 			for (std::size_t ia = 0; ia < fits.size(); ia++)
 			{
 				Calibration& cal = fits[ia].cal;
@@ -776,6 +790,15 @@ int main(int argc, char** argv)
 			printAxis(f, opt.tau_s, f.validated);
 		}
 		std::fputs(screening_text.c_str(), stdout);
+		std::size_t off_rows = 0, turn_ons = 0;
+		for (const auto& rp : run_power)
+		{
+			off_rows += rp.counts.gyro_off_rows, turn_ons += rp.counts.turn_ons;
+			if (rp.counts.gyro_off_rows)
+				std::printf("  gyro off: %s %s: %zu rows (no gyro sample: left out of every fit and figure, thermistors "
+							"kept); turn-on events: %zu\n",
+							rp.role.c_str(), rp.path.c_str(), rp.counts.gyro_off_rows, rp.counts.turn_ons);
+		}
 		std::printf("  wrote %s\n", arg_out.getValue().c_str());
 
 		if (!arg_json.getValue().empty())
@@ -789,6 +812,19 @@ int main(int argc, char** argv)
 			else
 				j = axisJson(fits.front(), opt.tau_s, fits.front().validated);
 			j["calibration"] = arg_out.getValue();
+			// every log read (-i, --warmup-run, --validate), summed and per log
+			j["gyro_off_rows"] = static_cast<unsigned long>(off_rows);
+			j["turn_on_events"] = static_cast<unsigned long>(turn_ons);
+			JsonValue& per = j["power_by_run"] = JsonValue::array();
+			for (const auto& rp : run_power)
+			{
+				JsonValue r = JsonValue::object();
+				r["role"] = rp.role;
+				r["input"] = rp.path;
+				r["gyro_off_rows"] = static_cast<unsigned long>(rp.counts.gyro_off_rows);
+				r["turn_on_events"] = static_cast<unsigned long>(rp.counts.turn_ons);
+				per.push_back(std::move(r));
+			}
 			writeTextFileAtomically(arg_json.getValue(), j.dump());
 		}
 		return app::kExitOk;

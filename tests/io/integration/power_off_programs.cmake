@@ -1,5 +1,6 @@
 # Power-off rows (power 0, empty rate cell, thermistors still logged) through every program that
-# reads a chamber log: fog-convert (CSV -> rawlog -> CSV keeps the empty cells), fog-calibrate,
+# reads a chamber log: fog-convert (CSV -> rawlog -> CSV keeps the empty cells), fog-calibrate (its
+# counts of gyro-off rows and turn-ons per log, text and JSON),
 # fog-compensate (CSV and rawlog in, no compensated sample on the power-off rows), fog-evaluate
 # and fog-discrepancy. Data: tests/data/io/power_cycle.csv (225 power-off rows, 1 turn-on).
 # -D BIN=<dir of the programs> -D DATA=<tests/data/io> -D WORK=<scratch dir>
@@ -33,6 +34,27 @@ if(at EQUAL -1)
 endif()
 
 run(fog-calibrate -i ${in} --model M2:Ti1@1/1 -o ${WORK}/cal.yaml --json ${WORK}/cal.json)
+expect_json(${WORK}/cal.json gyro_off_rows 225)
+expect_json(${WORK}/cal.json turn_on_events 1)
+file(READ ${WORK}/cal.json cj)
+string(JSON per GET "${cj}" power_by_run 0 gyro_off_rows)
+if(NOT per EQUAL 225)
+  message(FATAL_ERROR "fog-calibrate: power_by_run[0].gyro_off_rows = ${per}, expected 225")
+endif()
+string(FIND "${last_stdout}" "gyro off: -i ${in}: 225 rows" at)
+if(at EQUAL -1)
+  message(FATAL_ERROR "fog-calibrate does not print the gyro-off rows: ${last_stdout}")
+endif()
+# the same log as --validate run and a rawlog as -i: counted per log, summed
+run(fog-calibrate -i ${WORK}/p.rawlog --validate ${in} --model M2:Ti1@1/1 -o ${WORK}/cal_v.yaml --json ${WORK}/cal_v.json)
+expect_json(${WORK}/cal_v.json gyro_off_rows 450)
+expect_json(${WORK}/cal_v.json turn_on_events 2)
+file(READ ${WORK}/cal_v.json cj)
+string(JSON role GET "${cj}" power_by_run 1 role)
+string(JSON per GET "${cj}" power_by_run 1 gyro_off_rows)
+if(NOT role STREQUAL "--validate" OR NOT per EQUAL 225)
+  message(FATAL_ERROR "fog-calibrate: power_by_run[1] is ${role} with ${per} rows, expected --validate with 225")
+endif()
 foreach(src ${in} ${WORK}/p.rawlog)
   run(fog-compensate -i ${src} --cal ${WORK}/cal.yaml -o ${WORK}/comp.csv --json ${WORK}/comp.json)
   expect_json(${WORK}/comp.json gyro_off_rows 225)
