@@ -415,6 +415,213 @@ void holmAdjust(std::vector<CandState>& cands, const SelectionOptions& opt)
 	}
 }
 
+/** The candidate ids a selection works through: the options' list, else every bias candidate of
+ * the library in its order. */
+std::vector<std::string> candidateIdsToTry(const SelectionOptions& opt)
+{
+	std::vector<std::string> ids = opt.candidates;
+	if (ids.empty())
+		for (const auto& c : candidateLibrary())
+			if (c.channel == ResidualChannel::Bias) ids.push_back(c.id);
+	return ids;
+}
+
+/** One round's tests of the candidates against the current model. */
+struct RoundTests
+{
+	std::vector<CandState> cands;       //!< the tested candidates, Holm-adjusted
+	std::vector<CandidateTest> report;  //!< every candidate: the untestable and spanned, then the tested
+	std::vector<std::size_t> common;    //!< the rows the noise model whitens
+	Gls g0;                             //!< the current model's GLS fit (its noise model)
+	int best = -1;                      //!< the significant candidate with the largest BIC gain; -1: none
+};
+
+/** Index of the significant candidate with the largest BIC gain (the first on a tie); -1 when
+ * none is significant. */
+int strongestSignificant(const std::vector<CandState>& cands)
+{
+	int best = -1;
+	for (std::size_t i = 0; i < cands.size(); ++i)
+		if (cands[i].test.significant && (best < 0 || cands[i].test.delta_bic > cands[static_cast<std::size_t>(best)].test.delta_bic))
+			best = static_cast<int>(i);
+	return best;
+}
+
+/** Screen, test and Holm-adjust the candidates against the model X; when none is significant,
+ * each tested one's smallest detectable contribution. */
+RoundTests testRound(const std::vector<std::string>& ids, const std::vector<std::string>& excluded,
+					 const RunSignals& sig, const CandidateContext& ctx, const Mat& X, const Vec& y,
+					 const std::vector<std::size_t>& rows, const std::vector<unsigned char>& ok,
+					 const SelectionOptions& opt)
+{
+	RoundTests t;
+	t.cands = screenCandidates(ids, excluded, sig, ctx, X, y, rows, opt, t.report);
+	if (t.cands.empty()) return t;
+	t.common = whitenableRows(sig.block, ok, 0);
+	const double nRows = double(t.common.size());
+	t.g0 = glsFit(X, y, t.common, sig.block, opt);
+	const double nEff = std::max(2.0, nRows / std::max(1.0, t.g0.lrv));
+	for (auto& cs : t.cands) testCandidate(cs, ctx, X, y, rows, t.common, sig.block, opt, nEff, t.g0);
+	holmAdjust(t.cands, opt);
+	t.best = strongestSignificant(t.cands);
+	if (t.best < 0)
+		for (auto& cs : t.cands)
+			cs.test.detectable_rms_dph =
+				detectableRms(X, cs.C, y, t.common, sig.block, t.g0, opt, t.cands.size(), cs.thetas.size(), nEff);
+	for (const auto& cs : t.cands) t.report.push_back(cs.test);
+	return t;
+}
+
+/** The named effect as tested: id, parameter, unit and test figures; its alias group so far only
+ * itself. */
+NamedEffect namedFromBest(const CandState& B)
+{
+	NamedEffect ne;
+	ne.id = B.eff->id;
+	ne.alias_group = {ne.id};
+	ne.alias_theta = {B.theta};
+	ne.alias_sign = {0};
+	ne.theta_name = B.eff->theta_name;
+	ne.theta = B.theta;
+	if (B.eff->describe_theta) ne.theta_meaning = B.eff->describe_theta(B.theta);
+	ne.coefficient_unit = B.eff->coefficient_unit;
+	ne.chi2 = B.test.chi2;
+	ne.p_adjusted = B.test.p_adjusted;
+	ne.delta_bic = B.test.delta_bic;
+	return ne;
+}
+
+/** How another tested candidate stands to the one being named, on this run. */
+struct RelationToBest
+{
+	double collinearity = 0.0;  //!< how well its columns reproduce the named effect's fitted shape
+	bool collinear = false;     //!< collinearity at least SelectionOptions::alias_collinearity
+	bool alias = false;         //!< cannot be told apart: collinear, or significant and the named effect adds nothing beside it
+	bool explained = false;     //!< not an alias, and it adds nothing beside the named effect
+	int sign = 0;               //!< an alias's one-column coefficient sign (OLS beside the model); 0 otherwise
+};
+
+/** Each tested candidate's relation to the named one (`best`, whose own entry stays default):
+ * its collinearity after whitening and removing what the model X explains, then, for the
+ * significant or collinear ones, the two conditional Wald tests (each given the other, Sidak
+ * for the grid). XB = X with the named effect's columns, gB its GLS fit. */
+std::vector<RelationToBest> relationsToBest(const std::vector<CandState>& cands, int best, const Mat& X,
+											const Mat& XB, const Gls& gB, const Vec& y,
+											const std::vector<std::size_t>& rows, const std::vector<std::size_t>& common,
+											const std::vector<int>& block, const SelectionOptions& opt)
+{
+	const auto& B = cands[static_cast<std::size_t>(best)];
+	const std::size_t m = cands.size();
+	std::vector<RelationToBest> rel(m);
+	for (std::size_t i = 0; i < m; ++i)
+	{
+		if (static_cast<int>(i) == best) continue;
+		const auto& C = cands[i];
+		auto& r = rel[i];
+		r.collinearity = shapeReproduction(X, B.C, gB.fit.coef.segment(X.cols(), B.C.cols()), C.C, gB.ar, common, block);
+		r.collinear = r.collinearity >= opt.alias_collinearity;
+		if (!C.test.significant && !r.collinear) continue;
+		const Gls gBC = glsFit(hcat(XB, C.C), y, common, block, opt, false, &gB.ar);
+		const double chiBgivenC = waldChi2(hcat(X, C.C), gBC, y, common, block);
+		const double chiCgivenB = waldChi2(XB, gBC, y, common, block);
+		const double pBgivenC = sidak(chi2Survival(chiBgivenC, double(B.C.cols())), int(B.thetas.size()));
+		const double pCgivenB = sidak(chi2Survival(chiCgivenB, double(C.C.cols())), int(C.thetas.size()));
+		r.alias = r.collinear || (C.test.significant && pBgivenC > opt.alias_alpha);
+		r.explained = !r.alias && pCgivenB > opt.alpha / double(m);
+		if (r.alias && C.C.cols() == 1)
+		{
+			Vec ri;
+			const double c = olsOnRows(hcat(X, C.C), y, rows, ri).coef(X.cols());
+			r.sign = c > 0 ? 1 : (c < 0 ? -1 : 0);
+		}
+	}
+	return rel;
+}
+
+/** The relations written into the named effect (its alias group, in candidate order) and the
+ * round's report (collinearity, "alias of" / "explained by"); aliases and explained candidates
+ * are not tested again. */
+void recordRelations(NamedEffect& ne, const std::vector<RelationToBest>& rel, const std::vector<CandState>& cands,
+					 int best, std::vector<CandidateTest>& report, std::vector<std::string>& excluded)
+{
+	for (std::size_t i = 0; i < cands.size(); ++i)
+	{
+		if (static_cast<int>(i) == best) continue;
+		const auto& C = cands[i];
+		auto it = std::find_if(report.begin(), report.end(), [&](const CandidateTest& t) { return t.id == C.test.id; });
+		if (it != report.end()) it->collinearity_with_best = rel[i].collinearity;
+		if (rel[i].alias)
+		{
+			ne.alias_group.push_back(C.test.id);
+			ne.alias_theta.push_back(C.theta);
+			ne.alias_sign.push_back(rel[i].sign);
+			ne.separating_profiles.push_back(separationAdvice(ne.id, C.test.id));
+			excluded.push_back(C.test.id);
+			if (it != report.end()) it->note = "alias of " + ne.id;
+		}
+		else if (rel[i].explained)
+		{
+			excluded.push_back(C.test.id);
+			if (it != report.end()) it->note = "explained by " + ne.id;
+		}
+	}
+}
+
+/** Confidence of the named effect and of its alias group: BIC weights (exp of half the BIC gain)
+ * of the group's members against "no effect"; collinear members cannot be told apart on this
+ * run (their BIC differences reflect model mismatch, not evidence), so then the group's
+ * confidence is shared equally. */
+void setConfidence(NamedEffect& ne, const std::vector<RelationToBest>& rel, const std::vector<CandState>& cands)
+{
+	std::vector<double> all;
+	bool anyCollinear = false;
+	for (std::size_t i = 0; i < cands.size(); ++i)
+		if (rel[i].alias)
+		{
+			all.push_back(0.5 * cands[i].test.delta_bic);
+			anyCollinear = anyCollinear || rel[i].collinear;
+		}
+	all.push_back(0.5 * ne.delta_bic);
+	const double lse = logSumExpWeights(all);
+	ne.confidence = std::exp(0.5 * ne.delta_bic - lse);
+	double g = 0;
+	for (double b : all) g += std::exp(b - lse);
+	ne.group_confidence = std::min(1.0, g);
+	if (anyCollinear) ne.confidence = ne.group_confidence / double(ne.alias_group.size());
+}
+
+/** The named effect's coefficient and its 95 % interval from the GLS fit gB of the model (its
+ * first q0 columns) with the effect's columns: one column, the coefficient in the effect's unit;
+ * several, the RMS of the fitted terms on `rows` (delta method). */
+void setCoefficient(NamedEffect& ne, const CandState& B, const Gls& gB, Eigen::Index q0,
+					const std::vector<std::size_t>& rows)
+{
+	const auto& f = gB.fit;
+	const double sigma2 = gB.sigma2 * gB.lrv;
+	const Eigen::Index q = B.C.cols();
+	const Vec beta = f.coef.segment(q0, q);
+	const Mat cov = sigma2 * f.cov_unscaled.block(q0, q0, q, q);
+	if (q == 1)
+	{
+		ne.coefficient = B.eff->coefficient_scale * beta(0);
+		const double half = 1.96 * std::sqrt(std::max(0.0, cov(0, 0))) * std::fabs(B.eff->coefficient_scale);
+		ne.ci_low = ne.coefficient - half;
+		ne.ci_high = ne.coefficient + half;
+		return;
+	}
+	const Mat Cr = pick(B.C, rows);
+	const Mat G = Cr.transpose() * Cr / double(rows.size());
+	const double rms = std::sqrt(std::max(0.0, double(beta.transpose() * G * beta)));
+	const Vec grad = rms > 0 ? Vec(G * beta / rms) : Vec::Zero(q);
+	const double half = 1.96 * std::sqrt(std::max(0.0, double(grad.transpose() * cov * grad)));
+	ne.coefficient = rms;
+	// a candidate that has one column on other runs (radial_gradient without a thermistor on
+	// neither side) states a per-unit coefficient; here it is an RMS
+	if (ne.coefficient_unit.find("RMS") == std::string::npos) ne.coefficient_unit = "deg/h (RMS of the fitted terms)";
+	ne.ci_low = std::max(0.0, rms - half);
+	ne.ci_high = rms + half;
+}
+
 }  // namespace
 
 SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& base, const SelectionOptions& opt)
@@ -430,161 +637,47 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 	const auto rows = rowsOf(ok);
 
 	Vec r;
-	auto baseFit = olsOnRows(base.X, y, rows, r);
+	const auto baseFit = olsOnRows(base.X, y, rows, r);
 	res.coef_before = baseFit.coef;
 	res.residual_before = r;
 	res.model.lag_base_coef = baseFit.coef;
 
-	std::vector<std::string> ids = opt.candidates;
-	if (ids.empty())
-		for (const auto& c : candidateLibrary())
-			if (c.channel == ResidualChannel::Bias) ids.push_back(c.id);
+	// rounds: test every candidate not yet named, excluded or explained; name the strongest
+	// significant one with its look-alikes; add its columns to the model
+	const std::vector<std::string> ids = candidateIdsToTry(opt);
 	std::vector<std::string> excluded;
 	Mat X = base.X;
-
 	for (int round = 0; round < opt.max_effects; ++round)
 	{
 		Vec rr;
-		const auto fit = olsOnRows(X, y, rows, rr);
-		const auto ctx = makeCandidateContext(sig, base, fit.coef.head(base.X.cols()));
-		std::vector<CandidateTest> report;
-		std::vector<CandState> cands = screenCandidates(ids, excluded, sig, ctx, X, y, rows, opt, report);
-		if (cands.empty())
+		const Vec modelCoef = olsOnRows(X, y, rows, rr).coef;
+		const auto ctx = makeCandidateContext(sig, base, modelCoef.head(base.X.cols()));
+		RoundTests t = testRound(ids, excluded, sig, ctx, X, y, rows, ok, opt);
+		if (round == 0 && !t.cands.empty())
 		{
-			res.rounds.push_back(report);
+			res.ar = t.g0.ar;
+			res.lrv_factor = t.g0.lrv;
+		}
+		if (t.best < 0)
+		{
+			res.rounds.push_back(t.report);
 			break;
 		}
-		const auto common = whitenableRows(sig.block, ok, 0);
-		const double nRows = double(common.size());
-		const Gls g0 = glsFit(X, y, common, sig.block, opt);
-		if (round == 0)
-		{
-			res.ar = g0.ar;
-			res.lrv_factor = g0.lrv;
-		}
-		const double nEff = std::max(2.0, nRows / std::max(1.0, g0.lrv));
-		for (auto& cs : cands) testCandidate(cs, ctx, X, y, rows, common, sig.block, opt, nEff, g0);
-		holmAdjust(cands, opt);
-		const std::size_t m = cands.size();
-		int bestIdx = -1;
-		for (std::size_t i = 0; i < m; ++i)
-			if (cands[i].test.significant && (bestIdx < 0 || cands[i].test.delta_bic > cands[bestIdx].test.delta_bic))
-				bestIdx = static_cast<int>(i);
-		if (bestIdx < 0)
-			for (auto& cs : cands)
-				cs.test.detectable_rms_dph = detectableRms(X, cs.C, y, common, sig.block, g0, opt, m, cs.thetas.size(), nEff);
-		for (const auto& cs : cands) report.push_back(cs.test);
-		if (bestIdx < 0)
-		{
-			res.rounds.push_back(report);
-			break;
-		}
-		const auto& B = cands[static_cast<std::size_t>(bestIdx)];
-		NamedEffect ne;
-		ne.id = B.eff->id;
-		ne.alias_group = {ne.id};
-		ne.alias_theta = {B.theta};
-		ne.alias_sign = {0};
-		ne.theta_name = B.eff->theta_name;
-		ne.theta = B.theta;
-		if (B.eff->describe_theta) ne.theta_meaning = B.eff->describe_theta(B.theta);
-		ne.coefficient_unit = B.eff->coefficient_unit;
-		ne.chi2 = B.test.chi2;
-		ne.p_adjusted = B.test.p_adjusted;
-		ne.delta_bic = B.test.delta_bic;
+		const auto& B = t.cands[static_cast<std::size_t>(t.best)];
+		NamedEffect ne = namedFromBest(B);
 		const Mat XB = hcat(X, B.C);
-		const Gls gB = glsFit(XB, y, common, sig.block, opt, true);
-		std::vector<double> aliasHalfBic;
-		bool anyCollinear = false;
-		for (std::size_t i = 0; i < m; ++i)
-		{
-			if (static_cast<int>(i) == bestIdx) continue;
-			// collinearity on this run: canonical correlation of the two candidates' columns after
-			// whitening and removing what the model already explains
-			const double cc = shapeReproduction(X, B.C, gB.fit.coef.segment(X.cols(), B.C.cols()), cands[i].C, gB.ar,
-												common, sig.block);
-			auto it = std::find_if(report.begin(), report.end(), [&](const CandidateTest& t) { return t.id == cands[i].test.id; });
-			if (it != report.end()) it->collinearity_with_best = cc;
-			const bool collinear = cc >= opt.alias_collinearity;
-			if (!cands[i].test.significant && !collinear) continue;
-			const Gls gBC = glsFit(hcat(XB, cands[i].C), y, common, sig.block, opt, false, &gB.ar);
-			const double chiBgivenC = waldChi2(hcat(X, cands[i].C), gBC, y, common, sig.block);
-			const double chiCgivenB = waldChi2(XB, gBC, y, common, sig.block);
-			const double pBgivenC = sidak(chi2Survival(chiBgivenC, double(B.C.cols())), int(B.thetas.size()));
-			const double pCgivenB = sidak(chi2Survival(chiCgivenB, double(cands[i].C.cols())), int(cands[i].thetas.size()));
-			if (collinear || (cands[i].test.significant && pBgivenC > opt.alias_alpha))
-			{
-				anyCollinear = anyCollinear || collinear;
-				ne.alias_group.push_back(cands[i].test.id);
-				ne.alias_theta.push_back(cands[i].theta);
-				int sign = 0;
-				if (cands[i].C.cols() == 1)
-				{
-					Vec ri;
-					const double c = olsOnRows(hcat(X, cands[i].C), y, rows, ri).coef(X.cols());
-					sign = c > 0 ? 1 : (c < 0 ? -1 : 0);
-				}
-				ne.alias_sign.push_back(sign);
-				ne.separating_profiles.push_back(separationAdvice(ne.id, cands[i].test.id));
-				aliasHalfBic.push_back(0.5 * cands[i].test.delta_bic);
-				excluded.push_back(cands[i].test.id);
-				if (it != report.end()) it->note = "alias of " + ne.id;
-			}
-			else if (pCgivenB > opt.alpha / double(m))
-			{
-				excluded.push_back(cands[i].test.id);
-				if (it != report.end()) it->note = "explained by " + ne.id;
-			}
-		}
-		{
-			std::vector<double> all = aliasHalfBic;
-			all.push_back(0.5 * ne.delta_bic);
-			const double lse = logSumExpWeights(all);
-			ne.confidence = std::exp(0.5 * ne.delta_bic - lse);
-			double g = 0;
-			for (double b : all) g += std::exp(b - lse);
-			ne.group_confidence = std::min(1.0, g);
-			// collinear members cannot be told apart on this run: their BIC differences reflect
-			// model mismatch, not evidence, so the group's confidence is shared equally
-			if (anyCollinear) ne.confidence = ne.group_confidence / double(ne.alias_group.size());
-		}
-		// coefficient and its 95 % interval from the GLS fit
-		{
-			const auto& f = gB.fit;
-			const double sigma2 = gB.sigma2 * gB.lrv;
-			const Eigen::Index q0 = X.cols(), q = B.C.cols();
-			const Vec beta = f.coef.segment(q0, q);
-			const Mat cov = sigma2 * f.cov_unscaled.block(q0, q0, q, q);
-			if (q == 1)
-			{
-				ne.coefficient = B.eff->coefficient_scale * beta(0);
-				const double half = 1.96 * std::sqrt(std::max(0.0, cov(0, 0))) * std::fabs(B.eff->coefficient_scale);
-				ne.ci_low = ne.coefficient - half;
-				ne.ci_high = ne.coefficient + half;
-			}
-			else
-			{
-				const Mat Cr = pick(B.C, rows);
-				const Mat G = Cr.transpose() * Cr / double(rows.size());
-				const double rms = std::sqrt(std::max(0.0, double(beta.transpose() * G * beta)));
-				const Vec grad = rms > 0 ? Vec(G * beta / rms) : Vec::Zero(q);
-				const double half = 1.96 * std::sqrt(std::max(0.0, double(grad.transpose() * cov * grad)));
-				ne.coefficient = rms;
-				// a candidate that has one column on other runs (radial_gradient without a
-				// thermistor on neither side) states a per-unit coefficient; here it is an RMS
-				if (ne.coefficient_unit.find("RMS") == std::string::npos)
-					ne.coefficient_unit = "deg/h (RMS of the fitted terms)";
-				ne.ci_low = std::max(0.0, rms - half);
-				ne.ci_high = rms + half;
-			}
-		}
+		const Gls gB = glsFit(XB, y, t.common, sig.block, opt, true);
+		const auto rel = relationsToBest(t.cands, t.best, X, XB, gB, y, rows, t.common, sig.block, opt);
+		recordRelations(ne, rel, t.cands, t.best, t.report, excluded);
+		setConfidence(ne, rel, t.cands);
+		setCoefficient(ne, B, gB, X.cols(), rows);
 		res.named.push_back(ne);
 		res.ar_after = gB.ar;
-		res.rounds.push_back(report);
+		res.rounds.push_back(t.report);
 		excluded.push_back(ne.id);
-		if (ne.id == "thermistor_lag") res.model.lag_base_coef = fit.coef.head(base.X.cols());
+		if (ne.id == "thermistor_lag") res.model.lag_base_coef = modelCoef.head(base.X.cols());
 		res.model.effects.push_back({ne.id, ne.theta});
-		X = hcat(X, B.C);
+		X = XB;
 	}
 	Vec ra;
 	res.coef_after = olsOnRows(X, y, rows, ra).coef;
