@@ -6,21 +6,28 @@
  * (fog-convert, fog-compensate, fog-evaluate report them; docs/io.md). A row is gyro-off when
  * its power is 0; a turn-on is a row with power 1 right after a row with power 0. A row without
  * a power value (no power column) is neither, and a 0 -> missing -> 1 sequence is no turn-on:
- * the compensator restarts its warm-up only at an explicit 0 -> 1 step. */
+ * the compensator restarts its warm-up only at an explicit 0 -> 1 step. fog-drift's powered
+ * spans and gyro-off stretches (apps/fog-drift/GyroOff.h) follow the same rule. */
 
 #include <cmath>
 #include <cstddef>
 
 namespace mrpt_fog::app
 {
+/** The rule, for one row: the gyro is off when its power is 0. */
+inline bool isGyroOff(double power) { return power == 0.0; }
+/** The rule, for one row after another: a turn-on is power 1 right after power 0. */
+inline bool isTurnOn(double prev_power, double power) { return power == 1.0 && prev_power == 0.0; }
+
+/** Gyro-off rows and turn-ons of a log, counted row by row. */
 class PowerCycles
 {
    public:
 	/** Counts one row; returns whether it is a turn-on. */
 	bool add(double power)
 	{
-		const bool turn_on = power == 1.0 && prev_power_ == 0.0;
-		if (power == 0.0) gyro_off_rows++;
+		const bool turn_on = isTurnOn(prev_power_, power);
+		if (isGyroOff(power)) gyro_off_rows++;
 		if (turn_on) turn_ons++;
 		prev_power_ = power;
 		return turn_on;

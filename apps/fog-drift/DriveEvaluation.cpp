@@ -99,7 +99,7 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 	std::vector<PoweredSpan> spans;
 	{
 		PowerSpanBuilder power;
-		for (std::size_t k = 0; k < fog.size(); k++) power.add(fog.epoch_s + fog.time_s[k], fog.gyroOn(k));
+		for (std::size_t k = 0; k < fog.size(); k++) power.add(fog.epoch_s + fog.time_s[k], fog.power.empty() ? NAN : fog.power[k]);
 		power.finish();
 		e.gyro_off = power.stretches();
 		spans = power.powered();

@@ -1,13 +1,18 @@
 /* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
 #include "GyroOff.h"
 
+#include "PowerCycles.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace mrpt_fog::drift
 {
-void PowerSpanBuilder::add(double t_s, bool gyro_on)
+void PowerSpanBuilder::add(double t_s, double power)
 {
+	// A log gives every sample a power value or none (the readers refuse a mix), so a powered
+	// sample right after an off one has power 1: app::isTurnOn.
+	const bool gyro_on = !app::isGyroOff(power);
 	if (!any_)
 	{
 		any_ = true;

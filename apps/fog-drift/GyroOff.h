@@ -51,11 +51,14 @@ struct PoweredSpan
 	std::size_t samples = 0;
 };
 
-/** The gyro-off stretches and powered spans of a FOG stream, sample by sample. */
+/** The gyro-off stretches and powered spans of a FOG stream, sample by sample, by the rule of
+ * apps/common/PowerCycles.h: a sample is off when its power is 0, and the first powered sample
+ * after off ones is the turn-on (power 1 right after power 0). */
 class PowerSpanBuilder
 {
    public:
-	void add(double t_s, bool gyro_on);
+	/** power: the sample's power value (0 or 1; NaN when the log has no power column). */
+	void add(double t_s, double power);
 	/** Closes the last span or stretch. */
 	void finish();
 	const std::vector<PoweredSpan>& powered() const { return powered_; }

@@ -4,6 +4,7 @@
 #include "GyroOff.h"
 #include "StreamingFigures.h"
 
+#include "PowerCycles.h"
 #include "Progress.h"
 #include "RangeWarning.h"
 #include "ThermistorScreeningReport.h"
@@ -540,7 +541,7 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 			{
 				checkFogSample(h, x, scan.fog.n, has_power);
 				scan.fog.add(h.epoch_s + x.time_s);
-				power.add(h.epoch_s + x.time_s, !has_power || x.power != 0.0);  // FogSeries::gyroOn
+				power.add(h.epoch_s + x.time_s, has_power ? x.power : NAN);
 			}
 		}
 		catch (const FogIoError&)
@@ -695,8 +696,8 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 			{
 				temps = x.temp_C;
 				if (health) health->step(x.time_s, temps.data());
-				const double power = has_power ? x.power : 1.0;
-				if (zcal->warmup && has_power && power != 0.0 && prev_power == 0.0) compensator->notePowerOn(x.time_s);
+				const double power = has_power ? x.power : NAN;
+				if (zcal->warmup && app::isTurnOn(prev_power, power)) compensator->notePowerOn(x.time_s);
 				prev_power = power;
 				double r;
 				try
