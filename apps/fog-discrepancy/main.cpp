@@ -8,7 +8,7 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt_fog/common/OutputSafety.h>
 #include <mrpt_fog/common/AtomicFile.h>
-#include <mrpt_fog/discrepancy/CalibrationAugment.h>
+#include <mrpt_fog/report/CalibrationAugmentOutput.h>
 #include <mrpt_fog/report/DiscrepancyOutput.h>
 #include <mrpt_fog/report/SimDiscrepancyOutput.h>
 #include <mrpt_fog/io/BlockMeanReader.h>

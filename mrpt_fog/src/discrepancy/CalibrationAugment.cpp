@@ -2,7 +2,6 @@
 #include <mrpt_fog/discrepancy/CalibrationAugment.h>
 #include <mrpt_fog/discrepancy/BaseModelDesign.h>
 #include <mrpt_fog/discrepancy/EffectSelector.h>
-#include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/ScaleFactorFit.h>
 #include <mrpt_fog/model/Compensator.h>
@@ -177,11 +176,9 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 						out.augmented = std::move(c);
 					}
 				}
-				if (!(out.augmented.rate_estimator == out.base.rate_estimator))
-					out.rate_window_note = "rate estimator " + out.augmented.rate_estimator.describe() + " instead of " +
-										   out.base.rate_estimator.describe() + " (analysed-run RMS " +
-										   formatValue("%.4g", best_rms) + " vs " + formatValue("%.4g", own_rms) +
-										   " deg/h with the added terms)";
+				out.rate_window.changed = !(out.augmented.rate_estimator == out.base.rate_estimator);
+				out.rate_window.rms_dph = best_rms;
+				out.rate_window.base_window_rms_dph = own_rms;
 			}
 		}
 		out.augmented.scale_factor.reset();
@@ -200,9 +197,7 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 						"the scale-factor fit (leave-one-temperature-out) chose order 0 on the analysed run's table "
 						"segments: no temperature dependence it can support (a constant scale-factor error written)");
 				else
-					out.added_terms.push_back("scale_factor(T(" + sf.thermistor + "), order " +
-											  std::to_string(sf.order()) + ", " + formatValue("%.4g", sf.slope_ppm_per_C) +
-											  " ppm/degC)");
+					out.scale_factor_added = true;
 			}
 			catch (const ScaleFactorFitError& e)
 			{
@@ -221,49 +216,6 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 		out.after = throughCompensator(out.augmented, *confirm, confirm_label + " (with the added terms)");
 	}
 	return out;
-}
-
-namespace
-{
-JsonValue figures(const FitFigures& f)
-{
-	return JsonValue::object({{"label", f.label}, {"samples", static_cast<unsigned long>(f.samples)},
-							  {"rms_dph", f.rms_dph}, {"stability_dph", f.stability_dph},
-							  {"range_dph", f.range_dph}, {"tau_s", f.tau_s}});
-}
-}  // namespace
-
-std::string augmentedCalibrationText(const AugmentedCalibration& aug, const std::string& path)
-{
-	std::string t = "Calibration written to " + path + ": ";
-	if (aug.added_terms.empty()) t += "the calibration under test, nothing added\n";
-	else
-	{
-		t += "the calibration under test plus";
-		for (const auto& a : aug.added_terms) t += " " + a;
-		t += " (refitted on the analysed run)\n";
-	}
-	if (!aug.rate_window_note.empty()) t += "  " + aug.rate_window_note + "\n";
-	for (const auto& [id, why] : aug.not_written) t += "  not written: " + id + " (" + why + ")\n";
-	if (aug.has_confirm)
-		t += "  through the compensator on the confirmation run: RMS " + formatValue("%.4g", aug.before.rms_dph) + " -> " +
-			 formatValue("%.4g", aug.after.rms_dph) + " deg/h, " + formatValue("%.4g", aug.before.tau_s) + " s stability " +
-			 formatValue("%.4g", aug.before.stability_dph) + " -> " + formatValue("%.4g", aug.after.stability_dph) + " deg/h\n";
-	return t;
-}
-
-JsonValue augmentedCalibrationJson(const AugmentedCalibration& aug, const std::string& path)
-{
-	JsonValue j = JsonValue::object();
-	j["path"] = path;
-	j["added_terms"] = JsonValue::arrayOf(aug.added_terms);
-	if (!aug.rate_window_note.empty()) j["rate_estimator_chosen"] = aug.rate_window_note;
-	j["not_written"] = JsonValue::arrayOf(
-		aug.not_written, [](const auto& nw) { return JsonValue::object({{"id", nw.first}, {"reason", nw.second}}); });
-	if (aug.has_confirm)
-		j["confirm_through_compensator"] =
-			JsonValue::object({{"before", figures(aug.before)}, {"after", figures(aug.after)}});
-	return j;
 }
 
 }  // namespace mrpt_fog::discrepancy

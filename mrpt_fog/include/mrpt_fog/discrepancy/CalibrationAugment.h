@@ -33,7 +33,6 @@
  * sampling a 60 s order-2 window left a d(Ca - Cb)/dt term noisier than the gap it closes).
  */
 
-#include <mrpt_fog/common/JsonWriter.h>
 #include <mrpt_fog/discrepancy/DiscrepancyOptions.h>
 #include <mrpt_fog/discrepancy/SelectionResult.h>
 #include <mrpt_fog/model/Calibration.h>
@@ -44,15 +43,27 @@
 
 namespace mrpt_fog::discrepancy
 {
+/** When an added term reads a rate: the causal rate window chosen among 1, 2 and 4 x the
+ * base's by the refit's residual RMS on the analysed run (with the added terms). */
+struct RateWindowChoice
+{
+	bool changed = false;  //!< a longer window than the base's was chosen (AugmentedCalibration::augmented's)
+	double rms_dph = 0.0;  //!< analysed-run RMS on the chosen window
+	double base_window_rms_dph = 0.0;  //!< analysed-run RMS on the base's window
+};
+
 struct AugmentedCalibration
 {
 	Calibration base;  //!< the calibration under test
 	Calibration augmented;  //!< base + added terms (== base when nothing could be added)
-	std::vector<std::string> added_terms;  //!< term names added
+	/** Names of the terms added (feature-set term names), and "warmup(amplitude_dph, tau_s)" for
+	 * the warm-up term. */
+	std::vector<std::string> added_terms;
+	/** The scale factor versus temperature was refitted and added (augmented.scale_factor, of
+	 * order >= 1). */
+	bool scale_factor_added = false;
 	std::vector<std::pair<std::string, std::string>> not_written;  //!< effect id, why
-	/** When an added term reads a rate: the causal rate window chosen (1, 2 or 4 x the base's)
-	 * and why ("" when the base's was kept). */
-	std::string rate_window_note;
+	RateWindowChoice rate_window;
 	bool has_confirm = false;
 	FitFigures before, after;  //!< confirmation run through the compensator (base / augmented)
 };
@@ -62,10 +73,5 @@ struct AugmentedCalibration
 AugmentedCalibration augmentCalibration(const std::string& preset_or_yaml, const std::vector<NamedEffect>& named,
 										const FogSeries& run, const FogSeries* confirm, const std::string& confirm_label,
 										ScaleFactorFitting sf = ScaleFactorFitting::Auto);
-
-/** Readable lines (what was written, what not and why, the gap before/after). */
-std::string augmentedCalibrationText(const AugmentedCalibration& aug, const std::string& path);
-/** JSON: path, added_terms, not_written [{id, reason}], confirm {before, after} figures. */
-JsonValue augmentedCalibrationJson(const AugmentedCalibration& aug, const std::string& path);
 
 }  // namespace mrpt_fog::discrepancy
