@@ -29,6 +29,20 @@ mrpt::obs::CActionRobotMovement2D::TMotionModelOptions FogMotionModel::toMrpt(do
 	return m;
 }
 
+GyroOffRecovery gyroOffRecoveryFromString(const std::string& text)
+{
+	if (text == "refix") return GyroOffRecovery::Refix;
+	if (text == "none") return GyroOffRecovery::None;
+	throw std::invalid_argument("gyro-off recovery '" + text + "' is not refix|none");
+}
+
+mrpt::obs::CActionRobotMovement2D::TMotionModelOptions wheelOnlyMotionModel()
+{
+	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions m;  // MRPT's defaults, gaussianModel included
+	m.modelSelection = mrpt::obs::CActionRobotMovement2D::mmGaussian;
+	return m;
+}
+
 void applyLikelihoodOptions(mrpt::maps::COccupancyGridMap2D& grid, const MclOptions& o, double laser_range_m)
 {
 	auto& lo = grid.likelihoodOptions;
@@ -73,18 +87,24 @@ void roughen(mrpt::slam::CMonteCarloLocalization2D& pdf, double k)
 }  // namespace
 
 MclRun runMcl(const World& world, const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& scans,
-			  const std::vector<double>& t, const std::vector<mrpt::poses::CPose2D>& odo, const mrpt::poses::CPose2D& start,
-			  const MclOptions& o, std::uint32_t seed)
+			  const std::vector<double>& t, const std::vector<mrpt::poses::CPose2D>& odo,
+			  const std::vector<StepSource>& step_source, const std::vector<Refix>& refixes,
+			  const mrpt::poses::CPose2D& start, const MclOptions& o, std::uint32_t seed)
 {
-	if (scans.size() != t.size() || odo.size() != t.size() || t.size() < 2)
+	if (scans.size() != t.size() || odo.size() != t.size() || t.size() < 2 ||
+		(!step_source.empty() && step_source.size() != t.size()))
 		throw std::invalid_argument("runMcl: scans, times and odometry differ in size or have fewer than 2 steps");
 	mrpt::random::getRandomGenerator().randomize(seed);
 
 	mrpt::slam::CMonteCarloLocalization2D pdf(o.particles);
 	pdf.options.metricMap = world.grid;
 	const double dyaw = o.init_yaw_deg * M_PI / 180.0;
-	pdf.resetUniform(start.x() - o.init_xy_m, start.x() + o.init_xy_m, start.y() - o.init_xy_m, start.y() + o.init_xy_m,
-					 start.phi() - dyaw, start.phi() + dyaw, static_cast<int>(o.particles));
+	const auto drawAround = [&](const mrpt::poses::CPose2D& p) {
+		pdf.resetUniform(p.x() - o.init_xy_m, p.x() + o.init_xy_m, p.y() - o.init_xy_m, p.y() + o.init_xy_m,
+						 p.phi() - dyaw, p.phi() + dyaw, static_cast<int>(o.particles));
+	};
+	drawAround(start);
+	std::size_t next_fix = 0;
 
 	mrpt::bayes::CParticleFilter pf;
 	pf.m_options.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
@@ -94,7 +114,8 @@ MclRun runMcl(const World& world, const std::vector<mrpt::obs::CObservation2DRan
 	pf.m_options.powFactor = o.pow_factor;
 
 	MclRun run;
-	auto record = [&](double tk, double scale) {
+	auto record = [&](double tk, double scale, bool wheel_only = false) {
+		run.wheel_only.push_back(wheel_only);
 		const auto [cov, m] = pdf.getCovarianceAndMean();
 		run.t_s.push_back(tk);
 		run.x_m.push_back(m.x());
@@ -110,12 +131,18 @@ MclRun runMcl(const World& world, const std::vector<mrpt::obs::CObservation2DRan
 	const Stretch* current = &stretchAt(world.stretches, t[0]);
 	for (std::size_t k = 1; k < t.size(); ++k)
 	{
+		while (next_fix < refixes.size() && refixes[next_fix].scan < k)
+		{
+			if (refixes[next_fix].scan == k - 1) drawAround(refixes[next_fix].pose);
+			++next_fix;
+		}
 		mrpt::poses::CPose2D incr = odo[k] - odo[k - 1];
 		incr.x(incr.x() * scale);
 		incr.y(incr.y() * scale);
 		mrpt::obs::CActionRobotMovement2D act;
 		act.timestamp = mrpt::Clock::fromDouble(t[k]);
-		act.computeFromOdometry(incr, o.motion.toMrpt(t[k] - t[k - 1]));
+		const bool wheel_only = !step_source.empty() && step_source[k] == StepSource::WheelOnly;
+		act.computeFromOdometry(incr, wheel_only ? o.wheel_only_motion : o.motion.toMrpt(t[k] - t[k - 1]));
 		mrpt::obs::CActionCollection acts;
 		acts.insert(act);
 		mrpt::obs::CSensoryFrame sf;
@@ -131,7 +158,7 @@ MclRun runMcl(const World& world, const std::vector<mrpt::obs::CObservation2DRan
 				++run.roughenings;
 			}
 		}
-		record(t[k], scale);
+		record(t[k], scale, wheel_only);
 
 		// Online odometry-scale calibration at the end of each urban stretch.
 		const Stretch* s = &stretchAt(world.stretches, t[k]);

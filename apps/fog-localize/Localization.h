@@ -25,6 +25,7 @@
  * ratio: 0.056 % on the bundled drive for the raw and compensated gyros, 3 m along the road at
  * the end of a 6 km open field.) */
 
+#include "GyroOffOdometry.h"
 #include "Sensors.h"
 #include "World.h"
 
@@ -32,6 +33,7 @@
 #include <mrpt/poses/CPose2D.h>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace mrpt_fog::localize
@@ -51,10 +53,27 @@ struct FogMotionModel
 	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions toMrpt(double dt_s) const;
 };
 
+/** The motion model of a step without the gyro (GyroOffOdometry.h): MRPT's default Gaussian model,
+ * what pf-localization applies to wheel odometry (a1 0.01 m/m, a2 0.001 rad/m... as
+ * CActionRobotMovement2D::TMotionModelOptions::TOptions_GaussianModel's defaults: heading std
+ * 0.2 deg + 1 deg per metre driven + 5 % of the turn). */
+mrpt::obs::CActionRobotMovement2D::TMotionModelOptions wheelOnlyMotionModel();
+
+/** What the filter does at a turn-on after a gyro-off stretch (GyroOffOdometry.h). */
+enum class GyroOffRecovery
+{
+	Refix,  //!< particles re-drawn around a position and heading fix, as at the start (default)
+	None  //!< the particles go on from where the wheel-only steps left them
+};
+/** "refix" / "none"; throws std::invalid_argument naming the allowed values. */
+GyroOffRecovery gyroOffRecoveryFromString(const std::string& text);
+
 struct MclOptions
 {
 	std::size_t particles = 300;
 	FogMotionModel motion;
+	/** the steps that touch a gyro-off stretch (StepSource::WheelOnly) */
+	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions wheel_only_motion = wheelOnlyMotionModel();
 	double init_xy_m = 2.0;  //!< initial particles uniform within +- this of the true start [m]
 	double init_yaw_deg = 0.5;  //!< and within +- this of the true heading
 	double lf_std_hit_m = 1.0;  //!< likelihood-field hit std (grid 2 m)
@@ -74,15 +93,28 @@ struct MclRun
 	std::vector<double> t_s, x_m, y_m, yaw_rad;  //!< weighted-mean estimate at each scan
 	std::vector<double> yaw_std_rad;  //!< the particles' weighted heading standard deviation at each scan
 	std::vector<double> odometry_scale;  //!< scale applied at each step
+	std::vector<bool> wheel_only;  //!< per scan: reached by a wheel-only step (gyro off)
 	std::size_t resamplings = 0;
 	std::size_t roughenings = 0;  //!< resamplings followed by roughening
 };
 
-/** odo: the dead-reckoned odometry pose (FOG heading + wheel distance) at each scan time.
- * The filter starts around start (the true pose at scan_t_s[0], as after a GNSS fix).
+/** A fix the particles are re-drawn around (uniformly within init_xy_m / init_yaw_deg, as at
+ * the start) right after the scan of index `scan` has been processed. */
+struct Refix
+{
+	std::size_t scan = 0;
+	mrpt::poses::CPose2D pose;
+};
+
+/** odo: the odometry pose at each scan time (GyroOffOdometry.h): FOG heading + wheel distance,
+ * and on the steps marked StepSource::WheelOnly (empty: none) the wheel odometry alone, moved
+ * with options.wheel_only_motion instead of the FOG model.
+ * The filter starts around start (the true pose at scan_t_s[0], as after a GNSS fix), and is
+ * re-drawn around each of `refixes` (in scan order; empty: none).
  * seed seeds MRPT's global random generator (the filter is the only user during the run). */
 MclRun runMcl(const World& world, const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& scans,
 			  const std::vector<double>& scan_t_s, const std::vector<mrpt::poses::CPose2D>& odo,
+			  const std::vector<StepSource>& step_source, const std::vector<Refix>& refixes,
 			  const mrpt::poses::CPose2D& start, const MclOptions& options, std::uint32_t seed);
 
 /** The grid's likelihood options used by runMcl (also written to the .ini). */

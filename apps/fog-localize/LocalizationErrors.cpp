@@ -20,8 +20,10 @@ RunErrors computeErrors(const MclRun& run, const nav::Trajectory& truth, const s
 		e.position_m.push_back(pos);
 		e.heading_deg.push_back(nav::wrapToPi(run.yaw_rad[k] - p.yaw_rad) * 180.0 / M_PI);
 		e.heading_spread_deg.push_back(k < run.yaw_std_rad.size() ? run.yaw_std_rad[k] * 180.0 / M_PI : NAN);
+		const bool wheel_only = k < run.wheel_only.size() && run.wheel_only[k];
+		e.wheel_only.push_back(wheel_only);
 		const Stretch& s = stretchAt(stretches, run.t_s[k]);
-		if (s.kind == StretchKind::Urban && run.t_s[k] > s.t_begin_s + recover_s)
+		if (!wheel_only && s.kind == StretchKind::Urban && run.t_s[k] > s.t_begin_s + recover_s)
 		{
 			e.max_urban_error_m = std::max(e.max_urban_error_m, pos);
 			if (pos > divergence_m) e.diverged = true;
@@ -43,6 +45,7 @@ GyroSummary summarize(const std::vector<RunErrors>& seeds, const std::vector<Str
 		std::size_t open_n = 0;
 		for (std::size_t k = 0; k < r.t_s.size(); ++k)
 		{
+			if (k < r.wheel_only.size() && r.wheel_only[k]) continue;  // gyro off: in WheelOnlyFigures
 			const Stretch& s = stretchAt(stretches, r.t_s[k]);
 			const std::size_t i = static_cast<std::size_t>(&s - stretches.data());
 			s2[i] += r.position_m[k] * r.position_m[k];
@@ -156,6 +159,37 @@ HeadingRelevance headingRelevance(const GyroSummary& raw, const std::vector<Head
 					ideal.stretches[hr.index].position_rms_m / raw.stretches[hr.index].position_rms_m;
 			out.fields.push_back(f);
 		}
+	return out;
+}
+
+WheelOnlyFigures wheelOnlyFigures(const std::vector<RunErrors>& seeds)
+{
+	WheelOnlyFigures f;
+	if (!seeds.empty())
+		for (bool w : seeds.front().wheel_only) f.steps += w;
+	double p2 = 0, h2 = 0, mx = 0;
+	std::size_t n = 0;
+	for (const auto& r : seeds)
+		for (std::size_t k = 0; k < r.t_s.size() && k < r.wheel_only.size(); ++k)
+			if (r.wheel_only[k])
+			{
+				p2 += r.position_m[k] * r.position_m[k];
+				h2 += r.heading_deg[k] * r.heading_deg[k];
+				mx = std::max(mx, r.position_m[k]);
+				++n;
+			}
+	if (n > 0) f.position_rms_m = std::sqrt(p2 / n), f.heading_rms_deg = std::sqrt(h2 / n), f.position_max_m = mx;
+	return f;
+}
+
+std::map<StretchKind, double> overlapByKind(const std::vector<Stretch>& stretches, double t0, double t1)
+{
+	std::map<StretchKind, double> out;
+	for (const auto& s : stretches)
+	{
+		const double a = std::max(t0, s.t_begin_s), b = std::min(t1, s.t_end_s);
+		if (b > a) out[s.kind] += b - a;
+	}
 	return out;
 }
 

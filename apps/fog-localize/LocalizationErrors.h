@@ -20,6 +20,10 @@ struct RunErrors
 {
 	std::vector<double> t_s, position_m, heading_deg;  //!< per scan
 	std::vector<double> heading_spread_deg;  //!< the particles' heading standard deviation per scan
+	/** per scan: reached by a wheel-only step (gyro off): left out of the stretch figures and of
+	 * the divergence test (as fog-drift computes its figures on the powered spans), in
+	 * WheelOnlyFigures instead */
+	std::vector<bool> wheel_only;
 	bool diverged = false;
 	double max_urban_error_m = 0;  //!< after the recovery time
 };
@@ -46,6 +50,18 @@ struct GyroSummary
 };
 
 GyroSummary summarize(const std::vector<RunErrors>& seeds, const std::vector<Stretch>& stretches);
+
+/** The errors at the scans reached by a wheel-only step (a gyro-off stretch, GyroOffOdometry.h),
+ * pooled over the seeds. */
+struct WheelOnlyFigures
+{
+	std::size_t steps = 0;  //!< wheel-only steps of one run
+	double position_rms_m = NAN, position_max_m = NAN, heading_rms_deg = NAN;
+};
+WheelOnlyFigures wheelOnlyFigures(const std::vector<RunErrors>& seeds);
+
+/** Seconds of [t0_s, t1_s] inside stretches of each kind. */
+std::map<StretchKind, double> overlapByKind(const std::vector<Stretch>& stretches, double t0_s, double t1_s);
 
 /** Where an open stretch's heading error comes from. With no observation the filter's mean
  * heading error at time t in the stretch is

@@ -114,7 +114,7 @@ std::string iniText(const std::string& gyro_name, const MclOptions& m, const Las
 }
 }  // namespace
 
-void printSummary(const LocalizeResults& r, const World& world)
+void printSummary(const LocalizeResults& r, const World& world, const mrpt::obs::CActionRobotMovement2D::TMotionModelOptions::TOptions_GaussianModel& wheel_model)
 {
 	std::printf("  compensated gyro: calibration %s\n", describeCalibration(r.calibration).c_str());
 	std::printf("  position RMS [m] per stretch kind (pooled over %zu filter seeds; %.0f s run time)\n",
@@ -153,6 +153,32 @@ void printSummary(const LocalizeResults& r, const World& world)
 					"%+.2f +- %.2f m (%s)\n",
 					dr.first, dr.second, verdict(dr), di.first, di.second, verdict(di));
 	}
+	if (!r.gyro_off.empty())
+	{
+		double total = 0;
+		for (const auto& g : r.gyro_off) total += g.duration_s();
+		const auto& wm = wheel_model;
+		std::printf("  gyro off %.1f s in %zu stretch(es): heading not observable from the gyro there; the filter steps "
+					"on the wheel odometry alone (Gaussian model: heading std %.2g deg + %.3g deg/m + %.3g of the turn), "
+					"%s\n",
+					total, r.gyro_off.size(), wm.minStdPHI * 180 / M_PI, wm.a3 * 180 / M_PI, wm.a4,
+					r.gyro_off_recovery == GyroOffRecovery::Refix
+						? "then at the turn-on the particles are re-drawn around a fix (the truth, as at the start)"
+						: "and go on from there at the turn-on (no re-initialisation)");
+		for (std::size_t i = 0; i < r.gyro_off.size(); i++)
+		{
+			const auto& g = r.gyro_off[i];
+			std::printf("    %8.1f - %8.1f s (%.1f s, %zu samples):", g.off_s - r.t0_s, g.on_s - r.t0_s, g.duration_s(),
+						g.samples);
+			for (const auto& [kind, sec] : r.gyro_off_overlap_s[i]) std::printf(" %.1f s %s", sec, stretchKindName(kind));
+			std::printf("\n");
+		}
+		for (const auto& g : r.gyros)
+			std::printf("    %-12s %zu wheel-only steps: position RMS %.2f m (max %.2f), heading RMS %.3f deg there; %zu "
+						"re-fix(es)\n",
+						g.name.c_str(), g.wheel_only.steps, g.wheel_only.position_rms_m, g.wheel_only.position_max_m,
+						g.wheel_only.heading_rms_deg, g.refixes);
+	}
 	const HeadingRelevance& hr = r.relevance;
 	for (const FieldRelevance& f : hr.fields)
 		std::printf("  open field #%zu: raw gyro drift %+.4f deg vs map-matching's entry heading error %.4f deg RMS "
@@ -178,6 +204,53 @@ void writeOutputs(const std::string& dir, const std::string& json_path, const Lo
 	// ---- JSON
 	JsonValue j = JsonValue::object();
 	j["drive"] = r.drive;
+	{
+		// always present: total_s 0 on a powered drive
+		JsonValue& go = j["gyro_off"];
+		go = JsonValue::object();
+		double total = 0;
+		go["stretches"] = JsonValue::array();
+		for (std::size_t i = 0; i < r.gyro_off.size(); i++)
+		{
+			const auto& g = r.gyro_off[i];
+			total += g.duration_s();
+			JsonValue e = JsonValue::object();
+			e["off_s"] = g.off_s - r.t0_s;
+			e["on_s"] = g.on_s - r.t0_s;
+			e["duration_s"] = g.duration_s();
+			e["samples"] = static_cast<unsigned long>(g.samples);
+			e["to_end"] = g.to_end;
+			JsonValue& ov = e["seconds_by_stretch_kind"];
+			ov = JsonValue::object();
+			for (const auto& [kind, sec] : r.gyro_off_overlap_s[i]) ov[stretchKindName(kind)] = sec;
+			go["stretches"].push_back(std::move(e));
+		}
+		go["total_s"] = total;
+		{
+			const auto& wm = mcl.wheel_only_motion.gaussianModel;
+			JsonValue& mm = go["wheel_only_motion"];
+			mm = JsonValue::object();
+			mm["a1_m_per_m"] = wm.a1;
+			mm["a2"] = wm.a2;
+			mm["a3_deg_per_m"] = wm.a3 * 180 / M_PI;
+			mm["a4_per_turn"] = wm.a4;
+			mm["min_std_xy_m"] = wm.minStdXY;
+			mm["min_std_phi_deg"] = wm.minStdPHI * 180 / M_PI;
+		}
+		go["recovery"] = r.gyro_off_recovery == GyroOffRecovery::Refix ? "refix" : "none";
+		JsonValue& w = go["wheel_only"];
+		w = JsonValue::object();
+		for (const auto& g : r.gyros)
+		{
+			JsonValue& e = w[g.name];
+			e = JsonValue::object();
+			e["steps"] = static_cast<unsigned long>(g.wheel_only.steps);
+			e["position_rms_m"] = std::isfinite(g.wheel_only.position_rms_m) ? JsonValue(g.wheel_only.position_rms_m) : JsonValue();
+			e["position_max_m"] = std::isfinite(g.wheel_only.position_max_m) ? JsonValue(g.wheel_only.position_max_m) : JsonValue();
+			e["heading_rms_deg"] = std::isfinite(g.wheel_only.heading_rms_deg) ? JsonValue(g.wheel_only.heading_rms_deg) : JsonValue();
+			e["refixes"] = static_cast<unsigned long>(g.refixes);
+		}
+	}
 	{
 		JsonValue& c = j["calibration"];
 		c = JsonValue::object();
@@ -418,7 +491,8 @@ void writeOutputs(const std::string& dir, const std::string& json_path, const Lo
 				const double sc = k < g.first_run.odometry_scale.size() ? g.first_run.odometry_scale[k] : 1.0;
 				incr.x(incr.x() * sc);
 				incr.y(incr.y() * sc);
-				act.computeFromOdometry(incr, mcl.motion.toMrpt(scan_t[k] - scan_t[k - 1]));
+				const bool wheel_only = k < g.odometry_step.size() && g.odometry_step[k] == StepSource::WheelOnly;
+				act.computeFromOdometry(incr, wheel_only ? mcl.wheel_only_motion : mcl.motion.toMrpt(scan_t[k] - scan_t[k - 1]));
 				mrpt::obs::CActionCollection acts;
 				acts.insert(act);
 				mrpt::obs::CSensoryFrame sf;

@@ -9,6 +9,7 @@
  * truth as text. Every file is written atomically. */
 
 #include "CalibrationChoice.h"
+#include "GyroOff.h"
 #include "Localization.h"
 #include "LocalizationErrors.h"
 #include "Sensors.h"
@@ -29,6 +30,9 @@ struct GyroResult
 	std::vector<HeadingBudget> heading_budget;  //!< per open stretch
 	MclRun first_run;  //!< the first seed's estimate (for the plots)
 	std::vector<mrpt::poses::CPose2D> odometry;  //!< at the scan times (for the rawlog)
+	std::vector<StepSource> odometry_step;  //!< what moved each step (GyroOffOdometry.h)
+	WheelOnlyFigures wheel_only;  //!< the errors after the steps without the gyro
+	std::size_t refixes = 0;  //!< re-initialisations at turn-ons
 };
 
 struct LocalizeResults
@@ -38,9 +42,14 @@ struct LocalizeResults
 	double t0_s = 0, runtime_s = 0;
 	std::vector<GyroResult> gyros;  //!< raw, compensated, ideal
 	HeadingRelevance relevance;  //!< whether the open fields can judge a gyro's heading
+	std::vector<drift::GyroOffStretch> gyro_off;  //!< the FOG's gyro-off stretches (absolute s)
+	GyroOffRecovery gyro_off_recovery = GyroOffRecovery::Refix;
+	std::vector<std::map<StretchKind, double>> gyro_off_overlap_s;  //!< per stretch: seconds in each stretch kind
 };
 
-void printSummary(const LocalizeResults& r, const World& world);
+/** wheel_model: the motion model of the wheel-only steps (MclOptions::wheel_only_motion). */
+void printSummary(const LocalizeResults& r, const World& world,
+				  const mrpt::obs::CActionRobotMovement2D::TMotionModelOptions::TOptions_GaussianModel& wheel_model);
 
 void writeOutputs(const std::string& dir, const std::string& json_path, const LocalizeResults& r, const World& world,
 				  const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& scans, const std::vector<double>& scan_t_s,

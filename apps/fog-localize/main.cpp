@@ -12,6 +12,8 @@
 #include "CommandLine.h"
 #include "Compensation.h"
 #include "DriveData.h"
+#include "GyroOff.h"
+#include "GyroOffOdometry.h"
 #include "HeadingDeadReckoning.h"
 #include "Localization.h"
 #include "LocalizationErrors.h"
@@ -68,6 +70,13 @@ What it does
   Heading matters only where the map does not fix it: in urban stretches and in the tunnel the
   laser fixes heading (the tunnel's walls fix heading and lateral position, not the position
   along the road); the open stretches are the figure of merit (position_rms_m in --json).
+  Gyro off (power 0 rows: no gyro sample): each powered span is dead-reckoned alone; a filter
+     step that touches a gyro-off stretch moves the particles by the wheel odometry alone
+     (distance and the wheels' own heading change) under MRPT's default Gaussian model, what
+     pf-localization applies to wheel odometry (--wheel-heading-deg-per-m, --wheel-heading-per-turn);
+     at the turn-on the particles are re-drawn around a fix as at the start (--gyro-off-recovery
+     refix, the default; 'none' goes on). Those scans are left out of the stretch figures and
+     reported apart (gyro_off in --json), as fog-drift computes its figures on the powered spans.
   6. Whether the open fields can judge the gyro (heading_relevance in --json): per field, the
      raw gyro's heading drift over it against the heading error the map-matching leaves at its
      entry (ideal gyro); over the fields, the ideal gyro's position RMS / the raw one's, the
@@ -91,18 +100,6 @@ fs::path defaultDatasetsDir()
 	return fs::path(MRPT_FOG_SOURCE_DIR) / "datasets";
 }
 
-/** Pose of a dead-reckoned trajectory at each time (linear / shortest-arc interpolation). */
-std::vector<mrpt::poses::CPose2D> posesAt(const nav::Trajectory& traj, const std::vector<double>& t)
-{
-	std::vector<mrpt::poses::CPose2D> out;
-	out.reserve(t.size());
-	for (double tk : t)
-	{
-		const nav::TrajectoryPoint p = nav::interpolate(traj, tk);
-		out.emplace_back(p.x_m, p.y_m, p.yaw_rad);
-	}
-	return out;
-}
 }  // namespace
 
 int main(int argc, char** argv)
@@ -155,6 +152,21 @@ int main(int argc, char** argv)
 												"'straights' (the 3 longest straights: the bias only; on the bundled "
 												"drive the map-matching's entry error dominates there)",
 												false, "turns", "turns|straights", cmd);
+		TCLAP::ValueArg<double> arg_wheel_a3("", "wheel-heading-deg-per-m",
+											 "motion model where the gyro is off (power 0; the wheel odometry alone): "
+											 "heading std per metre driven [deg/m] (MRPT's default Gaussian model's a3, "
+											 "what pf-localization applies to wheel odometry)",
+											 false, 1.0, "DEG", cmd);
+		TCLAP::ValueArg<double> arg_wheel_a4("", "wheel-heading-per-turn",
+											 "motion model where the gyro is off: heading std per turned angle [-] "
+											 "(MRPT's default a4)",
+											 false, 0.05, "X", cmd);
+		TCLAP::ValueArg<std::string> arg_recovery("", "gyro-off-recovery",
+												  "at a turn-on after a gyro-off stretch: 'refix' re-draws the particles "
+												  "around a position and heading fix as at the start (the truth, standing "
+												  "for GNSS, as fog-drift re-aligns there), 'none' goes on from the "
+												  "wheel-only steps",
+												  false, "refix", "refix|none", cmd);
 		TCLAP::SwitchArg arg_noscale("", "no-scale-calibration",
 									 "do not calibrate the wheel odometry's distance scale on urban stretches", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-localize", kHelp)) return *rc;
@@ -163,6 +175,11 @@ int main(int argc, char** argv)
 		if (arg_particles.getValue() < 10) throw std::runtime_error("--particles: must be >= 10");
 		if (!(arg_period.getValue() >= 0.1 && arg_period.getValue() <= 10))
 			throw std::runtime_error("--scan-period-s: must be within [0.1, 10] s");
+		const GyroOffRecovery recovery = gyroOffRecoveryFromString(arg_recovery.getValue());
+		if (!(arg_wheel_a3.getValue() >= 0 && arg_wheel_a3.getValue() <= 90))
+			throw std::runtime_error("--wheel-heading-deg-per-m: must be within [0, 90] deg/m");
+		if (!(arg_wheel_a4.getValue() >= 0 && arg_wheel_a4.getValue() <= 10))
+			throw std::runtime_error("--wheel-heading-per-turn: must be within [0, 10]");
 		WorldOptions wopt;
 		wopt.placement = fieldPlacementFromString(arg_fields.getValue());
 		const auto t_start = std::chrono::steady_clock::now();
@@ -214,12 +231,47 @@ int main(int argc, char** argv)
 		std::vector<double> comp = drift::compensatedRate_dph(drive.fog, calib.cal, cal_path, true);
 		for (double& r : comp) r += cal_earth_dph;  // the static calibration absorbed it: removed once, by the strapdown
 		const std::vector<double> t_fog = drift::absoluteTimes(drive.fog);
-		const std::vector<std::pair<std::string, nav::Trajectory>> gyros = {
-			{"raw", drift::deadReckonVariant(t_fog, drive.fog.rate_dph[2], drive, hopt).trajectory},
-			{"compensated", drift::deadReckonVariant(t_fog, comp, drive, hopt).trajectory},
-			{"ideal", drift::deadReckonVariant(drift::absoluteTimes(*drive.fog_ideal), drive.fog_ideal->rate_dph[2], drive,
-											   hopt)
-						  .trajectory}};
+		// Gyro-off stretches (power 0: no gyro sample; GyroOffOdometry.h): each powered span is
+		// dead-reckoned alone, and the filter steps on the wheel odometry where the gyro is off.
+		const auto powerOf = [&](const FogSeries& s) {
+			drift::PowerSpanBuilder b;
+			for (std::size_t k = 0; k < s.size(); k++) b.add(s.epoch_s + s.time_s[k], s.gyroOn(k));
+			b.finish();
+			if (b.powered().empty())
+				throw std::runtime_error(drive_path + ": " + s.sensor_label + ": the gyro is off throughout");
+			return b;
+		};
+		const drift::PowerSpanBuilder fog_power = powerOf(drive.fog);
+		const auto deadReckonSpans = [&](const std::vector<double>& t, const std::vector<double>& rate,
+										 const drift::PowerSpanBuilder& power) {
+			std::vector<nav::Trajectory> out;
+			if (power.stretches().empty())  // powered throughout: the drive as one
+			{
+				out.push_back(drift::deadReckonVariant(t, rate, drive, hopt).trajectory);
+				return out;
+			}
+			drift::HeadingOptions o = hopt;
+			o.empty_if_no_odometry = true;
+			for (const drift::PoweredSpan& span : power.powered())
+			{
+				const auto w = drift::navigationWindow(span, t.front(), t.back(), drive.odometry.t_s.front(),
+													   drive.odometry.t_s.back(), drive.truth.front().t_s,
+													   drive.truth.back().t_s);
+				if (!w) continue;
+				o.window_t0_s = w->first, o.window_t1_s = w->second;
+				nav::Trajectory part = drift::deadReckonVariant(t, rate, drive, o).trajectory;
+				if (part.size() >= 2) out.push_back(std::move(part));
+			}
+			if (out.empty())
+				throw std::runtime_error(drive_path + ": no powered span of the gyro overlaps the odometry and the truth "
+													  "long enough to navigate");
+			return out;
+		};
+		const std::vector<std::pair<std::string, std::vector<nav::Trajectory>>> gyros = {
+			{"raw", deadReckonSpans(t_fog, drive.fog.rate_dph[2], fog_power)},
+			{"compensated", deadReckonSpans(t_fog, comp, fog_power)},
+			{"ideal", deadReckonSpans(drift::absoluteTimes(*drive.fog_ideal), drive.fog_ideal->rate_dph[2],
+									  powerOf(*drive.fog_ideal))}};
 
 		// World and scans.
 		LaserOptions lopt;
@@ -227,8 +279,8 @@ int main(int argc, char** argv)
 		double t0 = drive.truth.front().t_s, t1 = drive.truth.back().t_s;
 		for (const auto& g : gyros)
 		{
-			t0 = std::max(t0, g.second.front().t_s);
-			t1 = std::min(t1, g.second.back().t_s);
+			t0 = std::max(t0, g.second.front().front().t_s);
+			t1 = std::min(t1, g.second.back().back().t_s);
 		}
 		std::vector<double> scan_t;
 		// Scans half a period after the start: times that are not whole seconds (pf-localization
@@ -244,6 +296,8 @@ int main(int argc, char** argv)
 		mopt.lf_decimation = arg_dec.getValue();
 		mopt.roughening_k = arg_rough.getValue();
 		mopt.calibrate_odometry_scale = !arg_noscale.getValue();
+		mopt.wheel_only_motion.gaussianModel.a3 = arg_wheel_a3.getValue() * M_PI / 180.0;
+		mopt.wheel_only_motion.gaussianModel.a4 = arg_wheel_a4.getValue();
 		if (!(mopt.motion.heading_bias_dph > 0) || !(mopt.motion.horizon_s > 0) || !(mopt.motion.scale_factor_ppm >= 0) ||
 			!(mopt.pow_factor > 0 && mopt.pow_factor <= 1) || mopt.lf_decimation < 1)
 			throw std::runtime_error("motion/likelihood options: bias and horizon > 0, scale factor >= 0, pow-factor in "
@@ -262,21 +316,37 @@ int main(int argc, char** argv)
 		results.drive = drive_path;
 		results.calibration = calib;
 		results.t0_s = t0;
-		for (const auto& [name, traj] : gyros)
+		results.gyro_off = fog_power.stretches();
+		results.gyro_off_recovery = recovery;
+		for (const auto& g : results.gyro_off) results.gyro_off_overlap_s.push_back(overlapByKind(world.stretches, g.off_s, g.on_s));
+		for (const auto& [name, spans] : gyros)
 		{
-			const auto odo = posesAt(traj, scan_t);
+			const ScanOdometry so = odometryAtScans(spans, drive.odometry, scan_t, start);
+			const auto& odo = so.poses;
 			GyroResult gr;
 			gr.name = name;
+			gr.odometry_step = so.step;
+			// the turn-ons: the first scan of a powered span after a wheel-only step
+			std::vector<Refix> refixes;
+			if (recovery == GyroOffRecovery::Refix)
+				for (std::size_t k = 1; k + 1 < scan_t.size(); ++k)
+					if (so.step[k] == StepSource::WheelOnly && so.step[k + 1] == StepSource::Gyro)
+					{
+						const nav::TrajectoryPoint p = nav::interpolate(drive.truth, scan_t[k]);
+						refixes.push_back({k, mrpt::poses::CPose2D(p.x_m, p.y_m, p.yaw_rad)});
+					}
+			gr.refixes = refixes.size();
 			for (unsigned s = 0; s < arg_seeds.getValue(); ++s)
 			{
 				const unsigned seed = arg_seed0.getValue() + s;
-				const MclRun run = runMcl(world, scans, scan_t, odo, start, mopt, seed);
+				const MclRun run = runMcl(world, scans, scan_t, odo, so.step, refixes, start, mopt, seed);
 				gr.runs.push_back(computeErrors(run, drive.truth, world.stretches));
 				gr.seeds.push_back(seed);
 				gr.final_scale.push_back(run.odometry_scale.back());
 				if (s == 0) gr.first_run = run;
 			}
 			gr.summary = summarize(gr.runs, world.stretches);
+			gr.wheel_only = wheelOnlyFigures(gr.runs);
 			std::vector<double> odo_err_deg;
 			for (std::size_t k = 0; k < scan_t.size(); ++k)
 				odo_err_deg.push_back(nav::wrapToPi(odo[k].phi() - nav::interpolate(drive.truth, scan_t[k]).yaw_rad) * 180.0 / M_PI);
@@ -290,7 +360,7 @@ int main(int argc, char** argv)
 			results.relevance = headingRelevance(raw.summary, raw.heading_budget, ideal.summary, ideal.heading_budget);
 		}
 		results.runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
-		printSummary(results, world);
+		printSummary(results, world, mopt.wheel_only_motion.gaussianModel);
 		writeOutputs(out.string(), arg_json.getValue(), results, world, scans, scan_t, drive.truth, mopt, lopt);
 		return 0;
 	});

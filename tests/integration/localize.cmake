@@ -29,6 +29,20 @@ if(TARGET fog-localize)
       -DGT_ERROR=${LOC_DIR}/LOG_compensated_000_0000100/GT_error.txt -P ${FOG_SOURCE_DIR}/tests/localize/check_pf_error.cmake)
     set_tests_properties(localize.pf_localization.check PROPERTIES FIXTURES_REQUIRED loc_pf LABELS "localize;integration")
   endif()
+  # A drive with the gyro off for 5 min (tests/localize/gyro_off_check.cmake; ~8 s).
+  if(TARGET fog-sim)
+    add_test(NAME localize.fog_localize.gyro_off COMMAND ${CMAKE_COMMAND} -DSIM=$<TARGET_FILE:fog-sim>
+      -DLOC=$<TARGET_FILE:fog-localize> -DCABIN=${FOG_SOURCE_DIR}/tests/localize/cabin_off.yaml
+      -DWORK=${CMAKE_CURRENT_BINARY_DIR}/localize_gyro_off -P ${FOG_SOURCE_DIR}/tests/localize/gyro_off_check.cmake)
+    set_tests_properties(localize.fog_localize.gyro_off PROPERTIES LABELS "localize;integration" TIMEOUT 600)
+  endif()
+  # The odometry of the filter steps across a gyro-off stretch, in closed form.
+  add_executable(test_localize_odometry ${FOG_SOURCE_DIR}/tests/localize/test_GyroOffOdometry.cpp
+    ${FOG_SOURCE_DIR}/apps/fog-localize/GyroOffOdometry.cpp)
+  target_include_directories(test_localize_odometry PRIVATE ${FOG_SOURCE_DIR}/apps/fog-localize
+    ${FOG_SOURCE_DIR}/apps/fog-drift)
+  target_link_libraries(test_localize_odometry PRIVATE mrpt_fog_nav fog_obs GTest::gtest GTest::gtest_main)
+  gtest_discover_tests(test_localize_odometry PROPERTIES LABELS localize DISCOVERY_MODE PRE_TEST DISCOVERY_TIMEOUT 60)
   add_test(NAME localize.fog_localize.bad_seeds COMMAND fog-localize --seeds 0 --out ${LOC_DIR}_bad)
   add_test(NAME localize.fog_localize.missing_drive COMMAND fog-localize --drive ${LOC_DIR}/no_such.rawlog --cal x.yaml --out ${LOC_DIR}_bad)
   add_test(NAME localize.fog_localize.bad_fields COMMAND fog-localize --fields curvy --out ${LOC_DIR}_bad)
@@ -36,6 +50,12 @@ if(TARGET fog-localize)
   add_test(NAME localize.fog_localize.cal_and_ratetable COMMAND fog-localize --cal x.yaml --ratetable none --out ${LOC_DIR}_bad)
   set_tests_properties(localize.fog_localize.bad_seeds localize.fog_localize.missing_drive localize.fog_localize.bad_fields
     localize.fog_localize.cal_and_ratetable PROPERTIES WILL_FAIL TRUE LABELS "localize;integration")
+  add_test(NAME localize.fog_localize.bad_recovery COMMAND fog-localize --gyro-off-recovery maybe --out ${LOC_DIR}_bad)
+  set_tests_properties(localize.fog_localize.bad_recovery PROPERTIES
+    PASS_REGULAR_EXPRESSION "gyro-off recovery 'maybe' is not refix\\|none" LABELS "localize;integration")
+  add_test(NAME localize.fog_localize.bad_wheel_model COMMAND fog-localize --wheel-heading-deg-per-m -1 --out ${LOC_DIR}_bad)
+  set_tests_properties(localize.fog_localize.bad_wheel_model PROPERTIES
+    PASS_REGULAR_EXPRESSION "--wheel-heading-deg-per-m: must be within" LABELS "localize;integration")
   add_test(NAME localize.fog_localize.bad_roughening COMMAND fog-localize --roughening-k -1 --out ${LOC_DIR}_bad)
   set_tests_properties(localize.fog_localize.bad_roughening PROPERTIES
     PASS_REGULAR_EXPRESSION "--roughening-k: must be >= 0" LABELS "localize;integration")
