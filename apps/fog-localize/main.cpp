@@ -235,7 +235,7 @@ int main(int argc, char** argv)
 		// dead-reckoned alone, and the filter steps on the wheel odometry where the gyro is off.
 		const auto powerOf = [&](const FogSeries& s) {
 			drift::PowerSpanBuilder b;
-			for (std::size_t k = 0; k < s.size(); k++) b.add(s.epoch_s + s.time_s[k], s.gyroOn(k));
+			for (std::size_t k = 0; k < s.size(); k++) b.add(s.epoch_s + s.time_s[k], s.power.empty() ? NAN : s.power[k]);
 			b.finish();
 			if (b.powered().empty())
 				throw std::runtime_error(drive_path + ": " + s.sensor_label + ": the gyro is off throughout");
