@@ -120,8 +120,14 @@ ChamberDrive chamberDriveForRun(const FogSeries& run, const SimulatorConfig& cfg
 		d.how = "profile '" + name + "' from the run's metadata sim.profile";
 	}
 	d.profile = loadProfile(name);
-	const double dt = medianStep(run.time_s);
-	if (!(dt > 0)) throw std::invalid_argument("run time step is not positive");
+	// The profile's grid step from the whole run: the median single step carries the time
+	// stamps' rounding (ulps of a time read from text or from 100 ns ticks), which over 1e5
+	// samples put the last one a 1e-3 step off the grid (10 Hz logs with --block-s 0).
+	const double dt_median = medianStep(run.time_s);
+	if (!(dt_median > 0)) throw std::invalid_argument("run time step is not positive");
+	const double span_s = run.time_s.back() - run.time_s.front();
+	const double steps = std::round(span_s / dt_median);
+	const double dt = steps >= 1 ? span_s / steps : dt_median;
 	d.rate_hz = 1.0 / dt;
 	const double last = std::floor(d.profile.duration_s() * d.rate_hz + 1e-9);
 	d.sim_index.resize(run.size());
