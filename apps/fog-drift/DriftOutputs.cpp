@@ -15,6 +15,8 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <functional>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -172,7 +174,15 @@ void writeDriftJson(const std::string& path, const std::vector<DriveEvaluation>&
 	writeTextFileAtomically(path, j.dump());
 }
 
-void writeDriftCsv(const std::string& path, const nav::Trajectory& truth, const nav::DriftReport& report)
+namespace
+{
+/** One variant's series, row by row: (t, heading error, position error). */
+using SeriesCursor = std::function<bool(double& t, double& heading_deg, double& position_m)>;
+
+/** The CSV of writeDriftCsv: per truth pose (nextTruth: absolute t, yaw [rad]) a row with each
+ * variant's errors where it was compared at that time, rows without any left out. */
+void writeDriftCsvRows(const std::string& path, const std::vector<std::string>& names, double t0,
+					   const std::function<bool(double& t, double& yaw_rad)>& nextTruth, std::vector<SeriesCursor> series)
 {
 	// Row by row into the file (the whole text in memory was ~100 B per sample, issue 14).
 	writeFileAtomically(path, [&](const std::string& tmp) {
@@ -180,25 +190,31 @@ void writeDriftCsv(const std::string& path, const nav::Trajectory& truth, const 
 		if (!f) throw std::runtime_error("cannot write '" + path + "': cannot open: " + std::strerror(errno));
 		f.precision(10);
 		f << "time_s,truth_yaw_deg";
-		for (const auto& v : report.variants) f << ",heading_error_" << v.name << "_deg,position_error_" << v.name << "_m";
+		for (const auto& n : names) f << ",heading_error_" << n << "_deg,position_error_" << n << "_m";
 		f << "\n";
-		const double t0 = truth.front().t_s;
-		// every variant is evaluated at the truth times inside its span: index by time
-		std::vector<std::size_t> idx(report.variants.size(), 0);
+		// every variant is evaluated at the truth times inside its span: each one's next row
+		struct Row
+		{
+			bool valid = false;
+			double t = 0, e = 0, pos = 0;
+		};
+		std::vector<Row> cur(series.size());
+		for (std::size_t i = 0; i < series.size(); i++) cur[i].valid = series[i](cur[i].t, cur[i].e, cur[i].pos);
 		std::ostringstream row;
 		row.precision(10);
-		for (const auto& gt : truth)
+		double gt_t = 0, gt_yaw = 0;
+		while (nextTruth(gt_t, gt_yaw))
 		{
 			bool any = false;
 			row.str("");
-			row << gt.t_s - t0 << "," << gt.yaw_rad * 180.0 / M_PI;
-			for (std::size_t i = 0; i < report.variants.size(); i++)
+			row << gt_t - t0 << "," << gt_yaw * 180.0 / M_PI;
+			for (std::size_t i = 0; i < series.size(); i++)
 			{
-				const auto& v = report.variants[i];
-				while (idx[i] < v.t_s.size() && v.t_s[idx[i]] < gt.t_s) idx[i]++;
-				if (idx[i] < v.t_s.size() && v.t_s[idx[i]] == gt.t_s)
+				Row& c = cur[i];
+				while (c.valid && c.t < gt_t) c.valid = series[i](c.t, c.e, c.pos);
+				if (c.valid && c.t == gt_t)
 				{
-					row << "," << v.heading_error_deg[idx[i]] << "," << v.position_error_m[idx[i]];
+					row << "," << c.e << "," << c.pos;
 					any = true;
 				}
 				else
@@ -209,6 +225,69 @@ void writeDriftCsv(const std::string& path, const nav::Trajectory& truth, const 
 		f.close();
 		if (!f) throw std::runtime_error("cannot write '" + path + "': write error (disk full?)");
 	});
+}
+}  // namespace
+
+void writeDriftCsv(const std::string& path, const nav::Trajectory& truth, const nav::DriftReport& report)
+{
+	std::vector<std::string> names;
+	std::vector<SeriesCursor> series;
+	std::vector<std::size_t> idx(report.variants.size(), 0);
+	for (std::size_t i = 0; i < report.variants.size(); i++)
+	{
+		const auto& v = report.variants[i];
+		names.push_back(v.name);
+		series.push_back([&v, &k = idx[i]](double& t, double& e, double& pos) {
+			if (k >= v.t_s.size()) return false;
+			t = v.t_s[k], e = v.heading_error_deg[k], pos = v.position_error_m[k];
+			k++;
+			return true;
+		});
+	}
+	std::size_t g = 0;
+	writeDriftCsvRows(path, names, truth.front().t_s,
+					  [&](double& t, double& yaw) {
+						  if (g >= truth.size()) return false;
+						  t = truth[g].t_s, yaw = truth[g].yaw_rad;
+						  g++;
+						  return true;
+					  },
+					  std::move(series));
+}
+
+void writeDriftCsv(const std::string& path, const SpilledSeries& spilled, const nav::DriftReport& report)
+{
+	if (spilled.variants.size() != report.variants.size())
+		throw std::invalid_argument("writeDriftCsv: spilled series and report variants differ in number");
+	if (spilled.truth.rows() == 0) throw std::runtime_error("cannot write '" + path + "': the drive has no truth pose");
+	std::vector<std::string> names;
+	std::vector<std::unique_ptr<RowSpill::Reader>> readers;
+	std::vector<SeriesCursor> series;
+	for (std::size_t i = 0; i < report.variants.size(); i++)
+	{
+		names.push_back(report.variants[i].name);
+		readers.push_back(std::make_unique<RowSpill::Reader>(*spilled.variants[i]));
+		series.push_back([r = readers.back().get()](double& t, double& e, double& pos) {
+			const double* row = r->next();
+			if (!row) return false;
+			t = row[0], e = row[1], pos = row[2];
+			return true;
+		});
+	}
+	RowSpill::Reader truth(spilled.truth);
+	double t0 = 0;
+	{
+		RowSpill::Reader first(spilled.truth);
+		t0 = first.next()[0];
+	}
+	writeDriftCsvRows(path, names, t0,
+					  [&](double& t, double& yaw) {
+						  const double* row = truth.next();
+						  if (!row) return false;
+						  t = row[0], yaw = row[1];
+						  return true;
+					  },
+					  std::move(series));
 }
 
 void writeDriftPlots(const std::string& dir, const nav::Trajectory& truth, const std::vector<nav::NamedTrajectory>& variants,

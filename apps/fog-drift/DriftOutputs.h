@@ -40,6 +40,8 @@ void writeDriftJson(const std::string& path, const std::vector<DriveEvaluation>&
 /** Per-sample CSV at the truth times: time_s (from the start), truth_yaw_deg, and per gyro
  * heading_error_<name>_deg and position_error_<name>_m. */
 void writeDriftCsv(const std::string& path, const nav::Trajectory& truth, const nav::DriftReport& report);
+/** The same CSV from a streamed evaluation's spilled series (DriveEvaluation::spilled). */
+void writeDriftCsv(const std::string& path, const SpilledSeries& spilled, const nav::DriftReport& report);
 
 /** trajectories.png and heading_error.png in dir (created if missing). */
 void writeDriftPlots(const std::string& dir, const nav::Trajectory& truth, const std::vector<nav::NamedTrajectory>& variants,

@@ -12,12 +12,14 @@
 #include "GyroOff.h"
 #include "HeadingDeadReckoning.h"
 
+#include <mrpt_fog/common/RowSpill.h>
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog_nav/DriftReport.h>
 #include <mrpt_fog_nav/HeadingFigures.h>
 
 #include <array>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,8 +45,9 @@ struct DriveSettings
 	bool cal_no_earth_rate = false;  //!< the calibration's bias holds no Earth rate
 	bool screen_thermistors = true;
 	bool quiet = false;  //!< no progress line on stderr while a drive is read
-	/** The per-sample drift series (DriftReport's t_s, errors) are wanted (--csv): the drive is
-	 * held in memory. */
+	/** The per-sample drift series are wanted (--csv): held in DriftReport's t_s and errors when
+	 * the drive is held in memory, spilled to temporary files (DriveEvaluation::spilled) when it
+	 * is streamed. */
 	bool keep_series = false;
 	/** Hold the drive in memory even when nothing asks for it (--in-memory: the reference the
 	 * streaming evaluation is tested against). */
@@ -58,6 +61,16 @@ struct AttitudeFigures
 {
 	double roll_error_rms_deg = 0, roll_error_max_deg = 0, roll_error_final_deg = 0;
 	double pitch_error_rms_deg = 0, pitch_error_max_deg = 0, pitch_error_final_deg = 0;
+};
+
+/** The per-sample drift series of a streamed evaluation with DriveSettings::keep_series (--csv):
+ * in temporary files (common/RowSpill.h), not in memory. */
+struct SpilledSeries
+{
+	RowSpill truth{2};  //!< every truth pose in order: t [s, absolute], yaw [rad]
+	/** per variant of the report, in its order: t [s], heading error [deg], position error [m]
+	 * at the truth times it was compared at */
+	std::vector<std::unique_ptr<RowSpill>> variants;
 };
 
 struct DriveEvaluation
@@ -88,6 +101,8 @@ struct DriveEvaluation
 	/** Per axis x, y, z: RMS of the 100 s block means of (variant - ideal) over the powered
 	 * samples [deg/h]: the thermal error left on each axis (raw, compensated; three_axis only). */
 	std::map<std::string, std::array<double, 3>> rate_error_rms_dph;
+	/** Streamed with DriveSettings::keep_series: the per-sample series (DriftReport's are empty). */
+	std::shared_ptr<SpilledSeries> spilled;
 };
 
 /** The latitude the drive is integrated at (--latitude-deg, else the drive's metadata, else an

@@ -380,11 +380,22 @@ class VariantStream
 			const double dpos =
 				std::sqrt(std::pow(p.x_m - gt.x_m, 2) + std::pow(p.y_m - gt.y_m, 2) + std::pow(p.z_m - gt.z_m, 2));
 			acc_.add(gt.t_s, dpsi_deg, dpos);
+			if (series_)
+			{
+				const double row[3] = {gt.t_s, dpsi_deg, dpos};
+				series_->push(row);
+			}
 			next_truth_++;
 		}
 		if (truth.done && dr_done_) compared_all_ = true;
 	}
 
+   public:
+	/** Every error as it is compared (t, heading [deg], position [m]) also into `spill` (--csv). */
+	void spillSeriesTo(RowSpill* spill) { series_ = spill; }
+
+   private:
+	RowSpill* series_ = nullptr;
 	std::string name_;
 	std::vector<std::pair<double, double>> windows_;
 	bool skip_short_ = false;
@@ -489,7 +500,7 @@ struct IdealTimes
 
 bool canStream(const DriveSettings& st)
 {
-	return st.keep_trajectories == KeptTrajectories::None && !st.keep_series && !st.heading.transport_rate && !st.in_memory;
+	return st.keep_trajectories == KeptTrajectories::None && !st.heading.transport_rate && !st.in_memory;
 }
 
 std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, const DriveSettings& st)
@@ -632,6 +643,16 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 		ideal_var = vars.back().get();
 	}
 
+	// --csv: the per-sample series into temporary files (the report's vectors stay empty)
+	if (st.keep_series)
+	{
+		e.spilled = std::make_shared<SpilledSeries>();
+		for (auto& v : vars)
+		{
+			e.spilled->variants.push_back(std::make_unique<RowSpill>(3));
+			v->spillSeriesTo(e.spilled->variants.back().get());
+		}
+	}
 	IndexedQueue<nav::TrajectoryPoint> truth;
 	IndexedQueue<OdoPose> odo;
 	IdealTimes ideal_times;
@@ -674,6 +695,11 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 	TruthYawAt off_yaw(stretchQueryTimes(scan.gyro_off));
 	others.on_truth = [&](const nav::TrajectoryPoint& p) {
 		off_yaw.add(p.t_s, p.yaw_rad);
+		if (e.spilled)
+		{
+			const double row[2] = {p.t_s, p.yaw_rad};
+			e.spilled->truth.push(row);
+		}
 		truth.q.push_back(p);
 	};
 	{

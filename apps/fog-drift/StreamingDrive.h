@@ -14,9 +14,11 @@
  * The arithmetic is the in-memory evaluation's, step for step (same interpolation brackets,
  * same summation order), so the figures are the same (ctest io_drift_streaming_equals_in_memory:
  * JSON and text equal to --in-memory's).
- * The per-sample series (DriftSeries::t_s ..., trajectories, truth) are left empty: the
- * outputs that draw or write them (--csv, --plots, --odometry-out) and --transport-rate use
- * evaluateDrive(), as does a triad FOG. */
+ * The per-sample series (DriftSeries::t_s ..., trajectories, truth) are left empty; with
+ * DriveSettings::keep_series (--csv) the truth and each variant's errors are spilled to
+ * temporary files instead (DriveEvaluation::spilled). The outputs that draw or write the
+ * trajectories (--plots, --odometry-out) and --transport-rate use evaluateDrive(), as does a
+ * triad FOG. */
 
 #include "DriveEvaluation.h"
 

@@ -152,7 +152,7 @@ int main(int argc, char** argv)
 								   cmd);
 		TCLAP::SwitchArg quiet("q", "quiet", "no progress line on stderr while a drive is read", cmd);
 		TCLAP::SwitchArg in_memory("", "in-memory",
-								   "hold the whole drive in memory, as --csv, --plots, --odometry-out, "
+								   "hold the whole drive in memory, as --plots, --odometry-out, "
 								   "--transport-rate and a triad FOG do (otherwise a single-axis drive is read twice "
 								   "and streamed: memory does not grow with the drive; the same figures)",
 								   cmd);
@@ -278,7 +278,11 @@ int main(int argc, char** argv)
 		if (evals.size() == 1)
 		{
 			const drift::DriveEvaluation& e = evals.front();
-			if (!csv.getValue().empty()) drift::writeDriftCsv(csv.getValue(), e.drive.truth, e.report);
+			if (!csv.getValue().empty())
+			{
+				if (e.spilled) drift::writeDriftCsv(csv.getValue(), *e.spilled, e.report);
+				else drift::writeDriftCsv(csv.getValue(), e.drive.truth, e.report);
+			}
 			if (!plots.getValue().empty()) drift::writeDriftPlots(plots.getValue(), e.drive.truth, e.variants, e.report);
 			if (!odo_out.getValue().empty())
 			{

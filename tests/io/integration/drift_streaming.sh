@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # fog-drift streams a single-axis drive (apps/fog-drift/StreamingDrive.h: two reads, memory that
 # does not grow with the drive) and must give the figures of the in-memory evaluation
-# (--in-memory, the path --csv/--plots/--odometry-out take): the same JSON (10 significant
-# digits) and the same text.
+# (--in-memory, the path --plots/--odometry-out take): the same JSON (10 significant digits),
+# the same text, and with --csv the same CSV.
 # Drives from fog-sim (turns, straights, FOG_IDEAL, odometry, truth at the FOG rate), the
 # calibration fitted by fog-calibrate on datasets/chamber_A.rawlog; two drives at once, and the
 # options that change the arithmetic (no calibration, no screening, instantaneous sampling,
@@ -29,6 +29,15 @@ run no_cal -i d1.rawlog
 run no_screening -i d2.rawlog --cal cal.yaml --no-screening
 run instantaneous -i d2.rawlog --cal cal.yaml --rate-sampling instantaneous
 run cal_earth -i d2.rawlog --cal cal.yaml --cal-latitude-deg 10 --latitude-deg 50
+# --csv streams too (the per-sample series spilled to temporary files): the same CSV, JSON and
+# text as the in-memory path's
+"$drift" -q -i d2.rawlog --cal cal.yaml --csv s_csv.csv --json s_csv.json >s_csv.txt
+"$drift" -q --in-memory -i d2.rawlog --cal cal.yaml --csv m_csv.csv --json m_csv.json >m_csv.txt
+for f in csv.csv csv.json csv.txt; do
+	cmp "s_$f" "m_$f" || { echo "--csv: $f differs: streamed vs --in-memory"; diff "s_$f" "m_$f" | head; exit 1; }
+done
+[ "$(wc -l <s_csv.csv)" -gt 1000 ] || { echo "--csv: too few rows"; exit 1; }
+echo "same: --csv"
 # the figures are numbers, not all zero or null (the comparison compares something); the JSON
 # holds 10 significant digits
 grep -Eq '"compensated": [0-9]\.[0-9]*[1-9]' s_two_drives.json

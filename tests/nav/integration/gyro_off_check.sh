@@ -22,6 +22,11 @@ rm -rf "$WORK" && mkdir -p "$WORK" && cd "$WORK"
 cmp s.json m.json || { echo "JSON differs: streamed vs --in-memory"; diff s.json m.json | head; exit 1; }
 cmp s.txt m.txt || { echo "text differs: streamed vs --in-memory"; diff s.txt m.txt | head; exit 1; }
 cmp s.json o.json || { echo "JSON differs with --csv/--plots/--odometry-out"; diff s.json o.json | head; exit 1; }
+# --csv alone streams (its series spilled): the same CSV as the in-memory path's, across the stretch
+"$DRIFT" -q -i gap.rawlog --cal cal.yaml --csv gap_s.csv >/dev/null
+"$DRIFT" -q -i gap.rawlog --cal cal.yaml --csv gap_m.csv --in-memory >/dev/null
+cmp gap_s.csv gap_m.csv || { echo "--csv differs: streamed vs --in-memory"; diff gap_s.csv gap_m.csv | head; exit 1; }
+cmp gap_s.csv gap.csv || { echo "--csv differs from the --plots/--odometry-out run's"; exit 1; }
 grep -q "gyro off 250.0 s in 1 stretch: heading not observable there" s.txt || { echo "no gyro-off line:"; cat s.txt; exit 1; }
 grep -q "truth heading change 300.0 deg" s.txt || { echo "no truth heading change:"; cat s.txt; exit 1; }
 "$GEN" check-gap s.json
