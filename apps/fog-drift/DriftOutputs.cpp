@@ -367,4 +367,59 @@ void writeOdometryRawlog(const std::string& path, const nav::Trajectory& traj, c
 	});
 }
 
+nav::TrajectoryPoint writeOdometryRawlog(const std::string& path, const SpilledSeries& spilled)
+{
+	nav::TrajectoryPoint first_pose;
+	{
+		RowSpill::Reader r(spilled.odometry_poses);
+		const double* p = r.next();
+		if (!p) throw std::runtime_error("cannot write '" + path + "': no dead-reckoned pose to write");
+		first_pose.t_s = p[0], first_pose.x_m = p[1], first_pose.y_m = p[2], first_pose.yaw_rad = p[3];
+	}
+	RowSpill::Reader rates(spilled.odometry_rates);
+	const double* r0 = rates.next();
+	if (!r0) throw std::runtime_error("cannot write '" + path + "': no gyro rate to write");
+	// the main path's interpAt(rate times, rates, pose times), walked once: the first rate at or
+	// after the pose's time and the one before it
+	const double y_front = r0[1];
+	double t_prev = 0, y_prev = 0, t_cur = r0[0], y_cur = r0[1];
+	bool have_prev = false, cur_valid = true;
+	const auto rateAt = [&](double tq) {
+		while (cur_valid && t_cur < tq)
+		{
+			t_prev = t_cur, y_prev = y_cur, have_prev = true;
+			if (const double* r = rates.next()) t_cur = r[0], y_cur = r[1];
+			else cur_valid = false;
+		}
+		if (!cur_valid) return y_prev;  // after the last rate: the last one
+		if (!have_prev) return y_front;  // at or before the first
+		const double f = (tq - t_prev) / (t_cur - t_prev);
+		return y_prev + f * (y_cur - y_prev);
+	};
+	writeFileAtomically(path, [&](const std::string& tmp) {
+		mrpt::io::CFileGZOutputStream f;
+		if (!f.open(tmp)) throw std::runtime_error(tmp + ": cannot open for writing");
+		auto ar = mrpt::serialization::archiveFrom(f);
+		constexpr std::size_t kChunk = 4096;  // as writeOdometryRawlog(traj, rates)
+		RowSpill::Reader poses(spilled.odometry_poses);
+		nav::Trajectory part;
+		std::vector<double> part_rates;
+		const auto flush = [&] {
+			for (const auto& o : nav::makeOdometryObservations(part, part_rates)) ar << *o;
+			part.clear(), part_rates.clear();
+		};
+		while (const double* p = poses.next())
+		{
+			nav::TrajectoryPoint q;
+			q.t_s = p[0], q.x_m = p[1], q.y_m = p[2], q.yaw_rad = p[3];
+			part.push_back(q);
+			part_rates.push_back(rateAt(q.t_s));
+			if (part.size() == kChunk) flush();
+		}
+		if (!part.empty()) flush();
+		f.close();
+	});
+	return first_pose;
+}
+
 }  // namespace mrpt_fog::drift

@@ -50,5 +50,8 @@ void writeDriftPlots(const std::string& dir, const nav::Trajectory& truth, const
 /** Observations-only rawlog: CObservationOdometry + CObservationIMU per pose (see
  * mrpt_fog_nav/OdometryRawlog.h), gz-compressed, atomic. */
 void writeOdometryRawlog(const std::string& path, const nav::Trajectory& traj, const std::vector<double>& imu_rate_z_rad_s);
+/** The same from a streamed evaluation's spilled poses and rates (DriveEvaluation::spilled), the
+ * rates interpolated at the poses' times as the in-memory path does; returns the first pose. */
+nav::TrajectoryPoint writeOdometryRawlog(const std::string& path, const SpilledSeries& spilled);
 
 }  // namespace mrpt_fog::drift

@@ -71,6 +71,12 @@ struct SpilledSeries
 	/** per variant of the report, in its order: t [s], heading error [deg], position error [m]
 	 * at the truth times it was compared at */
 	std::vector<std::unique_ptr<RowSpill>> variants;
+	/** --odometry-out (DriveSettings::keep_trajectories ForOdometry): the odometry variant's
+	 * (compensated, else raw) dead-reckoned poses (t, x, y, yaw) and integrated gyro rates
+	 * (t, yaw rate without the Earth's [rad/s]), of the powered spans the figures cover */
+	std::string odometry_variant;
+	RowSpill odometry_poses{4};
+	RowSpill odometry_rates{2};
 };
 
 struct DriveEvaluation
@@ -101,7 +107,8 @@ struct DriveEvaluation
 	/** Per axis x, y, z: RMS of the 100 s block means of (variant - ideal) over the powered
 	 * samples [deg/h]: the thermal error left on each axis (raw, compensated; three_axis only). */
 	std::map<std::string, std::array<double, 3>> rate_error_rms_dph;
-	/** Streamed with DriveSettings::keep_series: the per-sample series (DriftReport's are empty). */
+	/** Streamed with DriveSettings::keep_series or keep_trajectories ForOdometry: the per-sample
+	 * series (DriftReport's and the trajectories are empty). */
 	std::shared_ptr<SpilledSeries> spilled;
 };
 

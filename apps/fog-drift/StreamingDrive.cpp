@@ -21,6 +21,7 @@
 #include <mrpt_fog/obs/CObservationFOG.h>
 #include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog_nav/DeadReckoning.h>
+#include <mrpt_fog_nav/EarthModel.h>
 #include <mrpt_fog_nav/Rotation.h>
 #include <mrpt_fog_nav/StrapdownAttitude.h>
 
@@ -181,7 +182,18 @@ class VariantStream
 		if (navigated_ == 0)
 			throw std::runtime_error("no powered span of the gyro overlaps the odometry and the truth long enough to "
 									 "navigate");
+		flushWindow();
 		acc_.finish(name_, distance_m, s, f);
+	}
+
+	/** --odometry-out: this variant's poses and integrated rates into `poses` (t, x, y, yaw) and
+	 * `rates` (t, rate [rad/s]), window by window as the in-memory path keeps them: a window
+	 * that was navigated and (with gyro-off stretches) compared at a truth pose. */
+	void keepTrajectoryIn(RowSpill* poses, RowSpill* rates, double earth_up_rad_s)
+	{
+		poses_ = poses, rates_ = rates, earth_up_ = earth_up_rad_s;
+		win_poses_ = std::make_unique<RowSpill>(4);
+		win_rates_ = std::make_unique<RowSpill>(2);
 	}
 
    private:
@@ -239,6 +251,11 @@ class VariantStream
 			const double w = rate * units::kDegPerHourToRadPerSec;
 			att_->updateRateZ(t, w, Eigen::Vector3d::Zero());
 			if (t > track_.back().t) track_.push_back({t, att_->attitude()});
+			if (win_rates_)
+			{
+				const double row[2] = {t, w - earth_up_};
+				win_rates_->push(row);
+			}
 		}
 	}
 
@@ -315,11 +332,13 @@ class VariantStream
 				last_.yaw_rad = yawAt(last_.t_s);
 				last_.q_nb = nav::quatFromYawPitchRoll(last_.yaw_rad, 0, 0);
 				traj_.push_back(last_);
+				keepPose(last_);
 				traj_front_t_ = last_.t_s;
 				first_pending_ = false;
 			}
 			last_ = nav::deadReckonStep2D(last_, inc, yawAt(inc.t_s));
 			traj_.push_back(last_);
+			keepPose(last_);
 			dr_points_++;
 			prev_odo_ = o;
 			next_odo_++;
@@ -342,6 +361,7 @@ class VariantStream
 	/** The next window: navigated afresh from the truth at its start (GyroOff.h). */
 	void nextWindow()
 	{
+		flushWindow();
 		window_++;
 		t0_ = windows_[window_].first, t_end_ = windows_[window_].second;
 		initialised_ = gyro_stopped_ = false;
@@ -380,6 +400,7 @@ class VariantStream
 			const double dpos =
 				std::sqrt(std::pow(p.x_m - gt.x_m, 2) + std::pow(p.y_m - gt.y_m, 2) + std::pow(p.z_m - gt.z_m, 2));
 			acc_.add(gt.t_s, dpsi_deg, dpos);
+			compared_in_window_++;
 			if (series_)
 			{
 				const double row[3] = {gt.t_s, dpsi_deg, dpos};
@@ -395,7 +416,33 @@ class VariantStream
 	void spillSeriesTo(RowSpill* spill) { series_ = spill; }
 
    private:
+	void keepPose(const nav::TrajectoryPoint& p)
+	{
+		if (!win_poses_) return;
+		const double row[4] = {p.t_s, p.x_m, p.y_m, p.yaw_rad};
+		win_poses_->push(row);
+	}
+	/** The window's poses and rates into the kept ones (see keepTrajectoryIn), then afresh. */
+	void flushWindow()
+	{
+		if (!win_poses_) return;
+		const bool keep = dr_points_ >= 2 && (!skip_short_ || compared_in_window_ > 0);
+		if (keep)
+			for (auto [from, to] : {std::pair{win_poses_.get(), poses_}, {win_rates_.get(), rates_}})
+			{
+				RowSpill::Reader r(*from);
+				while (const double* row = r.next()) to->push(row);
+			}
+		win_poses_ = std::make_unique<RowSpill>(4);
+		win_rates_ = std::make_unique<RowSpill>(2);
+		compared_in_window_ = 0;
+	}
+
 	RowSpill* series_ = nullptr;
+	RowSpill *poses_ = nullptr, *rates_ = nullptr;
+	std::unique_ptr<RowSpill> win_poses_, win_rates_;
+	double earth_up_ = 0;
+	std::size_t compared_in_window_ = 0;
 	std::string name_;
 	std::vector<std::pair<double, double>> windows_;
 	bool skip_short_ = false;
@@ -500,7 +547,7 @@ struct IdealTimes
 
 bool canStream(const DriveSettings& st)
 {
-	return st.keep_trajectories == KeptTrajectories::None && !st.heading.transport_rate && !st.in_memory;
+	return st.keep_trajectories != KeptTrajectories::All && !st.heading.transport_rate && !st.in_memory;
 }
 
 std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, const DriveSettings& st)
@@ -644,14 +691,20 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 	}
 
 	// --csv: the per-sample series into temporary files (the report's vectors stay empty)
+	if (st.keep_series || st.keep_trajectories == KeptTrajectories::ForOdometry) e.spilled = std::make_shared<SpilledSeries>();
 	if (st.keep_series)
-	{
-		e.spilled = std::make_shared<SpilledSeries>();
 		for (auto& v : vars)
 		{
 			e.spilled->variants.push_back(std::make_unique<RowSpill>(3));
 			v->spillSeriesTo(e.spilled->variants.back().get());
 		}
+	// --odometry-out: the compensated variant's trajectory and rates (raw without a calibration)
+	if (st.keep_trajectories == KeptTrajectories::ForOdometry)
+	{
+		VariantStream* v = comp_var ? comp_var : raw;
+		e.spilled->odometry_variant = comp_var ? "compensated" : "raw";
+		v->keepTrajectoryIn(&e.spilled->odometry_poses, &e.spilled->odometry_rates,
+							nav::earthRateEnu(hopt.latitude_deg * units::kDegToRad).z());
 	}
 	IndexedQueue<nav::TrajectoryPoint> truth;
 	IndexedQueue<OdoPose> odo;

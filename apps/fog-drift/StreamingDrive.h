@@ -15,10 +15,10 @@
  * same summation order), so the figures are the same (ctest io_drift_streaming_equals_in_memory:
  * JSON and text equal to --in-memory's).
  * The per-sample series (DriftSeries::t_s ..., trajectories, truth) are left empty; with
- * DriveSettings::keep_series (--csv) the truth and each variant's errors are spilled to
- * temporary files instead (DriveEvaluation::spilled). The outputs that draw or write the
- * trajectories (--plots, --odometry-out) and --transport-rate use evaluateDrive(), as does a
- * triad FOG. */
+ * DriveSettings::keep_series (--csv) the truth and each variant's errors, with
+ * KeptTrajectories::ForOdometry (--odometry-out) the odometry variant's poses and rates, are
+ * spilled to temporary files instead (DriveEvaluation::spilled). --plots (every trajectory)
+ * and --transport-rate use evaluateDrive(), as does a triad FOG. */
 
 #include "DriveEvaluation.h"
 

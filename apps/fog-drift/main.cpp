@@ -152,7 +152,7 @@ int main(int argc, char** argv)
 								   cmd);
 		TCLAP::SwitchArg quiet("q", "quiet", "no progress line on stderr while a drive is read", cmd);
 		TCLAP::SwitchArg in_memory("", "in-memory",
-								   "hold the whole drive in memory, as --plots, --odometry-out, "
+								   "hold the whole drive in memory, as --plots, "
 								   "--transport-rate and a triad FOG do (otherwise a single-axis drive is read twice "
 								   "and streamed: memory does not grow with the drive; the same figures)",
 								   cmd);
@@ -284,7 +284,14 @@ int main(int argc, char** argv)
 				else drift::writeDriftCsv(csv.getValue(), e.drive.truth, e.report);
 			}
 			if (!plots.getValue().empty()) drift::writeDriftPlots(plots.getValue(), e.drive.truth, e.variants, e.report);
-			if (!odo_out.getValue().empty())
+			if (!odo_out.getValue().empty() && e.spilled)
+			{
+				const nav::TrajectoryPoint p0 = drift::writeOdometryRawlog(odo_out.getValue(), *e.spilled);
+				std::printf("  odometry rawlog (%s): %s; pf-localization: initial_odo_x=%.6f initial_odo_y=%.6f "
+							"initial_odo_phi=%.9f\n",
+							e.spilled->odometry_variant.c_str(), odo_out.getValue().c_str(), p0.x_m, p0.y_m, p0.yaw_rad);
+			}
+			else if (!odo_out.getValue().empty())
 			{
 				const std::size_t i = cal.getValue().empty() ? 0 : 1;  // compensated when available
 				const auto& r = e.results[i];

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # fog-drift streams a single-axis drive (apps/fog-drift/StreamingDrive.h: two reads, memory that
 # does not grow with the drive) and must give the figures of the in-memory evaluation
-# (--in-memory, the path --plots/--odometry-out take): the same JSON (10 significant digits),
-# the same text, and with --csv the same CSV.
+# (--in-memory, the path --plots takes): the same JSON (10 significant digits),
+# the same text, and with --csv / --odometry-out the same files.
 # Drives from fog-sim (turns, straights, FOG_IDEAL, odometry, truth at the FOG rate), the
 # calibration fitted by fog-calibrate on datasets/chamber_A.rawlog; two drives at once, and the
 # options that change the arithmetic (no calibration, no screening, instantaneous sampling,
@@ -38,6 +38,15 @@ for f in csv.csv csv.json csv.txt; do
 done
 [ "$(wc -l <s_csv.csv)" -gt 1000 ] || { echo "--csv: too few rows"; exit 1; }
 echo "same: --csv"
+# --odometry-out streams too: the same rawlog, with and without a calibration (compensated / raw)
+for c in cal none; do
+	opt=(); [ $c = cal ] && opt=(--cal cal.yaml)
+	"$drift" -q -i d2.rawlog "${opt[@]}" --odometry-out "s_odo_$c.rawlog" --csv "s_odo_$c.csv" >/dev/null
+	"$drift" -q --in-memory -i d2.rawlog "${opt[@]}" --odometry-out "m_odo_$c.rawlog" --csv "m_odo_$c.csv" >/dev/null
+	cmp "s_odo_$c.rawlog" "m_odo_$c.rawlog" || { echo "--odometry-out ($c) differs: streamed vs --in-memory"; exit 1; }
+	cmp "s_odo_$c.csv" "m_odo_$c.csv" || { echo "--csv with --odometry-out ($c) differs"; exit 1; }
+done
+echo "same: --odometry-out"
 # the figures are numbers, not all zero or null (the comparison compares something); the JSON
 # holds 10 significant digits
 grep -Eq '"compensated": [0-9]\.[0-9]*[1-9]' s_two_drives.json

@@ -27,6 +27,11 @@ cmp s.json o.json || { echo "JSON differs with --csv/--plots/--odometry-out"; di
 "$DRIFT" -q -i gap.rawlog --cal cal.yaml --csv gap_m.csv --in-memory >/dev/null
 cmp gap_s.csv gap_m.csv || { echo "--csv differs: streamed vs --in-memory"; diff gap_s.csv gap_m.csv | head; exit 1; }
 cmp gap_s.csv gap.csv || { echo "--csv differs from the --plots/--odometry-out run's"; exit 1; }
+# --odometry-out streams too (the compensated trajectory and rates spilled): the same rawlog
+"$DRIFT" -q -i gap.rawlog --cal cal.yaml --odometry-out odo_s.rawlog >odo_s.txt
+"$DRIFT" -q -i gap.rawlog --cal cal.yaml --odometry-out odo_m.rawlog --in-memory >odo_m.txt
+cmp odo_s.rawlog odo_m.rawlog || { echo "--odometry-out differs: streamed vs --in-memory"; exit 1; }
+cmp odo_s.rawlog odo.rawlog || { echo "--odometry-out differs from the --csv/--plots run's"; exit 1; }
 grep -q "gyro off 250.0 s in 1 stretch: heading not observable there" s.txt || { echo "no gyro-off line:"; cat s.txt; exit 1; }
 grep -q "truth heading change 300.0 deg" s.txt || { echo "no truth heading change:"; cat s.txt; exit 1; }
 "$GEN" check-gap s.json
