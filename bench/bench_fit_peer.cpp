@@ -36,7 +36,7 @@ Design makeDesign(const std::string& preset)
 	{
 		const FogSeries s = fogtest::makeCoilRun("A", 7);
 		FitOptions o;
-		o.selection = "none";
+		o.selection = TermSelection::None;
 		o.fallbacks = false;
 		const Calibration cal = fitCalibration({s}, preset, o);
 		const std::size_t nth = cal.model.features.thermistors().size();

@@ -137,7 +137,7 @@ int main(int argc, char** argv)
 	for (const auto& e : extra)
 	{
 		mrpt_fog::FitOptions none;
-		none.selection = "none";
+		none.selection = mrpt_fog::TermSelection::None;
 		presets.push_back({e + " none", e, none, true});
 	}
 	if (!policy.empty())

@@ -30,7 +30,7 @@ const Calibration& cal()
 {
 	static const Calibration c = [] {
 		FitOptions o;
-		o.selection = "none";
+		o.selection = TermSelection::None;
 		o.fallbacks = true;
 		return fitCalibration({run()}, "multipoint", o);
 	}();

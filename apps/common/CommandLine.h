@@ -13,6 +13,7 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 namespace mrpt_fog::app
@@ -38,5 +39,21 @@ class CommandLineOutput : public TCLAP::StdOutput
  * --help/--version, kExitUsage after a usage error). */
 std::optional<int> parseCommandLine(TCLAP::CmdLine& cmd, int argc, char** argv, const std::string& program,
 									const std::string& extra_help = {});
+
+/** A closed-set option parsed once, here, by the library's spelling (`fromString`, e.g.
+ * termSelectionFromString); its error names the option and the choices: "--selection:
+ * selection must be 'auto' or 'none', got 'lasso'". */
+template <class FromString>
+auto parseChoice(TCLAP::ValueArg<std::string>& arg, FromString fromString)
+{
+	try
+	{
+		return fromString(arg.getValue());
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::invalid_argument("--" + arg.getName() + ": " + e.what());
+	}
+}
 
 }  // namespace mrpt_fog::app

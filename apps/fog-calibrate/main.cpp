@@ -280,7 +280,7 @@ void printAxis(const AxisFit& f, double tau_s, bool validated)
 	for (const auto& sk : f.skipped) std::printf("  left out: %s\n", sk.c_str());
 	const auto& m = cal.model;
 	std::printf("fog-calibrate: %zu run(s), preset %s, selection %s, rates %s\n", f.run_count, cal.preset.c_str(),
-				cal.selection.c_str(), cal.rate_estimator.describe().c_str());
+				toString(cal.selection), cal.rate_estimator.describe().c_str());
 	std::printf("  model: %zu terms (%zu thermistors), ridge %g, condition number %.3g, rank %zu, %zu samples\n",
 				m.features.termCount(), m.features.thermistors().size(), m.ridge, m.condition_number,
 				m.numerical_rank, m.samples);
@@ -376,7 +376,7 @@ JsonValue axisJson(const AxisFit& f, double tau_s, bool validated)
 	const CompensationCounters range = validationRange(cal);
 	JsonValue j = JsonValue::object();
 	j["preset"] = cal.preset;
-	j["selection"] = cal.selection;
+	j["selection"] = toString(cal.selection);
 	j["rate_estimator"] = cal.rate_estimator.describe();
 	j["tau_s"] = tau_s;
 	j["terms"] = static_cast<unsigned long>(m.features.termCount());
@@ -559,7 +559,7 @@ int main(int argc, char** argv)
 		requireSafeOutputs(inputs, {{"-o", arg_out.getValue()}, {"--json", arg_json.getValue()}});
 
 		FitOptions opt;
-		opt.selection = arg_sel.getValue();
+		opt.selection = app::parseChoice(arg_sel, termSelectionFromString);
 		opt.ridge = arg_ridge.getValue();
 		opt.rate_estimator.kind = rateEstimatorKindFromString(arg_est.getValue());
 		opt.rate_estimator.window_s = arg_window.getValue();

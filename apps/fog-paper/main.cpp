@@ -161,8 +161,7 @@ int main(int argc, char** argv)
 			"", "selection", "term selection: none (plain least squares on all terms, the paper's way; default) or auto",
 			false, "none", "none|auto", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-paper")) return *rc;
-		if (selection.getValue() != "none" && selection.getValue() != "auto")
-			throw std::invalid_argument("--selection must be none or auto");
+		const TermSelection term_selection = app::parseChoice(selection, termSelectionFromString);
 		if (plots.isSet() && !std::filesystem::is_directory(plots.getValue()))
 			throw std::invalid_argument(plots.getValue() + ": --plots directory does not exist");
 
@@ -188,7 +187,7 @@ int main(int argc, char** argv)
 		}
 
 		FitOptions opt;
-		opt.selection = selection.getValue();
+		opt.selection = term_selection;
 		std::vector<Figures> in(entries().size()), out(entries().size());
 		for (std::size_t i = 0; i < entries().size(); i++)
 		{
@@ -210,7 +209,7 @@ int main(int argc, char** argv)
 		std::printf("run A: %s (%zu samples), run B: %s (%zu samples); fit: orders 5/3, selection %s\n",
 					run_a.isSet() ? run_a.getValue().c_str() : "simulated seed profile", A.size(),
 					run_b.isSet() ? run_b.getValue().c_str() : "simulated profile B", B.size(),
-					selection.getValue().c_str());
+					toString(term_selection));
 		std::printf("%-14s | %-21s | %-21s | %-21s\n", "model", "paper (in-sample)", "ours in-sample (A)",
 					"ours held out (B)");
 		for (std::size_t i = 0; i < entries().size(); i++)
@@ -229,7 +228,7 @@ int main(int argc, char** argv)
 			meta["run_b"] = run_b.isSet() ? run_b.getValue() : std::string("simulated:B");
 			meta["seed"] = static_cast<double>(ss.seed);
 			meta["rate_hz"] = ss.rate_hz;
-			meta["selection"] = selection.getValue();
+			meta["selection"] = toString(term_selection);
 			meta["orders"] = "5/3";
 			meta["tau_s"] = 100.0;
 			for (std::size_t i = 0; i < entries().size(); i++)

@@ -52,7 +52,7 @@ TEST(Calibration, RecoversKnownCoefficientsNoiseFree)
 {
 	const FogSeries s = knownRun(0.0, 1);
 	FitOptions o;
-	o.selection = "none";
+	o.selection = TermSelection::None;
 	const Calibration cal = fitCalibration({s}, "M2:Ti1", o);
 	ASSERT_EQ(cal.model.features.termCount(), 9u);
 	const auto& nT = cal.model.features.normalisation()[0];
@@ -72,7 +72,7 @@ TEST(Calibration, RecoversKnownCoefficientsWithinFiveSigma)
 {
 	const FogSeries s = knownRun(0.003, 2);
 	FitOptions o;
-	o.selection = "none";
+	o.selection = TermSelection::None;
 	const Calibration cal = fitCalibration({s}, "M2:Ti1", o);
 	const auto& nT = cal.model.features.normalisation()[0];
 	const auto& nR = cal.model.features.normalisation()[1];
@@ -152,7 +152,7 @@ TEST(Calibration, MoreThermistorsNotWorseOnUnseenRunBeyondTwoStandardErrors)
 	{
 		e_auto.push_back(residual(fitCalibration({A}, p)));
 		FitOptions none;
-		none.selection = "none";
+		none.selection = TermSelection::None;
 		e_plain.push_back(residual(fitCalibration({A}, p, none)));
 	}
 	// centre each residual over the samples where all are finite
@@ -273,7 +273,7 @@ TEST(Calibration, RefusesDataThatCannotSupportTheModel)
 	FogSeries dup = A;
 	dup.temp_C[1] = dup.temp_C[0];
 	FitOptions none;
-	none.selection = "none";
+	none.selection = TermSelection::None;
 	try
 	{
 		fitCalibration({dup}, "multipoint:Ti1,To1", none);
@@ -291,10 +291,19 @@ TEST(Calibration, RefusesDataThatCannotSupportTheModel)
 	other.thermistors[0].name = "Tx";
 	EXPECT_THROW(fitCalibration({A, other}, "M1:To1"), std::invalid_argument);
 	EXPECT_THROW(fitCalibration({A}, "M9"), std::invalid_argument);
-	FitOptions bad;
-	bad.selection = "lasso";
 	EXPECT_NO_THROW(fitCalibration({A}, "M1"));  // default point (first inner thermistor)
-	EXPECT_THROW(fitCalibration({A}, "M1", bad), std::invalid_argument);
+	// the selection is a closed set, parsed where the text comes in; the error lists the choices
+	EXPECT_EQ(termSelectionFromString("none"), TermSelection::None);
+	EXPECT_STREQ(toString(TermSelection::Auto), "auto");
+	try
+	{
+		termSelectionFromString("lasso");
+		ADD_FAILURE() << "'lasso' parsed";
+	}
+	catch (const std::invalid_argument& e)
+	{
+		EXPECT_STREQ(e.what(), "selection must be 'auto' or 'none', got 'lasso'");
+	}
 	FitOptions zero_blocks;
 	zero_blocks.blocks_per_fold = 0;
 	EXPECT_THROW(fitCalibration({A}, "M1", zero_blocks), std::invalid_argument);
@@ -506,7 +515,7 @@ TEST(Calibration, RegimeFoldsWithinRunsTrainOnTheOtherRuns)
 	// leave-one-run-out RMS 0.32897 deg/h, regime folds within the runs 0.23046, in-sample 0.16799.
 	const std::vector<FogSeries> runs{quadraticBiasRun(0), quadraticBiasRun(20)};
 	FitOptions o;
-	o.selection = "none";
+	o.selection = TermSelection::None;
 	const Calibration by_run = fitCalibration(runs, "terms:T(Ti1)^1", o);
 	o.run_folds = RunFolds::RegimesWithinRuns;
 	const Calibration within = fitCalibration(runs, "terms:T(Ti1)^1", o);

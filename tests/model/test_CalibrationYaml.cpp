@@ -156,6 +156,7 @@ TEST(CalibrationYaml, BadFilesGiveFieldErrors)
 		{"version: 2", "version: 7", "version"},
 		{"window_s: 60", "window_s: abc", "rate_estimator.window_s: not a number"},
 		{"kind: \"causal\"", "kind: \"kalman\"", "rate_estimator"},
+		{"selection: \"auto\"", "selection: \"lasso\"", "axes[0].selection: selection must be 'auto' or 'none', got 'lasso'"},
 		{"    - name: \"T(Ti1)^2\"", "    - name: \"T(Ti1)^9\"", "model.terms"},
 		{"side: \"inner\"", "side: \"middle\"", "sensor.thermistors[0].side"},
 		{"  - axis: \"z\"", "  - axis: \"q\"", "axes[0].axis"},

@@ -306,7 +306,7 @@ const Calibration& calPlain()  // the benchmark's model: 33 terms, 4 thermistors
 {
 	static const Calibration cal = [] {
 		FitOptions o;
-		o.selection = "none";
+		o.selection = TermSelection::None;
 		o.fallbacks = true;
 		return fitCalibration({fogtest::makeCoilRun("A", 51)}, "multipoint", o);
 	}();

@@ -144,7 +144,7 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 			first = false;
 		}
 		FitOptions fo;
-		fo.selection = "none";
+		fo.selection = TermSelection::None;
 		fo.rate_estimator = out.base.rate_estimator;
 		fo.window_for_quantum = false;  // the base's window already is the one for the quantum
 		fo.extrapolation = out.base.extrapolation;

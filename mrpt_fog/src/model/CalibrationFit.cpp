@@ -83,6 +83,16 @@ ExtrapolationPolicy extrapolationPolicyFromString(const std::string& text)
 	throw std::invalid_argument("extrapolation policy '" + text + "': use clamp, linear or polynomial");
 }
 
+constexpr EnumName<TermSelection> kTermSelections[] = {{TermSelection::Auto, "auto"}, {TermSelection::None, "none"}};
+
+const char* toString(TermSelection s) { return nameIn(kTermSelections, s, "auto"); }
+
+TermSelection termSelectionFromString(const std::string& text)
+{
+	if (const auto s = valueIn(kTermSelections, text)) return *s;
+	throw std::invalid_argument("selection must be 'auto' or 'none', got '" + text + "'");
+}
+
 const BiasModel* Calibration::fallbackFor(const std::string& thermistor) const
 {
 	for (const auto& f : fallbacks)
@@ -711,8 +721,6 @@ void checkFitInputs(const std::vector<FogRun>& runs, const FitOptions& opt, cons
 {
 	if (runs.empty()) throw std::invalid_argument("fit: no calibration runs given");
 	opt.rate_estimator.validate();
-	if (opt.selection != "auto" && opt.selection != "none")
-		throw std::invalid_argument("fit: selection must be 'auto' or 'none', got '" + opt.selection + "'");
 	if (!(opt.ridge >= 0)) throw std::invalid_argument("fit: ridge must be >= 0");
 	if (runs.size() == 1 && opt.folds < 2) throw std::invalid_argument("fit: folds must be >= 2");
 	if (opt.blocks_per_fold < 1) throw std::invalid_argument("fit: blocks_per_fold must be >= 1");
@@ -1079,8 +1087,8 @@ FoldAccumulation accumulateFolds(const std::vector<PreparedRun>& prep, const The
 	FoldAccumulation acc{FoldSet{}, FoldSet{}, StreamingQr(fs.termCount(), y_ref, x_ref), {}};
 	FoldSet& folds = acc.folds;
 	folds.held_out.assign(nfolds, StreamingQr(fs.termCount(), y_ref, x_ref));
-	const bool resample = opt.selection == "auto" && opt.stability_resamples > 0;
-	const bool significance = opt.selection == "auto" && opt.step_rule == StepRule::Significant;
+	const bool resample = opt.selection == TermSelection::Auto && opt.stability_resamples > 0;
+	const bool significance = opt.selection == TermSelection::Auto && opt.step_rule == StepRule::Significant;
 	const bool need_units = resample || significance;
 	constexpr std::size_t kStabilityBlocks = 40;
 	auto& units = acc.units;
@@ -1169,7 +1177,7 @@ class TermSearch
 public:
 	TermSearch(const ThermalFeatureSet& fs, const ModelPreset& preset, const FitOptions& opt)
 		: fs_(fs), preset_(preset), opt_(opt), ns_(fs.signals().size()), max_order_(fs.signalOrders()),
-		  automatic_(opt.selection == "auto"), names_(fs.thermistors()),
+		  automatic_(opt.selection == TermSelection::Auto), names_(fs.thermistors()),
 		  nested_(automatic_ && (preset.kind == PresetKind::Points || (preset.kind == PresetKind::Multipoint && !opt.linear_base)))
 	{
 	}
@@ -1358,8 +1366,8 @@ SelectionStability selectionStability(const TermSearch& terms, FoldAccumulation&
 									  const std::vector<double>& x_ref)
 {
 	SelectionStability stability;
-	const bool resample = opt.selection == "auto" && opt.stability_resamples > 0;
-	const bool significance = opt.selection == "auto" && opt.step_rule == StepRule::Significant;
+	const bool resample = opt.selection == TermSelection::Auto && opt.stability_resamples > 0;
+	const bool significance = opt.selection == TermSelection::Auto && opt.step_rule == StepRule::Significant;
 	if (!resample || acc.units.empty()) return stability;
 	const std::size_t nfolds = plan.nfolds;
 	auto& units = acc.units;
@@ -1576,7 +1584,7 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 	if (!(preset.kind == PresetKind::Multipoint || preset.kind == PresetKind::Points))
 		opt.order_search = OrderSearch::PerSignal;
 	const bool candidates_added =
-		opt.selection == "auto" && opt.physics_candidates && (preset.kind == PresetKind::Multipoint || preset.kind == PresetKind::Points);
+		opt.selection == TermSelection::Auto && opt.physics_candidates && (preset.kind == PresetKind::Multipoint || preset.kind == PresetKind::Points);
 	ThermalFeatureSet fs = calibrationFeatures(preset, first, candidates_added);
 
 	// Rate window for the thermistors' reading quantum (FitOptions::window_for_quantum).

@@ -523,7 +523,7 @@ void writeAxis(std::ostringstream& o, const Calibration& cal)
 	const std::string ind = "    ";
 	o << "  - axis: \"" << axisLetter(cal.axis) << "\"\n";
 	o << ind << "preset: " << str(cal.preset) << "\n";
-	o << ind << "selection: " << str(cal.selection) << "\n";
+	o << ind << "selection: " << str(toString(cal.selection)) << "\n";
 	o << ind << "rate_estimator:\n";
 	o << ind << "  kind: " << str(toString(cal.rate_estimator.kind)) << "\n";
 	o << ind << "  window_s: " << num(cal.rate_estimator.window_s) << "\n";
@@ -650,7 +650,15 @@ void readAxisFields(const Reader& rd, const yaml& n, const std::string& p, const
 {
 	const auto at = [](const std::string& base, const std::string& key) { return base.empty() ? key : base + "." + key; };
 	cal.preset = rd.text(n, "preset", p);
-	cal.selection = rd.text(n, "selection", p);
+	const std::string selection = rd.text(n, "selection", p);
+	try
+	{
+		cal.selection = termSelectionFromString(selection);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		rd.fail(at(p, "selection"), e.what());
+	}
 	const yaml est = rd.child(n, "rate_estimator", p);
 	const std::string ep = at(p, "rate_estimator");
 	const std::string kind = rd.text(est, "kind", ep);

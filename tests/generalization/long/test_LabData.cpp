@@ -83,7 +83,7 @@ TEST(LabData, SectorCoilQuantisedThermistors)
 		def.stability_resamples = fixed.stability_resamples = 0;
 		fixed.window_for_quantum = false;
 		const Outcome a = calibrateAndEvaluate(p, def), b = calibrateAndEvaluate(p, fixed);
-		rate_free.selection = "none";
+		rate_free.selection = TermSelection::None;
 		const auto seed = sim::ChamberProfile::preset("seed"), B = sim::ChamberProfile::preset("B");
 		const Calibration cal_rf = fitCalibration({simulateSectorCoil(p, seed, 21)}, "multipoint@3/0", rate_free);
 		const FogSeries eval = simulateSectorCoil(p, B, 22), floor = simulateSectorCoil(p, B, 22, true);

@@ -90,7 +90,7 @@ std::vector<BenchPreset> benchPresets()
 {
 	std::vector<BenchPreset> out;
 	mrpt_fog::FitOptions none;
-	none.selection = "none";
+	none.selection = mrpt_fog::TermSelection::None;
 	mrpt_fog::FitOptions def;
 	def.stability_resamples = 0;  // reports only, never changes the chosen model: skipped for speed
 	out.push_back({"default (multipoint)", "multipoint", def, false});

@@ -21,4 +21,4 @@ PY
 test -s plots/fig5_points.png
 test -s plots/fig2_temperatures.png
 "$APP" --selection best >/dev/null 2>err.txt && exit 1
-grep -q "selection must be none or auto" err.txt
+grep -qF -- "--selection: selection must be 'auto' or 'none', got 'best'" err.txt

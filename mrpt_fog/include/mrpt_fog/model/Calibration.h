@@ -75,6 +75,18 @@ const char* toString(ExtrapolationPolicy p);
 /** Parses the names above; throws std::invalid_argument naming the known ones. */
 ExtrapolationPolicy extrapolationPolicyFromString(const std::string& text);
 
+/** How the fit chooses the terms of the model (a closed set; the file comment's item 5). */
+enum class TermSelection : unsigned char
+{
+	Auto = 0,  //!< "auto": signal groups, orders and the ridge by held-out error
+	None = 1  //!< "none": every preset term, plain least squares with an optional fixed ridge
+};
+/** "auto" / "none" (the spelling in calibration files and on command lines). */
+const char* toString(TermSelection s);
+/** Parses "auto" / "none"; throws std::invalid_argument "selection must be 'auto' or 'none',
+ * got '...'". */
+TermSelection termSelectionFromString(const std::string& text);
+
 /** How a single calibration run is cut into validation folds (several runs: one fold per run). */
 enum class FoldScheme : unsigned char
 {
@@ -138,7 +150,7 @@ struct FitOptions
 	 * (readingQuantum_C) of the preset's thermistors in the runs, recorded in the calibration.
 	 * false: rate_estimator.window_s as given (fog-calibrate --window sets it false). */
 	bool window_for_quantum = true;
-	std::string selection = "auto";  //!< "auto" (groups + ridge by held-out error) or "none"
+	TermSelection selection = TermSelection::Auto;
 	double ridge = 0.0;  //!< fixed ridge for selection "none" (relative, unit-diagonal system)
 	std::size_t folds = 5;  //!< blocked folds when a single run is given (>= 2)
 	/** The single run is cut into folds x blocks_per_fold contiguous blocks, block b held out in
@@ -297,7 +309,7 @@ struct Calibration
 	double latitude_deg = std::numeric_limits<double>::quiet_NaN();
 	EarthRateHandling earth_rate = EarthRateHandling::InBias;
 	std::string preset;  //!< as given to the fit
-	std::string selection;  //!< "auto" or "none"
+	TermSelection selection = TermSelection::Auto;  //!< how the fit chose the terms
 	RateEstimatorSettings rate_estimator;
 	ExtrapolationPolicy extrapolation = ExtrapolationPolicy::Linear;  //!< outside the calibrated range
 	BiasModel model;
