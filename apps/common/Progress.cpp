@@ -1,6 +1,8 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include "Progress.h"
 
+#include <mrpt_fog/common/NumberFormat.h>
+
 #include <unistd.h>
 
 #include <cstdio>
@@ -11,11 +13,9 @@ namespace
 {
 std::string amount(double v)
 {
-	char b[32];
-	if (v >= 1e6) std::snprintf(b, sizeof(b), "%.1f M", v / 1e6);
-	else if (v >= 1e3) std::snprintf(b, sizeof(b), "%.0f k", v / 1e3);
-	else std::snprintf(b, sizeof(b), "%.0f ", v);
-	return b;
+	if (v >= 1e6) return formatValue("%.1f M", v / 1e6);
+	if (v >= 1e3) return formatValue("%.0f k", v / 1e3);
+	return formatValue("%.0f ", v);
 }
 }  // namespace
 
@@ -39,14 +39,8 @@ void Progress::report(std::uint64_t samples, std::uint64_t done, std::uint64_t t
 	if (total > 0 && done <= total)
 	{
 		const double f = static_cast<double>(done) / static_cast<double>(total);
-		char b[64];
-		std::snprintf(b, sizeof(b), ", %.0f %%", 100.0 * f);
-		line += b;
-		if (f > 0.01)
-		{
-			std::snprintf(b, sizeof(b), ", ETA %.0f s", elapsed * (1.0 - f) / f);
-			line += b;
-		}
+		line += formatValue(", %.0f %%", 100.0 * f);
+		if (f > 0.01) line += formatValue(", ETA %.0f s", elapsed * (1.0 - f) / f);
 	}
 	std::fprintf(stderr, tty_ ? "\r%s   " : "%s\n", line.c_str());
 	std::fflush(stderr);

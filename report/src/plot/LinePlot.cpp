@@ -1,4 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/plot/LinePlot.h>
 
 #include <opencv2/imgproc.hpp>
@@ -160,12 +161,7 @@ std::vector<double> niceTicks(double lo, double hi, bool log, int target)
 	return t;
 }
 
-std::string tickLabel(double v)
-{
-	char buf[32];
-	std::snprintf(buf, sizeof(buf), "%.6g", v);
-	return buf;
-}
+std::string tickLabel(double v) { return formatValue("%.6g", v); }
 
 PlotSeries& LinePlot::addSeries(PlotSeries s)
 {

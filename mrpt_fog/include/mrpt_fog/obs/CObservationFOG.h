@@ -17,7 +17,7 @@ namespace mrpt_fog
 /** One sample of a fiber-optic gyroscope (FOG) with thermistors glued around its fiber coil.
  *
  * Stores what a FOG engineer logs: the rate of 1, 2 or 3 sensitive axes in deg/h (raw gyro
- * output, bias included), N thermistor readings in degC (N = 0..255) each with its metadata
+ * output, bias included), N thermistor readings in degC (N = 0..65535) each with its metadata
  * (name, inner/outer side, angle on the coil [deg]) and a validity flag (a dropout is not
  * 0 degC), and optional lab fields (applied table rate [deg/h], axial magnetic field [uT],
  * power state). Accessors in rad/s are provided for navigation code.
@@ -27,7 +27,7 @@ namespace mrpt_fog
  * AIN_double, degC, NaN for a dropout).
  *
  * Serialization is versioned (version 0 is the current format); unknown versions throw.
- * \ingroup mrpt_fog_obs */
+ */
 class CObservationFOG : public mrpt::obs::CObservation
 {
 	DEFINE_SERIALIZABLE(CObservationFOG, mrpt_fog)
