@@ -30,9 +30,9 @@ TEST(RunSegmenter, LabelsTheRichProfileFromTheData)
 	// 30 min are a soak, not a power-on transient (only the turn-on at 530 min is one)
 	EXPECT_EQ(segmentAt(segs, 10 * min).type, SegmentType::Soak);
 	EXPECT_EQ(segmentAt(segs, 70 * min).type, SegmentType::RampDown);
-	EXPECT_EQ(segmentAt(segs, 70 * min).direction, "cooling");
+	EXPECT_EQ(segmentAt(segs, 70 * min).direction, TemperatureDirection::Cooling);
 	EXPECT_EQ(segmentAt(segs, 143 * min).type, SegmentType::Step);
-	EXPECT_EQ(segmentAt(segs, 143 * min).direction, "heating");
+	EXPECT_EQ(segmentAt(segs, 143 * min).direction, TemperatureDirection::Heating);
 	EXPECT_EQ(segmentAt(segs, 205 * min).type, SegmentType::RateTable);
 	EXPECT_EQ(segmentAt(segs, 320 * min).type, SegmentType::RampDown);
 	EXPECT_EQ(segmentAt(segs, 465 * min).type, SegmentType::Field);
@@ -59,7 +59,7 @@ TEST(RunSegmenter, LabelsTheRichProfileFromTheData)
 	EXPECT_EQ(segmentAt(rsegs, 50 * min).type, SegmentType::RampDown);
 	EXPECT_EQ(segmentAt(rsegs, 180 * min).type, SegmentType::Soak);
 	EXPECT_EQ(segmentAt(rsegs, 180 * min).band, "below -20 C");
-	EXPECT_EQ(segmentAt(rsegs, 180 * min).direction, "steady");
+	EXPECT_EQ(segmentAt(rsegs, 180 * min).direction, TemperatureDirection::Steady);
 	// segments tile the run
 	EXPECT_EQ(segs.front().begin, 0u);
 	for (std::size_t i = 1; i < segs.size(); ++i) EXPECT_EQ(segs[i].begin, segs[i - 1].end);

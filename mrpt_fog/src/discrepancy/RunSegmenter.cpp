@@ -1,4 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/common/EnumNames.h>
 #include <mrpt_fog/discrepancy/RunSegmenter.h>
 
 #include <algorithm>
@@ -26,6 +27,15 @@ const char* toString(SegmentType t)
 
 namespace
 {
+constexpr EnumName<TemperatureDirection> kDirections[] = {{TemperatureDirection::Steady, "steady"},
+															 {TemperatureDirection::Heating, "heating"},
+															 {TemperatureDirection::Cooling, "cooling"}};
+}  // namespace
+
+const char* toString(TemperatureDirection d) { return nameIn(kDirections, d, "steady"); }
+
+namespace
+{
 int bandIndex(double T)
 {
 	if (!std::isfinite(T)) return -1;
@@ -45,7 +55,7 @@ std::string bandOf(double T)
 	return "above 40 C";
 }
 
-std::string kindPhrase(SegmentType t, const std::string& dir, bool plural)
+std::string kindPhrase(SegmentType t, TemperatureDirection dir, bool plural)
 {
 	const std::string s = plural ? "s" : "";
 	switch (t)
@@ -53,7 +63,10 @@ std::string kindPhrase(SegmentType t, const std::string& dir, bool plural)
 		case SegmentType::RampUp: return "heating ramp" + s;
 		case SegmentType::RampDown: return "cooling ramp" + s;
 		case SegmentType::Step:
-			return (dir == "cooling" ? "cooling step" : dir == "heating" ? "heating step" : "temperature step") + s;
+			return (dir == TemperatureDirection::Cooling   ? "cooling step"
+					: dir == TemperatureDirection::Heating ? "heating step"
+														   : "temperature step") +
+				   s;
 		case SegmentType::Soak: return "soak" + s;
 		case SegmentType::PowerOn: return "power-on transient" + s;
 		case SegmentType::RateTable: return "rate-table segment" + s;
@@ -168,10 +181,13 @@ std::vector<Segment> segmentRun(const RunSignals& s, const SegmentationOptions& 
 		g.mean_temp_C = m ? sT / m : NAN;
 		g.mean_rate_Cpm = m ? sR / m : 0.0;
 		g.band = m ? bandOf(g.mean_temp_C) : "unknown band";
-		g.direction = std::fabs(g.mean_rate_Cpm) < opt.moving_rate_Cpm ? "steady" : (g.mean_rate_Cpm > 0 ? "heating" : "cooling");
-		if (g.type == SegmentType::RampUp) g.direction = "heating";
-		if (g.type == SegmentType::RampDown) g.direction = "cooling";
-		if (g.type == SegmentType::Step && dir[g.begin] != 0) g.direction = dir[g.begin] > 0 ? "heating" : "cooling";
+		using Dir = TemperatureDirection;
+		g.direction = std::fabs(g.mean_rate_Cpm) < opt.moving_rate_Cpm ? Dir::Steady
+					  : g.mean_rate_Cpm > 0							   ? Dir::Heating
+																	   : Dir::Cooling;
+		if (g.type == SegmentType::RampUp) g.direction = Dir::Heating;
+		if (g.type == SegmentType::RampDown) g.direction = Dir::Cooling;
+		if (g.type == SegmentType::Step && dir[g.begin] != 0) g.direction = dir[g.begin] > 0 ? Dir::Heating : Dir::Cooling;
 	}
 	return merged;
 }

@@ -30,7 +30,7 @@ JsonValue segmentJson(const SegmentGap& s, int rank)
 	JsonValue e = JsonValue::object();
 	if (ranked) e["rank"] = rank;
 	e["type"] = toString(s.segment.type);
-	e["direction"] = s.segment.direction;
+	e["direction"] = toString(s.segment.direction);
 	e["band"] = s.segment.band;
 	if (ranked) e["description"] = s.segment.describe();
 	e["t_start_s"] = s.segment.t_start_s;

@@ -26,6 +26,16 @@ enum class SegmentType
 /** "ramp_up", "ramp_down", "soak", "step", "power_on", "rate_table", "field", "power_off". */
 const char* toString(SegmentType t);
 
+/** Which way the temperature moves over a segment (a closed set). */
+enum class TemperatureDirection : unsigned char
+{
+	Steady,  //!< |mean rate| below SegmentationOptions::moving_rate_Cpm
+	Heating,
+	Cooling
+};
+/** "steady", "heating", "cooling" (the spelling in fog-discrepancy's JSON). */
+const char* toString(TemperatureDirection d);
+
 
 struct Segment
 {
@@ -35,7 +45,7 @@ struct Segment
 	double mean_temp_C = 0;
 	double mean_rate_Cpm = 0;
 	std::string band;  //!< e.g. "below -20 C"
-	std::string direction;  //!< "heating", "cooling" or "steady"
+	TemperatureDirection direction = TemperatureDirection::Steady;
 	// filled by rankSegments
 	double rms_dph = 0;  //!< residual RMS over its usable samples
 	double energy_share = 0;  //!< its share of the residual energy
