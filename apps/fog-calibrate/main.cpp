@@ -68,16 +68,17 @@ HOW THE FIT GUARDS AGAINST OVER-FITTING (--selection)
     temperature history the fit did not see; blocks = interleaved time blocks. points:K also
     searches thermistor subsets.
   Options measured on the generalization bench, not the default (docs/generalization.md,
-  "Session 7"): --order-search common (one temperature order and one rate order for all
-  thermistors, 15 candidates), --selection-bin S (candidates scored on S-second bin means, e.g.
-  the --tau of the stability figure, so the white noise of high sample rates does not decide),
-  --step-rule significant (a step must beat two standard errors of the paired per-block
-  held-out difference instead of lowering the held-out RMS by 0.5 %).
+  "Scoring what the product is judged on"): --order-search common (one temperature order and
+  one rate order for all thermistors, 15 candidates), --selection-bin S (candidates scored on
+  S-second bin means, e.g. the --tau of the stability figure, so the white noise of high sample
+  rates does not decide), --step-rule significant (a step must beat two standard errors of the
+  paired per-block held-out difference instead of lowering the held-out RMS by 0.5 %).
   Several -i runs: by default each run is one fold (leave-one-run-out: a model fitted on the
   other runs alone must predict it); --run-folds regimes cuts each run into its thermal regimes
   and fits every fold on all the rest, the other runs included (docs/generalization.md,
-  "Session 8"). A second run with another temperature history (a sine, other ramp rates) is
-  what pins the rate (Shupe) coefficients that one 1 C/min profile leaves open.
+  "Calibration on more than one run"). A second run with another temperature history (a sine,
+  other ramp rates) is what pins the rate (Shupe) coefficients that one 1 C/min profile leaves
+  open.
   none: every preset term, plain least squares (plus --ridge): the seed's method; with several
     collinear thermistors it fits the calibration run and fails on others.
   The fit refuses (with the reason) too few samples, a temperature span too narrow for the
