@@ -237,14 +237,11 @@ cv::Point2d LinePlot::toPixel(const cv::Rect& panel, double x, double y, bool ri
 	return mapping(panel)(x, y, right_axis);
 }
 
-void LinePlot::draw(cv::Mat& img, const cv::Rect& panel) const
+void LinePlot::drawShades(cv::Mat& img, const Mapping& map) const
 {
-	const Mapping map = mapping(panel);
 	const cv::Rect area = map.area;
-	const cv::Vec2d xl = map.x, yl = map.y, y2l = map.y2;
-	const bool right = hasRightAxis();
-
-	// Shaded intervals, alpha-blended.
+	const cv::Vec2d yl = map.y;
+	// alpha-blended
 	for (const auto& sh : shades_)
 	{
 		const double c0 = map(sh.x0, yl[0]).x, c1 = map(sh.x1, yl[0]).x;
@@ -255,8 +252,12 @@ void LinePlot::draw(cv::Mat& img, const cv::Rect& panel) const
 		cv::Mat fill(roi.size(), roi.type(), sh.colour);
 		cv::addWeighted(roi, 0.75, fill, 0.25, 0.0, roi);
 	}
+}
 
-	// Grid and ticks.
+void LinePlot::drawGridAndTicks(cv::Mat& img, const Mapping& map) const
+{
+	const cv::Rect area = map.area;
+	const cv::Vec2d xl = map.x, yl = map.y, y2l = map.y2;
 	int base = 0;
 	for (double t : niceTicks(xl[0], xl[1], x_axis.log))
 	{
@@ -275,7 +276,7 @@ void LinePlot::draw(cv::Mat& img, const cv::Rect& panel) const
 		cv::putText(img, s, {area.x - 6 - sz.width, r + sz.height / 2}, kFont, kTickFontScale, kTextColour, 1,
 					cv::LINE_AA);
 	}
-	if (right)
+	if (hasRightAxis())
 		for (double t : niceTicks(y2l[0], y2l[1], y2_axis.log))
 		{
 			const int r = static_cast<int>(std::lround(map(xl[0], t, true).y));
@@ -285,8 +286,12 @@ void LinePlot::draw(cv::Mat& img, const cv::Rect& panel) const
 			cv::putText(img, tickLabel(t), {x + 6, r + sz.height / 2}, kFont, kTickFontScale, kTextColour, 1,
 						cv::LINE_AA);
 		}
+}
 
-	// Series (a long series is reduced to the min/max envelope of each pixel column).
+void LinePlot::drawSeries(cv::Mat& img, const Mapping& map) const
+{
+	const cv::Rect area = map.area;
+	// a long series is reduced to the min/max envelope of each pixel column
 	for (const auto& s : series_)
 	{
 		const bool ylog = s.right_axis ? y2_axis.log : y_axis.log;
@@ -350,17 +355,25 @@ void LinePlot::draw(cv::Mat& img, const cv::Rect& panel) const
 		}
 		flush();
 	}
+}
 
-	// Frame, labels, title.
+void LinePlot::drawFrameAndLabels(cv::Mat& img, const Mapping& map, const cv::Rect& panel) const
+{
+	const cv::Rect area = map.area;
 	cv::rectangle(img, area, kAxisColour, 1);
 	putTextCentred(img, x_axis.label, {area.x + area.width / 2, area.y + area.height + 32}, kLabelFontScale);
 	putTextRotated(img, y_axis.label, {panel.x + 12, area.y + area.height / 2}, kLabelFontScale);
-	if (right)
+	if (hasRightAxis())
 		putTextRotated(img, y2_axis.label, {area.x + area.width + kMarginRightY2 - 14, area.y + area.height / 2},
 					   kLabelFontScale);
 	if (!title.empty()) putTextCentred(img, title, {area.x + area.width / 2, panel.y + kMarginTop / 2}, kTitleFontScale);
+}
 
-	// Legend (top right of the data area): series and labelled shades.
+void LinePlot::drawLegend(cv::Mat& img, const Mapping& map) const
+{
+	const cv::Rect area = map.area;
+	int base = 0;
+	// top right of the data area: series and labelled shades
 	std::vector<std::pair<std::string, std::pair<cv::Scalar, int>>> entries;  // text, (colour, kind)
 	for (const auto& s : series_)
 		if (!s.label.empty()) entries.push_back({s.label + (s.right_axis ? " (right)" : ""), {s.colour, s.dashed ? 1 : 0}});
@@ -390,6 +403,16 @@ void LinePlot::draw(cv::Mat& img, const cv::Rect& panel) const
 			cv::line(img, {box.x + 6, y}, {box.x + 28, y}, colour, 2);
 		cv::putText(img, entries[i].first, {box.x + 33, y + 4}, kFont, kTickFontScale, kTextColour, 1, cv::LINE_AA);
 	}
+}
+
+void LinePlot::draw(cv::Mat& img, const cv::Rect& panel) const
+{
+	const Mapping map = mapping(panel);
+	drawShades(img, map);
+	drawGridAndTicks(img, map);
+	drawSeries(img, map);
+	drawFrameAndLabels(img, map, panel);
+	drawLegend(img, map);
 }
 
 }  // namespace mrpt_fog

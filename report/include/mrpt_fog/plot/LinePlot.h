@@ -89,6 +89,12 @@ class LinePlot
 		cv::Point2d operator()(double x, double y, bool right_axis = false) const;
 	};
 	Mapping mapping(const cv::Rect& panel) const;
+	// The stages of draw(), in the order it runs them.
+	void drawShades(cv::Mat& img, const Mapping& map) const;
+	void drawGridAndTicks(cv::Mat& img, const Mapping& map) const;
+	void drawSeries(cv::Mat& img, const Mapping& map) const;
+	void drawFrameAndLabels(cv::Mat& img, const Mapping& map, const cv::Rect& panel) const;
+	void drawLegend(cv::Mat& img, const Mapping& map) const;
 
 	struct Shade
 	{
