@@ -353,6 +353,11 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 			auto fitOnRun1 = [&](const Eigen::MatrixXd& X1) { return coefficientsOnRows(X1, sig1, sel.fit_rows); };
 			const double nu = static_cast<double>(std::max<std::size_t>(sig2->usableCount(), 1));
 			const double rmin2 = opt.min_held_out_effect_ratio * opt.min_held_out_effect_ratio;
+			// rank in the forward selection (named is "strongest first"): an effect moved into
+			// another's held-out alias group lends the group its rank, so that a group whose
+			// member was named first is not listed after effects named later, given that member
+			std::map<std::string, std::size_t> rankOf;
+			for (std::size_t i = 0; i < sel.named.size(); ++i) rankOf[sel.named[i].id] = i;
 			while (!sel.model.effects.empty())
 			{
 				const Eigen::VectorXd coefWith = fitOnRun1(sel.model.design(base1, sig1));
@@ -414,6 +419,7 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 								if (t.id == worstId) theta = t.theta;
 							ne.alias_theta.push_back(theta);
 							ne.alias_sign.push_back(0);
+							rankOf[ne.id] = std::min(rankOf[ne.id], rankOf[worstId]);
 						}
 					char buf[300];
 					std::snprintf(buf, sizeof buf,
@@ -436,6 +442,9 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 										sel.not_confirmed.end());
 				rep.rejected.push_back({worstId, worstWhy});
 			}
+			std::stable_sort(sel.named.begin(), sel.named.end(), [&](const NamedEffect& a, const NamedEffect& b) {
+				return rankOf.at(a.id) < rankOf.at(b.id);
+			});
 		}
 	}
 	// the compensator's rate estimate as a gap of its own: the base with and without the
