@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <gtest/gtest.h>
+#include <mrpt_fog/discrepancy/CandidateEffect.h>
 #include <mrpt_fog/discrepancy/EffectSelector.h>
 #include "support/SyntheticChamberRun.h"
 
@@ -141,4 +142,23 @@ TEST(EffectSelector, RejectsTooFewSamples)
 	EXPECT_THROW(resolveBaseModel("multipoint", r.series), std::invalid_argument);
 	const auto base = buildBaseDesign(resolveBaseModel("static:3", r.series), r.series, sig);
 	EXPECT_THROW(selectMissingEffects(sig, base), std::invalid_argument);
+}
+
+// The hysteresis width is refined continuously after the 1-2-5 grid (golden section on the
+// whitened profile, between the best grid value's neighbours): a play of half-width 3.2 C (off
+// the grid: 2 and 5 C are its neighbours) added to a clean synthetic run is named with a width
+// within 5 % of 3.2 C, not 2 or 5. The play column itself is checked against a closed form in
+// test_CandidateEffect.
+TEST(EffectSelector, HysteresisWidthOffTheGridIsRefined)
+{
+	const auto r = makeSyntheticChamberRun(20, 5);
+	auto sig = computeRunSignals(r.series);
+	const auto base = buildBaseDesign(resolveBaseModel("static:3", r.series), r.series, sig);
+	const auto play = hysteresisPlay(sig, 3.2);
+	for (std::size_t k = 0; k < sig.size(); ++k) sig.bias_dph[k] += 4.0 * r.noise_rms_dph * play[k];
+	const auto s = selectMissingEffects(sig, base);
+	ASSERT_FALSE(s.named.empty());
+	EXPECT_EQ(s.named.front().id, "hysteresis");
+	EXPECT_LT(s.named.front().theta, 0.0);  // the play shape
+	EXPECT_NEAR(-s.named.front().theta, 3.2, 0.05 * 3.2);
 }

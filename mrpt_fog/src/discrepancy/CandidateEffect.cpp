@@ -97,9 +97,9 @@ std::string describeHysteresisTheta(double theta)
 	const auto shape = hysteresisShapeOf(theta);
 	char buf[96];
 	if (shape.kind == HysteresisShape::Kind::ExponentialBranch)
-		std::snprintf(buf, sizeof buf, "exponential branch, span %g C", shape.width_C);
+		std::snprintf(buf, sizeof buf, "exponential branch, span %.3g C", shape.width_C);
 	else
-		std::snprintf(buf, sizeof buf, "play operator, half-width %g C", shape.width_C);
+		std::snprintf(buf, sizeof buf, "play operator, half-width %.3g C", shape.width_C);
 	return buf;
 }
 
@@ -397,6 +397,7 @@ std::vector<CandidateEffect> handWrittenCandidates()
 					hysteresisUntestableReason),
 		"width_C", hysteresisThetaGrid()));
 	lib.back().describe_theta = describeHysteresisTheta;
+	lib.back().theta_continuous = true;  // a width, not a choice among shapes
 	lib.push_back(withTheta(
 		candidateOf(Effect::Warmup,
 					"turn-on warm-up: a bias decaying as exp(-(t - t_on)/tau) after each power-on (a run that starts "

@@ -369,16 +369,21 @@ void testCandidate(CandState& cs, const CandidateContext& ctx, const Mat& X, con
 				   const std::vector<std::size_t>& rows, const std::vector<std::size_t>& common,
 				   const std::vector<int>& block, const SelectionOptions& opt, double nEff, const Gls& g0)
 {
-	(void)rows;
 	// nonlinear parameter: profile search on the residual sum of squares whitened by the
 	// model's noise model (the GLS test below is Sidak-corrected for the grid size)
 	double bestRss = std::numeric_limits<double>::infinity();
 	const Mat WX = whiten(X, g0.ar, common, &block);
 	const Vec Wy = whiten(y, g0.ar, common, &block).col(0);
+	auto whitenedRss = [&](double th, Mat& C) {
+		C = cs.eff->build(ctx, th);
+		return leastSquares(hcat(WX, whiten(C, g0.ar, common, &block)), Wy).rss;
+	};
+	std::vector<double> gridRss;
 	for (double th : cs.thetas)
 	{
-		const Mat C = cs.eff->build(ctx, th);
-		const double rss = leastSquares(hcat(WX, whiten(C, g0.ar, common, &block)), Wy).rss;
+		Mat C;
+		const double rss = whitenedRss(th, C);
+		gridRss.push_back(rss);
 		if (rss < bestRss)
 		{
 			bestRss = rss;
@@ -386,6 +391,56 @@ void testCandidate(CandState& cs, const CandidateContext& ctx, const Mat& X, con
 			cs.C = C;
 		}
 	}
+	if (cs.eff->theta_continuous && cs.thetas.size() > 1)
+		for (const double sgn : {1.0, -1.0})
+		{
+			// each sign is one shape family: from its best grid value, golden section on
+			// log |theta| between that value's neighbours of the same sign (a 1-2-5 grid: a
+			// bracket spans a factor 4-5), to 2 % in |theta|
+			std::vector<std::pair<double, double>> same;  // |theta|, whitened RSS
+			for (std::size_t i = 0; i < cs.thetas.size(); ++i)
+				if ((cs.thetas[i] > 0) == (sgn > 0)) same.emplace_back(std::fabs(cs.thetas[i]), gridRss[i]);
+			if (same.size() < 2) continue;
+			std::sort(same.begin(), same.end());
+			std::size_t at = 0;
+			for (std::size_t i = 1; i < same.size(); ++i)
+				if (same[i].second < same[at].second) at = i;
+			double a = std::log(same[at > 0 ? at - 1 : at].first);
+			double b = std::log(same[at + 1 < same.size() ? at + 1 : at].first);
+			const double r = 0.5 * (std::sqrt(5.0) - 1.0);
+			Mat C1, C2;
+			double u1 = b - r * (b - a), u2 = a + r * (b - a);
+			double f1 = whitenedRss(sgn * std::exp(u1), C1), f2 = whitenedRss(sgn * std::exp(u2), C2);
+			while (b - a > 0.02)
+			{
+				if (f1 < f2)
+				{
+					b = u2;
+					u2 = u1;
+					f2 = f1;
+					C2 = C1;
+					u1 = b - r * (b - a);
+					f1 = whitenedRss(sgn * std::exp(u1), C1);
+				}
+				else
+				{
+					a = u1;
+					u1 = u2;
+					f1 = f2;
+					C1 = C2;
+					u2 = a + r * (b - a);
+					f2 = whitenedRss(sgn * std::exp(u2), C2);
+				}
+			}
+			const bool first = f1 < f2;
+			const double f = first ? f1 : f2;
+			if (f < bestRss && spanResidual(X, first ? C1 : C2, rows) >= opt.span_tolerance)
+			{
+				bestRss = f;
+				cs.theta = sgn * std::exp(first ? u1 : u2);
+				cs.C = first ? C1 : C2;
+			}
+		}
 	const Gls g1 = glsFit(hcat(X, cs.C), y, common, block, opt);
 	const double bestChi2 = waldChi2(X, g1, y, common, block);
 	auto& t = cs.test;

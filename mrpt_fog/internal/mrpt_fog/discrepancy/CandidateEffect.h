@@ -54,6 +54,10 @@ struct CandidateEffect
 	ResidualChannel channel = ResidualChannel::Bias;
 	std::string theta_name;  //!< nonlinear parameter name ("" = none)
 	std::vector<double> theta_grid;  //!< profile-search grid ({0} when none)
+	/** The parameter is continuous: after the grid, the profile search refines it between the
+	 * best grid value's neighbours of the same sign (golden section on log |theta|). The grid
+	 * values must then be of one or two signs, each sign one shape family. */
+	bool theta_continuous = false;
 	/** Columns (n x q) for a nonlinear parameter value. */
 	std::function<Eigen::MatrixXd(const CandidateContext&, double theta)> build;
 	/** Reported coefficient = scale * fitted coefficient of the first column. Multi-column
