@@ -2,10 +2,10 @@
 #pragma once
 
 /** \file GyroOff.h
- * Stretches of a drive with the gyro off (the FOG's `power` column 0; issue 13 item 1).
+ * Stretches of a drive with the gyro off (the FOG's `power` column 0).
  *
  * While the gyro is off there is no rate to integrate: what the vehicle turned then cannot be
- * known from the gyro (a log may hold an empty rate there, or, as fog-sim wrote before session 8,
+ * known from the gyro (a log may hold an empty rate there, or, as fog-sim's drive wrote before commit 20c65b6,
  * a 0 deg/h that is no measurement). fog-drift therefore navigates each powered span as a
  * drive of its own: at its start (the first powered sample, i.e. the turn-on) heading and
  * position are re-aligned from the truth, as at the start of the drive, and the error
