@@ -13,7 +13,7 @@
  * end of session 7 (all: 1..24).
  * --sector-coil N adds sector-coil devices 1..N (the independent generator). --cases prints every
  * device x profile x preset line; --extrapolation overrides every preset's policy; --preset
- * keeps the presets whose label contains TEXT (--exclude TEXT drops them); --extra adds a fixed preset
+ * keeps the presets whose label contains TEXT (--exclude TEXT drops them; may be repeated); --extra adds a fixed preset
  * (selection none), e.g. --extra M2@5/1. Not a Google Benchmark: a figure-of-merit table.
  *
  * Diagnostics (what the held-out error above the noise floor is made of; fog-sim devices):
@@ -51,7 +51,8 @@ int main(int argc, char** argv)
 	int sector_coil = 8;
 	double cap = 1e9;
 	bool cases = false;
-	std::string policy, only, excluded;
+	std::string policy, only;
+	std::vector<std::string> excluded;
 	std::vector<std::string> extra;
 	mrpt_fog::sim::EffectSet effects = mrpt_fog::sim::defaultEffects();
 	bool ideal = false, oracle = false;
@@ -71,7 +72,7 @@ int main(int argc, char** argv)
 		else if (a == "--cases") cases = true;
 		else if (a == "--extrapolation" && i + 1 < argc) policy = argv[++i];
 		else if (a == "--preset" && i + 1 < argc) only = argv[++i];
-		else if (a == "--exclude" && i + 1 < argc) excluded = argv[++i];
+		else if (a == "--exclude" && i + 1 < argc) excluded.push_back(argv[++i]);
 		else if (a == "--extra" && i + 1 < argc) extra.push_back(argv[++i]);
 		else if (a == "--effects" && i + 1 < argc)
 		{
@@ -146,7 +147,11 @@ int main(int argc, char** argv)
 	{
 		std::vector<fogtest::BenchPreset> keep;
 		for (const auto& p : presets)
-			if (p.label.find(excluded) == std::string::npos) keep.push_back(p);
+		{
+			bool drop = false;
+			for (const auto& x : excluded) drop |= p.label.find(x) != std::string::npos;
+			if (!drop) keep.push_back(p);
+		}
 		presets = keep;
 	}
 	if (!only.empty())

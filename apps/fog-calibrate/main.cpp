@@ -73,6 +73,13 @@ HOW THE FIT GUARDS AGAINST OVER-FITTING (--selection)
   S-second bin means, e.g. the --tau of the stability figure, so the white noise of high sample
   rates does not decide), --step-rule significant (a step must beat two standard errors of the
   paired per-block held-out difference instead of lowering the held-out RMS by 0.5 %).
+  One thermistor (most commercial FOGs expose one; --lags, default physics): the linear base
+  also holds dTlag/dt(a,tau)^1 for tau = 100, 400, 1600 s, the rate of the reading through a
+  first-order lag (the winding's radial diffusion to the housing's time constant): what the
+  coil's interior sees of a boundary sensor, whose rates the Shupe error follows. The lag is
+  carried sample to sample (warm start: the first reading); such a calibration is written as
+  file version 3. --lags none: without them; --lags S,S,..: other time constants [s]. With two
+  or more thermistors nothing changes (the sensors see the radial spread themselves).
   Several -i runs: by default each run is one fold (leave-one-run-out: a model fitted on the
   other runs alone must predict it); --run-folds regimes cuts each run into its thermal regimes
   and fits every fold on all the rest, the other runs included (docs/generalization.md,
@@ -474,6 +481,31 @@ JsonValue axisJson(const AxisFit& f, double tau_s, bool validated)
 }
 }  // namespace
 
+namespace
+{
+/** --lags: none, physics (kPhysicsLagTaus_s) or a comma-separated list of time constants [s]. */
+std::vector<double> parseLagTaus(const std::string& text)
+{
+	if (text == "none") return {};
+	if (text == "physics") return kPhysicsLagTaus_s;
+	std::vector<double> taus;
+	std::size_t i = 0;
+	while (i <= text.size())
+	{
+		const std::size_t j = std::min(text.find(',', i), text.size());
+		const std::string item = text.substr(i, j - i);
+		char* end = nullptr;
+		const double t = std::strtod(item.c_str(), &end);
+		if (item.empty() || *end != '\0' || !std::isfinite(t) || !(t > 0) || t > 1e7)
+			throw std::invalid_argument("--lags must be none, physics or time constants in seconds (0, 1e7] separated by commas, got '" +
+										text + "'");
+		taus.push_back(t);
+		i = j + 1;
+	}
+	return taus;
+}
+}  // namespace
+
 int main(int argc, char** argv)
 {
 	app::returnLargeBlocksToSystem();
@@ -515,6 +547,10 @@ int main(int argc, char** argv)
 												  "fold trained on the other runs too (regimes)",
 												  false, FitOptions{}.run_folds == RunFolds::RegimesWithinRuns ? "regimes" : "runs",
 												  "runs|regimes", cmd);
+		TCLAP::ValueArg<std::string> arg_lags("", "lags",
+											  "multipoint / points:K with one thermistor: lag-rate candidates dTlag/dt(a,tau) "
+											  "(none, physics = 100,400,1600 s, or a list of seconds S,S,..)",
+											  false, FitOptions{}.lag_taus_s.empty() ? "none" : "physics", "none|physics|S,..", cmd);
 		TCLAP::ValueArg<unsigned> arg_folds("", "folds", "Cross-validation folds for a single run", false, 5, "K", cmd);
 		TCLAP::ValueArg<double> arg_tau("", "tau", "Averaging time of the stability figures [s]", false, 100.0, "S", cmd);
 		TCLAP::SwitchArg arg_nofb("", "no-fallbacks", "Do not fit per-thermistor fallback models", cmd);
@@ -580,6 +616,7 @@ int main(int argc, char** argv)
 		if (arg_runfolds.getValue() != "runs" && arg_runfolds.getValue() != "regimes")
 			throw std::invalid_argument("--run-folds must be runs or regimes, got '" + arg_runfolds.getValue() + "'");
 		opt.run_folds = arg_runfolds.getValue() == "regimes" ? RunFolds::RegimesWithinRuns : RunFolds::Runs;
+		opt.lag_taus_s = parseLagTaus(arg_lags.getValue());
 		opt.tau_s = arg_tau.getValue();
 		opt.fallbacks = !arg_nofb.getValue();
 		opt.extrapolation = extrapolationPolicyFromString(arg_extra.getValue());

@@ -61,3 +61,33 @@ TEST(ThermalFeatureSet, NormalisedFeaturesAndClamping)
 	EXPECT_EQ(fs.features(v.data(), f.data(), false), 0);  // no clamp: extrapolates
 	EXPECT_DOUBLE_EQ(f[1], 1.4);
 }
+
+TEST(ThermalFeatureSet, LagTermsParseNameAndShareTheirLags)
+{
+	for (const std::string n : {"dTlag/dt(Ti1,400)^1", "dTlag/dt(To2,12.5)^3"}) EXPECT_EQ(ThermalTerm::parse(n).name(), n);
+	const ThermalTerm t = ThermalTerm::parse(" dTlag/dt(Ti1,1600) ");
+	EXPECT_EQ(t.signal.kind, SignalKind::LagRate);
+	EXPECT_EQ(t.signal.tau_s, 1600.0);
+	EXPECT_EQ(t.power, 1);
+	EXPECT_STREQ(t.signal.unit(), "degC/s");
+	EXPECT_FALSE(t.signal.isRate());  // not a windowed rate: exists from the first reading
+	for (const std::string n : {"dTlag/dt(Ti1)", "dTlag/dt(Ti1,0)", "dTlag/dt(Ti1,-5)", "dTlag/dt(Ti1,x)",
+								"dTlag/dt(Ti1,)", "dTlag/dt(Ti1,400)^4", "dTlag/dt(Ti 1,400)", "dTlag/dt(Ti1,inf)",
+								"dTlag/dt(Ti1,nan)", "dTlag/dt(Ti1,1e300)"})
+		EXPECT_THROW(ThermalTerm::parse(n), std::invalid_argument) << n;
+	// the same signal at two time constants is two signals; powers of one share its lag
+	const auto fs = ThermalFeatureSet::fromNames(
+		{"dTlag/dt(To1,100)^1", "T(Ti1)^1", "dTlag/dt(To1,100)^2", "dTlag/dt(Ti1,400)^1", "dTlag/dt(To1,400)^1"});
+	EXPECT_EQ(fs.thermistors(), (std::vector<std::string>{"To1", "Ti1"}));
+	ASSERT_EQ(fs.lags().size(), 3u);
+	EXPECT_EQ(fs.lags()[0], (LagChannel{0, 100.0}));
+	EXPECT_EQ(fs.lags()[1], (LagChannel{1, 400.0}));
+	EXPECT_EQ(fs.lags()[2], (LagChannel{0, 400.0}));
+	const double temp[2] = {5.0, 7.0}, rate[2] = {0.1, 0.2}, lag[3] = {0.01, 0.02, 0.03};
+	std::vector<double> v(fs.signals().size());
+	fs.signalValues(temp, rate, lag, v.data());
+	EXPECT_EQ(v, (std::vector<double>{0.01, 7.0, 0.02, 0.03}));
+	EXPECT_THROW(fs.signalValues(temp, rate, v.data()), std::invalid_argument);  // lag values not given
+	EXPECT_FALSE(fs.without("To1").references("To1"));
+	EXPECT_EQ(fs.without("To1").lags().size(), 1u);
+}

@@ -118,6 +118,7 @@ struct PreparedRun
 	int axis = 0;
 	bool exclude_table = false;
 	RateEstimatorSettings est;
+	std::vector<LagChannel> lags;  // the feature set's lags (ThermalFeatureSet::lags), by thermistor index
 	std::vector<std::vector<double>> rate;  // [thermistor][sample] degC/s (non-causal estimator only)
 	IntervalMask ok;  // usable sample (intervals: a few words for a clean run of any length)
 	std::size_t usable = 0;
@@ -150,16 +151,18 @@ class RowCursor
 		  order2_(causal_ && r.est.poly_order == 2),
 		  tracker_(r.col.size(), r.est.window_s),
 		  half_(r.col.size(), 0.5 * r.est.window_s),
-		  x_(r.col.size())
+		  lags_(r.lags),
+		  x_(r.col.size()),
+		  lag_rate_(r.lags.size())
 	{
 	}
-	/** Temperatures and rates of sample k (k >= the previous k). */
+	/** Temperatures and rates of sample k (k >= the previous k); lagRates() then holds its lag rates. */
 	void row(const FogSeries& c, std::size_t k0, std::size_t k, double* temp, double* rate)
 	{
 		const std::size_t nt = r_.col.size();
+		pushTo(c, k0, k + 1);
 		if (causal_)
 		{
-			pushTo(c, k0, k + 1);
 			// order 2 (delay-compensated): the same two trackers and formula as the compensator
 			for (std::size_t i = 0; i < nt; i++)
 				rate[i] = order2_ ? CausalRateTracker::extrapolatedRate(tracker_, half_, i, c.time_s[k - k0]) : tracker_.rate(i);
@@ -167,11 +170,12 @@ class RowCursor
 		else
 			for (std::size_t i = 0; i < nt; i++) rate[i] = r_.rate[i][k];
 		for (std::size_t i = 0; i < nt; i++) temp[i] = c.temp_C[r_.col[i]][k - k0];
+		for (std::size_t i = 0; i < lag_rate_.size(); i++) lag_rate_[i] = lags_.rate_C_per_s(i);
 	}
-	void endChunk(const FogSeries& c, std::size_t k0)
-	{
-		if (causal_) pushTo(c, k0, k0 + c.size());
-	}
+	/** The lag rates of the last row() [degC/s], in PreparedRun::lags order. */
+	const double* lagRates() const { return lag_rate_.data(); }
+	std::size_t lagCount() const { return lag_rate_.size(); }
+	void endChunk(const FogSeries& c, std::size_t k0) { pushTo(c, k0, k0 + c.size()); }
 	/** After row(): some thermistor's rate window covers less than half its length (the
 	 * compensator's rule for using the rate-free start-up model). */
 	bool shortSpan() const
@@ -186,18 +190,28 @@ class RowCursor
 	void pushTo(const FogSeries& c, std::size_t k0, std::size_t end)
 	{
 		const std::size_t nt = r_.col.size();
+		if (!causal_ && lags_.size() == 0)
+		{
+			next_ = std::max(next_, end);
+			return;
+		}
 		for (; next_ < end; next_++)
 		{
 			const std::size_t j = next_ - k0;
 			for (std::size_t i = 0; i < nt; i++) x_[i] = c.temp_C[r_.col[i]][j];
-			tracker_.push(c.time_s[j], x_.data());
-			if (order2_) half_.push(c.time_s[j], x_.data());
+			if (causal_)
+			{
+				tracker_.push(c.time_s[j], x_.data());
+				if (order2_) half_.push(c.time_s[j], x_.data());
+			}
+			if (lags_.size()) lags_.push(c.time_s[j], x_.data());
 		}
 	}
 	const PreparedRun& r_;
 	bool causal_, order2_;
 	CausalRateTracker tracker_, half_;
-	std::vector<double> x_;
+	LagFilterBank lags_;
+	std::vector<double> x_, lag_rate_;
 	std::size_t next_ = 0;
 };
 
@@ -223,6 +237,7 @@ PreparedRun prepare(const FogRun& s, const ThermalFeatureSet& fs, const RateEsti
 	// A table sample is not a bias sample (nor in the raw figures) when excluded.
 	r.exclude_table = table == TableSamples::Exclude;
 	r.est = est;
+	r.lags = fs.lags();
 	if (est.kind != RateEstimatorKind::Causal)
 	{
 		// The centred estimator needs whole columns (studies only: memory grows with the run).
@@ -256,7 +271,9 @@ void rowSignals(RowCursor& cur, const ThermalFeatureSet& fs, const FogSeries& c,
 				std::vector<double>& temp, std::vector<double>& rate, std::vector<double>& values)
 {
 	cur.row(c, k0, k0 + j, temp.data(), rate.data());
-	fs.signalValues(temp.data(), rate.data(), values.data());
+	// the feature set's lags are those the run was prepared with (only differences leave it after)
+	if (fs.lags().size() != cur.lagCount()) throw std::logic_error("fit: feature set and prepared run disagree on the lags");
+	fs.signalValues(temp.data(), rate.data(), cur.lagRates(), values.data());
 }
 
 /** Columns (sorted, constant first) of the terms with power <= order[signal]. */
@@ -424,7 +441,7 @@ std::vector<Choice> selectForward(FoldSet& folds, const ThermalFeatureSet& fs, c
 		int max_t = 0, max_r = 0;
 		for (std::size_t g = 0; g < ns; g++)
 		{
-			if (!allowed[g] || fs.signals()[g].isDifference()) continue;
+			if (!allowed[g] || fs.signals()[g].isDifference() || fs.signals()[g].isLag()) continue;
 			(fs.signals()[g].isRate() ? max_r : max_t) = std::max(fs.signals()[g].isRate() ? max_r : max_t, max_order[g]);
 		}
 		std::vector<Choice> all;
@@ -433,7 +450,7 @@ std::vector<Choice> selectForward(FoldSet& folds, const ThermalFeatureSet& fs, c
 			{
 				std::vector<int> order(ns, 0);
 				for (std::size_t g = 0; g < ns; g++)
-					if (allowed[g] && !fs.signals()[g].isDifference())
+					if (allowed[g] && !fs.signals()[g].isDifference() && !fs.signals()[g].isLag())
 						order[g] = std::min(max_order[g], fs.signals()[g].isRate() ? kr : kt);
 				all.push_back(scoreOrders(folds, fs, order, kRidgeGrid));
 			}
@@ -442,7 +459,9 @@ std::vector<Choice> selectForward(FoldSet& folds, const ThermalFeatureSet& fs, c
 	std::vector<int> start(ns, 0);
 	if (linear_base)  // every allowed thermistor's T and dT/dt at order 1 (Shupe is linear in the rates)
 		for (std::size_t g = 0; g < ns; g++)
-			if (allowed[g] && !fs.signals()[g].isDifference() && max_order[g] >= 1) start[g] = 1;
+			if (allowed[g] && !fs.signals()[g].isDifference() && (!fs.signals()[g].isLag() || opt.lag_in_base) &&
+				max_order[g] >= 1)
+				start[g] = 1;
 	std::vector<Choice> path{scoreOrders(folds, fs, start, linear_base ? kRidgeGrid : std::vector<double>{0.0})};
 	while (true)
 	{
@@ -747,11 +766,18 @@ void checkFitInputs(const std::vector<FogRun>& runs, const FitOptions& opt, cons
 /** The preset's feature set, with the physics candidates when `candidates_added`: for every
  * inner thermistor of the preset, the difference to the outer one at the same angle (and its
  * rate when the preset reads rates). */
-ThermalFeatureSet calibrationFeatures(const ModelPreset& preset, const FogSeries& first, bool candidates_added)
+ThermalFeatureSet calibrationFeatures(const ModelPreset& preset, const FogSeries& first, bool candidates_added,
+									   const std::vector<double>& lag_taus_s, std::size_t lag_max_thermistors)
 {
 	ThermalFeatureSet fs = presetFeatures(preset);
-	if (!candidates_added) return fs;
+	const bool lags = !lag_taus_s.empty() && (preset.kind == PresetKind::Multipoint || preset.kind == PresetKind::Points) &&
+					  fs.thermistors().size() <= lag_max_thermistors;
+	if (!candidates_added && !lags) return fs;
 	std::vector<ThermalTerm> terms(fs.terms().begin() + 1, fs.terms().end());
+	if (lags)  // the lag-rate candidates of every thermistor of the preset (FitOptions::lag_taus_s)
+		for (const auto& name : fs.thermistors())
+			for (const double tau : lag_taus_s) terms.push_back(ThermalTerm::lagRate(name, tau, 1));
+	if (!candidates_added) return ThermalFeatureSet(terms);
 	for (const auto& in : first.thermistors)
 	{
 		if (in.side != CoilSide::Inner ||
@@ -1491,6 +1517,7 @@ void addStartupModel(Calibration& cal, FoldAccumulation& acc, const ThermalFeatu
 				order[s] = 0;
 				reads_rates = true;
 			}
+			if (kind == SignalKind::LagRate) order[s] = 0;  // rate-free: T and T differences only (docs/model.md)
 		}
 		if (reads_rates)
 		{
@@ -1585,7 +1612,13 @@ Calibration fitCalibrationRuns(const std::vector<FogRun>& runs, const std::strin
 		opt.order_search = OrderSearch::PerSignal;
 	const bool candidates_added =
 		opt.selection == TermSelection::Auto && opt.physics_candidates && (preset.kind == PresetKind::Multipoint || preset.kind == PresetKind::Points);
-	ThermalFeatureSet fs = calibrationFeatures(preset, first, candidates_added);
+	for (const double tau : opt.lag_taus_s)
+		if (!(std::isfinite(tau) && tau > 0 && tau <= 1e7))
+			throw std::invalid_argument("fit: lag time constant " + std::to_string(tau) + " s must be in (0, 1e7]");
+	// lag candidates, like the physics candidates, only for selection auto: none is every preset term
+	ThermalFeatureSet fs = calibrationFeatures(preset, first, candidates_added,
+											   opt.selection == TermSelection::Auto ? opt.lag_taus_s : std::vector<double>{},
+											   opt.lag_max_thermistors);
 
 	// Rate window for the thermistors' reading quantum (FitOptions::window_for_quantum).
 	const double quantum_C = readingQuantum_C(runs, fs);

@@ -20,6 +20,24 @@ namespace
 {
 constexpr const char* kFormat = "mrpt_fog_calibration";
 constexpr int kVersion = 2;  //!< written; version 1 (single axis, bias only) is still read
+/** Written instead of kVersion when a model reads a lag signal (dTlag/dt, LagFilter.h): a build
+ * that reads only version 2 then says so instead of failing on the term. Version 3 = version 2 +
+ * lag signals and the bias section's `lag_filter` (the lag's discretisation and warm start). */
+constexpr int kVersionLags = 3;
+constexpr const char* kLagFilter = "first_order_hold, warm_start_first_reading";
+
+bool readsLags(const BiasModel& m)
+{
+	for (const auto& sig : m.features.signals())
+		if (sig.isLag()) return true;
+	return false;
+}
+bool readsLags(const Calibration& cal)
+{
+	bool any = readsLags(cal.model) || (cal.startup && readsLags(*cal.startup));
+	for (const auto& f : cal.fallbacks) any |= readsLags(f);
+	return any;
+}
 // Plausibility limits of loaded values (issue 14: a coef_dph of 1e308 compensated to -2e307
 // deg/h). Every term is z^k with |z| <= 1 after clamping, so a coefficient bounds its term's
 // contribution to the bias: 1e6 deg/h (278 deg/s) is beyond any gyro's bias.
@@ -309,7 +327,7 @@ BiasModel readModel(const Reader& rd, const yaml& n, const std::string& path)
 		if (idx < 0) rd.fail(p + ".name", "signal '" + name + "' is used by no term");
 		SignalNormalisation nm;
 		// Plausible signal values: temperatures and their differences [degC], rates [degC/s].
-		const bool rate = m.features.signals()[idx].isRate();
+		const bool rate = m.features.signals()[idx].isRate() || m.features.signals()[idx].isLag();
 		const double lim = rate ? kMaxSignalRate_Cps : kMaxSignal_C;
 		const char* why = rate ? "a thermistor rate [degC/s] no coil reaches" : "a temperature [degC] no coil reaches";
 		nm.centre = rd.bounded(s, "centre", p, -lim, lim, why);
@@ -540,6 +558,9 @@ void writeAxis(std::ostringstream& o, const Calibration& cal)
 	  << "  # used when no model applies (>= 2 thermistors missing)\n";
 	o << ind << "  extrapolation: " << str(toString(cal.extrapolation))
 	  << "  # outside the calibrated range: linear | clamp | polynomial\n";
+	if (readsLags(cal))
+		o << ind << "  lag_filter: " << str(kLagFilter)
+		  << "  # dTlag/dt(a,tau) = (T(a) - y) / tau, dy/dt = (T(a) - y) / tau integrated exactly for readings linear between samples; y = the first valid reading at start (LagFilter.h)\n";
 	o << ind << "  model:\n";
 	writeModel(o, cal.model, ind + "    ");
 	o << ind << "  fallbacks:" << (cal.fallbacks.empty() ? " []" : "") << "\n";
@@ -586,7 +607,9 @@ std::string calibrationSetToYaml(const CalibrationSet& set)
 	o << "# scale factor vs temperature and a warm-up term. Units: temperatures degC, rates degC/s,\n";
 	o << "# bias deg/h, scale factor ppm. Layout: docs/model.md (calibration file, version 2).\n";
 	o << "format: " << str(kFormat) << "\n";
-	o << "version: " << kVersion << "\n";
+	bool lags = false;
+	for (const auto& c : set.axes) lags |= readsLags(c);
+	o << "version: " << (lags ? kVersionLags : kVersion) << "\n";
 	o << "sensor:\n";
 	o << "  label: " << str(a.sensor_label) << "\n";
 	o << "  thermistors:" << (a.layout.empty() ? " []" : "") << "\n";
@@ -772,7 +795,8 @@ CalibrationSet parseCalibrationYaml(const std::string& text, const std::string& 
 	if (!root.isMap()) rd.fail("(top)", "expected a YAML map");
 	if (rd.text(root, "format", "") != kFormat) rd.fail("format", std::string("expected ") + kFormat);
 	const double version = rd.finite(root, "version", "");
-	if (version != 1 && version != kVersion) rd.fail("version", "unsupported version " + num(version) + " (this build reads 1 and 2)");
+	if (version != 1 && version != kVersion && version != kVersionLags)
+		rd.fail("version", "unsupported version " + num(version) + " (this build reads 1, 2 and 3)");
 	const yaml sensor = rd.child(root, "sensor", "");
 	Calibration common;
 	readLayout(rd, sensor, common);
@@ -783,6 +807,7 @@ CalibrationSet parseCalibrationYaml(const std::string& text, const std::string& 
 		Calibration cal = common;
 		cal.axis = readAxisLetter(rd, sensor, "sensor");
 		readAxisFields(rd, root, "", root, "", root, "", cal);
+		if (readsLags(cal)) rd.fail("model", "reads lag signals (dTlag/dt), which need file version 3 (the file says 1)");
 		set.axes.push_back(std::move(cal));
 		return set;
 	}
@@ -809,6 +834,13 @@ CalibrationSet parseCalibrationYaml(const std::string& text, const std::string& 
 		for (const auto& other : set.axes)
 			if (other.axis == cal.axis) rd.fail(p + ".axis", std::string("axis ") + axisLetter(cal.axis) + " is listed twice");
 		readAxisFields(rd, a, p, rd.child(a, "bias", p), p + ".bias", a, p, cal);
+		if (readsLags(cal))
+		{
+			if (version < kVersionLags)
+				rd.fail(p + ".bias", "reads lag signals (dTlag/dt), which need file version 3 (the file says " + num(version) + ")");
+			if (rd.text(rd.child(a, "bias", p), "lag_filter", p + ".bias") != kLagFilter)
+				rd.fail(p + ".bias.lag_filter", std::string("expected \"") + kLagFilter + "\" (the only lag this build runs)");
+		}
 		if (a.has("scale_factor"))
 		{
 			cal.scale_factor = readScaleFactor(rd, a["scale_factor"], p + ".scale_factor");

@@ -27,7 +27,8 @@ std::string describeLayout(const std::vector<ThermistorInfo>& layout)
 }
 }  // namespace
 
-Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector<std::string>& names)
+Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector<std::string>& names,
+										   const std::vector<LagChannel>& lag_channels)
 {
 	Compiled c;
 	const auto& fs = m.features;
@@ -35,6 +36,10 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 		const auto it = std::find(names.begin(), names.end(), n);
 		if (it == names.end()) throw std::invalid_argument("calibration model uses thermistor '" + n + "' not in the main model");
 		return static_cast<int>(it - names.begin());
+	};
+	const auto lagOf = [&](const ThermalSignal& sig) {
+		const auto it = std::find(lag_channels.begin(), lag_channels.end(), LagChannel{chan(sig.a), sig.tau_s});
+		return static_cast<int>(it - lag_channels.begin());  // every model's lags are in the bank
 	};
 	// degree of each signal
 	std::vector<int> degree(fs.signals().size(), 0);
@@ -57,7 +62,7 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 	for (std::size_t s = 0; s < fs.signals().size(); s++)
 	{
 		const auto& sig = fs.signals()[s];
-		if (sig.isDifference()) continue;
+		if (sig.isDifference() || sig.isLag()) continue;
 		const auto& nm = fs.normalisation()[s];
 		const int ch = chan(sig.a);
 		detail::KernelBlock& b = K[ch / 4];
@@ -75,7 +80,7 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 		const auto& nm = fs.normalisation()[s];
 		EdgeSignal e;
 		e.kind = static_cast<int>(sig.kind);
-		e.a = chan(sig.a);
+		e.a = sig.isLag() ? lagOf(sig) : chan(sig.a);
 		e.b = sig.isDifference() ? chan(sig.b) : 0;
 		e.lo = nm.min;
 		e.hi = nm.max;
@@ -88,7 +93,7 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 		c.edges.push_back(e);
 	}
 	std::vector<int> group_of(fs.signals().size()), index_in(fs.signals().size());
-	for (const SignalKind kind : {SignalKind::Diff, SignalKind::DiffRate})  // T and dT/dt: the kernel
+	for (const SignalKind kind : {SignalKind::Diff, SignalKind::DiffRate, SignalKind::LagRate})  // T and dT/dt: the kernel
 	{
 		SignalGroup g;
 		g.kind = kind;
@@ -99,14 +104,14 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 			const auto& nm = fs.normalisation()[s];
 			group_of[s] = static_cast<int>(c.groups.size());
 			index_in[s] = static_cast<int>(g.a.size());
-			g.a.push_back(chan(sig.a));
+			g.a.push_back(sig.isLag() ? lagOf(sig) : chan(sig.a));  // a lag: its channel in the bank
 			g.b.push_back(sig.isDifference() ? chan(sig.b) : 0);
 			g.centre.push_back(nm.centre);
 			g.inv_scale.push_back(1.0 / nm.scale);
 			g.lo.push_back(nm.min);
 			g.hi.push_back(nm.max);
 			g.degree = std::max(g.degree, degree[s]);
-			c.uses |= 1u << g.a.back();
+			c.uses |= 1u << (sig.isLag() ? chan(sig.a) : g.a.back());  // a lag needs its thermistor's reading
 			if (sig.isDifference()) c.uses |= 1u << g.b.back();
 			if (kind == SignalKind::DiffRate) c.uses_rate |= (1u << g.a.back()) | (1u << g.b.back());
 		}
@@ -123,7 +128,7 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 			continue;
 		}
 		const auto& sig = fs.signals()[s];
-		if (!sig.isDifference())
+		if (!sig.isDifference() && !sig.isLag())
 		{
 			// coef * ((v - centre) / scale)^k = (coef / scale^k) * (v - centre)^k
 			const int ch = chan(sig.a);
@@ -193,12 +198,30 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 	}
 	same_order_ = true;
 	for (std::size_t c = 0; c < channel_col_.size(); c++) same_order_ &= channel_col_[c] == static_cast<int>(c);
-	models_.push_back(compile(cal.model, names));
+	// The lags every model reads, over tracked channels (LagFilter.h).
+	std::vector<LagChannel> lag_channels;
+	const auto addLags = [&](const BiasModel& m) {
+		for (const auto& sig : m.features.signals())
+		{
+			if (!sig.isLag()) continue;
+			const auto it = std::find(names.begin(), names.end(), sig.a);
+			const LagChannel lc{static_cast<int>(it - names.begin()), sig.tau_s};
+			if (it != names.end() && std::find(lag_channels.begin(), lag_channels.end(), lc) == lag_channels.end())
+				lag_channels.push_back(lc);
+		}
+	};
+	addLags(cal.model);
+	for (const auto& fb : cal.fallbacks) addLags(fb);
+	if (cal.startup) addLags(*cal.startup);
+	has_lags_ = !lag_channels.empty();
+	lags_ = LagFilterBank(lag_channels);
+	lag_rate_.assign(lag_channels.size(), 0.0);
+	models_.push_back(compile(cal.model, names, lag_channels));
 	for (const auto& n : names)
 	{
 		const BiasModel* fb = cal.fallbackFor(n);
 		has_fallback_.push_back(fb != nullptr);
-		models_.push_back(fb ? compile(*fb, names) : Compiled{});
+		models_.push_back(fb ? compile(*fb, names, lag_channels) : Compiled{});
 	}
 	if (cal.startup)
 	{
@@ -210,7 +233,7 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 											cal.startup->features.signals()[s].name() + "): it must be rate-free");
 		}
 		startup_ = static_cast<int>(models_.size());
-		models_.push_back(compile(*cal.startup, names));
+		models_.push_back(compile(*cal.startup, names, lag_channels));
 	}
 	if (cal.scale_factor)
 	{
@@ -240,6 +263,7 @@ void Compensator::reset()
 {
 	tracker_.reset();
 	half_tracker_.reset();
+	lags_.reset();
 	counters_ = {};
 	last_model_ = kNoSampleYet;
 	sf_ppm_ = sf_initial_ppm_;
@@ -264,6 +288,12 @@ void Compensator::notePowerOnFromMetadata(const FogSeries& log)
 	half_tracker_.push(time_s, temp_C);
 	for (std::size_t c = 0; c < channel_col_.size(); c++)
 		rate_[c] = CausalRateTracker::extrapolatedRate(tracker_, half_tracker_, c, time_s);
+}
+
+[[gnu::noinline]] void Compensator::updateLags(double time_s, const double* temp_C)
+{
+	lags_.push(time_s, temp_C);
+	for (std::size_t i = 0; i < lag_rate_.size(); i++) lag_rate_[i] = lags_.rate_C_per_s(i);
 }
 
 [[gnu::noinline]] void Compensator::applyExtras(Output& out, double time_s, double raw_dph, const double* temp_C)
@@ -380,7 +410,7 @@ int countClamped(const KernelBlock* K, std::size_t blocks, const double* T, cons
 	for (const SignalGroup& g : m.groups)
 	{
 		const bool of_temperature = g.kind == SignalKind::Temp || g.kind == SignalKind::Diff;
-		const double* src = of_temperature ? temp_C : rate_.data();
+		const double* src = g.kind == SignalKind::LagRate ? lag_rate_.data() : of_temperature ? temp_C : rate_.data();
 		if (g.kind == SignalKind::Diff || g.kind == SignalKind::DiffRate)
 			sum += groupSumAnyDegree<true>(g.degree, g.a.data(), g.b.data(), src, g.lo.data(), g.hi.data(),
 										   g.centre.data(), g.inv_scale.data(), g.p.data(), g.a.size(), clamped);
@@ -403,6 +433,7 @@ int countClamped(const KernelBlock* K, std::size_t blocks, const double* T, cons
 			case 0: v = temp_C[e.a]; break;
 			case 1: v = rate_[e.a]; break;
 			case 2: v = temp_C[e.a] - temp_C[e.b]; break;
+			case 4: v = lag_rate_[e.a]; break;
 			default: v = rate_[e.a] - rate_[e.b]; break;
 		}
 		double beyond = 0, edge = 0;
@@ -430,7 +461,7 @@ int countClamped(const KernelBlock* K, std::size_t blocks, const double* T, cons
 			};
 			extra += poly(v) - poly(edge);
 		}
-		if (e.kind == 1 || e.kind == 3)
+		if (e.kind == 1 || e.kind == 3 || e.kind == 4)
 		{
 			rate_out = true;
 			counters_.max_rate_excursion_C_per_s = std::max(counters_.max_rate_excursion_C_per_s, beyond);

@@ -1,9 +1,11 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/model/ThermalFeatureSet.h>
+#include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/obs/FogSeries.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <stdexcept>
 
@@ -16,11 +18,12 @@ std::string ThermalSignal::name() const
 		case SignalKind::Temp: return "T(" + a + ")";
 		case SignalKind::Rate: return "dT/dt(" + a + ")";
 		case SignalKind::Diff: return "dT(" + a + "-" + b + ")";
+		case SignalKind::LagRate: return "dTlag/dt(" + a + "," + formatValue("%.17g", tau_s) + ")";
 		default: return "d/dt dT(" + a + "-" + b + ")";
 	}
 }
 
-const char* ThermalSignal::unit() const { return isRate() ? "degC/s" : "degC"; }
+const char* ThermalSignal::unit() const { return isRate() || isLag() ? "degC/s" : "degC"; }
 
 std::string ThermalTerm::name() const
 {
@@ -30,7 +33,14 @@ std::string ThermalTerm::name() const
 
 int ThermalTerm::maxPower(SignalKind kind)
 {
-	return (kind == SignalKind::Rate || kind == SignalKind::DiffRate) ? 3 : 5;
+	return (kind == SignalKind::Rate || kind == SignalKind::DiffRate || kind == SignalKind::LagRate) ? 3 : 5;
+}
+
+ThermalTerm ThermalTerm::lagRate(const std::string& a, double tau_s, int power)
+{
+	ThermalTerm t = of(SignalKind::LagRate, a, "", power);
+	t.signal.tau_s = tau_s;
+	return t;
 }
 
 ThermalTerm ThermalTerm::of(SignalKind kind, const std::string& a, const std::string& b, int power)
@@ -52,7 +62,7 @@ ThermalTerm ThermalTerm::parse(const std::string& text_in)
 	if (text.rfind("d/dt dT(", 0) == 0) text = "d/dtdT(" + text.substr(8);
 	const auto fail = [&](const std::string& why) {
 		throw std::invalid_argument("model term '" + text_in + "': " + why +
-									" (expected 1, T(a)^k, dT/dt(a)^k, dT(a-b)^k or d/dt dT(a-b)^k)");
+									" (expected 1, T(a)^k, dT/dt(a)^k, dT(a-b)^k, d/dt dT(a-b)^k or dTlag/dt(a,tau_s)^k)");
 	};
 	if (text == "1") return constantTerm();
 	struct Form
@@ -61,8 +71,8 @@ ThermalTerm ThermalTerm::parse(const std::string& text_in)
 		SignalKind kind;
 	};
 	// "d/dtdT(" before "dT(" (its space removed above).
-	const Form forms[] = {{"d/dtdT(", SignalKind::DiffRate}, {"dT/dt(", SignalKind::Rate}, {"dT(", SignalKind::Diff},
-						  {"T(", SignalKind::Temp}};
+	const Form forms[] = {{"d/dtdT(", SignalKind::DiffRate}, {"dTlag/dt(", SignalKind::LagRate}, {"dT/dt(", SignalKind::Rate},
+						  {"dT(", SignalKind::Diff}, {"T(", SignalKind::Temp}};
 	for (const Form& f : forms)
 	{
 		const std::string p = f.prefix;
@@ -71,6 +81,18 @@ ThermalTerm ThermalTerm::parse(const std::string& text_in)
 		if (close == std::string::npos) fail("missing ')'");
 		const std::string inside = text.substr(p.size(), close - p.size());
 		std::string a = inside, b;
+		double tau_s = 0;
+		if (f.kind == SignalKind::LagRate)
+		{
+			const auto comma = inside.find(',');
+			if (comma == std::string::npos) fail("a lag needs a thermistor and a time constant 'a,tau_s'");
+			a = inside.substr(0, comma);
+			const std::string t = inside.substr(comma + 1);
+			char* end = nullptr;
+			tau_s = std::strtod(t.c_str(), &end);
+			if (t.empty() || *end != '\0' || !std::isfinite(tau_s) || !(tau_s > 0) || tau_s > 1e7)
+				fail("lag time constant '" + t + "' must be a number of seconds in (0, 1e7]");
+		}
 		const bool diff = f.kind == SignalKind::Diff || f.kind == SignalKind::DiffRate;
 		if (diff)
 		{
@@ -94,6 +116,7 @@ ThermalTerm ThermalTerm::parse(const std::string& text_in)
 		}
 		if (power < 1 || power > maxPower(f.kind))
 			fail("power " + std::to_string(power) + " outside 1.." + std::to_string(maxPower(f.kind)));
+		if (f.kind == SignalKind::LagRate) return lagRate(a, tau_s, power);
 		return of(f.kind, a, b, power);
 	}
 	fail("unknown form");
@@ -129,7 +152,15 @@ ThermalFeatureSet::ThermalFeatureSet(const std::vector<ThermalTerm>& terms)
 		{
 			signals_.push_back(t.signal);
 			sig_a_.push_back(thermIndex(t.signal.a));
-			sig_b_.push_back(t.signal.isDifference() ? thermIndex(t.signal.b) : -1);
+			int b = t.signal.isDifference() ? thermIndex(t.signal.b) : -1;
+			if (t.signal.isLag())
+			{
+				const LagChannel lc{sig_a_.back(), t.signal.tau_s};
+				auto l = std::find(lags_.begin(), lags_.end(), lc);
+				if (l == lags_.end()) l = lags_.insert(lags_.end(), lc);
+				b = static_cast<int>(l - lags_.begin());
+			}
+			sig_b_.push_back(b);
 			term_signal_.push_back(static_cast<int>(signals_.size() - 1));
 		}
 		else
@@ -202,8 +233,11 @@ const SignalNormalisation& ThermalFeatureSet::normalisationOf(const ThermalSigna
 	throw std::out_of_range("signal " + s.name() + " is not in the feature set");
 }
 
-void ThermalFeatureSet::signalValues(const double* temp_C, const double* rate_C_s, double* v) const
+void ThermalFeatureSet::signalValues(const double* temp_C, const double* rate_C_s, const double* lag_C_s, double* v) const
 {
+	if (!lags_.empty() && !lag_C_s)
+		throw std::invalid_argument("feature set reads lag signals (" + std::to_string(lags_.size()) +
+									" lags) but no lag values were given");
 	for (std::size_t s = 0; s < signals_.size(); s++)
 	{
 		const int a = sig_a_[s], b = sig_b_[s];
@@ -212,6 +246,7 @@ void ThermalFeatureSet::signalValues(const double* temp_C, const double* rate_C_
 			case SignalKind::Temp: v[s] = temp_C[a]; break;
 			case SignalKind::Rate: v[s] = rate_C_s[a]; break;
 			case SignalKind::Diff: v[s] = temp_C[a] - temp_C[b]; break;
+			case SignalKind::LagRate: v[s] = lag_C_s[b]; break;
 			default: v[s] = rate_C_s[a] - rate_C_s[b]; break;
 		}
 	}

@@ -210,6 +210,35 @@ std::vector<BenchPreset> benchPresets()
 			out.push_back({"auto runs common bin100", "multipoint", c, false});
 		}
 	}
+	if (const char* lag_env = std::getenv("FOG_BENCH_LAGS"))  // lag-rate variants (LagFilter.h; the default has them)
+	{
+		// FOG_BENCH_LAGS=1: the physics grid (kPhysicsLagTaus_s); or a list of time constants, e.g. 100,400
+		std::vector<double> taus = mrpt_fog::kPhysicsLagTaus_s;
+		if (std::string(lag_env) != "1")
+		{
+			taus.clear();
+			for (const char* p = lag_env; *p;)
+			{
+				char* end = nullptr;
+				const double t = std::strtod(p, &end);
+				if (end == p) break;
+				taus.push_back(t);
+				p = *end == ',' ? end + 1 : end;
+			}
+		}
+		mrpt_fog::FitOptions o;
+		o.stability_resamples = 0;
+		o.lag_taus_s.clear();
+		out.push_back({"auto no lags", "multipoint", o, false});  // the default before the lags
+		o.lag_taus_s = taus;
+		o.lag_in_base = false;
+		out.push_back({"auto lag steps", "multipoint", o, false});  // added by steps, not in the base
+		o.lag_in_base = true;
+		out.push_back({"auto lag base", "multipoint", o, false});  // = the default with FOG_BENCH_LAGS=1
+		o.lag_in_base = false;
+		o.lag_max_thermistors = 8;
+		out.push_back({"auto lag all", "multipoint", o, false});  // by steps, any thermistor count
+	}
 	out.push_back({"multipoint none 5/3", "multipoint", none, true});
 	out.push_back({"multipoint@3/1 none", "multipoint@3/1", none, true});
 	out.push_back({"multipoint@1/1 none", "multipoint@1/1", none, true});

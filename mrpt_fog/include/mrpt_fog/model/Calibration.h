@@ -142,6 +142,12 @@ enum class OrderSearch : unsigned char
 	Common = 1
 };
 
+/** Lag time constants from the coil's thermal time constants [s] (shared/design/PHYSICS.md
+ * "Thermal time constants": radial diffusion through the winding ~70 s, housing to air ~30 min;
+ * docs/sim.md: the simulated network's modes at 1-3 min, ~6 min and 29.4 min): a geometric grid,
+ * factor 4, from radial diffusion to the housing. */
+inline const std::vector<double> kPhysicsLagTaus_s = {100.0, 400.0, 1600.0};
+
 struct FitOptions
 {
 	RateEstimatorSettings rate_estimator;  //!< default causal, 60 s window
@@ -185,6 +191,24 @@ struct FitOptions
 	/** "auto" with multipoint / points:K: add physics-shaped candidates for each inner/outer pair
 	 * at the same angle: dT(in-out)^1 (thermal stress) and d/dt dT(in-out)^1 (gradient rate). */
 	bool physics_candidates = true;
+	/** multipoint / points:K: for each thermistor of the preset and each time constant here [s],
+	 * the candidate dTlag/dt(a,tau)^1, the rate of its reading through a first-order lag
+	 * (LagFilter.h: what the coil's interior sees of a boundary sensor; the Shupe error is linear
+	 * in the interior's rates). "auto" adds them by held-out error like any other signal (never
+	 * in the linear base unless lag_in_base); "none" never uses them (every preset term only: name
+	 * them in a terms: preset). Empty: none. Default kPhysicsLagTaus_s, the grid from the coil's
+	 * time constants (chosen on the generalization bench's tuning devices: docs/generalization.md,
+	 * "One thermistor: lags of its history"). */
+	std::vector<double> lag_taus_s = kPhysicsLagTaus_s;
+	/** The lag candidates are offered only when the preset reads at most this many thermistors:
+	 * with an inner and an outer sensor the winding's radial spread is seen by the sensors
+	 * themselves, and a lag of one of them stands in for the other's rate (worse held out on the
+	 * tuning devices); one boundary sensor sees the interior only through its own history. */
+	std::size_t lag_max_thermistors = 1;
+	/** "auto" with lag candidates: they start in the linear base with T^1 and dT/dt^1 (one boundary
+	 * sensor: the interior's rates are what the Shupe error is linear in, and one calibration
+	 * profile cannot tell which of them other profiles need), instead of being added by steps. */
+	bool lag_in_base = true;
 	/** "auto": the search starts from T^1 and dT/dt^1 of every thermistor of the preset (the
 	 * linear multipoint model: the Shupe error is linear in the coil's temperature rates) and
 	 * adds orders and candidates by held-out error; multipoint then keeps all its thermistors

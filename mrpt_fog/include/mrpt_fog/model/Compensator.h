@@ -35,6 +35,9 @@
  *    rate never waits for one: a missing rate is "missing" only for a model that reads it.
  *  - RateWarmup: the model in use reads a rate whose window covers less than half its length
  *    (calibrations without a start-up model, or a fallback during a dropout).
+ *  - lag signals (dTlag/dt(a,tau), LagFilter.h): a first-order lag of each reading they need,
+ *    carried from sample to sample, warm-started equal to the first valid reading; a lag signal
+ *    is missing exactly when its thermistor's reading is (it needs no rate window).
  * Batch compensate() is exactly the streaming loop, so batch == streaming by construction; the
  * tests also check it against an independent evaluation of the fitted feature set.
  *
@@ -43,6 +46,7 @@
  */
 
 #include <mrpt_fog/model/Calibration.h>
+#include <mrpt_fog/model/LagFilter.h>
 #include <mrpt_fog/model/RateEstimator.h>
 #include <mrpt_fog/obs/FogRun.h>
 
@@ -152,7 +156,10 @@ class Compensator
 	template <std::size_t NC, int W>  // stepBatch's loop, CompensatorStep.h
 	void stepLoop(std::size_t n, const double* time_s, const double* raw_dph, const double* temp_C,
 				  std::size_t temp_stride, Output* out);
-	static Compiled compile(const BiasModel& m, const std::vector<std::string>& channel_names);
+	static Compiled compile(const BiasModel& m, const std::vector<std::string>& channel_names,
+							const std::vector<LagChannel>& lag_channels);
+	/** The lag bank's rates for this sample (only when a model reads a lag signal): out of line. */
+	void updateLags(double time_s, const double* temp_C);
 	template <std::size_t NB, int W>
 	double evaluate(const Compiled& m, const double* temp_C, int& clamped) const;
 	double addGroups(const Compiled& m, const double* temp_C, double sum, int& clamped) const;  // sum + the groups' terms
@@ -177,6 +184,9 @@ class Compensator
 	CausalRateTracker tracker_;
 	bool delay_comp_ = false;  // causal estimator of order 2
 	CausalRateTracker half_tracker_;  // the last half window (order 2 only)
+	bool has_lags_ = false;  // some model reads a lag signal (dTlag/dt)
+	LagFilterBank lags_;  // over tracked channels
+	std::vector<double> lag_rate_;  // per lag channel [degC/s]
 	std::vector<double> temp_, rate_;  // per tracked channel, zero padded to the kernel's blocks of 4
 	CompensationCounters counters_;
 	static constexpr int kNoSampleYet = -2;  //!< last_model_ before the first sample

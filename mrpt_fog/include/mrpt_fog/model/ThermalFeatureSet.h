@@ -9,6 +9,9 @@
  *   `dT/dt(Ti1)^k`        its rate, k = 1..3
  *   `dT(Ti1-To1)^k`       difference of two thermistors (e.g. inner - outer), k = 1..5
  *   `d/dt dT(Ti1-To1)^k`  rate of that difference, k = 1..3
+ *   `dTlag/dt(Ti1,400)^k` rate of Ti1's reading passed through a first-order lag of time
+ *                         constant 400 s (LagFilter.h: what a point inside the coil sees of a
+ *                         boundary sensor), k = 1..3; needs the lag state (lag values below)
  *
  * ("^1" may be omitted when parsing; names are always printed with it.)
  * Never raw powers of degC: every signal v is normalised, z = (v - centre) / scale, with centre
@@ -17,6 +20,8 @@
  * range [min, max] of each signal is stored with it; evaluation can clamp to it so a 5th-order
  * polynomial is never extrapolated.
  */
+
+#include <mrpt_fog/model/LagFilter.h>
 
 #include <limits>
 #include <string>
@@ -29,7 +34,8 @@ enum class SignalKind : unsigned char
 	Temp = 0,  //!< T(a) [degC]
 	Rate = 1,  //!< dT/dt(a) [degC/s]
 	Diff = 2,  //!< T(a) - T(b) [degC]
-	DiffRate = 3  //!< d/dt (T(a) - T(b)) [degC/s]
+	DiffRate = 3,  //!< d/dt (T(a) - T(b)) [degC/s]
+	LagRate = 4  //!< d/dt of T(a) through a first-order lag of tau_s (LagFilter.h) [degC/s]
 };
 
 /** One thermal signal: a thermistor's temperature or rate, or a difference of two. */
@@ -37,15 +43,19 @@ struct ThermalSignal
 {
 	SignalKind kind = SignalKind::Temp;
 	std::string a, b;  //!< thermistor names (b only for differences)
+	double tau_s = 0;  //!< lag time constant [s] (LagRate only, else 0)
 
-	/** "T(a)", "dT/dt(a)", "dT(a-b)", "d/dt dT(a-b)". */
+	/** "T(a)", "dT/dt(a)", "dT(a-b)", "d/dt dT(a-b)", "dTlag/dt(a,tau)". */
 	std::string name() const;
 	/** "degC" or "degC/s". */
 	const char* unit() const;
+	/** A rate from the causal rate estimator (its window: start-up, burst logs). A lag rate is not
+	 * one: it exists from the first reading (LagFilter.h). */
 	bool isRate() const { return kind == SignalKind::Rate || kind == SignalKind::DiffRate; }
+	bool isLag() const { return kind == SignalKind::LagRate; }
 	bool isDifference() const { return kind == SignalKind::Diff || kind == SignalKind::DiffRate; }
 	bool references(const std::string& thermistor) const { return a == thermistor || (isDifference() && b == thermistor); }
-	bool operator==(const ThermalSignal& o) const { return kind == o.kind && a == o.a && b == o.b; }
+	bool operator==(const ThermalSignal& o) const { return kind == o.kind && a == o.a && b == o.b && tau_s == o.tau_s; }
 };
 
 /** A model term: constant, or signal^power. */
@@ -63,6 +73,8 @@ struct ThermalTerm
 	static int maxPower(SignalKind kind);
 	static ThermalTerm constantTerm() { return ThermalTerm{}; }
 	static ThermalTerm of(SignalKind kind, const std::string& a, const std::string& b, int power);
+	/** dTlag/dt(a,tau_s)^power. */
+	static ThermalTerm lagRate(const std::string& a, double tau_s, int power);
 };
 
 /** Normalisation and calibrated range of one signal (units of the signal). */
@@ -108,9 +120,18 @@ class ThermalFeatureSet
 	/** Normalisation of the signal with this name (throws std::out_of_range if absent). */
 	const SignalNormalisation& normalisationOf(const ThermalSignal& s) const;
 
+	/** The first-order lags the lag signals read (thermistor index in thermistors() order, time
+	 * constant), distinct, in order of first appearance: the channels of the LagFilterBank that
+	 * supplies signalValues' lag rates. */
+	const std::vector<LagChannel>& lags() const { return lags_; }
 	/** Signal values from per-thermistor temperatures [degC] and rates [degC/s], both indexed in
-	 * thermistors() order. */
-	void signalValues(const double* temp_C, const double* rate_C_s, double* values) const;
+	 * thermistors() order, and the lag rates [degC/s] in lags() order (may be null when lags() is
+	 * empty; throws std::invalid_argument when it is null and the set reads lags). */
+	void signalValues(const double* temp_C, const double* rate_C_s, double* values) const
+	{
+		signalValues(temp_C, rate_C_s, nullptr, values);
+	}
+	void signalValues(const double* temp_C, const double* rate_C_s, const double* lag_rate_C_s, double* values) const;
 	/** Features (termCount() values) from signal values. With clamp, values outside the
 	 * calibrated range are clamped to it; returns how many signals were clamped. A NaN value
 	 * gives NaN features. */
@@ -121,7 +142,8 @@ class ThermalFeatureSet
 	std::vector<std::string> thermistors_;
 	std::vector<ThermalSignal> signals_;
 	std::vector<int> term_signal_;
-	std::vector<int> sig_a_, sig_b_;  // thermistor index of each signal's a and b
+	std::vector<int> sig_a_, sig_b_;  // thermistor index of each signal's a and b (LagRate: b = lag index)
+	std::vector<LagChannel> lags_;
 	std::vector<SignalNormalisation> norm_;
 };
 
