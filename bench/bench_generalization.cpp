@@ -36,7 +36,10 @@
  * --warmup-run; fog-sim devices); --also-seed-run-only adds every preset again fitted on the seed
  * run alone (label " 1run"), --also-no-warmup without the warm-up term (label " nowarm"), on the
  * same simulated runs. Environment: FOG_BENCH_SCORING / _GAIN / _COMMON /
- * _BINS / _PARSIMONY / _VARIANTS add selection variants (GeneralizationBench.cpp). */
+ * _BINS / _PARSIMONY / _VARIANTS add selection variants (GeneralizationBench.cpp); FOG_BENCH_LAGS=1
+ * (or a list of time constants, e.g. 100,400) adds the lag-rate variants: "auto no lags" (the
+ * default before them), "auto lag steps", "auto lag base" (the default's rule) and "auto lag all".
+ * Seeds 41..56 and 57..72 were each run once as fresh sets (docs/generalization.md); 73 on are unused. */
 #include "DeviceEnsemble.h"
 #include "GeneralizationBench.h"
 

@@ -551,6 +551,10 @@ int main(int argc, char** argv)
 											  "multipoint / points:K with one thermistor: lag-rate candidates dTlag/dt(a,tau) "
 											  "(none, physics = 100,400,1600 s, or a list of seconds S,S,..)",
 											  false, FitOptions{}.lag_taus_s.empty() ? "none" : "physics", "none|physics|S,..", cmd);
+		TCLAP::ValueArg<unsigned> arg_lagmax("", "lag-max-thermistors",
+											 "offer the --lags candidates to presets reading at most N thermistors "
+											 "(default 1; studies: larger)",
+											 false, static_cast<unsigned>(FitOptions{}.lag_max_thermistors), "N", cmd);
 		TCLAP::ValueArg<unsigned> arg_folds("", "folds", "Cross-validation folds for a single run", false, 5, "K", cmd);
 		TCLAP::ValueArg<double> arg_tau("", "tau", "Averaging time of the stability figures [s]", false, 100.0, "S", cmd);
 		TCLAP::SwitchArg arg_nofb("", "no-fallbacks", "Do not fit per-thermistor fallback models", cmd);
@@ -617,6 +621,7 @@ int main(int argc, char** argv)
 			throw std::invalid_argument("--run-folds must be runs or regimes, got '" + arg_runfolds.getValue() + "'");
 		opt.run_folds = arg_runfolds.getValue() == "regimes" ? RunFolds::RegimesWithinRuns : RunFolds::Runs;
 		opt.lag_taus_s = parseLagTaus(arg_lags.getValue());
+		opt.lag_max_thermistors = arg_lagmax.getValue();
 		opt.tau_s = arg_tau.getValue();
 		opt.fallbacks = !arg_nofb.getValue();
 		opt.extrapolation = extrapolationPolicyFromString(arg_extra.getValue());

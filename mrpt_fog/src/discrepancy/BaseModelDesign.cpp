@@ -1,6 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/BaseModelDesign.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
+#include <mrpt_fog/model/LagFilter.h>
 #include <mrpt_fog/model/ModelPreset.h>
 #include <mrpt_fog/model/RateEstimator.h>
 #include <mrpt_fog/model/ScaleFactorFit.h>
@@ -145,6 +146,8 @@ std::vector<std::vector<double>> compensatorColumns(const BaseModelSpec& spec, c
 	}
 	std::vector<std::vector<double>> cols(nf, std::vector<double>(n, 0.0));
 	std::vector<double> temp(nt), r(nt), values(ns), f(nf);
+	LagFilterBank lags(fs.lags());  // lag-rate signals (one-thermistor calibrations), carried sample to sample
+	std::vector<double> lag_rate(fs.lags().size());
 	const bool clampOrTangent = spec.extrapolation != ExtrapolationPolicy::Polynomial;
 	defined.assign(n, 1);
 	for (std::size_t k = 0; k < n; ++k)
@@ -154,7 +157,9 @@ std::vector<std::vector<double>> compensatorColumns(const BaseModelSpec& spec, c
 			temp[i] = run.temp_C[static_cast<std::size_t>(colOf[i])][k];
 			r[i] = rate_C_s[i][k];
 		}
-		fs.signalValues(temp.data(), r.data(), values.data());
+		lags.push(run.time_s[k], temp.data());
+		for (std::size_t i = 0; i < lag_rate.size(); ++i) lag_rate[i] = lags.rate_C_per_s(i);
+		fs.signalValues(temp.data(), r.data(), lag_rate.data(), values.data());
 		fs.features(values.data(), f.data(), clampOrTangent);
 		if (spec.extrapolation == ExtrapolationPolicy::Linear)
 			for (std::size_t t = 1; t < nf; ++t)

@@ -344,8 +344,13 @@ double offlineStability_dph(const mrpt_fog::Calibration& cal, const mrpt_fog::Fo
 	}
 	const auto& raw = s.primaryRate_dph();
 	std::vector<double> T(temp.size()), R(temp.size()), v(fs.signals().size()), t, comp;
+	mrpt_fog::LagFilterBank lags(fs.lags());
+	std::vector<double> L(fs.lags().size());
 	for (std::size_t k = 0; k < s.size(); k++)
 	{
+		for (std::size_t i = 0; i < T.size(); i++) T[i] = temp[i][k];
+		lags.push(s.time_s[k], T.data());  // every sample, as the compensator
+		for (std::size_t i = 0; i < L.size(); i++) L[i] = lags.rate_C_per_s(i);
 		if (!s.power.empty() && s.power[k] == 0.0) continue;
 		bool ok = true;
 		for (std::size_t i = 0; i < T.size(); i++)
@@ -355,7 +360,7 @@ double offlineStability_dph(const mrpt_fog::Calibration& cal, const mrpt_fog::Fo
 			ok = ok && std::isfinite(T[i]) && std::isfinite(R[i]);
 		}
 		if (!ok) continue;
-		fs.signalValues(T.data(), R.data(), v.data());
+		fs.signalValues(T.data(), R.data(), L.data(), v.data());
 		t.push_back(s.time_s[k]);
 		comp.push_back(raw[k] - cal.model.evaluate(v.data(), cal.extrapolation));
 	}
