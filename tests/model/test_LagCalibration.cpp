@@ -7,7 +7,9 @@
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/Compensator.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <string>
 #include <vector>
@@ -91,26 +93,39 @@ TEST(LagCalibration, FixedTermsRecoverTheLagCoefficientAndCompensateAnotherHisto
 	EXPECT_GT(evaluateCalibration(fitCalibration({runA()}, "multipoint@1/1", plain), runB(), "B", 100.0).rms_dph, 1e-3);
 }
 
-TEST(LagCalibration, SelectionPicksTheTrueTimeConstantOnlyWithOneThermistor)
+TEST(LagCalibration, SelectionUsesTheLagsOnlyWithOneThermistor)
 {
-	FitOptions o;
-	o.lag_taus_s = kPhysicsLagTaus_s;  // 100, 400, 1600 s
-	const Calibration cal = fitCalibration({runA()}, "multipoint", o);
+	// the default: with one thermistor the three lags (100, 400, 1600 s) start in the linear base
+	const Calibration cal = fitCalibration({runA()}, "multipoint", FitOptions{});
 	const auto names = cal.model.features.termNames();
-	EXPECT_NE(std::find(names.begin(), names.end(), "dTlag/dt(Ti1,400)^1"), names.end()) << cal.model.features.termNames().size();
-	EXPECT_LT(cal.held_out.rms_dph, 1e-3);
-	EXPECT_LT(evaluateCalibration(cal, runB(), "B", 100.0).rms_dph, 1e-3);
+	for (const char* n : {"dTlag/dt(Ti1,100)^1", "dTlag/dt(Ti1,400)^1", "dTlag/dt(Ti1,1600)^1"})
+		EXPECT_NE(std::find(names.begin(), names.end(), n), names.end()) << n;
+	FitOptions no_lags;
+	no_lags.lag_taus_s.clear();
+	const double b_lags = evaluateCalibration(cal, runB(), "B", 100.0).rms_dph;
+	const double b_plain = evaluateCalibration(fitCalibration({runA()}, "multipoint", no_lags), runB(), "B", 100.0).rms_dph;
+	std::printf("  B compensated RMS: with the lags %.3g, without %.3g deg/h\n", b_lags, b_plain);
+	EXPECT_LT(b_lags, 1e-6);  // the true term is in the lags' span (start-up model included)
+	EXPECT_GT(b_plain, 0.1);  // without them no term holds it
+	// as forward steps: the true time constant is the one taken
+	FitOptions steps;
+	steps.lag_in_base = false;
+	const Calibration st = fitCalibration({runA()}, "multipoint", steps);
+	const auto sn = st.model.features.termNames();
+	EXPECT_NE(std::find(sn.begin(), sn.end(), "dTlag/dt(Ti1,400)^1"), sn.end());
+	EXPECT_LT(st.held_out.rms_dph, 1e-3);
+	EXPECT_LT(evaluateCalibration(st, runB(), "B", 100.0).rms_dph, 1e-3);
 	// with two thermistors the candidates are not offered (FitOptions::lag_max_thermistors)
 	FogSeries two = runA();
 	two.thermistors.push_back({"To1", CoilSide::Outer, 0});
 	two.temp_C.push_back(two.temp_C[0]);
 	for (double& v : two.temp_C[1]) v += 0.5;
-	for (const auto& sig : fitCalibration({two}, "multipoint", o).model.features.signals()) EXPECT_FALSE(sig.isLag());
+	for (const auto& sig : fitCalibration({two}, "multipoint", FitOptions{}).model.features.signals()) EXPECT_FALSE(sig.isLag());
 	// "none": every preset term and nothing else (the seed's method)
-	FitOptions none = o;
+	FitOptions none;
 	none.selection = "none";
 	for (const auto& sig : fitCalibration({runA()}, "multipoint", none).model.features.signals()) EXPECT_FALSE(sig.isLag());
-	FitOptions bad = o;
+	FitOptions bad;
 	bad.lag_taus_s = {0.0};
 	EXPECT_THROW(fitCalibration({runA()}, "multipoint", bad), std::invalid_argument);
 }

@@ -1498,7 +1498,8 @@ std::size_t rateGapCount(const std::vector<FogRun>& runs, double window_s)
 }
 
 /** Rate-free start-up model (FitOptions::startup_model): the main model's orders with every rate
- * signal left out, refitted (ridge by the same held-out error) on the same samples. */
+ * signal left out, refitted (ridge by the same held-out error) on the same samples. Lag rates
+ * stay: they need no rate window (LagFilter.h), and a log that starts on a ramp needs them. */
 void addStartupModel(Calibration& cal, FoldAccumulation& acc, const ThermalFeatureSet& fs, const Choice& best,
 					 const FitOptions& opt)
 {
@@ -1517,7 +1518,6 @@ void addStartupModel(Calibration& cal, FoldAccumulation& acc, const ThermalFeatu
 				order[s] = 0;
 				reads_rates = true;
 			}
-			if (kind == SignalKind::LagRate) order[s] = 0;  // rate-free: T and T differences only (docs/model.md)
 		}
 		if (reads_rates)
 		{
