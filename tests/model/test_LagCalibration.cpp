@@ -76,7 +76,7 @@ FogSeries runB()
 TEST(LagCalibration, FixedTermsRecoverTheLagCoefficientAndCompensateAnotherHistory)
 {
 	FitOptions o;
-	o.selection = "none";
+	o.selection = TermSelection::None;
 	const Calibration cal = fitCalibration({runA()}, "terms:T(Ti1)^1;dTlag/dt(Ti1,400)^1", o);
 	const auto& fs = cal.model.features;
 	ASSERT_EQ(cal.model.features.termNames(), (std::vector<std::string>{"1", "T(Ti1)^1", "dTlag/dt(Ti1,400)^1"}));
@@ -89,7 +89,7 @@ TEST(LagCalibration, FixedTermsRecoverTheLagCoefficientAndCompensateAnotherHisto
 	EXPECT_LT(b.rms_dph, 1e-7);
 	// a model without the lag leaves the Shupe-like term on B
 	FitOptions plain;
-	plain.selection = "none";
+	plain.selection = TermSelection::None;
 	EXPECT_GT(evaluateCalibration(fitCalibration({runA()}, "multipoint@1/1", plain), runB(), "B", 100.0).rms_dph, 1e-3);
 }
 
@@ -123,7 +123,7 @@ TEST(LagCalibration, SelectionUsesTheLagsOnlyWithOneThermistor)
 	for (const auto& sig : fitCalibration({two}, "multipoint", FitOptions{}).model.features.signals()) EXPECT_FALSE(sig.isLag());
 	// "none": every preset term and nothing else (the seed's method)
 	FitOptions none;
-	none.selection = "none";
+	none.selection = TermSelection::None;
 	for (const auto& sig : fitCalibration({runA()}, "multipoint", none).model.features.signals()) EXPECT_FALSE(sig.isLag());
 	FitOptions bad;
 	bad.lag_taus_s = {0.0};
@@ -133,7 +133,7 @@ TEST(LagCalibration, SelectionUsesTheLagsOnlyWithOneThermistor)
 TEST(LagCalibration, FileVersion3RoundTripsAndOlderVersionsRefuseLags)
 {
 	FitOptions o;
-	o.selection = "none";
+	o.selection = TermSelection::None;
 	const Calibration cal = fitCalibration({runA()}, "terms:T(Ti1)^1;dT/dt(Ti1)^1;dTlag/dt(Ti1,400)^1", o);
 	const std::string text = calibrationToYaml(cal);
 	EXPECT_NE(text.find("\nversion: 3\n"), std::string::npos);
@@ -159,14 +159,14 @@ TEST(LagCalibration, FileVersion3RoundTripsAndOlderVersionsRefuseLags)
 	EXPECT_THROW(calibrationFromYaml(other, "cal.yaml"), std::invalid_argument);
 	// without lags the file stays version 2
 	FitOptions none;
-	none.selection = "none";
+	none.selection = TermSelection::None;
 	EXPECT_NE(calibrationToYaml(fitCalibration({runA()}, "multipoint@1/1", none)).find("\nversion: 2\n"), std::string::npos);
 }
 
 TEST(LagCalibration, DropoutFallsBackAndTheLagResumesFromTheBridgedState)
 {
 	FitOptions o;
-	o.selection = "none";
+	o.selection = TermSelection::None;
 	const Calibration cal = fitCalibration({runA()}, "terms:T(Ti1)^1;dTlag/dt(Ti1,400)^1", o);
 	FogSeries b = runB();
 	for (std::size_t k = 1000; k < 1010; k++) b.temp_C[0][k] = std::nan("");  // on the 2 C/min ramp: bridged exactly
