@@ -53,6 +53,9 @@
  * Session 7 tuned on 9101..9105 (effects) and kept 9401..9410 fresh for its final run
  * (FOG_FOREIGN_FIRST_SEED=9401); 9101..9300 serve as the null block. Session 8 tuned on
  * 9101..9105 again and kept 9501..9510 (5 s) and 9511.. (1 s) fresh for its final runs.
+ * 2026-12-02 evening: tuned on 9001..9020, 9072, 9101..9105 and nulls 9001..9100 (9501, 9508
+ * re-run); 9601..9605 used by the --write-cal per-sample check; run once: 9611..9620 (5 s
+ * effects), 9621..9820 (5 s nulls), 9821..9920 (1 s nulls), 9921..9923 (1 s effects).
  */
 
 #include <mrpt_fog/obs/FogSeries.h>
