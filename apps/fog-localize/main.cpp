@@ -161,12 +161,12 @@ int main(int argc, char** argv)
 											 "motion model where the gyro is off: heading std per turned angle [-] "
 											 "(MRPT's default a4)",
 											 false, 0.05, "X", cmd);
-		TCLAP::ValueArg<std::string> arg_recovery("", "gyro-off-recovery",
-												  "at a turn-on after a gyro-off stretch: 'refix' re-draws the particles "
-												  "around a position and heading fix as at the start (the truth, standing "
-												  "for GNSS, as fog-drift re-aligns there), 'none' goes on from the "
-												  "wheel-only steps",
-												  false, "refix", "refix|none", cmd);
+		const char* const recovery_help =
+			"at a turn-on after a gyro-off stretch: 'refix' re-draws the particles around a position and heading "
+			"fix as at the start (the truth, standing for GNSS, as fog-drift re-aligns there), 'none' goes on "
+			"from the wheel-only steps";
+		TCLAP::ValueArg<std::string> arg_recovery("", "gyro-off-recovery", recovery_help, false, "refix", "refix|none",
+												  cmd);
 		TCLAP::SwitchArg arg_noscale("", "no-scale-calibration",
 									 "do not calibrate the wheel odometry's distance scale on urban stretches", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-localize", kHelp)) return *rc;
