@@ -7,6 +7,7 @@
 #include <mrpt_fog/model/Compensator.h>
 #include <mrpt_fog/model/FitFigureStats.h>
 #include <mrpt_fog/metrics/BiasMetrics.h>
+#include <mrpt_fog/sim/EffectRegistry.h>
 
 #include <cmath>
 #include <limits>
@@ -19,6 +20,25 @@ namespace mrpt_fog::discrepancy
 {
 namespace
 {
+/** Why a named effect adds no term to the calibration (the branches of augmentCalibration's loop
+ * that did not apply). */
+const char* notWrittenReason(sim::Effect effect)
+{
+	switch (effect)
+	{
+		case sim::Effect::RadialGradient:
+		case sim::Effect::GradientRate: return "needs an inner and an outer thermistor";
+		case sim::Effect::TempPolyOrder: return "the temperature polynomial is already of order 5";
+		case sim::Effect::Warmup:
+			return "the analysed run starts powered: the warm-up amplitude is not separated from the "
+				   "unknown earlier turn-on";
+		case sim::Effect::ScaleFactorTemp: return "the analysed run applies no table rate";
+		case sim::Effect::Magnetic:
+			return "the compensator has no magnetic-field input (no field term in the calibration schema)";
+		default: return "no compensator term for it in this calibration schema";
+	}
+}
+
 std::string firstOnSide(const FogSeries& run, CoilSide side)
 {
 	for (const auto& t : run.thermistors)
@@ -86,24 +106,25 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 	for (const auto& ne : named)
 	{
 		const bool pair = !in.empty() && !outer.empty();
-		if (ne.id == "radial_gradient" && pair)
+		const sim::Effect effect = sim::effectFromId(ne.id);
+		if (effect == sim::Effect::RadialGradient && pair)
 		{
 			add("dT(" + in + "-" + outer + ")^1");
 			// the candidate's second column (RunSignals::outer_other_C) when the run has it
 			const std::string other = firstOnSide(run, CoilSide::Other);
 			if (!other.empty()) add("dT(" + outer + "-" + other + ")^1");
 		}
-		else if (ne.id == "gradient_rate" && pair) add("d/dt dT(" + in + "-" + outer + ")^1");
-		else if (ne.id == "shupe_rate")
+		else if (effect == sim::Effect::GradientRate && pair) add("d/dt dT(" + in + "-" + outer + ")^1");
+		else if (effect == sim::Effect::ShupeRate)
 		{
 			add("dT/dt(" + (in.empty() ? S : in) + ")^1");
 			if (pair) add("d/dt dT(" + in + "-" + outer + ")^1");
 		}
-		else if (ne.id == "temp_poly_order" && p < 5)
+		else if (effect == sim::Effect::TempPolyOrder && p < 5)
 			for (int k = p + 1; k <= std::min(p + 2, 5); ++k) add("T(" + S + ")^" + std::to_string(k));
-		else if (ne.id == "scale_factor_temp" && hasTableRates({run}))
+		else if (effect == sim::Effect::ScaleFactorTemp && hasTableRates({run}))
 			refit_scale_factor = true;
-		else if (ne.id == "warmup" && ne.theta > 0 && !run.power.empty() && run.power.front() == 0.0)
+		else if (effect == sim::Effect::Warmup && ne.theta > 0 && !run.power.empty() && run.power.front() == 0.0)
 		{
 			// calibration v2 warm-up term (the compensator adds it after each turn-on); only when
 			// the run starts with the gyro off: then the candidate had one column, its coefficient
@@ -117,16 +138,7 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 			out.added_terms.push_back("warmup(amplitude_dph, tau_s)");
 		}
 		else
-			out.not_written.emplace_back(
-				ne.id, ne.id == "radial_gradient" || ne.id == "gradient_rate"
-						   ? "needs an inner and an outer thermistor"
-						   : ne.id == "temp_poly_order" ? "the temperature polynomial is already of order 5"
-						   : ne.id == "warmup"
-							   ? "the analysed run starts powered: the warm-up amplitude is not separated from the "
-								 "unknown earlier turn-on"
-						   : ne.id == "scale_factor_temp" ? "the analysed run applies no table rate"
-						   : ne.id == "magnetic" ? "the compensator has no magnetic-field input (no field term in the calibration schema)"
-							   : "no compensator term for it in this calibration schema");
+			out.not_written.emplace_back(ne.id, notWrittenReason(effect));
 	}
 	std::size_t thermal_added = 0;
 	for (const auto& t : out.added_terms) thermal_added += t.rfind("warmup", 0) == 0 ? 0 : 1;

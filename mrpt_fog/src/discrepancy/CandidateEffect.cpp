@@ -494,25 +494,26 @@ const std::string& candidateDescription(const std::string& id) { return candidat
 
 std::string separationAdvice(const std::string& a, const std::string& b)
 {
-	auto is = [&](const char* x, const char* y)
-	{ return (a == x && b == y) || (a == y && b == x); };
-	if (is("shupe_rate", "thermistor_lag"))
+	using sim::Effect;
+	const Effect ea = sim::effectFromId(a), eb = sim::effectFromId(b);
+	auto is = [&](Effect x, Effect y) { return (ea == x && eb == y) || (ea == y && eb == x); };
+	if (is(Effect::ShupeRate, Effect::ThermistorLag))
 		return "steps and ramps in several temperature bands (a thermistor lag scales with the local slope of the "
 			   "static bias curve, the Shupe term does not)";
-	if (is("shupe_rate", "hysteresis"))
+	if (is(Effect::ShupeRate, Effect::Hysteresis))
 		return "ramps at several rates and a sine sweep (Shupe scales with the rate, hysteresis does not)";
-	if (is("shupe_rate", "radial_gradient") || is("radial_gradient", "thermistor_lag"))
+	if (is(Effect::ShupeRate, Effect::RadialGradient) || is(Effect::RadialGradient, Effect::ThermistorLag))
 		return "a sine sweep near the coil's radial time constant and fast steps (the gradient lags the rate)";
-	if (is("shupe_rate", "gradient_rate"))
+	if (is(Effect::ShupeRate, Effect::GradientRate))
 		return "no chamber profile with surface thermistors, when the Shupe weights are those of a symmetric "
 			   "winding: the Shupe integral has zero-sum weights, so what the thermistors see of it is the rate of "
 			   "the radial difference (in the simulator the two truths correlate 0.996 on the rich profile even at "
 			   "1 Hz); a thermistor inside the winding, or a coil of another winding pattern, would";
-	if (is("radial_gradient", "gradient_rate"))
+	if (is(Effect::RadialGradient, Effect::GradientRate))
 		return "fast steps and a sine sweep with periods near the coil's radial time constant";
-	if (is("warmup", "temp_poly_order") || is("warmup", "thermistor_lag") || is("warmup", "shupe_rate"))
+	if (is(Effect::Warmup, Effect::TempPolyOrder) || is(Effect::Warmup, Effect::ThermistorLag) || is(Effect::Warmup, Effect::ShupeRate))
 		return "power cycles at constant chamber temperature";
-	if (is("magnetic", "scale_factor_temp"))
+	if (is(Effect::Magnetic, Effect::ScaleFactorTemp))
 		return "field segments and rate-table segments at different times and temperatures";
 	const auto& ca = candidateById(a);
 	const auto& cb = candidateById(b);

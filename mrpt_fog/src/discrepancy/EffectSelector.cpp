@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/EffectSelector.h>
+#include <mrpt_fog/sim/EffectRegistry.h>
 
 #include <algorithm>
 #include <cmath>
@@ -730,7 +731,7 @@ SelectionResult selectMissingEffects(const RunSignals& sig, const BaseDesign& ba
 		res.ar_after = gB.ar;
 		res.rounds.push_back(t.report);
 		excluded.push_back(ne.id);
-		if (ne.id == "thermistor_lag") res.model.lag_base_coef = modelCoef.head(base.X.cols());
+		if (sim::effectFromId(ne.id) == sim::Effect::ThermistorLag) res.model.lag_base_coef = modelCoef.head(base.X.cols());
 		res.model.effects.push_back({ne.id, ne.theta});
 		X = XB;
 	}

@@ -5,6 +5,7 @@
 #include <mrpt_fog/discrepancy/RunGapFigures.h>
 #include <mrpt_fog/discrepancy/SimulatorCalibration.h>
 #include <mrpt_fog/discrepancy/ThermalFit.h>
+#include <mrpt_fog/sim/EffectRegistry.h>
 
 #include <algorithm>
 #include <cmath>
@@ -312,7 +313,7 @@ SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& r
 	{
 		std::vector<std::string> candidates;
 		for (const auto& c : candidateLibrary())
-			if (c.channel == ResidualChannel::Bias && c.id != "thermistor_lag" && !calA.model.effects.count(c.id))
+			if (c.channel == ResidualChannel::Bias && sim::effectFromId(c.id) != sim::Effect::ThermistorLag && !calA.model.effects.count(c.id))
 				candidates.push_back(c.id);
 		const Eigen::VectorXd r = biasResidual(sig1.bias_dph, calA.trace, sig1.usable);
 		const RunSignals candSig =
@@ -342,7 +343,7 @@ SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& r
 		stages.push_back({calA, freeA, ne});
 		SimModel m = calA.model;
 		m.effects.insert(ne.id);
-		if (ne.id == "warmup" && ne.theta > 0) m.device.errors.warmup_tau_s = ne.theta;
+		if (sim::effectFromId(ne.id) == sim::Effect::Warmup && ne.theta > 0) m.device.errors.warmup_tau_s = ne.theta;
 		addUnique(freeA, coefficientParameterOf(ne.id));
 		calA = calibrateSimulator(m, freeA, runs[0], drive1, sig1.bias_dph, sig1.usable);
 		R.simulations += calA.simulations;
