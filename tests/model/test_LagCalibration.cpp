@@ -120,11 +120,13 @@ TEST(LagCalibration, SelectionUsesTheLagsOnlyWithOneThermistor)
 	two.thermistors.push_back({"To1", CoilSide::Outer, 0});
 	two.temp_C.push_back(two.temp_C[0]);
 	for (double& v : two.temp_C[1]) v += 0.5;
-	for (const auto& sig : fitCalibration({two}, "multipoint", FitOptions{}).model.features.signals()) EXPECT_FALSE(sig.isLag());
+	const Calibration with_two = fitCalibration({two}, "multipoint", FitOptions{});  // named: signals() refers into it
+	for (const auto& sig : with_two.model.features.signals()) EXPECT_FALSE(sig.isLag());
 	// "none": every preset term and nothing else (the seed's method)
 	FitOptions none;
 	none.selection = TermSelection::None;
-	for (const auto& sig : fitCalibration({runA()}, "multipoint", none).model.features.signals()) EXPECT_FALSE(sig.isLag());
+	const Calibration seed_method = fitCalibration({runA()}, "multipoint", none);
+	for (const auto& sig : seed_method.model.features.signals()) EXPECT_FALSE(sig.isLag());
 	FitOptions bad;
 	bad.lag_taus_s = {0.0};
 	EXPECT_THROW(fitCalibration({runA()}, "multipoint", bad), std::invalid_argument);
