@@ -198,18 +198,18 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 		if (refit_scale_factor)
 		{
 			// the scale factor versus temperature by the calibration's own fit (ScaleFactorFit.h:
-			// table segments, thermistor and order chosen by leave-one-temperature-out error)
+			// table segments, thermistor and order chosen by leave-one-temperature-out error).
+			// The naming has already tested the temperature dependence (the GLS test on the
+			// analysed run, the held-out check on the confirmation run), so the held-out error
+			// chooses among orders >= 1:
+			// with three soaks it would often keep a constant at effect/noise 1, writing no term
+			// for an effect the workflow has just confirmed.
 			try
 			{
-				const ScaleFactorModel sf = fitScaleFactor({run}, out.augmented);
-				out.augmented.scale_factor = sf;
-				if (sf.order() == 0)
-					out.not_written.emplace_back(
-						"scale_factor_temp",
-						"the scale-factor fit (leave-one-temperature-out) chose order 0 on the analysed run's table "
-						"segments: no temperature dependence it can support (a constant scale-factor error written)");
-				else
-					out.scale_factor_added = true;
+				ScaleFactorFitOptions sf_opt;
+				sf_opt.min_order = 1;
+				out.augmented.scale_factor = fitScaleFactor({run}, out.augmented, sf_opt);
+				out.scale_factor_added = true;
 			}
 			catch (const ScaleFactorFitError& e)
 			{

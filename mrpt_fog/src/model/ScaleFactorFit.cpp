@@ -87,6 +87,8 @@ ScaleFactorModel fitScaleFactor(const std::vector<FogSeries>& runs, const Calibr
 {
 	if (bias_cal.scale_factor) throw std::invalid_argument("fitScaleFactor: the bias calibration already has a scale factor");
 	if (!(opt.max_order >= 0 && opt.max_order <= 5)) throw std::invalid_argument("fitScaleFactor: max_order must be 0..5");
+	if (!(opt.min_order >= 0 && opt.min_order <= opt.max_order))
+		throw std::invalid_argument("fitScaleFactor: min_order must be 0..max_order");
 	if (!(opt.settle_s >= 0 && opt.min_segment_s > 0 && opt.group_gap_C > 0))
 		throw std::invalid_argument("fitScaleFactor: settle_s >= 0, min_segment_s > 0 and group_gap_C > 0 required");
 	const int axis = static_cast<int>(bias_cal.axis);
@@ -182,6 +184,10 @@ ScaleFactorModel fitScaleFactor(const std::vector<FogSeries>& runs, const Calibr
 		throw ScaleFactorFitError("scale factor: the table segments cover " + formatValue("%.4g", span) + " degC in " +
 								  std::to_string(groups) + " temperature group(s); at least 2 soaks " + formatValue("%.4g", opt.min_span_C) +
 								  " degC apart are needed to fit a temperature dependence");
+	if (opt.min_order + 2 > groups)
+		throw ScaleFactorFitError("scale factor: order " + std::to_string(opt.min_order) + " or more needs " +
+								  std::to_string(opt.min_order + 2) + " soaks to be chosen by leave-one-temperature-out error; the table "
+								  "segments form " + std::to_string(groups) + " temperature group(s)");
 
 	// 4. candidates by leave-one-temperature-out error
 	std::vector<double> y(segs.size());
@@ -219,7 +225,7 @@ ScaleFactorModel fitScaleFactor(const std::vector<FogSeries>& runs, const Calibr
 	{
 		double c, sc, lo, hi;
 		const std::vector<double> z = zOf(th, c, sc, lo, hi);
-		for (int order = 0; order <= opt.max_order && order + 2 <= groups; order++)
+		for (int order = opt.min_order; order <= opt.max_order && order + 2 <= groups; order++)
 		{
 			double sse = 0;
 			for (int g = 0; g < groups; g++)
@@ -264,7 +270,7 @@ ScaleFactorModel fitScaleFactor(const std::vector<FogSeries>& runs, const Calibr
 		}
 		a = X.completeOrthogonalDecomposition().solve(yy);
 	};
-	if (!opt.thermistor_mean && nt >= 2 && static_cast<int>(nt) + 2 <= groups)
+	if (!opt.thermistor_mean && nt >= 2 && static_cast<int>(nt) + 2 <= groups && opt.min_order <= 1)
 	{
 		double sse = 0;
 		for (int g = 0; g < groups; g++)

@@ -19,8 +19,9 @@
  *                    analysed run starts with the gyro off (else the amplitude is not separable)
  *   scale_factor_temp the scale factor versus temperature refitted by the calibration's own
  *                    fit (ScaleFactorFit.h: table segments of the analysed run,
- *                    thermistor and order chosen by leave-one-temperature-out error) after the
- *                    bias; when that fit keeps order 0 or refuses, it is listed as not written
+ *                    thermistor and order >= 1 chosen by leave-one-temperature-out error:
+ *                    the naming has established a dependence) after the bias; when that fit
+ *                    refuses (e.g. fewer than 3 soaks), it is listed as not written
  * Effects without a compensator term (magnetic: the compensator has no field input;
  * hysteresis, thermistor_lag) are listed in `not_written` with the reason.
  * The base calibration: the YAML given, or fitCalibration(run, preset) with default options

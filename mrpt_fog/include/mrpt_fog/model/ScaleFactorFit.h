@@ -14,7 +14,7 @@
  *     thermistor temperature.
  *  3. Temperature groups: segments whose mean temperatures (first candidate thermistor) lie
  *     within `group_gap_C` of each other form one soak.
- *  4. Candidates: each thermistor x polynomial order 0..max_order (order + 2 <= groups, so that
+ *  4. Candidates: each thermistor x polynomial order min_order..max_order (order + 2 <= groups, so that
  *     every held-out fit stays determined); held-out error = RMS over all segments of the
  *     prediction by the fit without the segment's group (leave-one-temperature-out; the
  *     polynomial is extrapolated there, not clamped, so an over-fitted order pays for it). The
@@ -54,6 +54,11 @@ struct ScaleFactorFitOptions
 	double group_gap_C = 3.0;  //!< segments closer than this in temperature are one soak [degC]
 	double min_span_C = 10.0;  //!< narrowest temperature span accepted [degC]
 	int max_order = 3;  //!< highest polynomial order tried (<= 5)
+	/** Lowest polynomial order tried (0..max_order). 1 when a temperature dependence is already
+	 * established by another test (the model-gap workflow's naming of scale_factor_temp): the
+	 * held-out error then chooses among orders >= 1 and the thermistor, and cannot answer "no
+	 * dependence" with a constant. Needs min_order + 2 soaks. */
+	int min_order = 0;
 	double prefer_simpler = 0.05;  //!< a simpler candidate within this relative held-out RMS wins
 	/** true: the model reads the mean of all the layout's thermistors (the only temperature
 	 * candidate; orders chosen as above) instead of the best single thermistor. At soaks every
