@@ -52,6 +52,59 @@ TEST(CalibrationAugment, TempPolyOrderBecomesCompensatorTermsAndClosesTheGap)
 	EXPECT_EQ(c.time_s.size(), r2.series.size());
 }
 
+namespace
+{
+/** The run from one hour after its first turn-on on (9 decay times of the generator's warm-up):
+ * it starts powered, its turn-on unknown, and keeps the later power cycle. */
+FogSeries fromAnHourAfterTheFirstTurnOn(const FogSeries& s)
+{
+	const auto on = s.turnOnSamples();
+	EXPECT_FALSE(on.empty());
+	std::size_t k0 = on.front();
+	while (k0 < s.size() && s.time_s[k0] < s.time_s[on.front()] + 3600.0) ++k0;
+	FogSeries out = s;
+	const auto cut = [&](std::vector<double>& v) {
+		if (!v.empty()) v.erase(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k0));
+	};
+	cut(out.time_s);
+	for (auto& r : out.rate_dph) cut(r);
+	for (auto& t : out.temp_C) cut(t);
+	cut(out.table_rate_dph);
+	cut(out.field_uT);
+	cut(out.power);
+	return out;
+}
+}  // namespace
+
+// A run that starts powered (its first turn-on unknown) and holds a power cycle: the named warm-up
+// is written as the calibration's warm-up term fitted on that turn-on (WarmupFit.h); the
+// generator's truth is exp(-(t - t_on) / 400 s) after each turn-on.
+TEST(CalibrationAugment, WarmupFromATurnOnInsideARunThatStartsPowered)
+{
+	fogtest::LumpedCoilOptions o1, o2;
+	o2.seed = 2;
+	o1.hidden["warmup"] = o2.hidden["warmup"] = 3.0;
+	const FogSeries s1 = fromAnHourAfterTheFirstTurnOn(fogtest::makeLumpedCoilRun(o1).series);
+	const FogSeries s2 = fromAnHourAfterTheFirstTurnOn(fogtest::makeLumpedCoilRun(o2).series);
+	ASSERT_FALSE(s1.power.empty());
+	ASSERT_NE(s1.power.front(), 0.0);  // starts powered
+	ASSERT_EQ(s1.turnOnSamples().size(), 1u);  // the power cycle
+	NamedEffect warm;
+	warm.id = "warmup";
+	warm.theta = 480;  // the naming's grid value: not what is written
+	const auto aug = augmentCalibration("M2:Ca@3/1", {warm}, s1, &s2, "run2");
+	EXPECT_TRUE(aug.not_written.empty());
+	ASSERT_TRUE(aug.augmented.warmup.has_value());
+	const auto& w = *aug.augmented.warmup;
+	std::printf("warm-up fitted: amplitude %.4f +- %.4f deg/h, tau %.0f +- %.0f s; run 2 RMS %.4f -> %.4f deg/h\n",
+				w.amplitude_dph, w.amplitude_std_dph, w.tau_s, w.tau_std_s, aug.before.rms_dph, aug.after.rms_dph);
+	EXPECT_EQ(w.turn_ons, 1u);
+	EXPECT_NEAR(w.tau_s, 400.0, 3 * w.tau_std_s + 1e-9);
+	EXPECT_GT(w.amplitude_dph, 3 * w.amplitude_std_dph);
+	ASSERT_TRUE(aug.has_confirm);
+	EXPECT_LT(aug.after.rms_dph, 0.75 * aug.before.rms_dph);
+}
+
 TEST(CalibrationAugment, NothingAddableLeavesTheCalibrationUnchanged)
 {
 	const auto r1 = fogtest::makeLumpedCoilRun({});

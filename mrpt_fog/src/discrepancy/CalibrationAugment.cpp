@@ -4,6 +4,7 @@
 #include <mrpt_fog/discrepancy/EffectSelector.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/ScaleFactorFit.h>
+#include <mrpt_fog/model/WarmupFit.h>
 #include <mrpt_fog/model/Compensator.h>
 #include <mrpt_fog/model/FitFigureStats.h>
 #include <mrpt_fog/metrics/BiasMetrics.h>
@@ -30,13 +31,21 @@ const char* notWrittenReason(sim::Effect effect)
 		case sim::Effect::GradientRate: return "needs an inner and an outer thermistor";
 		case sim::Effect::TempPolyOrder: return "the temperature polynomial is already of order 5";
 		case sim::Effect::Warmup:
-			return "the analysed run starts powered: the warm-up amplitude is not separated from the "
+			return "no turn-on inside the analysed run: the warm-up amplitude is not separated from the "
 				   "unknown earlier turn-on";
 		case sim::Effect::ScaleFactorTemp: return "the analysed run applies no table rate";
 		case sim::Effect::Magnetic:
 			return "the compensator has no magnetic-field input (no field term in the calibration schema)";
 		default: return "no compensator term for it in this calibration schema";
 	}
+}
+
+/** A turn-on (power 0 -> 1) after the run's first sample. */
+bool hasTurnOnInside(const FogSeries& run)
+{
+	for (std::size_t k : run.turnOnSamples())
+		if (k > 0) return true;
+	return false;
 }
 
 std::string firstOnSide(const FogSeries& run, CoilSide side)
@@ -82,6 +91,7 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 	out.base = calibrationUnderTest(text, run, FitScope::Full, sf);
 	std::optional<WarmupModel> warmup;
 	bool refit_scale_factor = false;
+	bool refit_warmup = false;
 	std::vector<std::string> terms;
 	for (const auto& n : out.base.model.features.termNames())
 		if (n != "1") terms.push_back(n);
@@ -135,6 +145,13 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 			w.tau_s = ne.theta;
 			w.turn_ons = run.turnOnSamples().size();
 			warmup = w;
+			out.added_terms.push_back("warmup(amplitude_dph, tau_s)");
+		}
+		else if (effect == sim::Effect::Warmup && hasTurnOnInside(run))
+		{
+			// the run starts powered (its first turn-on unknown) but holds turn-ons: the warm-up
+			// term by the calibration's own fit (WarmupFit.h) on those turn-ons, after the bias
+			refit_warmup = true;
 			out.added_terms.push_back("warmup(amplitude_dph, tau_s)");
 		}
 		else
@@ -221,6 +238,21 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 			out.augmented.scale_factor = out.base.scale_factor;
 	}
 	if (warmup) out.augmented.warmup = *warmup;
+	if (refit_warmup)
+	{
+		out.augmented.warmup.reset();
+		try
+		{
+			out.augmented.warmup = fitWarmup({run}, out.augmented);
+		}
+		catch (const WarmupFitError& e)
+		{
+			out.augmented.warmup = out.base.warmup;
+			out.added_terms.erase(std::remove(out.added_terms.begin(), out.added_terms.end(), "warmup(amplitude_dph, tau_s)"),
+								  out.added_terms.end());
+			out.not_written.emplace_back("warmup", std::string("the warm-up fit on the run's turn-ons refused: ") + e.what());
+		}
+	}
 	if (confirm)
 	{
 		out.has_confirm = true;

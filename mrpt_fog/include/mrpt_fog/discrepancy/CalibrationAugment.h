@@ -16,7 +16,9 @@
  *   shupe_rate       dT/dt(IN)^1 and d/dt dT(IN-OUT)^1 (without an OUT: dT/dt(S)^1)
  *   temp_poly_order  T(S)^(p+1), T(S)^(p+2) (at most 5)
  *   warmup           the calibration's (v2) warm-up term: amplitude and tau as named, when the
- *                    analysed run starts with the gyro off (else the amplitude is not separable)
+ *                    analysed run starts with the gyro off; when it starts powered (its first
+ *                    turn-on unknown) but holds turn-ons, amplitude and tau fitted on those
+ *                    turn-ons by the calibration's own fit (WarmupFit.h) after the bias
  *   scale_factor_temp the scale factor versus temperature refitted by the calibration's own
  *                    fit (ScaleFactorFit.h: table segments of the analysed run,
  *                    thermistor and order >= 1 chosen by leave-one-temperature-out error:
