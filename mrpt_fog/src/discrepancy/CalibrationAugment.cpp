@@ -40,13 +40,8 @@ const char* notWrittenReason(sim::Effect effect)
 	}
 }
 
-/** A turn-on (power 0 -> 1) after the run's first sample. */
-bool hasTurnOnInside(const FogSeries& run)
-{
-	for (std::size_t k : run.turnOnSamples())
-		if (k > 0) return true;
-	return false;
-}
+/** A turn-on (power 0 -> 1) inside the run (FogSeries::turnOnSamples: never at its first sample). */
+bool hasTurnOnInside(const FogSeries& run) { return !run.turnOnSamples().empty(); }
 
 std::string firstOnSide(const FogSeries& run, CoilSide side)
 {
@@ -218,9 +213,8 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 			// table segments, thermistor and order chosen by leave-one-temperature-out error).
 			// The naming has already tested the temperature dependence (the GLS test on the
 			// analysed run, the held-out check on the confirmation run), so the held-out error
-			// chooses among orders >= 1:
-			// with three soaks it would often keep a constant at effect/noise 1, writing no term
-			// for an effect the workflow has just confirmed.
+			// chooses among orders >= 1: with three soaks it would often keep a constant at
+			// effect/noise 1, writing no term for an effect the workflow has just confirmed.
 			try
 			{
 				ScaleFactorFitOptions sf_opt;
