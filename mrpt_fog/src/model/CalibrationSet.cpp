@@ -42,6 +42,9 @@ void CalibrationSet::validate() const
 		if (c.layout != a.layout) throw std::invalid_argument(who + ": another thermistor layout than the first axis");
 		if (!sameLatitude(c.latitude_deg, a.latitude_deg) || c.earth_rate != a.earth_rate)
 			throw std::invalid_argument(who + ": another latitude or Earth-rate handling than the first axis");
+		if (c.magnetic && !c.magnetic->valid())
+			throw std::invalid_argument(who + ": magnetic section: the coefficient and field range must be finite, "
+											  "the standard deviation >= 0 and min <= max");
 	}
 }
 

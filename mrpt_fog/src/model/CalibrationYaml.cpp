@@ -20,10 +20,12 @@ namespace
 {
 constexpr const char* kFormat = "mrpt_fog_calibration";
 constexpr int kVersion = 2;  //!< written; version 1 (single axis, bias only) is still read
-/** Written instead of kVersion when a model reads a lag signal (dTlag/dt, LagFilter.h): a build
- * that reads only version 2 then says so instead of failing on the term. Version 3 = version 2 +
- * lag signals and the bias section's `lag_filter` (the lag's discretisation and warm start). */
-constexpr int kVersionLags = 3;
+/** Written instead of kVersion when an axis holds what a version-2 reader cannot apply, so that
+ * such a build says so instead of failing on a term or silently ignoring a section. Version 3 =
+ * version 2 + lag signals (dTlag/dt, LagFilter.h) with the bias section's `lag_filter` (the
+ * lag's discretisation and warm start), and/or the axis' `magnetic` section (MagneticModel.h).
+ * Files without either are written as version 2. */
+constexpr int kVersionExtended = 3;
 constexpr const char* kLagFilter = "first_order_hold, warm_start_first_reading";
 
 bool readsLags(const BiasModel& m)
@@ -140,6 +142,16 @@ void writeScaleFactor(std::ostringstream& o, const ScaleFactorModel& m, const st
 	o << ind << "  rms_in_sample_ppm: " << num(m.rms_in_sample_ppm) << "\n";
 	o << ind << "  rms_held_out_ppm: " << num(m.rms_held_out_ppm) << "\n";
 	o << ind << "  held_out_label: " << str(m.held_out_label) << "\n";
+}
+
+void writeMagnetic(std::ostringstream& o, const MagneticModel& m, const std::string& ind)
+{
+	o << ind << "magnetic:  # bias += dph_per_uT * field_uT (applied axial magnetic field [uT]); version 3\n";
+	o << ind << "  dph_per_uT: " << num(m.dph_per_uT) << "  # [deg/h per uT]\n";
+	o << ind << "  dph_per_uT_std: " << num(m.dph_per_uT_std) << "  # standard error [deg/h per uT]\n";
+	o << ind << "  field_range_uT: [" << num(m.field_min_uT) << ", " << num(m.field_max_uT)
+	  << "]  # applied field seen in the fit [uT]\n";
+	o << ind << "  samples: " << m.samples << "\n";
 }
 
 void writeWarmup(std::ostringstream& o, const WarmupModel& w, const std::string& ind)
@@ -503,6 +515,23 @@ ScaleFactorModel readScaleFactor(const Reader& rd, const yaml& n, const std::str
 	return m;
 }
 
+MagneticModel readMagnetic(const Reader& rd, const yaml& n, const std::string& path)
+{
+	MagneticModel m;
+	m.dph_per_uT = rd.bounded(n, "dph_per_uT", path, -kMaxCoef_dph, kMaxCoef_dph, kCoefWhy);
+	m.dph_per_uT_std = rd.finite(n, "dph_per_uT_std", path);
+	if (!(m.dph_per_uT_std >= 0)) rd.fail(path + ".dph_per_uT_std", "must be >= 0");
+	const auto range = readNumbers(rd, n, "field_range_uT", path);
+	if (range.size() != 2) rd.fail(path + ".field_range_uT", "expected [min, max]");
+	if (!std::isfinite(range[0]) || !std::isfinite(range[1]))
+		rd.fail(path + ".field_range_uT", "must be finite numbers");
+	if (range[0] > range[1]) rd.fail(path + ".field_range_uT", "min > max");
+	m.field_min_uT = range[0];
+	m.field_max_uT = range[1];
+	m.samples = rd.count(n, "samples", path, 0, kMaxSamples);
+	return m;
+}
+
 WarmupModel readWarmup(const Reader& rd, const yaml& n, const std::string& path)
 {
 	WarmupModel w;
@@ -591,6 +620,7 @@ void writeAxis(std::ostringstream& o, const Calibration& cal)
 	}
 	if (cal.scale_factor) writeScaleFactor(o, *cal.scale_factor, ind);
 	if (cal.warmup) writeWarmup(o, *cal.warmup, ind);
+	if (cal.magnetic) writeMagnetic(o, *cal.magnetic, ind);
 	o << ind << "statistics:  # of the bias compensation\n";
 	writeFigures(o, "in_sample", cal.in_sample, ind + "  ");
 	writeFigures(o, "held_out", cal.held_out, ind + "  ");
@@ -607,9 +637,9 @@ std::string calibrationSetToYaml(const CalibrationSet& set)
 	o << "# scale factor vs temperature and a warm-up term. Units: temperatures degC, rates degC/s,\n";
 	o << "# bias deg/h, scale factor ppm. Layout: docs/model.md (calibration file, version 2).\n";
 	o << "format: " << str(kFormat) << "\n";
-	bool lags = false;
-	for (const auto& c : set.axes) lags |= readsLags(c);
-	o << "version: " << (lags ? kVersionLags : kVersion) << "\n";
+	bool extended = false;
+	for (const auto& c : set.axes) extended |= readsLags(c) || c.magnetic.has_value();
+	o << "version: " << (extended ? kVersionExtended : kVersion) << "\n";
 	o << "sensor:\n";
 	o << "  label: " << str(a.sensor_label) << "\n";
 	o << "  thermistors:" << (a.layout.empty() ? " []" : "") << "\n";
@@ -795,7 +825,7 @@ CalibrationSet parseCalibrationYaml(const std::string& text, const std::string& 
 	if (!root.isMap()) rd.fail("(top)", "expected a YAML map");
 	if (rd.text(root, "format", "") != kFormat) rd.fail("format", std::string("expected ") + kFormat);
 	const double version = rd.finite(root, "version", "");
-	if (version != 1 && version != kVersion && version != kVersionLags)
+	if (version != 1 && version != kVersion && version != kVersionExtended)
 		rd.fail("version", "unsupported version " + num(version) + " (this build reads 1, 2 and 3)");
 	const yaml sensor = rd.child(root, "sensor", "");
 	Calibration common;
@@ -808,6 +838,8 @@ CalibrationSet parseCalibrationYaml(const std::string& text, const std::string& 
 		cal.axis = readAxisLetter(rd, sensor, "sensor");
 		readAxisFields(rd, root, "", root, "", root, "", cal);
 		if (readsLags(cal)) rd.fail("model", "reads lag signals (dTlag/dt), which need file version 3 (the file says 1)");
+		if (root.has("magnetic"))
+			rd.fail("magnetic", "a magnetic-sensitivity section needs file version 3 (the file says 1)");
 		set.axes.push_back(std::move(cal));
 		return set;
 	}
@@ -836,7 +868,7 @@ CalibrationSet parseCalibrationYaml(const std::string& text, const std::string& 
 		readAxisFields(rd, a, p, rd.child(a, "bias", p), p + ".bias", a, p, cal);
 		if (readsLags(cal))
 		{
-			if (version < kVersionLags)
+			if (version < kVersionExtended)
 				rd.fail(p + ".bias", "reads lag signals (dTlag/dt), which need file version 3 (the file says " + num(version) + ")");
 			if (rd.text(rd.child(a, "bias", p), "lag_filter", p + ".bias") != kLagFilter)
 				rd.fail(p + ".bias.lag_filter", std::string("expected \"") + kLagFilter + "\" (the only lag this build runs)");
@@ -858,6 +890,13 @@ CalibrationSet parseCalibrationYaml(const std::string& text, const std::string& 
 						"'" + cal.scale_factor->thermistor + "' is not in sensor.thermistors");
 		}
 		if (a.has("warmup")) cal.warmup = readWarmup(rd, a["warmup"], p + ".warmup");
+		if (a.has("magnetic"))
+		{
+			if (version < kVersionExtended)
+				rd.fail(p + ".magnetic", "a magnetic-sensitivity section needs file version 3 (the file says " +
+											 num(version) + "): a version-2 reader would ignore it");
+			cal.magnetic = readMagnetic(rd, a["magnetic"], p + ".magnetic");
+		}
 		set.axes.push_back(std::move(cal));
 	}
 	return set;

@@ -252,7 +252,8 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 		sf_initial_ppm_ = sf_ppm_ = sf_->evaluate_ppm(sf_->centre_C);
 	}
 	warmup_ = cal.warmup;
-	extras_ = sf_.has_value() || warmup_.has_value();
+	magnetic_ = cal.magnetic;
+	extras_ = sf_.has_value() || warmup_.has_value() || magnetic_.has_value();
 	use_avx2_ = avx2 && !names.empty() && names.size() <= 4;  // stepAvx2 covers 1..4 channels
 	const std::size_t padded = 4 * ((names.size() + 3) / 4);
 	temp_.assign(padded, 0.0);  // padding lanes stay 0: finite, never clamped, zero coefficients
@@ -268,9 +269,15 @@ void Compensator::reset()
 	last_model_ = kNoSampleYet;
 	sf_ppm_ = sf_initial_ppm_;
 	power_on_s_ = std::numeric_limits<double>::quiet_NaN();
+	field_uT_ = std::numeric_limits<double>::quiet_NaN();
 }
 
 void Compensator::notePowerOn(double time_s) { power_on_s_ = time_s; }
+
+void Compensator::noteField(double field_uT)
+{
+	field_uT_ = std::isfinite(field_uT) ? field_uT : std::numeric_limits<double>::quiet_NaN();
+}
 
 void Compensator::notePowerOnFromMetadata(const FogSeries& log)
 {
@@ -303,6 +310,13 @@ void Compensator::notePowerOnFromMetadata(const FogSeries& log)
 		out.bias_dph += warmup_->bias_dph(time_s - power_on_s_);
 		// the start-up model's own error at a turn-on, only in the first rate window after it
 		if (out.model == kStartupModel && time_s - power_on_s_ <= window_s_) out.bias_dph += warmup_->startup_offset_dph;
+	}
+	if (magnetic_)
+	{
+		if (std::isnan(field_uT_))
+			counters_.field_unknown_samples++;
+		else
+			out.bias_dph += magnetic_->bias_dph(field_uT_);
 	}
 	double r = raw_dph - out.bias_dph;
 	if (sf_)
@@ -547,6 +561,7 @@ CompensationCounters compensateRun(const Calibration& cal, const FogRun& run, co
 	run.forEachChunk([&](const FogSeries& c, std::size_t k0) {
 		const std::size_t n = c.size();
 		const bool warm = cal.warmup && !c.power.empty();
+		const bool field = cal.magnetic && c.field_uT.size() == n;  // else the field stays unknown
 		const auto turnOn = [&](std::size_t j) { return c.power[j] != 0.0 && (j > 0 ? c.power[j - 1] : prev_power) == 0.0; };
 		for (std::size_t j0 = 0, m = 0; j0 < n; j0 += m)
 		{
@@ -561,12 +576,26 @@ CompensationCounters compensateRun(const Calibration& cal, const FogRun& run, co
 					}
 			for (std::size_t j = 0; j < m; j++)
 				for (std::size_t i = 0; i < nt; i++) rows[j * stride + i] = c.temp_C[i][j0 + j];
-			comp.stepBatch(m, c.time_s.data() + j0, c.rate_dph[axis].data() + j0, rows.data(), stride, res.data());
+			if (field)  // the field changes per sample: step() after noteField() (the same numbers as stepBatch)
+				for (std::size_t j = 0; j < m; j++)
+				{
+					comp.noteField(c.field_uT[j0 + j]);
+					res[j] = comp.step(c.time_s[j0 + j], c.rate_dph[axis][j0 + j], rows.data() + j * stride);
+				}
+			else
+				comp.stepBatch(m, c.time_s.data() + j0, c.rate_dph[axis].data() + j0, rows.data(), stride, res.data());
 			sink(c, k0, j0, m, res.data());
 		}
 		if (!c.power.empty() && n > 0) prev_power = c.power[n - 1];
 	});
 	return comp.counters();
+}
+
+std::string fieldMissingWarning(const Calibration& cal, const FogSeries& series)
+{
+	if (!cal.magnetic || !series.field_uT.empty()) return {};
+	return "the calibration has a magnetic section (" + formatValue("%g", cal.magnetic->dph_per_uT) +
+		   " deg/h per uT) but the log has no field column: compensated without the field term";
 }
 
 CompensatedSeries compensate(const Calibration& cal, const FogSeries& series)

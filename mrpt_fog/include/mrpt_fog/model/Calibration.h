@@ -37,6 +37,7 @@
  * than min_temp_span_per_order_C x order, a rank-deficient system with plain least squares.
  */
 
+#include <mrpt_fog/model/MagneticModel.h>
 #include <mrpt_fog/model/RateEstimator.h>
 #include <mrpt_fog/model/ScaleFactorModel.h>
 #include <mrpt_fog/model/ThermalFeatureSet.h>
@@ -353,6 +354,9 @@ struct Calibration
 	SelectionStability selection_stability;  //!< see SelectionStability (stored in the bias section of version 2 files)
 	std::optional<ScaleFactorModel> scale_factor;  //!< absent: nominal scale factor (s = 0)
 	std::optional<WarmupModel> warmup;  //!< absent: no turn-on term
+	/** Bias per applied axial magnetic field (MagneticModel.h); absent: no field term (the
+	 * compensator then ignores any field it is given). */
+	std::optional<MagneticModel> magnetic;
 	/** Gaps in the calibration runs longer than the rate window (burst logs): dT/dt cannot be
 	 * estimated across a gap, so each restart's first samples (no rate yet) are left out of the
 	 * fit. Reported by fog-calibrate; not stored in the file. */

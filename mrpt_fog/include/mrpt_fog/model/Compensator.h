@@ -9,7 +9,12 @@
  *   bias_dph += warmup(t - t_on)   (from a known turn-on t_on on: notePowerOn)
  *   compensated_dph = (raw_dph - bias_dph) / (1 + 1e-6 s_ppm(T))
  * with T the scale-factor thermistor's current reading (clamped to its calibrated range; while
- * it is missing the last valid s is held, before any valid reading s at the range centre).
+ * it is missing the last valid s is held, before any valid reading s at the range centre),
+ * and, when the calibration has a magnetic section (version 3, MagneticModel.h), the Faraday term
+ *   bias_dph += dph_per_uT * B_uT
+ * with B_uT the applied axial field given by noteField() (not a thermistor: its own input, held
+ * until the next call; while it is unknown no field term is added and the sample is counted in
+ * CompensationCounters::field_unknown_samples).
  * Without those sections the per-sample work is one extra predictable branch.
  *
  * Rates come from the causal estimator recorded in the calibration (a calibration fitted with
@@ -86,6 +91,9 @@ struct CompensationCounters
 	std::size_t warmup_samples = 0;
 	std::size_t rate_free_samples = 0;  //!< samples compensated by the rate-free start-up model
 	std::size_t model_switches = 0;  //!< changes of the model in use
+	/** Samples without a known applied field (noteField never called, or NaN) while the
+	 * calibration has a magnetic section: compensated without the field term. */
+	std::size_t field_unknown_samples = 0;
 };
 
 /** Which build of the per-sample code a Compensator runs. Both give bitwise the same numbers
@@ -132,7 +140,13 @@ class Compensator
 	/** notePowerOn() at the turn-on the log's metadata `power_on_time_s` names, if it has one;
 	 * throws std::invalid_argument when that value is not a time [s]. */
 	void notePowerOnFromMetadata(const FogSeries& log);
-	/** Forgets the state (rates, counters, the turn-on, the held scale factor). */
+	/** The applied axial magnetic field [uT] from the next step() on, held until the next call.
+	 * A non-finite value means unknown (no field term; counted). Only a calibration with a
+	 * magnetic section reads it; without any call the field is unknown. */
+	void noteField(double field_uT);
+	/** The calibration has a magnetic section: the field term needs noteField(). */
+	bool readsField() const { return magnetic_.has_value(); }
+	/** Forgets the state (rates, counters, the turn-on, the held scale factor, the field). */
 	void reset();
 	/** The build of the per-sample code in use: "avx2" or "portable". */
 	const char* kernelBuild() const { return use_avx2_ ? "avx2" : "portable"; }
@@ -168,7 +182,7 @@ class Compensator
 	/** Delay-compensated rates (causal estimator of order 2): rate_ = 2 x slope over the last
 	 * half window - slope over the whole window (exact for a quadratic signal). Out of line. */
 	void delayCompensateRates(double time_s, const double* temp_C);
-	/** Warm-up and scale factor (only when the calibration has one of them): out of line. */
+	/** Warm-up, magnetic term and scale factor (only when the calibration has one of them): out of line. */
 	void applyExtras(Output& out, double time_s, double raw_dph, const double* temp_C);
 
 	double window_s_;
@@ -191,13 +205,15 @@ class Compensator
 	CompensationCounters counters_;
 	static constexpr int kNoSampleYet = -2;  //!< last_model_ before the first sample
 	int last_model_ = kNoSampleYet;
-	bool extras_ = false;  // a scale-factor or warm-up model is present
+	bool extras_ = false;  // a scale-factor, warm-up or magnetic model is present
 	std::optional<ScaleFactorModel> sf_;
 	int sf_col_ = -1;  // layout column of the scale-factor thermistor
 	std::vector<int> sf_cols_;  // or the columns whose mean it reads (ScaleFactorModel::thermistors)
 	double sf_ppm_ = 0, sf_initial_ppm_ = 0;  // held value; value before any valid reading
 	std::optional<WarmupModel> warmup_;
 	double power_on_s_ = std::numeric_limits<double>::quiet_NaN();
+	std::optional<MagneticModel> magnetic_;
+	double field_uT_ = std::numeric_limits<double>::quiet_NaN();  // held applied field, NaN = unknown
 };
 
 /** Output of compensate(): columns of the same length as the input. */
@@ -214,8 +230,15 @@ struct CompensatedSeries
 /** Compensates the calibrated axis of a series (validated first; throws std::invalid_argument
  * on a layout mismatch or a missing axis). Turn-ons for the warm-up term: the series' metadata
  * `power_on_time_s` (time_s of the turn-on that precedes or starts the log) and every 0 -> 1
- * step of its power column. */
+ * step of its power column. The applied field for a magnetic section: the series' field_uT
+ * column, sample by sample (NaN = unknown); a series without that column leaves the field
+ * unknown (counters.field_unknown_samples; fieldMissingWarning() says so in words). */
 CompensatedSeries compensate(const Calibration& cal, const FogSeries& series);
+
+/** A one-line warning when `cal` has a magnetic section but `series` has no field column (the
+ * field term cannot be applied: the output lacks it), else empty. For the programs that
+ * compensate a log: never silently without the field. */
+std::string fieldMissingWarning(const Calibration& cal, const FogSeries& series);
 
 /** Receives the compensator's outputs for samples j0 .. j0 + m - 1 of `chunk` (run samples
  * k0 + j0 ..). */
