@@ -19,6 +19,7 @@
 #include <sstream>
 
 #include "AppMain.h"
+#include "FieldWarning.h"
 #include "RangeWarning.h"
 #include "CommandLine.h"
 #include "Progress.h"
@@ -55,6 +56,12 @@ OUTPUT (by extension of -o)
             temp_<name>_C...  flags: 1 fallback, 2 no model, 4 clamped, 8 rate warm-up,
             16 rate-free start-up model (rates not yet estimable: start, burst, gap).
             With a calibration of several axes: the four columns per axis (flags_<a>).
+
+MAGNETIC TERM
+  A calibration with a magnetic section (written by fog-discrepancy --write-cal) adds
+  dph_per_uT x the applied axial field to the bias, the field read from the log's field_uT
+  column sample by sample. Without that column (or on empty cells) the term is left out and a
+  warning on stderr says on how many samples ("magnetic" in --json).
 
 SEVERAL AXES
   Every axis in the calibration file is compensated with its own model (a calibration axis
@@ -225,6 +232,7 @@ int main(int argc, char** argv)
 			{
 				if (turn_on && cals.axes[i].warmup) comps[i]->notePowerOn(x.time_s);
 				raw[i] = x.rate_dph[axis_index[i]];
+				if (comps[i]->readsField()) comps[i]->noteField(x.field_uT);  // NaN when the log has none
 				r[i] = comps[i]->step(x.time_s, raw[i], temps.data());
 			}
 			if (csv_out) csv_out->write(x.time_s, raw, r, x.temp_C);
@@ -273,6 +281,8 @@ int main(int argc, char** argv)
 		std::fputs(app::screeningText(screening, screen).c_str(), stdout);
 		for (std::size_t i = 0; i < comps.size(); i++)
 			std::fputs(app::outOfRangeWarning(comps[i]->counters(), cals.axes[i].extrapolation).c_str(), stdout);
+		for (std::size_t i = 0; i < comps.size(); i++)
+			std::fputs(app::fieldWarning(cals.axes[i], comps[i]->counters(), reader.hasField()).c_str(), stderr);
 		if (!arg_json.getValue().empty())
 		{
 			JsonValue j = JsonValue::object();
@@ -286,6 +296,7 @@ int main(int argc, char** argv)
 			j["turn_on_events"] = static_cast<unsigned long>(power_cycles.turn_ons);
 			j["screening"] = app::screeningJson(screening, screen);
 			j["out_of_range"] = app::outOfRangeJson(k, cal.extrapolation);
+			if (cal.magnetic) j["magnetic"] = app::fieldJson(cal, k, reader.hasField());
 			if (several)  // the counters above are the first calibrated axis'; every axis here
 			{
 				JsonValue& ja = j["axes"] = JsonValue::object();
@@ -295,6 +306,7 @@ int main(int argc, char** argv)
 					JsonValue& a = ja[std::string(1, axis_letter[i])] = JsonValue::object();
 					putCounters(a, c, false);
 					a["out_of_range"] = app::outOfRangeJson(c, cals.axes[i].extrapolation);
+					if (cals.axes[i].magnetic) a["magnetic"] = app::fieldJson(cals.axes[i], c, reader.hasField());
 				}
 			}
 			writeTextFileAtomically(arg_json.getValue(), j.dump());

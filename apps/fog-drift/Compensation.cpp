@@ -1,6 +1,7 @@
 /* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
 #include "Compensation.h"
 
+#include "FieldWarning.h"
 #include "RangeWarning.h"
 #include "ThermistorScreeningReport.h"
 
@@ -13,7 +14,7 @@
 namespace mrpt_fog::drift
 {
 std::vector<double> compensatedRate_dph(const FogSeries& fog, const Calibration& cal, const std::string& cal_path,
-										bool screen_thermistors)
+										bool screen_thermistors, std::string* field_warning)
 {
 	if (!fog.has_axis[static_cast<std::size_t>(cal.axis)])
 		throw std::runtime_error(cal_path + ": calibration is for axis " + std::string(1, axisLetter(cal.axis)) +
@@ -38,12 +39,17 @@ std::vector<double> compensatedRate_dph(const FogSeries& fog, const Calibration&
 					"calibrated range\n",
 					c.samples, c.fallback_samples, c.no_model_samples, c.clamped_samples);
 	std::fputs(app::outOfRangeWarning(c, cal.extrapolation).c_str(), stdout);
+	const std::string w = app::fieldWarning(cal, c, !fog.field_uT.empty());
+	std::fputs(w.c_str(), stderr);
+	if (field_warning) *field_warning += w;
 	return rate;
 }
 
-std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string& cal_path, bool screen_thermistors)
+std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string& cal_path, bool screen_thermistors,
+										std::string* field_warning)
 {
-	return compensatedRate_dph(fog, loadCalibrationYaml(cal_path, GyroAxis::Z), cal_path, screen_thermistors);
+	return compensatedRate_dph(fog, loadCalibrationYaml(cal_path, GyroAxis::Z), cal_path, screen_thermistors,
+							   field_warning);
 }
 
 }  // namespace mrpt_fog::drift

@@ -17,11 +17,13 @@ namespace mrpt_fog::drift
 /** Compensated rate of the calibration's axis [deg/h], one value per sample of fog, with the
  * calibration `cal` read from `cal_path` (named in messages). With `screen_thermistors` the
  * thermistor readings are screened first (stuck / spike / out of range -> dropout, see
- * ThermistorHealth.h; a summary is printed). Throws on a log without that axis or a layout
- * mismatch (message names the file). */
+ * ThermistorHealth.h; a summary is printed). The log's field column feeds a magnetic term; when
+ * it is unknown a warning goes to stderr and is appended to `field_warning`. Throws on a log
+ * without that axis or a layout mismatch (message names the file). */
 std::vector<double> compensatedRate_dph(const FogSeries& fog, const Calibration& cal, const std::string& cal_path,
-										bool screen_thermistors);
+										bool screen_thermistors, std::string* field_warning = nullptr);
 /** The same with the file's z-axis calibration loaded from cal_path. */
-std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string& cal_path, bool screen_thermistors);
+std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string& cal_path, bool screen_thermistors,
+										std::string* field_warning = nullptr);
 
 }  // namespace mrpt_fog::drift

@@ -120,6 +120,8 @@ JsonValue driveJson(const DriveEvaluation& e, const DriftContext& ctx)
 	j["calibration_earth_rate_dph"] = ctx.calibration_earth_rate_dph;
 	j["calibration_latitude_source"] =
 		ctx.calibration_latitude_source.empty() ? JsonValue() : JsonValue(ctx.calibration_latitude_source);
+	if (e.magnetic_term)  // only for a calibration with a magnetic section: other reports keep their keys
+		j["magnetic_field_warning"] = e.field_warning.empty() ? JsonValue() : JsonValue(e.field_warning);
 	return j;
 }
 }  // namespace

@@ -201,7 +201,10 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 			const Calibration* c = cals->forAxis(a);
 			const std::size_t i = static_cast<std::size_t>(a);
 			if (c && (e.three_axis || a == GyroAxis::Z))
-				comp[i] = compensatedRate_dph(fog, *c, st.cal_path, st.screen_thermistors);
+			{
+				comp[i] = compensatedRate_dph(fog, *c, st.cal_path, st.screen_thermistors, &e.field_warning);
+				e.magnetic_term |= c->magnetic.has_value();
+			}
 			else
 				comp[i] = fog.rate_dph[i];  // not integrated (vertical gyro alone) or absent
 		}

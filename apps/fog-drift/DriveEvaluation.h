@@ -88,6 +88,10 @@ struct DriveEvaluation
 	double latitude_deg = 0.0;
 	double calibration_earth_rate_dph = 0.0;  //!< vertical Earth rate the calibration's bias held
 	std::string calibration_latitude_source;  //!< "option", "calibration" or "drive"
+	/** A calibrated axis has a magnetic section (MagneticModel.h), and the warning when the drive
+	 * lacked the field on some samples (apps/common/FieldWarning.h; "" when it had it throughout). */
+	bool magnetic_term = false;
+	std::string field_warning;
 	std::vector<nav::NamedTrajectory> variants;  //!< names; trajectories as DriveSettings::keep_trajectories says (else empty)
 	std::vector<VariantResult> results;  //!< same order as variants (their trajectories moved there)
 	nav::DriftReport report;

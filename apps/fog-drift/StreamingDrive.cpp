@@ -6,6 +6,7 @@
 
 #include "PowerCycles.h"
 #include "Progress.h"
+#include "FieldWarning.h"
 #include "RangeWarning.h"
 #include "ThermistorScreeningReport.h"
 
@@ -778,6 +779,7 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 				const double power = has_power ? x.power : NAN;
 				if (zcal->warmup && app::isTurnOn(prev_power, power)) compensator->notePowerOn(x.time_s);
 				prev_power = power;
+				if (compensator->readsField()) compensator->noteField(x.field_uT);  // NaN when the log has none
 				double r;
 				try
 				{
@@ -813,6 +815,9 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 						"calibrated range\n",
 						c.samples, c.fallback_samples, c.no_model_samples, c.clamped_samples);
 		std::fputs(app::outOfRangeWarning(c, zcal->extrapolation).c_str(), stdout);
+		e.magnetic_term = zcal->magnetic.has_value();
+		e.field_warning = app::fieldWarning(*zcal, c, !h.field_uT.empty());
+		std::fputs(e.field_warning.c_str(), stderr);
 	}
 
 	off_yaw.finish();

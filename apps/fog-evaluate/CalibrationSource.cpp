@@ -25,6 +25,8 @@ CompensationResult compensateWithCalibration(const std::string& cal_path, const 
 	CompensationResult r;
 	r.axis = cal.axis;
 	r.extrapolation = cal.extrapolation;
+	r.calibration = cal;
+	r.log_has_field = run.hasField();
 	try
 	{
 		r.counters = compensateRun(cal, run, sink);

@@ -15,6 +15,8 @@ struct CompensationResult
 	/** The evaluated log is one of the calibration's runs: the figures are in-sample. */
 	bool in_sample = false;
 	ExtrapolationPolicy extrapolation = ExtrapolationPolicy::Linear;  //!< the calibration's policy
+	Calibration calibration;  //!< as loaded (its magnetic section, if any, for the field warning)
+	bool log_has_field = false;  //!< the run has a field column (fed to the magnetic term)
 };
 
 /** Loads the calibration YAML at cal_path and runs the causal compensator (model/Compensator.h)

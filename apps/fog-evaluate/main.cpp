@@ -13,6 +13,7 @@
 #include "PowerCycles.h"
 #include "ThermistorScreeningReport.h"
 #include "CalibrationSource.h"
+#include "FieldWarning.h"
 #include "RangeWarning.h"
 #include "EvaluationPlots.h"
 #include "RateEvaluation.h"
@@ -183,6 +184,7 @@ int main(int argc, char** argv)
 			if (comp_series->in_sample)
 				std::printf("  * in-sample: this log is one of the calibration's runs\n");
 			std::fputs(app::outOfRangeWarning(k, comp_series->extrapolation).c_str(), stdout);
+			std::fputs(app::fieldWarning(comp_series->calibration, k, comp_series->log_has_field).c_str(), stderr);
 		}
 		if (comp_series) std::fputs(app::screeningText(screening, !no_screen.getValue()).c_str(), stdout);
 		if (power_cycles.gyro_off_rows)
@@ -231,6 +233,8 @@ int main(int argc, char** argv)
 				j["compensated"]["rate_warmup_samples"] = k.warmup_samples;
 				j["compensated"]["rate_free_samples"] = k.rate_free_samples;
 				j["compensated"]["out_of_range"] = app::outOfRangeJson(k, comp_series->extrapolation);
+				if (comp_series->calibration.magnetic)
+					j["compensated"]["magnetic"] = app::fieldJson(comp_series->calibration, k, comp_series->log_has_field);
 				j["screening"] = app::screeningJson(screening, !no_screen.getValue());
 				j["improvement"]["stability_ratio"] = raw.stats.stability_dph / comp->stats.stability_dph;
 				j["improvement"]["range_ratio"] = raw.stats.range_dph / comp->stats.range_dph;
