@@ -3,9 +3,12 @@
  * run through the compensator, on the lumped-coil second generator (truth: its hidden z^5). */
 #include <gtest/gtest.h>
 #include <mrpt_fog/discrepancy/CalibrationAugment.h>
+#include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/Compensator.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 #include "LumpedCoilGenerator.h"
 
@@ -107,7 +110,9 @@ TEST(CalibrationAugment, WarmupFromATurnOnInsideARunThatStartsPowered)
 
 TEST(CalibrationAugment, NothingAddableLeavesTheCalibrationUnchanged)
 {
-	const auto r1 = fogtest::makeLumpedCoilRun({});
+	fogtest::LumpedCoilOptions o;
+	o.profile = "cooling";  // no field segments: the analysed run has no field column
+	const auto r1 = fogtest::makeLumpedCoilRun(o);
 	NamedEffect mag;
 	mag.id = "magnetic";
 	const auto aug = augmentCalibration("M2:Ca@3/1", {mag}, r1.series, nullptr, "");
@@ -116,7 +121,87 @@ TEST(CalibrationAugment, NothingAddableLeavesTheCalibrationUnchanged)
 	EXPECT_EQ(aug.augmented.model.features.termNames(), aug.base.model.features.termNames());
 	EXPECT_EQ(aug.augmented.model.coef_dph, aug.base.model.coef_dph);
 	ASSERT_EQ(aug.not_written.size(), 1u);
-	EXPECT_NE(aug.not_written[0].second.find("no magnetic-field input"), std::string::npos);
+	EXPECT_EQ(aug.not_written[0].second, "the analysed run has no field column");
+	EXPECT_FALSE(aug.magnetic_added);
+	EXPECT_FALSE(aug.augmented.magnetic.has_value());
+}
+
+namespace
+{
+/** The generator's hidden k [deg/h per uT]: effect = k x field wherever the gyro is on. */
+double hiddenDphPerUt(const fogtest::LumpedCoilRun& r)
+{
+	const auto& e = r.effect_dph.at("magnetic");
+	for (std::size_t k = 0; k < r.series.size(); k++)
+		if (r.series.field_uT[k] != 0.0 && e[k] != 0.0) return e[k] / r.series.field_uT[k];
+	return NAN;
+}
+NamedEffect magneticNamed()
+{
+	NamedEffect mag;
+	mag.id = "magnetic";
+	return mag;
+}
+}  // namespace
+
+// A named magnetic effect becomes the calibration's magnetic section, refitted on the analysed
+// run (effect/noise 3 and 1); the confirmation run through the compensator, fed its field, loses
+// the gap; the file written compensates the same.
+TEST(CalibrationAugment, MagneticBecomesTheCalibrationsFieldTerm)
+{
+	for (double ratio : {3.0, 1.0})
+	{
+		fogtest::LumpedCoilOptions o1, o2;
+		o2.seed = 2;
+		o1.hidden["magnetic"] = o2.hidden["magnetic"] = ratio;
+		const auto r1 = fogtest::makeLumpedCoilRun(o1), r2 = fogtest::makeLumpedCoilRun(o2);
+		const auto aug = augmentCalibration("M2:Ca@3/1", {magneticNamed()}, r1.series, &r2.series, "run2");
+		EXPECT_TRUE(aug.not_written.empty());
+		ASSERT_TRUE(aug.magnetic_added);
+		ASSERT_TRUE(aug.augmented.magnetic.has_value());
+		const MagneticModel& m = *aug.augmented.magnetic;
+		std::printf("x%g: k %.4g +- %.2g deg/h per uT (truth %.4g); run 2 through the compensator RMS %.4f -> %.4f deg/h "
+					"(noise RMS %.4f)\n",
+					ratio, m.dph_per_uT, m.dph_per_uT_std, hiddenDphPerUt(r1), aug.before.rms_dph, aug.after.rms_dph,
+					r2.noise_rms_dph);
+		EXPECT_GT(m.dph_per_uT_std, 0.0);
+		EXPECT_EQ(m.field_min_uT, -100.0);
+		EXPECT_EQ(m.field_max_uT, 100.0);
+		// the thermal model is the base's: only the field term is added
+		EXPECT_EQ(aug.augmented.model.coef_dph, aug.base.model.coef_dph);
+		EXPECT_TRUE(aug.added_terms.empty());
+		ASSERT_TRUE(aug.has_confirm);
+		EXPECT_LT(aug.after.rms_dph, aug.before.rms_dph) << "x" << ratio;
+		// the hidden part is ratio x the noise RMS: most of the excess over the noise goes
+		EXPECT_LT(aug.after.rms_dph - r2.noise_rms_dph, 0.5 * (aug.before.rms_dph - r2.noise_rms_dph)) << "x" << ratio;
+		// the file written (version 3) compensates exactly as the calibration evaluated
+		const Calibration back = calibrationFromYaml(calibrationToYaml(aug.augmented), "aug.yaml");
+		EXPECT_EQ(compensate(back, r2.series).bias_dph, compensate(aug.augmented, r2.series).bias_dph);
+	}
+}
+
+// The written coefficient's 95 % interval holds the generator's k on 10 analysed runs (seeds
+// 1..10, effect/noise 1, 5 s sampling; 10/10 when written, 9/10 at 1 s): at least 8 (with a
+// true 95 % coverage, 7 or fewer has probability 1 %).
+TEST(CalibrationAugment, MagneticCoefficientWithinIts95PercentInterval)
+{
+	int inside = 0;
+	for (std::uint64_t seed = 1; seed <= 10; seed++)
+	{
+		fogtest::LumpedCoilOptions o;
+		o.seed = seed;
+		o.dt_s = 5.0;
+		o.hidden["magnetic"] = 1.0;
+		const auto r = fogtest::makeLumpedCoilRun(o);
+		const auto aug = augmentCalibration("M2:Ca@3/1", {magneticNamed()}, r.series, nullptr, "");
+		ASSERT_TRUE(aug.augmented.magnetic.has_value());
+		const MagneticModel& m = *aug.augmented.magnetic;
+		const double z = (m.dph_per_uT - hiddenDphPerUt(r)) / m.dph_per_uT_std;
+		std::printf("seed %llu: k %.5g +- %.2g (truth %.5g): z %.2f\n", static_cast<unsigned long long>(seed),
+					m.dph_per_uT, m.dph_per_uT_std, hiddenDphPerUt(r), z);
+		inside += std::fabs(z) <= 1.959964;
+	}
+	EXPECT_GE(inside, 8);
 }
 
 TEST(CalibrationAugment, ScaleFactorTempBecomesTheCalibrationsScaleFactorModel)

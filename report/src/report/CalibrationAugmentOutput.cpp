@@ -7,7 +7,8 @@ namespace mrpt_fog::discrepancy
 namespace
 {
 /** The added terms' names, then the refitted scale factor: "scale_factor(T(thermistor), order
- * N, slope ppm/degC)". */
+ * N, slope ppm/degC)", then the magnetic sensitivity: "magnetic(k +- std deg/h per uT, field
+ * min .. max uT)". */
 std::vector<std::string> addedTermLabels(const AugmentedCalibration& aug)
 {
 	std::vector<std::string> labels = aug.added_terms;
@@ -16,6 +17,13 @@ std::vector<std::string> addedTermLabels(const AugmentedCalibration& aug)
 		const ScaleFactorModel& sf = *aug.augmented.scale_factor;
 		labels.push_back("scale_factor(T(" + sf.thermistor + "), order " + std::to_string(sf.order()) + ", " +
 						 formatValue("%.4g", sf.slope_ppm_per_C) + " ppm/degC)");
+	}
+	if (aug.magnetic_added && aug.augmented.magnetic)
+	{
+		const MagneticModel& m = *aug.augmented.magnetic;
+		labels.push_back("magnetic(" + formatValue("%.4g", m.dph_per_uT) + " +- " + formatValue("%.2g", m.dph_per_uT_std) +
+						 " deg/h per uT, field " + formatValue("%g", m.field_min_uT) + " .. " +
+						 formatValue("%g", m.field_max_uT) + " uT)");
 	}
 	return labels;
 }
@@ -61,6 +69,15 @@ JsonValue augmentedCalibrationJson(const AugmentedCalibration& aug, const std::s
 	j["path"] = path;
 	j["added_terms"] = JsonValue::arrayOf(addedTermLabels(aug));
 	if (aug.rate_window.changed) j["rate_estimator_chosen"] = rateWindowNote(aug);
+	if (aug.magnetic_added && aug.augmented.magnetic)
+	{
+		const MagneticModel& m = *aug.augmented.magnetic;
+		j["magnetic"] = JsonValue::object({{"dph_per_uT", m.dph_per_uT},
+										   {"dph_per_uT_std", m.dph_per_uT_std},
+										   {"field_min_uT", m.field_min_uT},
+										   {"field_max_uT", m.field_max_uT},
+										   {"samples", static_cast<unsigned long>(m.samples)}});
+	}
 	j["not_written"] = JsonValue::arrayOf(
 		aug.not_written, [](const auto& nw) { return JsonValue::object({{"id", nw.first}, {"reason", nw.second}}); });
 	if (aug.has_confirm)

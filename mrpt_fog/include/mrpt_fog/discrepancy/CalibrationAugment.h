@@ -5,7 +5,8 @@
  * Closing the loop (fog-discrepancy --write-cal): the calibration under test, plus the named
  * and confirmed effects that the compensator can run, refitted on the analysed run by the
  * calibration code (fitCalibration), and the gap before/after measured on the confirmation run
- * through the compensator (evaluateCalibration: exactly what fog-compensate computes).
+ * through the compensator (evaluateCalibration: exactly what fog-compensate computes, the
+ * run's applied field fed to a magnetic section).
  *
  * Effect -> compensator terms (thermal terms as extra bias terms, model/ThermalFeatureSet.h;
  * IN = first inner thermistor, OUT = first outer one, S = the thermistor of the base's
@@ -24,8 +25,17 @@
  *                    thermistor and order >= 1 chosen by leave-one-temperature-out error:
  *                    the naming has established a dependence) after the bias; when that fit
  *                    refuses (e.g. fewer than 3 soaks), it is listed as not written
- * Effects without a compensator term (magnetic: the compensator has no field input;
- * hysteresis, thermistor_lag) are listed in `not_written` with the reason.
+ *   magnetic         the calibration's (v3) magnetic section, bias += dph_per_uT x field_uT:
+ *                    refitted on the analysed run, not taken from the analysis or the
+ *                    confirmation run: the residual of the augmented calibration (thermal
+ *                    terms above refitted) through the compensator, over the powered samples
+ *                    with a field and no table rate, regressed by generalised least squares
+ *                    on field_uT and a slow piecewise-linear drift (knots every shortest
+ *                    constant-field stretch; ARMA(1,1) noise by REML, whitened; standard error
+ *                    times the Bartlett long-run variance factor); not written when the run's
+ *                    field does not vary (or it has no field column)
+ * Effects without a compensator term (hysteresis, thermistor_lag) are listed in `not_written`
+ * with the reason.
  * The base calibration: the YAML given, or fitCalibration(run, preset) with default options
  * (what fog-calibrate writes). The augmented one: the base's selected terms plus the added
  * ones, fitted by plain least squares on the same run (selection "none": the named terms are
@@ -65,6 +75,8 @@ struct AugmentedCalibration
 	/** The scale factor versus temperature was refitted and added (augmented.scale_factor, of
 	 * order >= 1). */
 	bool scale_factor_added = false;
+	/** The magnetic sensitivity was refitted and added (augmented.magnetic). */
+	bool magnetic_added = false;
 	std::vector<std::pair<std::string, std::string>> not_written;  //!< effect id, why
 	RateWindowChoice rate_window;
 	bool has_confirm = false;
