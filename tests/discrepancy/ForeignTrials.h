@@ -217,7 +217,7 @@ inline double compensatorGapShare(const std::string& hidden, double ratio, std::
 		char buf[400];
 		std::snprintf(buf, sizeof buf, "seed %llu %s x%g: %s; added %zu terms; RMS %.4f -> %.4f (oracle %.4f): share %.2f",
 					  static_cast<unsigned long long>(seed), hidden.c_str(), ratio, rep.verdict().c_str(),
-					  aug.added_terms.size() + (aug.scale_factor_added ? 1 : 0), aug.before.rms_dph, aug.after.rms_dph, oracle.rms_dph, share);
+					  aug.added_terms.size() + (aug.scale_factor_added ? 1 : 0) + (aug.magnetic_added ? 1 : 0), aug.before.rms_dph, aug.after.rms_dph, oracle.rms_dph, share);
 		*line = buf;
 		for (const auto& [id, why] : aug.not_written) *line += "; not written " + id + " (" + why + ")";
 		if (aug.rate_window.changed)
