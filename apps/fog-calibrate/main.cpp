@@ -6,6 +6,7 @@
 #include <mrpt_fog/common/OutputSafety.h>
 #include <mrpt_fog/common/JsonWriter.h>
 #include <mrpt_fog/common/NumberFormat.h>
+#include <mrpt_fog/discrepancy/MagneticFit.h>
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/model/AxisRuns.h>
 #include <mrpt_fog/model/Calibration.h>
@@ -147,6 +148,17 @@ WARM-UP (--warmup-run RUN, repeatable; --warmup-terms 1|2|auto)
   (metadata power_on_time_s, 0 -> 1 steps). A run with no turn-on, a span under 600 s, or no
   decay resolved stops fog-calibrate with the reason.
 
+MAGNETIC SENSITIVITY (--magnetic auto|off)
+  With auto (the default), when an -i run has a field_uT column whose value changes over its
+  powered samples (field segments: an axial field switched on and off), the bias per applied
+  field is fitted on the residual of the calibration (bias and scale factor) over the powered
+  samples without table rate: generalised least squares on the field and a slow drift per run
+  (knots every shortest constant-field stretch), standard error from the whitened fit
+  (discrepancy/MagneticFit.h). It is written as the axis' magnetic section (file version 3);
+  the compensator adds dph_per_uT x field_uT, the field read from the log (fog-compensate).
+  Printed with its standard error; when the runs cannot support it, the reason is printed and
+  no section is written. off: never fitted. The bias fit itself does not see the field.
+
 THREE AXES (--axis x|y|z|all)
   A log with several gyro axes (rate_x/y/z_dph) is calibrated per axis, every axis the -i
   runs share unless --axis names one; the file holds one model per axis. A rate-table run
@@ -269,6 +281,7 @@ struct AxisFit
 	bool earth_rate_removed = false;
 	bool validated = false;
 	std::string warmup_terms_why;  //!< how the warm-up term count was chosen
+	std::string magnetic_why_not;  //!< why the runs' field segments gave no magnetic section ("" otherwise)
 };
 
 CompensationCounters validationRange(const Calibration& cal)
@@ -375,6 +388,16 @@ void printAxis(const AxisFit& f, double tau_s, bool validated)
 	}
 	if (!cal.scale_factor && f.table_rates)
 		std::printf("  scale factor: not fitted (--scale-factor off): table samples used as bias samples\n");
+	if (cal.magnetic)
+	{
+		const auto& m = *cal.magnetic;
+		std::printf("  magnetic: %.4g +- %.2g deg/h per uT (95 %% interval %.4g .. %.4g) over the field %g .. %g uT, %zu "
+					"samples\n",
+					m.dph_per_uT, m.dph_per_uT_std, m.dph_per_uT - 1.959964 * m.dph_per_uT_std,
+					m.dph_per_uT + 1.959964 * m.dph_per_uT_std, m.field_min_uT, m.field_max_uT, m.samples);
+	}
+	else if (!f.magnetic_why_not.empty())
+		std::printf("  magnetic: not fitted: %s\n", f.magnetic_why_not.c_str());
 }
 
 JsonValue axisJson(const AxisFit& f, double tau_s, bool validated)
@@ -476,6 +499,17 @@ JsonValue axisJson(const AxisFit& f, double tau_s, bool validated)
 		jw["startup_offset_std_dph"] = w.startup_offset_std_dph;
 		jw["startup_samples"] = static_cast<unsigned long>(w.startup_samples);
 	}
+	if (cal.magnetic)
+	{
+		const auto& m = *cal.magnetic;
+		j["magnetic"] = JsonValue::object({{"dph_per_uT", m.dph_per_uT},
+										   {"dph_per_uT_std", m.dph_per_uT_std},
+										   {"field_min_uT", m.field_min_uT},
+										   {"field_max_uT", m.field_max_uT},
+										   {"samples", static_cast<unsigned long>(m.samples)}});
+	}
+	else if (!f.magnetic_why_not.empty())
+		j["magnetic"] = JsonValue::object({{"not_fitted", f.magnetic_why_not}});
 	if (f.earth_rate_removed) j["earth_rate"] = "removed from the bias (runs' metadata earth_rate_dph)";
 	return j;
 }
@@ -570,6 +604,10 @@ int main(int argc, char** argv)
 												 "Temperature the scale factor is modelled in: thermistor (default: the "
 												 "best single thermistor by held-out error) or mean (of all thermistors)",
 												 false, "thermistor", "thermistor|mean", cmd);
+		TCLAP::ValueArg<std::string> arg_mag("", "magnetic",
+											 "auto (default): fit the bias per applied axial field when an -i run has a "
+											 "changing field_uT column; off: never",
+											 false, "auto", "auto|off", cmd);
 		TCLAP::MultiArg<std::string> arg_warm("", "warmup-run",
 											  "Run holding a turn-on (cold start) to fit the warm-up term; repeatable; "
 											  "not used in the bias fit",
@@ -631,6 +669,8 @@ int main(int argc, char** argv)
 
 		if (arg_sf.getValue() != "auto" && arg_sf.getValue() != "off")
 			throw std::invalid_argument("--scale-factor: '" + arg_sf.getValue() + "' is not auto or off");
+		if (arg_mag.getValue() != "auto" && arg_mag.getValue() != "off")
+			throw std::invalid_argument("--magnetic: '" + arg_mag.getValue() + "' is not auto or off");
 		const bool screen = !arg_no_screen.getValue();
 		std::string screening_text;
 		// Each log is read once into a run spilled to a temporary file (memory independent of the
@@ -728,6 +768,27 @@ int main(int argc, char** argv)
 					throw std::runtime_error(who + e.what() +
 											 "; the runs apply table rates, so a bias-only calibration would be wrong "
 											 "there (give --scale-factor off to fit the bias alone anyway)");
+				}
+			}
+			// The magnetic sensitivity on the residual of the calibration so far (MagneticFit.h),
+			// when a run has field segments; the runs with a field column in memory for it.
+			bool any_field = false;
+			for (const auto& r : set.runs) any_field |= r.hasField();
+			if (arg_mag.getValue() == "auto" && any_field)
+			{
+				std::vector<FogSeries> with_field;
+				for (const auto& r : set.runs)
+					if (r.hasField()) with_field.push_back(r.load());
+				if (discrepancy::hasFieldVariation(with_field))
+				{
+					try
+					{
+						f.cal.magnetic = discrepancy::fitMagneticSensitivity(f.cal, with_field);
+					}
+					catch (const discrepancy::MagneticFitError& e)
+					{
+						f.magnetic_why_not = e.what();
+					}
 				}
 			}
 			// What the summary needs from the runs, then they are freed before the warm-up and

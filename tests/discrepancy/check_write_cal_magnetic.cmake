@@ -3,8 +3,10 @@
 # M2:Ca@3/1. The calibration written must be version 3 with a magnetic section, the JSON must
 # show the gap through the compensator shrinking on the confirmation run, fog-compensate must run
 # it with the field (no warning, field_unknown_samples 0) and, on a log without a field column,
-# warn on stderr and say so in --json.
-# -D GEN=<lumped-coil-gen> -D DISC=<fog-discrepancy> -D COMP=<fog-compensate> -D WORK=<dir>
+# warn on stderr and say so in --json. fog-calibrate --magnetic auto (the default) on the same
+# first run writes the same coefficient (the same calibration, the same fit); --magnetic off
+# writes a version-2 file without the section.
+# -D GEN=<lumped-coil-gen> -D DISC=<fog-discrepancy> -D COMP=<fog-compensate> -D CAL=<fog-calibrate> -D WORK=<dir>
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 foreach(s 1 2)
@@ -63,5 +65,25 @@ string(JSON has_col GET "${cj2}" magnetic field_column)
 string(JSON warning GET "${cj2}" magnetic warning)
 if(has_col OR warning STREQUAL "")
   message(FATAL_ERROR "--json does not say the field was missing: ${cj2}")
+endif()
+# fog-calibrate fits the section itself when the runs have field segments
+execute_process(COMMAND ${CAL} -i ${WORK}/run1.csv --model M2:Ca@3/1 -o ${WORK}/cal.yaml --json ${WORK}/cal.json -q
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "fog-calibrate failed (${rc}): ${err}")
+endif()
+if(NOT out MATCHES "magnetic: [0-9.e+-]+ \\+- ")
+  message(FATAL_ERROR "fog-calibrate printed no magnetic sensitivity: ${out}")
+endif()
+file(READ ${WORK}/cal.json fj)
+string(JSON k_cal GET "${fj}" magnetic dph_per_uT)
+if(NOT k_cal STREQUAL k)
+  message(FATAL_ERROR "fog-calibrate's coefficient ${k_cal} differs from --write-cal's ${k}")
+endif()
+execute_process(COMMAND ${CAL} -i ${WORK}/run1.csv --model M2:Ca@3/1 -o ${WORK}/cal_off.yaml --magnetic off -q
+  RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+file(READ ${WORK}/cal_off.yaml cal_off)
+if(NOT rc EQUAL 0 OR NOT cal_off MATCHES "\nversion: 2\n" OR cal_off MATCHES "magnetic:")
+  message(FATAL_ERROR "fog-calibrate --magnetic off: not a version-2 file without the section (${rc}: ${err})")
 endif()
 message(STATUS "write-cal magnetic: ${k} deg/h per uT; confirmation run through the compensator ${before} -> ${after} deg/h")

@@ -121,7 +121,7 @@ TEST(CalibrationAugment, NothingAddableLeavesTheCalibrationUnchanged)
 	EXPECT_EQ(aug.augmented.model.features.termNames(), aug.base.model.features.termNames());
 	EXPECT_EQ(aug.augmented.model.coef_dph, aug.base.model.coef_dph);
 	ASSERT_EQ(aug.not_written.size(), 1u);
-	EXPECT_EQ(aug.not_written[0].second, "the analysed run has no field column");
+	EXPECT_EQ(aug.not_written[0].second, "the field fit on the analysed run: the run has no field column");
 	EXPECT_FALSE(aug.magnetic_added);
 	EXPECT_FALSE(aug.augmented.magnetic.has_value());
 }

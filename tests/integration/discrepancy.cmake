@@ -35,13 +35,14 @@ if(TARGET fog-discrepancy AND TARGET fog-sim)
 endif()
 
 # --write-cal and --plots on the lumped-coil second generator (tests/discrepancy/check_write_cal.cmake).
-if(TARGET fog-discrepancy AND TARGET fog-compensate AND TARGET lumped-coil-gen)
+if(TARGET fog-discrepancy AND TARGET fog-compensate AND TARGET fog-calibrate AND TARGET lumped-coil-gen)
   add_test(NAME discrepancy.write_cal_closes_the_loop COMMAND ${CMAKE_COMMAND}
     -DGEN=$<TARGET_FILE:lumped-coil-gen> -DDISC=$<TARGET_FILE:fog-discrepancy> -DCOMP=$<TARGET_FILE:fog-compensate>
     -DWORK=${CMAKE_CURRENT_BINARY_DIR}/discrepancy/write_cal -P ${FOG_SOURCE_DIR}/tests/discrepancy/check_write_cal.cmake)
   set_tests_properties(discrepancy.write_cal_closes_the_loop PROPERTIES LABELS "integration;discrepancy" TIMEOUT 600)
   add_test(NAME discrepancy.write_cal_magnetic COMMAND ${CMAKE_COMMAND}
     -DGEN=$<TARGET_FILE:lumped-coil-gen> -DDISC=$<TARGET_FILE:fog-discrepancy> -DCOMP=$<TARGET_FILE:fog-compensate>
+    -DCAL=$<TARGET_FILE:fog-calibrate>
     -DWORK=${CMAKE_CURRENT_BINARY_DIR}/discrepancy/write_cal_magnetic -P ${FOG_SOURCE_DIR}/tests/discrepancy/check_write_cal_magnetic.cmake)
   set_tests_properties(discrepancy.write_cal_magnetic PROPERTIES LABELS "integration;discrepancy" TIMEOUT 600)
 endif()

@@ -2,7 +2,7 @@
 #include <mrpt_fog/discrepancy/CalibrationAugment.h>
 #include <mrpt_fog/discrepancy/BaseModelDesign.h>
 #include <mrpt_fog/discrepancy/EffectSelector.h>
-#include <mrpt_fog/discrepancy/WhitenedRegression.h>
+#include <mrpt_fog/discrepancy/MagneticFit.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/ScaleFactorFit.h>
 #include <mrpt_fog/model/WarmupFit.h>
@@ -52,111 +52,6 @@ std::string firstOnSide(const FogSeries& run, CoilSide side)
  * bias column) when it has no scale-factor model; with one, the compensated rate fog-compensate
  * outputs (bias and scale factor applied) minus the applied table rate, with the same
  * definitions (RMS about the mean over powered samples, stability and range of tau-s averages). */
-/** At most this many knots of the drift nuisance in fitMagneticOnRun (else no drift term: a
- * field that changes too often for a drift slower than its stretches to be told apart). */
-constexpr std::size_t kMaxDriftKnots = 100;
-
-/** The magnetic sensitivity refitted on the analysed run (see CalibrationAugment.h): the
- * residual of `cal` through the compensator (gyro rate - compensated bias) over the powered
- * samples with a finite field and no table rate, regressed by generalised least squares on
- * field_uT and a slow drift: piecewise linear in time, knots every shortest stretch of constant
- * field (what is left of the thermal model's error and the bias wander; a field segment runs
- * during a thermal transient in a chamber run, and without it the slow residual across the
- * segments went into the coefficient: 4 of 20 tuning trials outside their 95 % interval, 2 of 20
- * with it). Noise ARMA(1,1) by REML on [1, field_uT], whitened fit (WhitenedRegression.h), the
- * standard error times the Bartlett long-run variance factor of the whitened residual.
- * Empty, with the reason in `why_not`, when the run has no usable field variation. */
-std::optional<MagneticModel> fitMagneticOnRun(const Calibration& cal, const FogSeries& run, std::string& why_not)
-{
-	const std::size_t n = run.size();
-	if (run.field_uT.size() != n)
-	{
-		why_not = "the analysed run has no field column";
-		return std::nullopt;
-	}
-	const CompensatedSeries comp = compensate(cal, run);
-	std::vector<unsigned char> ok(n, 0);
-	std::size_t used = 0;
-	double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-	for (std::size_t k = 0; k < n; k++)
-	{
-		const bool on = run.power.empty() || run.power[k] != 0.0;
-		const bool table = !run.table_rate_dph.empty() && run.table_rate_dph[k] != 0.0;
-		const double f = run.field_uT[k];
-		ok[k] = on && !table && std::isfinite(f) && std::isfinite(comp.compensated_dph[k]);
-		if (!ok[k]) continue;
-		used++;
-		lo = std::min(lo, f);
-		hi = std::max(hi, f);
-	}
-	if (used < 10 || !(hi > lo))
-	{
-		why_not = "the analysed run's applied field does not vary over its powered samples (not separable from the bias)";
-		return std::nullopt;
-	}
-	const std::vector<int> block(n, 0);
-	const std::vector<std::size_t> rows = whitenableRows(block, ok, 0);
-	// the shortest stretch of constant field [s]: the spacing of the drift's knots
-	double shortest_s = std::numeric_limits<double>::infinity(), t_stretch = run.time_s[rows.front()];
-	for (std::size_t i = 1; i < rows.size(); i++)
-		if (run.field_uT[rows[i]] != run.field_uT[rows[i - 1]])
-		{
-			shortest_s = std::min(shortest_s, run.time_s[rows[i - 1]] - t_stretch);
-			t_stretch = run.time_s[rows[i]];
-		}
-	const double t_first = run.time_s[rows.front()], t_last = run.time_s[rows.back()];
-	std::size_t knots = 0;
-	if (shortest_s > 0 && std::isfinite(shortest_s) && (t_last - t_first) / shortest_s + 2 <= kMaxDriftKnots)
-		knots = static_cast<std::size_t>(std::ceil((t_last - t_first) / shortest_s)) + 1;
-	// columns: 0 the first hat (or the constant), 1 the field, 2.. the other hats
-	const Eigen::Index p = 2 + static_cast<Eigen::Index>(knots > 0 ? knots - 1 : 0);
-	Eigen::MatrixXd X = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), p);
-	Eigen::VectorXd y = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
-	for (std::size_t k = 0; k < n; k++)
-	{
-		if (!ok[k]) continue;
-		const auto i = static_cast<Eigen::Index>(k);
-		X(i, 1) = run.field_uT[k];
-		y(i) = comp.compensated_dph[k];
-		if (knots == 0)
-		{
-			X(i, 0) = 1.0;
-			continue;
-		}
-		const double u = std::clamp((run.time_s[k] - t_first) / shortest_s, 0.0, static_cast<double>(knots - 1));
-		const std::size_t j = std::min(static_cast<std::size_t>(u), knots - 2);
-		const double w = u - static_cast<double>(j);
-		const auto col = [](std::size_t h) { return h == 0 ? Eigen::Index(0) : static_cast<Eigen::Index>(h + 1); };
-		X(i, col(j)) += 1.0 - w;
-		X(i, col(j + 1)) += w;
-	}
-	// the noise model on [1, field] (REML over ~100 columns would cost a minute per run)
-	Eigen::MatrixXd X2(static_cast<Eigen::Index>(n), 2);
-	X2.col(0).setOnes();
-	X2.col(1) = X.col(1);
-	const ArNoiseModel ar = fitNoiseReml(X2, y, rows, block);
-	const LsFit fit = leastSquares(whiten(X, ar, rows, &block), whiten(y, ar, rows, &block).col(0), true);
-	if (fit.rank < p)
-	{
-		why_not = "the applied field cannot be told apart from a slow drift on the analysed run";
-		return std::nullopt;
-	}
-	const double sigma2 = fit.rss / std::max(1.0, static_cast<double>(rows.size()) - static_cast<double>(p));
-	const double lrv = longRunVarianceFactor(fit.residual, SelectionOptions{}.lrv_max_lag);
-	MagneticModel m;
-	m.dph_per_uT = fit.coef(1);
-	m.dph_per_uT_std = std::sqrt(std::max(0.0, sigma2 * fit.cov_unscaled(1, 1) * lrv));
-	m.field_min_uT = lo;
-	m.field_max_uT = hi;
-	m.samples = used;
-	if (!m.valid())
-	{
-		why_not = "the field fit on the analysed run gave no finite coefficient";
-		return std::nullopt;
-	}
-	return m;
-}
-
 FitFigures throughCompensator(const Calibration& cal, const FogSeries& series, const std::string& label)
 {
 	const double tau_s = 100.0;
@@ -357,16 +252,16 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 	out.augmented.magnetic = out.base.magnetic;
 	if (refit_magnetic)
 	{
-		Calibration without = out.augmented;
-		without.magnetic.reset();
-		std::string why_not;
-		if (const auto m = fitMagneticOnRun(without, run, why_not))
+		// on the augmented calibration's residual (MagneticFit.h), its own magnetic section left out
+		try
 		{
-			out.augmented.magnetic = *m;
+			out.augmented.magnetic = fitMagneticSensitivity(out.augmented, {run});
 			out.magnetic_added = true;
 		}
-		else
-			out.not_written.emplace_back("magnetic", why_not);
+		catch (const MagneticFitError& e)
+		{
+			out.not_written.emplace_back("magnetic", std::string("the field fit on the analysed run: ") + e.what());
+		}
 	}
 	if (confirm)
 	{

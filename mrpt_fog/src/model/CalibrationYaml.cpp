@@ -635,11 +635,12 @@ std::string calibrationSetToYaml(const CalibrationSet& set)
 	std::ostringstream o;
 	o << "# mrpt_fog calibration (fog-calibrate): per gyro axis a thermal bias model, optionally a\n";
 	o << "# scale factor vs temperature and a warm-up term. Units: temperatures degC, rates degC/s,\n";
-	o << "# bias deg/h, scale factor ppm. Layout: docs/model.md (calibration file, version 2).\n";
-	o << "format: " << str(kFormat) << "\n";
 	bool extended = false;
 	for (const auto& c : set.axes) extended |= readsLags(c) || c.magnetic.has_value();
-	o << "version: " << (extended ? kVersionExtended : kVersion) << "\n";
+	const int version = extended ? kVersionExtended : kVersion;
+	o << "# bias deg/h, scale factor ppm. Layout: docs/model.md (calibration file, version " << version << ").\n";
+	o << "format: " << str(kFormat) << "\n";
+	o << "version: " << version << "\n";
 	o << "sensor:\n";
 	o << "  label: " << str(a.sensor_label) << "\n";
 	o << "  thermistors:" << (a.layout.empty() ? " []" : "") << "\n";
