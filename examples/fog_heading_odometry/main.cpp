@@ -79,7 +79,9 @@ try
 	// was handled, so it is added back exactly once. A file without a latitude (version 1, or
 	// runs without latitude_deg) is taken as made at the drive's latitude, and says so.
 	const Calibration cal = loadCalibrationYaml(cal_path);
-	const CompensatedSeries comp = compensate(cal, drive.fog);
+	const CompensatedSeries comp = compensate(cal, drive.fog);  // feeds the log's field to a magnetic term
+	if (const std::string w = fieldMissingWarning(cal, drive.fog); !w.empty())
+		std::fprintf(stderr, "fog_heading_odometry: warning: %s\n", w.c_str());
 	double cal_earth_dph = 0.0;
 	if (cal.earth_rate == EarthRateHandling::InBias)
 	{
