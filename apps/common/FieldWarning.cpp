@@ -29,9 +29,23 @@ JsonValue fieldJson(const Calibration& cal, const CompensationCounters& c, bool 
 	j["dph_per_uT"] = cal.magnetic->dph_per_uT;
 	j["field_column"] = log_has_field;
 	j["field_unknown_samples"] = static_cast<unsigned long>(c.field_unknown_samples);
-	std::string w = fieldWarning(cal, c, log_has_field);
-	if (!w.empty()) w = w.substr(11, w.size() - 12);  // without "  warning: " and the newline
-	j["warning"] = w;
+	j["warning"] = fieldWarningMessage(fieldWarning(cal, c, log_has_field));
 	return j;
+}
+
+std::string fieldWarningMessage(const std::string& lines)
+{
+	const std::string prefix = "  warning: ";
+	std::string out;
+	for (std::size_t b = 0; b < lines.size();)
+	{
+		std::size_t e = lines.find('\n', b);
+		if (e == std::string::npos) e = lines.size();
+		std::string line = lines.substr(b, e - b);
+		if (line.rfind(prefix, 0) == 0) line = line.substr(prefix.size());
+		if (!line.empty()) out += (out.empty() ? "" : "; ") + line;
+		b = e + 1;
+	}
+	return out;
 }
 }  // namespace mrpt_fog::app

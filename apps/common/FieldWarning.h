@@ -16,6 +16,9 @@ namespace mrpt_fog::app
 /** "  warning: ..." line (with trailing newline) when `cal` has a magnetic section and the field
  * was unknown on some samples (the log has no field column, or NaN cells), else "". */
 std::string fieldWarning(const Calibration& cal, const CompensationCounters& c, bool log_has_field);
+/** fieldWarning()'s lines (one or several axes) as one message for a JSON value: without the
+ * "  warning: " prefixes and newlines, joined by "; ". */
+std::string fieldWarningMessage(const std::string& warning_lines);
 /** {"dph_per_uT", "field_column", "field_unknown_samples", "warning"} for a calibration with a
  * magnetic section (null otherwise). */
 JsonValue fieldJson(const Calibration& cal, const CompensationCounters& c, bool log_has_field);

@@ -1,6 +1,8 @@
 /* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
 #include "DriftOutputs.h"
 
+#include "FieldWarning.h"
+
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/system/filesystem.h>
@@ -121,7 +123,8 @@ JsonValue driveJson(const DriveEvaluation& e, const DriftContext& ctx)
 	j["calibration_latitude_source"] =
 		ctx.calibration_latitude_source.empty() ? JsonValue() : JsonValue(ctx.calibration_latitude_source);
 	if (e.magnetic_term)  // only for a calibration with a magnetic section: other reports keep their keys
-		j["magnetic_field_warning"] = e.field_warning.empty() ? JsonValue() : JsonValue(e.field_warning);
+		j["magnetic_field_warning"] =
+			e.field_warning.empty() ? JsonValue() : JsonValue(app::fieldWarningMessage(e.field_warning));
 	return j;
 }
 }  // namespace

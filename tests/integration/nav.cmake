@@ -64,6 +64,11 @@ if(TARGET fog-drift)
       $<TARGET_FILE:fog-drift>)
   set_tests_properties(nav.fog_drift.figures_do_not_depend_on_outputs PROPERTIES FIXTURES_REQUIRED nav_drift_json
     LABELS "nav;integration")
+  # a calibration's magnetic term on a log without field: warned on stderr and in --json
+  add_test(NAME nav.fog_drift.magnetic_warning COMMAND ${CMAKE_COMMAND} -DDRIFT=$<TARGET_FILE:fog-drift>
+    -DDIR=${NAV_DRIVE_DIR} -P ${FOG_SOURCE_DIR}/tests/nav/integration/magnetic_warning_check.cmake)
+  set_tests_properties(nav.fog_drift.magnetic_warning PROPERTIES FIXTURES_REQUIRED nav_drift_json
+    LABELS "nav;integration")
   add_test(NAME nav.fog_drift.check COMMAND nav_test_drive check ${NAV_DRIVE_DIR}/drift.json)
   set_tests_properties(nav.fog_drift.check PROPERTIES FIXTURES_REQUIRED nav_drift_json LABELS "nav;integration")
   # The same drive with the gyro off for 250 s (power 0 rows), and a fog-sim drive with a
