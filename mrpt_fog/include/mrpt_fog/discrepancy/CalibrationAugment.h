@@ -26,8 +26,8 @@
  *                    the naming has established a dependence) after the bias; when that fit
  *                    refuses (e.g. fewer than 3 soaks), it is listed as not written
  *   magnetic         the calibration's (v3) magnetic section, bias += dph_per_uT x field_uT:
- *                    refitted on the analysed run, not taken from the analysis or the
- *                    confirmation run: the residual of the augmented calibration (thermal
+ *                    refitted on the analysed run (MagneticFit.h), not taken from the analysis
+ *                    or the confirmation run: the residual of the augmented calibration (thermal
  *                    terms above refitted) through the compensator, over the powered samples
  *                    with a field and no table rate, regressed by generalised least squares
  *                    on field_uT and a slow piecewise-linear drift (knots every shortest

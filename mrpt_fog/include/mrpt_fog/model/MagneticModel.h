@@ -9,8 +9,9 @@
  * on top of the thermal bias model (the field rotates the polarisation in the fibre; a shielded
  * coil keeps dph_per_uT around 1e-4 .. 1e-3). The field is not a temperature: the compensator
  * reads it from its own input (Compensator::noteField, FogSeries::field_uT); while the field is
- * unknown no magnetic term is added and the samples are counted. Fitted by the model-gap
- * workflow's --write-cal (discrepancy/CalibrationAugment.h) from a run with field segments.
+ * unknown no magnetic term is added and the samples are counted. Fitted from runs with field
+ * segments by discrepancy/MagneticFit.h: fog-calibrate (--magnetic auto) and the model-gap
+ * workflow's --write-cal (discrepancy/CalibrationAugment.h).
  */
 
 #include <cmath>
