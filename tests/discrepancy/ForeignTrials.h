@@ -219,6 +219,7 @@ inline double compensatorGapShare(const std::string& hidden, double ratio, std::
 					  static_cast<unsigned long long>(seed), hidden.c_str(), ratio, rep.verdict().c_str(),
 					  aug.added_terms.size() + (aug.scale_factor_added ? 1 : 0), aug.before.rms_dph, aug.after.rms_dph, oracle.rms_dph, share);
 		*line = buf;
+		for (std::size_t i = 0; i < aug.added_terms.size(); ++i) *line += (i ? ", " : "; terms ") + aug.added_terms[i];
 		for (const auto& [id, why] : aug.not_written) *line += "; not written " + id + " (" + why + ")";
 		if (aug.rate_window.changed)
 		{

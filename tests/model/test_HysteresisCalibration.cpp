@@ -107,6 +107,10 @@ TEST(HysteresisCalibration, TermNamesParseAndPrint)
 	EXPECT_STREQ(t.signal.unit(), "1");
 	EXPECT_FALSE(t.signal.isRate());
 	EXPECT_EQ(ThermalTerm::hysteresis("Ti1", HysteresisOperator::Play, 2.0).name(), "hyst(Ti1,play,2C)^1");
+	// the shortest text that reads back exactly: 1.92 (not %.17g's 1.9199999999999999)
+	EXPECT_EQ(ThermalTerm::hysteresis("Ti1", HysteresisOperator::Branch, 1.92).name(), "hyst(Ti1,branch,1.92C)^1");
+	for (const double w : {2.1102106565298242, 0.1 + 0.2, 1.0 / 3.0})
+		EXPECT_EQ(ThermalTerm::parse(ThermalTerm::hysteresis("Ti1", HysteresisOperator::Play, w).name()).signal.width_C, w);
 	for (const std::string n : {"hyst(Ti1)", "hyst(Ti1,play)", "hyst(Ti1,play,2)", "hyst(Ti1,play,0C)", "hyst(Ti1,play,-1C)",
 								"hyst(Ti1,lag,2C)", "hyst(Ti1,play,xC)", "hyst(Ti1,play,2C)^2", "hyst(Ti 1,play,2C)",
 								"hyst(Ti1,play,infC)", "hyst(Ti1,play,nanC)", "hyst(Ti1,play,2K)", "hyst(Ti1,play,1e9C)"})

@@ -20,8 +20,13 @@ std::string ThermalSignal::name() const
 		case SignalKind::Diff: return "dT(" + a + "-" + b + ")";
 		case SignalKind::LagRate: return "dTlag/dt(" + a + "," + formatValue("%.17g", tau_s) + ")";
 		case SignalKind::Hysteresis:
-			return "hyst(" + a + (hyst_op == HysteresisOperator::Play ? ",play," : ",branch,") +
-				   formatValue("%.17g", width_C) + "C)";
+		{
+			// the shortest text that reads back as the same width (1.92, not 1.9199999999999999)
+			std::string w;
+			for (const char* fmt : {"%.15g", "%.16g", "%.17g"})
+				if (std::strtod((w = formatValue(fmt, width_C)).c_str(), nullptr) == width_C) break;
+			return "hyst(" + a + (hyst_op == HysteresisOperator::Play ? ",play," : ",branch,") + w + "C)";
+		}
 		default: return "d/dt dT(" + a + "-" + b + ")";
 	}
 }

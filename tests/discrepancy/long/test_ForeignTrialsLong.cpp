@@ -68,7 +68,7 @@ TEST(ForeignTrialsLong, GapThroughTheCompensatorOnHeldOutSeeds)
 	// the effects the compensator can run (thermal terms): share of the hidden gap removed on
 	// the confirmation run by the calibration --write-cal writes (target >= 0.5)
 	const int n = seedsPerCell();
-	for (const char* id : {"temp_poly_order", "radial_gradient", "gradient_rate", "scale_factor_temp", "warmup"})
+	for (const char* id : {"temp_poly_order", "radial_gradient", "gradient_rate", "scale_factor_temp", "warmup", "hysteresis"})
 		for (double ratio : {3.0, 1.0})
 		{
 			if (!effectSelected(id)) continue;
