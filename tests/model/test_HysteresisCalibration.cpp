@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -167,7 +169,7 @@ TEST(HysteresisCalibration, FileVersion3RoundTripsExactlyAndOlderVersionsRefuseH
 	const FogSeries b = runB();
 	const auto c1 = compensate(cal, b), c2 = compensate(back, b);
 	for (std::size_t k = 0; k < b.size(); k++) ASSERT_EQ(c1.bias_dph[k], c2.bias_dph[k]) << k;
-	for (const char* v : {"2"})  // a version-1 file has no axes list (its reader applies the same rule)
+	for (const char* v : {"2"})  // version 1 (no axes list): VersionOneFileReadingHysteresisIsRefused
 	{
 		std::string old = text;
 		old.replace(old.find("\nversion: 3\n"), 12, std::string("\nversion: ") + v + "\n");
@@ -238,4 +240,40 @@ TEST(HysteresisCalibration, BatchEqualsStreamingAndAvx2EqualsPortableBitwise)
 	if (per_build.size() == 2)
 		for (std::size_t k = 0; k < b.size(); k++)
 			ASSERT_EQ(std::memcmp(&per_build[0][k], &per_build[1][k], sizeof(double)), 0) << k;
+}
+
+TEST(HysteresisCalibration, VersionOneFileReadingHysteresisIsRefused)
+{
+	// the stored version-1 file, its term dT/dt(To1)^1 replaced by hyst(To1,play,2C)^1 (with that
+	// signal's normalisation) in every model that reads it
+	std::ifstream in(std::string(FOG_SOURCE_DIR) + "/tests/data/model/cal_v1_coil_A.yaml");
+	std::stringstream ss;
+	ss << in.rdbuf();
+	std::string text = ss.str();
+	ASSERT_NE(text.find("\nversion: 1\n"), std::string::npos);
+	std::size_t renamed = 0;
+	const std::string term = "- name: \"dT/dt(To1)^1\"";
+	for (auto at = text.find(term); at != std::string::npos; at = text.find(term, at), renamed++)
+		text.replace(at, term.size(), "- name: \"hyst(To1,play,2C)^1\"");
+	for (auto at = text.find("- name: \"dT/dt(To1)\"\n"); at != std::string::npos;
+		 at = text.find("- name: \"dT/dt(To1)\"\n", at))
+	{
+		const std::string indent = text.substr(text.rfind('\n', at) + 1, at - text.rfind('\n', at) - 1);
+		const std::string block = "- name: \"hyst(To1,play,2C)\"\n" + indent + "  unit: \"1\"\n" + indent + "  centre: 0\n" +
+								  indent + "  scale: 1\n" + indent + "  min: -1\n" + indent + "  max: 1\n" + indent;
+		text.insert(at, block);
+		at += block.size() + 1;
+	}
+	ASSERT_GE(renamed, 1u);
+	try
+	{
+		calibrationFromYaml(text, "v1.yaml");
+		ADD_FAILURE() << "version 1 with a hysteresis signal accepted";
+	}
+	catch (const std::invalid_argument& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("v1.yaml: model: reads hysteresis signals (hyst), which need file version 3 (the file says 1)"),
+				  std::string::npos)
+			<< e.what();
+	}
 }
