@@ -206,6 +206,8 @@ inline double compensatorGapShare(const std::string& hidden, double ratio, std::
 	o2.seed = 2 * seed + 1;
 	const auto t1 = fogtest::makeLumpedCoilRun(o1), t2 = fogtest::makeLumpedCoilRun(o2);
 	o1.hidden[hidden] = o2.hidden[hidden] = ratio;
+	if (const char* w = std::getenv("FOG_FOREIGN_HYST_HALF_WIDTH_C"))  // as runForeignTrial
+		o1.hysteresis_half_width_C = o2.hysteresis_half_width_C = std::atof(w);
 	const auto r1 = fogtest::makeLumpedCoilRun(o1), r2 = fogtest::makeLumpedCoilRun(o2);
 	const auto rep = analyseDiscrepancy({r1.series, r2.series}, {"run1", "run2"}, kBaseModel, trialOptions());
 	const auto aug = augmentCalibration(kBaseModel, rep.selection.named, r1.series, &r2.series, "run2", kScaleFactor);
