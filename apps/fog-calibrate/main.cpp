@@ -46,7 +46,8 @@ MODEL PRESETS (--model)
   M3[:IN,OUT]           seed eq. 5: M2(IN) + poly3(IN - OUT)
   M4[:IN,OUT]           seed eq. 6: poly3(IN - OUT) + poly3(d/dt (IN - OUT))
   points:K              multipoint on the best K-thermistor subset (by held-out error)
-  terms:T(Ti1)^1;dT/dt(Ti1)^1;dT(Ti1-To1)^1   an explicit term list
+  terms:T(Ti1)^1;dT/dt(Ti1)^1;dT(Ti1-To1)^1   an explicit term list; also dTlag/dt(a,tau_s)^k and
+                        hyst(a,play,wC)^1 / hyst(a,branch,wC)^1 (hysteresis, docs/model.md)
   Append @T/R to change the orders, e.g. multipoint@3/1, or @T for the temperature order only
   (M1:imu@3); the orders of auto are upper limits.
 

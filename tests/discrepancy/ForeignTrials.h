@@ -206,6 +206,8 @@ inline double compensatorGapShare(const std::string& hidden, double ratio, std::
 	o2.seed = 2 * seed + 1;
 	const auto t1 = fogtest::makeLumpedCoilRun(o1), t2 = fogtest::makeLumpedCoilRun(o2);
 	o1.hidden[hidden] = o2.hidden[hidden] = ratio;
+	if (const char* w = std::getenv("FOG_FOREIGN_HYST_HALF_WIDTH_C"))  // as runForeignTrial
+		o1.hysteresis_half_width_C = o2.hysteresis_half_width_C = std::atof(w);
 	const auto r1 = fogtest::makeLumpedCoilRun(o1), r2 = fogtest::makeLumpedCoilRun(o2);
 	const auto rep = analyseDiscrepancy({r1.series, r2.series}, {"run1", "run2"}, kBaseModel, trialOptions());
 	const auto aug = augmentCalibration(kBaseModel, rep.selection.named, r1.series, &r2.series, "run2", kScaleFactor);
@@ -219,6 +221,7 @@ inline double compensatorGapShare(const std::string& hidden, double ratio, std::
 					  static_cast<unsigned long long>(seed), hidden.c_str(), ratio, rep.verdict().c_str(),
 					  aug.added_terms.size() + (aug.scale_factor_added ? 1 : 0) + (aug.magnetic_added ? 1 : 0), aug.before.rms_dph, aug.after.rms_dph, oracle.rms_dph, share);
 		*line = buf;
+		for (std::size_t i = 0; i < aug.added_terms.size(); ++i) *line += (i ? ", " : "; terms ") + aug.added_terms[i];
 		for (const auto& [id, why] : aug.not_written) *line += "; not written " + id + " (" + why + ")";
 		if (aug.rate_window.changed)
 		{

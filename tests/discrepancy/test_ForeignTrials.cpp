@@ -52,6 +52,18 @@ TEST(ForeignTrials, AddedRateTermGetsTheRateWindowTheAnalysedRunFitsBest)
 	EXPECT_GE(share, 0.5);
 }
 
+TEST(ForeignTrials, HysteresisIsWrittenAsThePlayOperatorAndClosesTheGapThroughTheCompensator)
+{
+	// --write-cal with hysteresis named (tuning seed 9101 at 5 s, x1): the named play and width
+	// become hyst(Ca,play,wC) in the calibration, refitted with the other added terms; share 0.86
+	// of the hidden gap removed on the confirmation run through the compensator
+	std::string line;
+	const double share = compensatorGapShare("hysteresis", 1.0, 9101, &line, 5.0);
+	std::printf("  %s\n", line.c_str());
+	EXPECT_NE(line.find("hyst(Ca,play,"), std::string::npos);
+	EXPECT_GE(share, 0.5);
+}
+
 TEST(ForeignTrials, HysteresisAtEffectNoise1IsNamedWithThePlayShapeAndTheWhitenedProfile)
 {
 	// the generator's hysteresis is a play operator: the exponential branch reproduced it only

@@ -313,6 +313,22 @@ const Calibration& calPlain()  // the benchmark's model: 33 terms, 4 thermistors
 	return cal;
 }
 
+/** Hysteresis signals (play and branch, HysteresisFilter.h) beside the kernel's T and dT/dt terms
+ * and a difference, with fallbacks: the filter bank's path through both builds. */
+const Calibration& calHyst()
+{
+	static const Calibration cal = [] {
+		FitOptions o;
+		o.selection = TermSelection::None;
+		o.fallbacks = true;
+		return fitCalibration({fogtest::makeCoilRun("A", 51)},
+							  "terms:T(Ti1)^1;T(Ti1)^2;dT/dt(Ti1)^1;T(To1)^1;dT/dt(To1)^1;dT(Ti2-To2)^1;"
+							  "hyst(Ti1,play,2C)^1;hyst(To1,branch,1C)^1;hyst(Ti2,play,0.5C)^1",
+							  o);
+	}();
+	return cal;
+}
+
 CompensatedSeries runSteps(const Calibration& cal, const FogSeries& s, KernelBuild build)
 {
 	Compensator comp(cal, s.thermistors, build);
@@ -342,7 +358,7 @@ TEST(Compensator, Avx2BuildEqualsPortableBitwise)
 	FogSeries swapped = s;
 	std::swap(swapped.thermistors[0], swapped.thermistors[3]);
 	std::swap(swapped.temp_C[0], swapped.temp_C[3]);
-	for (const Calibration* cal : {&calPlain(), &calA()})
+	for (const Calibration* cal : {&calPlain(), &calA(), &calHyst()})
 		for (const FogSeries* series : {&s, &swapped})
 		{
 			const CompensatedSeries p = runSteps(*cal, *series, KernelBuild::Portable);
@@ -490,7 +506,7 @@ TEST(Compensator, BatchEqualsStreamingBitwise)
 		for (std::size_t i = 0; i < nt; i++) rows[k * nt + i] = s.temp_C[i][k];
 	std::vector<KernelBuild> builds{KernelBuild::Portable};
 	if (detail::cpuHasAvx2()) builds.push_back(KernelBuild::Avx2);
-	for (const Calibration* cal : {&calPlain(), &calA()})
+	for (const Calibration* cal : {&calPlain(), &calA(), &calHyst()})
 		for (const KernelBuild build : builds)
 		{
 			const CompensatedSeries ref = runSteps(*cal, s, build);

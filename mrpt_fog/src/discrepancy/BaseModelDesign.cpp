@@ -148,6 +148,8 @@ std::vector<std::vector<double>> compensatorColumns(const BaseModelSpec& spec, c
 	std::vector<double> temp(nt), r(nt), values(ns), f(nf);
 	LagFilterBank lags(fs.lags());  // lag-rate signals (one-thermistor calibrations), carried sample to sample
 	std::vector<double> lag_rate(fs.lags().size());
+	HysteresisFilterBank hyst(fs.hystereses());  // hysteresis signals (a calibration given as YAML may read them)
+	std::vector<double> hyst_value(fs.hystereses().size());
 	const bool clampOrTangent = spec.extrapolation != ExtrapolationPolicy::Polynomial;
 	defined.assign(n, 1);
 	for (std::size_t k = 0; k < n; ++k)
@@ -159,7 +161,9 @@ std::vector<std::vector<double>> compensatorColumns(const BaseModelSpec& spec, c
 		}
 		lags.push(run.time_s[k], temp.data());
 		for (std::size_t i = 0; i < lag_rate.size(); ++i) lag_rate[i] = lags.rate_C_per_s(i);
-		fs.signalValues(temp.data(), r.data(), lag_rate.data(), values.data());
+		hyst.push(temp.data());
+		for (std::size_t i = 0; i < hyst_value.size(); ++i) hyst_value[i] = hyst.value(i);
+		fs.signalValues(temp.data(), r.data(), lag_rate.data(), hyst_value.data(), values.data());
 		fs.features(values.data(), f.data(), clampOrTangent);
 		if (spec.extrapolation == ExtrapolationPolicy::Linear)
 			for (std::size_t t = 1; t < nf; ++t)

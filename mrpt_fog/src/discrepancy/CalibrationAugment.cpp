@@ -1,6 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/CalibrationAugment.h>
 #include <mrpt_fog/discrepancy/BaseModelDesign.h>
+#include <mrpt_fog/discrepancy/CandidateEffect.h>
 #include <mrpt_fog/discrepancy/EffectSelector.h>
 #include <mrpt_fog/discrepancy/MagneticFit.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
@@ -35,6 +36,7 @@ const char* notWrittenReason(sim::Effect effect)
 			return "no turn-on inside the analysed run: the warm-up amplitude is not separated from the "
 				   "unknown earlier turn-on";
 		case sim::Effect::ScaleFactorTemp: return "the analysed run applies no table rate";
+		case sim::Effect::Hysteresis: return "no branch shape and width named (theta 0 or not finite)";
 		default: return "no compensator term for it in this calibration schema";
 	}
 }
@@ -129,6 +131,17 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 			for (int k = p + 1; k <= std::min(p + 2, 5); ++k) add("T(" + S + ")^" + std::to_string(k));
 		else if (effect == sim::Effect::Magnetic)
 			refit_magnetic = true;  // after the thermal refit: the field term is fitted on its residual
+		else if (effect == sim::Effect::Hysteresis && std::isfinite(ne.theta) && ne.theta != 0.0)
+		{
+			// the named shape and width on S (HysteresisFilter.h: the same operators, run on S's
+			// reading; the exponential branch behind the filter's dead band)
+			const HysteresisShape shape = hysteresisShapeOf(ne.theta);
+			add(ThermalTerm::hysteresis(S,
+										shape.kind == HysteresisShape::Kind::Play ? HysteresisOperator::Play
+																				  : HysteresisOperator::Branch,
+										shape.width_C)
+					.name());
+		}
 		else if (effect == sim::Effect::ScaleFactorTemp && hasTableRates({run}))
 			refit_scale_factor = true;
 		else if (effect == sim::Effect::Warmup && ne.theta > 0 && !run.power.empty() && run.power.front() == 0.0)

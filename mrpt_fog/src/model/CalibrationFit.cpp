@@ -119,6 +119,7 @@ struct PreparedRun
 	bool exclude_table = false;
 	RateEstimatorSettings est;
 	std::vector<LagChannel> lags;  // the feature set's lags (ThermalFeatureSet::lags), by thermistor index
+	std::vector<HysteresisChannel> hyst;  // its hysteresis operators (ThermalFeatureSet::hystereses)
 	std::vector<std::vector<double>> rate;  // [thermistor][sample] degC/s (non-causal estimator only)
 	IntervalMask ok;  // usable sample (intervals: a few words for a clean run of any length)
 	std::size_t usable = 0;
@@ -152,11 +153,14 @@ class RowCursor
 		  tracker_(r.col.size(), r.est.window_s),
 		  half_(r.col.size(), 0.5 * r.est.window_s),
 		  lags_(r.lags),
+		  hyst_(r.hyst),
 		  x_(r.col.size()),
-		  lag_rate_(r.lags.size())
+		  lag_rate_(r.lags.size()),
+		  hyst_value_(r.hyst.size())
 	{
 	}
-	/** Temperatures and rates of sample k (k >= the previous k); lagRates() then holds its lag rates. */
+	/** Temperatures and rates of sample k (k >= the previous k); lagRates() and hysteresis() then
+	 * hold its lag rates and hysteresis outputs. */
 	void row(const FogSeries& c, std::size_t k0, std::size_t k, double* temp, double* rate)
 	{
 		const std::size_t nt = r_.col.size();
@@ -171,10 +175,14 @@ class RowCursor
 			for (std::size_t i = 0; i < nt; i++) rate[i] = r_.rate[i][k];
 		for (std::size_t i = 0; i < nt; i++) temp[i] = c.temp_C[r_.col[i]][k - k0];
 		for (std::size_t i = 0; i < lag_rate_.size(); i++) lag_rate_[i] = lags_.rate_C_per_s(i);
+		for (std::size_t i = 0; i < hyst_value_.size(); i++) hyst_value_[i] = hyst_.value(i);
 	}
 	/** The lag rates of the last row() [degC/s], in PreparedRun::lags order. */
 	const double* lagRates() const { return lag_rate_.data(); }
 	std::size_t lagCount() const { return lag_rate_.size(); }
+	/** The hysteresis outputs of the last row(), in PreparedRun::hyst order. */
+	const double* hysteresis() const { return hyst_value_.data(); }
+	std::size_t hysteresisCount() const { return hyst_value_.size(); }
 	void endChunk(const FogSeries& c, std::size_t k0) { pushTo(c, k0, k0 + c.size()); }
 	/** After row(): some thermistor's rate window covers less than half its length (the
 	 * compensator's rule for using the rate-free start-up model). */
@@ -190,7 +198,7 @@ class RowCursor
 	void pushTo(const FogSeries& c, std::size_t k0, std::size_t end)
 	{
 		const std::size_t nt = r_.col.size();
-		if (!causal_ && lags_.size() == 0)
+		if (!causal_ && lags_.size() == 0 && hyst_.size() == 0)
 		{
 			next_ = std::max(next_, end);
 			return;
@@ -205,13 +213,15 @@ class RowCursor
 				if (order2_) half_.push(c.time_s[j], x_.data());
 			}
 			if (lags_.size()) lags_.push(c.time_s[j], x_.data());
+			if (hyst_.size()) hyst_.push(x_.data());
 		}
 	}
 	const PreparedRun& r_;
 	bool causal_, order2_;
 	CausalRateTracker tracker_, half_;
 	LagFilterBank lags_;
-	std::vector<double> x_, lag_rate_;
+	HysteresisFilterBank hyst_;
+	std::vector<double> x_, lag_rate_, hyst_value_;
 	std::size_t next_ = 0;
 };
 
@@ -238,6 +248,7 @@ PreparedRun prepare(const FogRun& s, const ThermalFeatureSet& fs, const RateEsti
 	r.exclude_table = table == TableSamples::Exclude;
 	r.est = est;
 	r.lags = fs.lags();
+	r.hyst = fs.hystereses();
 	if (est.kind != RateEstimatorKind::Causal)
 	{
 		// The centred estimator needs whole columns (studies only: memory grows with the run).
@@ -273,7 +284,9 @@ void rowSignals(RowCursor& cur, const ThermalFeatureSet& fs, const FogSeries& c,
 	cur.row(c, k0, k0 + j, temp.data(), rate.data());
 	// the feature set's lags are those the run was prepared with (only differences leave it after)
 	if (fs.lags().size() != cur.lagCount()) throw std::logic_error("fit: feature set and prepared run disagree on the lags");
-	fs.signalValues(temp.data(), rate.data(), cur.lagRates(), values.data());
+	if (fs.hystereses().size() != cur.hysteresisCount())
+		throw std::logic_error("fit: feature set and prepared run disagree on the hysteresis operators");
+	fs.signalValues(temp.data(), rate.data(), cur.lagRates(), cur.hysteresis(), values.data());
 }
 
 /** Columns (sorted, constant first) of the terms with power <= order[signal]. */
@@ -945,6 +958,13 @@ void setNormalisation(ThermalFeatureSet& fs, const SignalRanges& g, const FitOpt
 		{
 			nm.centre = 0.5 * (lo[s] + hi[s]);
 			nm.scale = 0.5 * span;
+		}
+		else if (sig.isHysteresis())  // bounded by construction: its own range, never clamped
+		{
+			nm.centre = 0.0;
+			nm.scale = 1.0;
+			nm.min = -1.0;
+			nm.max = 1.0;
 		}
 		else
 		{

@@ -23,22 +23,37 @@ constexpr int kVersion = 2;  //!< written; version 1 (single axis, bias only) is
 /** Written instead of kVersion when an axis holds what a version-2 reader cannot apply, so that
  * such a build says so instead of failing on a term or silently ignoring a section. Version 3 =
  * version 2 + lag signals (dTlag/dt, LagFilter.h) with the bias section's `lag_filter` (the
- * lag's discretisation and warm start), and/or the axis' `magnetic` section (MagneticModel.h).
- * Files without either are written as version 2. */
+ * lag's discretisation and warm start), hysteresis signals (hyst(a,...), HysteresisFilter.h)
+ * with the bias section's `hysteresis_filter` (the operators' warm start and the branch's dead
+ * band), and/or the axis' `magnetic` section (MagneticModel.h). Files without any of them are
+ * written as version 2. */
 constexpr int kVersionExtended = 3;
 constexpr const char* kLagFilter = "first_order_hold, warm_start_first_reading";
-
-bool readsLags(const BiasModel& m)
+/** The hysteresis operators this build runs (HysteresisFilter.h); a file naming others is refused. */
+std::string hysteresisFilterText()
 {
-	for (const auto& sig : m.features.signals())
-		if (sig.isLag()) return true;
-	return false;
+	return "play_and_branch, warm_start_first_reading_h0, branch_dead_band_" + formatValue("%g", kHysteresisDeadBand_C) + "C";
+}
+
+template <class Pred>
+bool readsSignal(const Calibration& cal, Pred pred)
+{
+	const auto reads = [&](const BiasModel& m) {
+		for (const auto& sig : m.features.signals())
+			if (pred(sig)) return true;
+		return false;
+	};
+	bool any = reads(cal.model) || (cal.startup && reads(*cal.startup));
+	for (const auto& f : cal.fallbacks) any |= reads(f);
+	return any;
 }
 bool readsLags(const Calibration& cal)
 {
-	bool any = readsLags(cal.model) || (cal.startup && readsLags(*cal.startup));
-	for (const auto& f : cal.fallbacks) any |= readsLags(f);
-	return any;
+	return readsSignal(cal, [](const ThermalSignal& s) { return s.isLag(); });
+}
+bool readsHysteresis(const Calibration& cal)
+{
+	return readsSignal(cal, [](const ThermalSignal& s) { return s.isHysteresis(); });
 }
 // Plausibility limits of loaded values (issue 14: a coef_dph of 1e308 compensated to -2e307
 // deg/h). Every term is z^k with |z| <= 1 after clamping, so a coefficient bounds its term's
@@ -338,10 +353,14 @@ BiasModel readModel(const Reader& rd, const yaml& n, const std::string& path)
 			if (m.features.signals()[q].name() == name) idx = static_cast<int>(q);
 		if (idx < 0) rd.fail(p + ".name", "signal '" + name + "' is used by no term");
 		SignalNormalisation nm;
-		// Plausible signal values: temperatures and their differences [degC], rates [degC/s].
+		// Plausible signal values: temperatures and their differences [degC], rates [degC/s],
+		// hysteresis outputs [1] (in [-1, 1] by construction).
 		const bool rate = m.features.signals()[idx].isRate() || m.features.signals()[idx].isLag();
-		const double lim = rate ? kMaxSignalRate_Cps : kMaxSignal_C;
-		const char* why = rate ? "a thermistor rate [degC/s] no coil reaches" : "a temperature [degC] no coil reaches";
+		const bool hyst = m.features.signals()[idx].isHysteresis();
+		const double lim = hyst ? 1.0 : rate ? kMaxSignalRate_Cps : kMaxSignal_C;
+		const char* why = hyst ? "a hysteresis output lies in [-1, 1]"
+						  : rate ? "a thermistor rate [degC/s] no coil reaches"
+								 : "a temperature [degC] no coil reaches";
 		nm.centre = rd.bounded(s, "centre", p, -lim, lim, why);
 		nm.scale = rd.bounded(s, "scale", p, -lim, lim, why);
 		nm.min = rd.bounded(s, "min", p, -lim, lim, why);
@@ -590,6 +609,9 @@ void writeAxis(std::ostringstream& o, const Calibration& cal)
 	if (readsLags(cal))
 		o << ind << "  lag_filter: " << str(kLagFilter)
 		  << "  # dTlag/dt(a,tau) = (T(a) - y) / tau, dy/dt = (T(a) - y) / tau integrated exactly for readings linear between samples; y = the first valid reading at start (LagFilter.h)\n";
+	if (readsHysteresis(cal))
+		o << ind << "  hysteresis_filter: " << str(hysteresisFilterText())
+		  << "  # hyst(a,play,w): p <- min(max(p, T - w), T + w), h = (T - p) / w; hyst(a,branch,w): h <- s + (h - s) exp(-|dq| / w), s = sign(dq), q a play of half-width the dead band; p, q = the first valid reading and h = 0 at start (HysteresisFilter.h)\n";
 	o << ind << "  model:\n";
 	writeModel(o, cal.model, ind + "    ");
 	o << ind << "  fallbacks:" << (cal.fallbacks.empty() ? " []" : "") << "\n";
@@ -636,7 +658,7 @@ std::string calibrationSetToYaml(const CalibrationSet& set)
 	o << "# mrpt_fog calibration (fog-calibrate): per gyro axis a thermal bias model, optionally a\n";
 	o << "# scale factor vs temperature and a warm-up term. Units: temperatures degC, rates degC/s,\n";
 	bool extended = false;
-	for (const auto& c : set.axes) extended |= readsLags(c) || c.magnetic.has_value();
+	for (const auto& c : set.axes) extended |= readsLags(c) || readsHysteresis(c) || c.magnetic.has_value();
 	const int version = extended ? kVersionExtended : kVersion;
 	o << "# bias deg/h, scale factor ppm. Layout: docs/model.md (calibration file, version " << version << ").\n";
 	o << "format: " << str(kFormat) << "\n";
@@ -841,6 +863,8 @@ CalibrationSet parseCalibrationYaml(const std::string& text, const std::string& 
 		if (readsLags(cal)) rd.fail("model", "reads lag signals (dTlag/dt), which need file version 3 (the file says 1)");
 		if (root.has("magnetic"))
 			rd.fail("magnetic", "a magnetic-sensitivity section needs file version 3 (the file says 1)");
+		if (readsHysteresis(cal))
+			rd.fail("model", "reads hysteresis signals (hyst), which need file version 3 (the file says 1)");
 		set.axes.push_back(std::move(cal));
 		return set;
 	}
@@ -873,6 +897,15 @@ CalibrationSet parseCalibrationYaml(const std::string& text, const std::string& 
 				rd.fail(p + ".bias", "reads lag signals (dTlag/dt), which need file version 3 (the file says " + num(version) + ")");
 			if (rd.text(rd.child(a, "bias", p), "lag_filter", p + ".bias") != kLagFilter)
 				rd.fail(p + ".bias.lag_filter", std::string("expected \"") + kLagFilter + "\" (the only lag this build runs)");
+		}
+		if (readsHysteresis(cal))
+		{
+			if (version < kVersionExtended)
+				rd.fail(p + ".bias", "reads hysteresis signals (hyst), which need file version 3 (the file says " +
+										 num(version) + ")");
+			if (rd.text(rd.child(a, "bias", p), "hysteresis_filter", p + ".bias") != hysteresisFilterText())
+				rd.fail(p + ".bias.hysteresis_filter",
+						"expected \"" + hysteresisFilterText() + "\" (the only hysteresis operators this build runs)");
 		}
 		if (a.has("scale_factor"))
 		{

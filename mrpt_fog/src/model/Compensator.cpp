@@ -28,7 +28,8 @@ std::string describeLayout(const std::vector<ThermistorInfo>& layout)
 }  // namespace
 
 Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector<std::string>& names,
-										   const std::vector<LagChannel>& lag_channels)
+										   const std::vector<LagChannel>& lag_channels,
+										   const std::vector<HysteresisChannel>& hyst_channels)
 {
 	Compiled c;
 	const auto& fs = m.features;
@@ -40,6 +41,15 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 	const auto lagOf = [&](const ThermalSignal& sig) {
 		const auto it = std::find(lag_channels.begin(), lag_channels.end(), LagChannel{chan(sig.a), sig.tau_s});
 		return static_cast<int>(it - lag_channels.begin());  // every model's lags are in the bank
+	};
+	const auto hystOf = [&](const ThermalSignal& sig) {
+		const auto it = std::find(hyst_channels.begin(), hyst_channels.end(),
+								  HysteresisChannel{chan(sig.a), sig.hyst_op, sig.width_C});
+		return static_cast<int>(it - hyst_channels.begin());  // every model's operators are in the bank
+	};
+	// a signal read from a filter bank: its channel there (lag or hysteresis), else its thermistor's
+	const auto source = [&](const ThermalSignal& sig) {
+		return sig.isLag() ? lagOf(sig) : sig.isHysteresis() ? hystOf(sig) : chan(sig.a);
 	};
 	// degree of each signal
 	std::vector<int> degree(fs.signals().size(), 0);
@@ -62,7 +72,7 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 	for (std::size_t s = 0; s < fs.signals().size(); s++)
 	{
 		const auto& sig = fs.signals()[s];
-		if (sig.isDifference() || sig.isLag()) continue;
+		if (sig.isDifference() || sig.isLag() || sig.isHysteresis()) continue;
 		const auto& nm = fs.normalisation()[s];
 		const int ch = chan(sig.a);
 		detail::KernelBlock& b = K[ch / 4];
@@ -80,7 +90,7 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 		const auto& nm = fs.normalisation()[s];
 		EdgeSignal e;
 		e.kind = static_cast<int>(sig.kind);
-		e.a = sig.isLag() ? lagOf(sig) : chan(sig.a);
+		e.a = source(sig);
 		e.b = sig.isDifference() ? chan(sig.b) : 0;
 		e.lo = nm.min;
 		e.hi = nm.max;
@@ -93,7 +103,7 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 		c.edges.push_back(e);
 	}
 	std::vector<int> group_of(fs.signals().size()), index_in(fs.signals().size());
-	for (const SignalKind kind : {SignalKind::Diff, SignalKind::DiffRate, SignalKind::LagRate})  // T and dT/dt: the kernel
+	for (const SignalKind kind : {SignalKind::Diff, SignalKind::DiffRate, SignalKind::LagRate, SignalKind::Hysteresis})  // T and dT/dt: the kernel
 	{
 		SignalGroup g;
 		g.kind = kind;
@@ -104,14 +114,14 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 			const auto& nm = fs.normalisation()[s];
 			group_of[s] = static_cast<int>(c.groups.size());
 			index_in[s] = static_cast<int>(g.a.size());
-			g.a.push_back(sig.isLag() ? lagOf(sig) : chan(sig.a));  // a lag: its channel in the bank
+			g.a.push_back(source(sig));  // a lag or hysteresis: its channel in the bank
 			g.b.push_back(sig.isDifference() ? chan(sig.b) : 0);
 			g.centre.push_back(nm.centre);
 			g.inv_scale.push_back(1.0 / nm.scale);
 			g.lo.push_back(nm.min);
 			g.hi.push_back(nm.max);
 			g.degree = std::max(g.degree, degree[s]);
-			c.uses |= 1u << (sig.isLag() ? chan(sig.a) : g.a.back());  // a lag needs its thermistor's reading
+			c.uses |= 1u << chan(sig.a);  // a lag or hysteresis needs its thermistor's reading
 			if (sig.isDifference()) c.uses |= 1u << g.b.back();
 			if (kind == SignalKind::DiffRate) c.uses_rate |= (1u << g.a.back()) | (1u << g.b.back());
 		}
@@ -128,7 +138,7 @@ Compensator::Compiled Compensator::compile(const BiasModel& m, const std::vector
 			continue;
 		}
 		const auto& sig = fs.signals()[s];
-		if (!sig.isDifference() && !sig.isLag())
+		if (!sig.isDifference() && !sig.isLag() && !sig.isHysteresis())
 		{
 			// coef * ((v - centre) / scale)^k = (coef / scale^k) * (v - centre)^k
 			const int ch = chan(sig.a);
@@ -210,18 +220,36 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 				lag_channels.push_back(lc);
 		}
 	};
-	addLags(cal.model);
-	for (const auto& fb : cal.fallbacks) addLags(fb);
-	if (cal.startup) addLags(*cal.startup);
-	has_lags_ = !lag_channels.empty();
+	// The hysteresis operators every model reads, over tracked channels (HysteresisFilter.h).
+	std::vector<HysteresisChannel> hyst_channels;
+	const auto addHysteresis = [&](const BiasModel& m) {
+		for (const auto& sig : m.features.signals())
+		{
+			if (!sig.isHysteresis()) continue;
+			const auto it = std::find(names.begin(), names.end(), sig.a);
+			const HysteresisChannel hc{static_cast<int>(it - names.begin()), sig.hyst_op, sig.width_C};
+			if (it != names.end() && std::find(hyst_channels.begin(), hyst_channels.end(), hc) == hyst_channels.end())
+				hyst_channels.push_back(hc);
+		}
+	};
+	const auto everyModel = [&](const auto& add) {
+		add(cal.model);
+		for (const auto& fb : cal.fallbacks) add(fb);
+		if (cal.startup) add(*cal.startup);
+	};
+	everyModel(addLags);
+	everyModel(addHysteresis);
+	has_filters_ = !lag_channels.empty() || !hyst_channels.empty();
 	lags_ = LagFilterBank(lag_channels);
 	lag_rate_.assign(lag_channels.size(), 0.0);
-	models_.push_back(compile(cal.model, names, lag_channels));
+	hyst_ = HysteresisFilterBank(hyst_channels);
+	hyst_value_.assign(hyst_channels.size(), 0.0);
+	models_.push_back(compile(cal.model, names, lag_channels, hyst_channels));
 	for (const auto& n : names)
 	{
 		const BiasModel* fb = cal.fallbackFor(n);
 		has_fallback_.push_back(fb != nullptr);
-		models_.push_back(fb ? compile(*fb, names, lag_channels) : Compiled{});
+		models_.push_back(fb ? compile(*fb, names, lag_channels, hyst_channels) : Compiled{});
 	}
 	if (cal.startup)
 	{
@@ -233,7 +261,7 @@ Compensator::Compensator(const Calibration& cal, const std::vector<ThermistorInf
 											cal.startup->features.signals()[s].name() + "): it must be rate-free");
 		}
 		startup_ = static_cast<int>(models_.size());
-		models_.push_back(compile(*cal.startup, names, lag_channels));
+		models_.push_back(compile(*cal.startup, names, lag_channels, hyst_channels));
 	}
 	if (cal.scale_factor)
 	{
@@ -265,6 +293,7 @@ void Compensator::reset()
 	tracker_.reset();
 	half_tracker_.reset();
 	lags_.reset();
+	hyst_.reset();
 	counters_ = {};
 	last_model_ = kNoSampleYet;
 	sf_ppm_ = sf_initial_ppm_;
@@ -297,10 +326,18 @@ void Compensator::notePowerOnFromMetadata(const FogSeries& log)
 		rate_[c] = CausalRateTracker::extrapolatedRate(tracker_, half_tracker_, c, time_s);
 }
 
-[[gnu::noinline]] void Compensator::updateLags(double time_s, const double* temp_C)
+[[gnu::noinline]] void Compensator::updateFilters(double time_s, const double* temp_C)
 {
-	lags_.push(time_s, temp_C);
-	for (std::size_t i = 0; i < lag_rate_.size(); i++) lag_rate_[i] = lags_.rate_C_per_s(i);
+	if (lags_.size())
+	{
+		lags_.push(time_s, temp_C);
+		for (std::size_t i = 0; i < lag_rate_.size(); i++) lag_rate_[i] = lags_.rate_C_per_s(i);
+	}
+	if (hyst_.size())
+	{
+		hyst_.push(temp_C);
+		for (std::size_t i = 0; i < hyst_value_.size(); i++) hyst_value_[i] = hyst_.value(i);
+	}
 }
 
 [[gnu::noinline]] void Compensator::applyExtras(Output& out, double time_s, double raw_dph, const double* temp_C)
@@ -424,7 +461,10 @@ int countClamped(const KernelBlock* K, std::size_t blocks, const double* T, cons
 	for (const SignalGroup& g : m.groups)
 	{
 		const bool of_temperature = g.kind == SignalKind::Temp || g.kind == SignalKind::Diff;
-		const double* src = g.kind == SignalKind::LagRate ? lag_rate_.data() : of_temperature ? temp_C : rate_.data();
+		const double* src = g.kind == SignalKind::LagRate	 ? lag_rate_.data()
+							: g.kind == SignalKind::Hysteresis ? hyst_value_.data()
+							: of_temperature				   ? temp_C
+															   : rate_.data();
 		if (g.kind == SignalKind::Diff || g.kind == SignalKind::DiffRate)
 			sum += groupSumAnyDegree<true>(g.degree, g.a.data(), g.b.data(), src, g.lo.data(), g.hi.data(),
 										   g.centre.data(), g.inv_scale.data(), g.p.data(), g.a.size(), clamped);
@@ -448,6 +488,7 @@ int countClamped(const KernelBlock* K, std::size_t blocks, const double* T, cons
 			case 1: v = rate_[e.a]; break;
 			case 2: v = temp_C[e.a] - temp_C[e.b]; break;
 			case 4: v = lag_rate_[e.a]; break;
+			case 5: v = hyst_value_[e.a]; break;
 			default: v = rate_[e.a] - rate_[e.b]; break;
 		}
 		double beyond = 0, edge = 0;

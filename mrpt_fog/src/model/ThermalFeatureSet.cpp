@@ -19,11 +19,19 @@ std::string ThermalSignal::name() const
 		case SignalKind::Rate: return "dT/dt(" + a + ")";
 		case SignalKind::Diff: return "dT(" + a + "-" + b + ")";
 		case SignalKind::LagRate: return "dTlag/dt(" + a + "," + formatValue("%.17g", tau_s) + ")";
+		case SignalKind::Hysteresis:
+		{
+			// the shortest text that reads back as the same width (1.92, not 1.9199999999999999)
+			std::string w;
+			for (const char* fmt : {"%.15g", "%.16g", "%.17g"})
+				if (std::strtod((w = formatValue(fmt, width_C)).c_str(), nullptr) == width_C) break;
+			return "hyst(" + a + (hyst_op == HysteresisOperator::Play ? ",play," : ",branch,") + w + "C)";
+		}
 		default: return "d/dt dT(" + a + "-" + b + ")";
 	}
 }
 
-const char* ThermalSignal::unit() const { return isRate() || isLag() ? "degC/s" : "degC"; }
+const char* ThermalSignal::unit() const { return isHysteresis() ? "1" : isRate() || isLag() ? "degC/s" : "degC"; }
 
 std::string ThermalTerm::name() const
 {
@@ -33,7 +41,16 @@ std::string ThermalTerm::name() const
 
 int ThermalTerm::maxPower(SignalKind kind)
 {
+	if (kind == SignalKind::Hysteresis) return 1;  // bounded operator: its powers add nothing physical
 	return (kind == SignalKind::Rate || kind == SignalKind::DiffRate || kind == SignalKind::LagRate) ? 3 : 5;
+}
+
+ThermalTerm ThermalTerm::hysteresis(const std::string& a, HysteresisOperator op, double width_C)
+{
+	ThermalTerm t = of(SignalKind::Hysteresis, a, "", 1);
+	t.signal.hyst_op = op;
+	t.signal.width_C = width_C;
+	return t;
 }
 
 ThermalTerm ThermalTerm::lagRate(const std::string& a, double tau_s, int power)
@@ -62,7 +79,8 @@ ThermalTerm ThermalTerm::parse(const std::string& text_in)
 	if (text.rfind("d/dt dT(", 0) == 0) text = "d/dtdT(" + text.substr(8);
 	const auto fail = [&](const std::string& why) {
 		throw std::invalid_argument("model term '" + text_in + "': " + why +
-									" (expected 1, T(a)^k, dT/dt(a)^k, dT(a-b)^k, d/dt dT(a-b)^k or dTlag/dt(a,tau_s)^k)");
+									" (expected 1, T(a)^k, dT/dt(a)^k, dT(a-b)^k, d/dt dT(a-b)^k, dTlag/dt(a,tau_s)^k, "
+									"hyst(a,play,wC)^1 or hyst(a,branch,wC)^1)");
 	};
 	if (text == "1") return constantTerm();
 	struct Form
@@ -71,7 +89,8 @@ ThermalTerm ThermalTerm::parse(const std::string& text_in)
 		SignalKind kind;
 	};
 	// "d/dtdT(" before "dT(" (its space removed above).
-	const Form forms[] = {{"d/dtdT(", SignalKind::DiffRate}, {"dTlag/dt(", SignalKind::LagRate}, {"dT/dt(", SignalKind::Rate},
+	const Form forms[] = {{"d/dtdT(", SignalKind::DiffRate}, {"dTlag/dt(", SignalKind::LagRate}, {"hyst(", SignalKind::Hysteresis},
+						  {"dT/dt(", SignalKind::Rate},
 						  {"dT(", SignalKind::Diff}, {"T(", SignalKind::Temp}};
 	for (const Form& f : forms)
 	{
@@ -92,6 +111,26 @@ ThermalTerm ThermalTerm::parse(const std::string& text_in)
 			tau_s = std::strtod(t.c_str(), &end);
 			if (t.empty() || *end != '\0' || !std::isfinite(tau_s) || !(tau_s > 0) || tau_s > 1e7)
 				fail("lag time constant '" + t + "' must be a number of seconds in (0, 1e7]");
+		}
+		HysteresisOperator op = HysteresisOperator::Play;
+		double width_C = 0;
+		if (f.kind == SignalKind::Hysteresis)
+		{
+			const auto c1 = inside.find(','), c2 = c1 == std::string::npos ? c1 : inside.find(',', c1 + 1);
+			if (c2 == std::string::npos) fail("hysteresis needs a thermistor, an operator and a width 'a,play,2C'");
+			a = inside.substr(0, c1);
+			const std::string o = inside.substr(c1 + 1, c2 - c1 - 1), w = inside.substr(c2 + 1);
+			if (o == "play")
+				op = HysteresisOperator::Play;
+			else if (o == "branch")
+				op = HysteresisOperator::Branch;
+			else
+				fail("hysteresis operator '" + o + "' must be play or branch");
+			char* end = nullptr;
+			width_C = std::strtod(w.c_str(), &end);
+			if (w.size() < 2 || w.back() != 'C' || end != w.c_str() + w.size() - 1 || !std::isfinite(width_C) ||
+				!(width_C > 0) || width_C > 1e3)
+				fail("hysteresis width '" + w + "' must be degC written as a number followed by C, in (0, 1000]");
 		}
 		const bool diff = f.kind == SignalKind::Diff || f.kind == SignalKind::DiffRate;
 		if (diff)
@@ -117,6 +156,7 @@ ThermalTerm ThermalTerm::parse(const std::string& text_in)
 		if (power < 1 || power > maxPower(f.kind))
 			fail("power " + std::to_string(power) + " outside 1.." + std::to_string(maxPower(f.kind)));
 		if (f.kind == SignalKind::LagRate) return lagRate(a, tau_s, power);
+		if (f.kind == SignalKind::Hysteresis) return hysteresis(a, op, width_C);
 		return of(f.kind, a, b, power);
 	}
 	fail("unknown form");
@@ -159,6 +199,13 @@ ThermalFeatureSet::ThermalFeatureSet(const std::vector<ThermalTerm>& terms)
 				auto l = std::find(lags_.begin(), lags_.end(), lc);
 				if (l == lags_.end()) l = lags_.insert(lags_.end(), lc);
 				b = static_cast<int>(l - lags_.begin());
+			}
+			if (t.signal.isHysteresis())
+			{
+				const HysteresisChannel hc{sig_a_.back(), t.signal.hyst_op, t.signal.width_C};
+				auto h = std::find(hyst_.begin(), hyst_.end(), hc);
+				if (h == hyst_.end()) h = hyst_.insert(hyst_.end(), hc);
+				b = static_cast<int>(h - hyst_.begin());
 			}
 			sig_b_.push_back(b);
 			term_signal_.push_back(static_cast<int>(signals_.size() - 1));
@@ -233,11 +280,15 @@ const SignalNormalisation& ThermalFeatureSet::normalisationOf(const ThermalSigna
 	throw std::out_of_range("signal " + s.name() + " is not in the feature set");
 }
 
-void ThermalFeatureSet::signalValues(const double* temp_C, const double* rate_C_s, const double* lag_C_s, double* v) const
+void ThermalFeatureSet::signalValues(const double* temp_C, const double* rate_C_s, const double* lag_C_s,
+									 const double* hyst, double* v) const
 {
 	if (!lags_.empty() && !lag_C_s)
 		throw std::invalid_argument("feature set reads lag signals (" + std::to_string(lags_.size()) +
 									" lags) but no lag values were given");
+	if (!hyst_.empty() && !hyst)
+		throw std::invalid_argument("feature set reads hysteresis signals (" + std::to_string(hyst_.size()) +
+									" operators) but no hysteresis values were given");
 	for (std::size_t s = 0; s < signals_.size(); s++)
 	{
 		const int a = sig_a_[s], b = sig_b_[s];
@@ -247,6 +298,7 @@ void ThermalFeatureSet::signalValues(const double* temp_C, const double* rate_C_
 			case SignalKind::Rate: v[s] = rate_C_s[a]; break;
 			case SignalKind::Diff: v[s] = temp_C[a] - temp_C[b]; break;
 			case SignalKind::LagRate: v[s] = lag_C_s[b]; break;
+			case SignalKind::Hysteresis: v[s] = hyst[b]; break;
 			default: v[s] = rate_C_s[a] - rate_C_s[b]; break;
 		}
 	}

@@ -70,7 +70,7 @@ TEST(ForeignTrialsLong, GapThroughTheCompensatorOnHeldOutSeeds)
 	// (target >= 0.5)
 	const int n = seedsPerCell();
 	for (const char* id : {"temp_poly_order", "radial_gradient", "gradient_rate", "scale_factor_temp", "warmup",
-						   "magnetic"})
+						   "magnetic", "hysteresis"})
 		for (double ratio : {3.0, 1.0})
 		{
 			if (!effectSelected(id)) continue;

@@ -16,6 +16,10 @@
  *   gradient_rate    d/dt dT(IN-OUT)^1
  *   shupe_rate       dT/dt(IN)^1 and d/dt dT(IN-OUT)^1 (without an OUT: dT/dt(S)^1)
  *   temp_poly_order  T(S)^(p+1), T(S)^(p+2) (at most 5)
+ *   hysteresis       hyst(S,play,wC)^1 or hyst(S,branch,wC)^1: the named shape and width
+ *                    (CandidateEffect.h hysteresisShapeOf) as the compensator's operator on S's
+ *                    reading (model/HysteresisFilter.h; the branch behind its 0.05 C dead band);
+ *                    the calibration file is then version 3
  *   warmup           the calibration's (v2) warm-up term: amplitude and tau as named, when the
  *                    analysed run starts with the gyro off; when it starts powered (its first
  *                    turn-on unknown) but holds turn-ons, amplitude and tau fitted on those
@@ -34,7 +38,7 @@
  *                    constant-field stretch; ARMA(1,1) noise by REML, whitened; standard error
  *                    times the Bartlett long-run variance factor); not written when the run's
  *                    field does not vary (or it has no field column)
- * Effects without a compensator term (hysteresis, thermistor_lag) are listed in `not_written`
+ * Effects without a compensator term (thermistor_lag) are listed in `not_written`
  * with the reason.
  * The base calibration: the YAML given, or fitCalibration(run, preset) with default options
  * (what fog-calibrate writes). The augmented one: the base's selected terms plus the added

@@ -43,6 +43,10 @@
  *  - lag signals (dTlag/dt(a,tau), LagFilter.h): a first-order lag of each reading they need,
  *    carried from sample to sample, warm-started equal to the first valid reading; a lag signal
  *    is missing exactly when its thermistor's reading is (it needs no rate window).
+ *  - hysteresis signals (hyst(a,play|branch,w), HysteresisFilter.h): the operator of each reading
+ *    they need, carried from sample to sample, warm-started at the first valid reading (output
+ *    0); missing exactly when its thermistor's reading is; a dropout holds the state.
+ * The lag and hysteresis state is updated out of line, only when some model reads such a signal.
  * Batch compensate() is exactly the streaming loop, so batch == streaming by construction; the
  * tests also check it against an independent evaluation of the fitted feature set.
  *
@@ -51,6 +55,7 @@
  */
 
 #include <mrpt_fog/model/Calibration.h>
+#include <mrpt_fog/model/HysteresisFilter.h>
 #include <mrpt_fog/model/LagFilter.h>
 #include <mrpt_fog/model/RateEstimator.h>
 #include <mrpt_fog/obs/FogRun.h>
@@ -171,9 +176,11 @@ class Compensator
 	void stepLoop(std::size_t n, const double* time_s, const double* raw_dph, const double* temp_C,
 				  std::size_t temp_stride, Output* out);
 	static Compiled compile(const BiasModel& m, const std::vector<std::string>& channel_names,
-							const std::vector<LagChannel>& lag_channels);
-	/** The lag bank's rates for this sample (only when a model reads a lag signal): out of line. */
-	void updateLags(double time_s, const double* temp_C);
+							const std::vector<LagChannel>& lag_channels,
+							const std::vector<HysteresisChannel>& hyst_channels);
+	/** The lag bank's rates and the hysteresis bank's outputs for this sample (only when a model
+	 * reads a lag or hysteresis signal): out of line. */
+	void updateFilters(double time_s, const double* temp_C);
 	template <std::size_t NB, int W>
 	double evaluate(const Compiled& m, const double* temp_C, int& clamped) const;
 	double addGroups(const Compiled& m, const double* temp_C, double sum, int& clamped) const;  // sum + the groups' terms
@@ -198,9 +205,11 @@ class Compensator
 	CausalRateTracker tracker_;
 	bool delay_comp_ = false;  // causal estimator of order 2
 	CausalRateTracker half_tracker_;  // the last half window (order 2 only)
-	bool has_lags_ = false;  // some model reads a lag signal (dTlag/dt)
+	bool has_filters_ = false;  // some model reads a lag (dTlag/dt) or hysteresis (hyst) signal
 	LagFilterBank lags_;  // over tracked channels
 	std::vector<double> lag_rate_;  // per lag channel [degC/s]
+	HysteresisFilterBank hyst_;  // over tracked channels
+	std::vector<double> hyst_value_;  // per hysteresis channel, in [-1, 1]
 	std::vector<double> temp_, rate_;  // per tracked channel, zero padded to the kernel's blocks of 4
 	CompensationCounters counters_;
 	static constexpr int kNoSampleYet = -2;  //!< last_model_ before the first sample

@@ -35,7 +35,7 @@ struct Compensator::SignalGroup
 /** One signal's calibrated range and the bias slope at its edges (extrapolation, the rare path). */
 struct Compensator::EdgeSignal
 {
-	int kind = 0, a = 0, b = 0;  // SignalKind, tracked channels (LagRate: a = lag channel)
+	int kind = 0, a = 0, b = 0;  // SignalKind, tracked channels (LagRate: a = lag channel, Hysteresis: its operator)
 	double lo = 0, hi = 0, slope_lo = 0, slope_hi = 0;  // [signal unit], [deg/h per unit]
 	double centre = 0, scale = 1, coef[6] = {0, 0, 0, 0, 0, 0};  // coef[k] of z^k (Polynomial policy)
 };
@@ -80,7 +80,7 @@ template <std::size_t NC, int W>
 		T = temp_.data();
 	}
 	tracker_.pushFixed<NC>(time_s, same_order_ ? temp_C : temp_.data());
-	if (__builtin_expect(has_lags_, 0)) updateLags(time_s, same_order_ ? temp_C : temp_.data());
+	if (__builtin_expect(has_filters_, 0)) updateFilters(time_s, same_order_ ? temp_C : temp_.data());
 	const std::uint32_t short_span = tracker_.ratesAndCoverageFixed<NC>(rate_.data(), half_window_s_);
 	if (__builtin_expect(delay_comp_, 0)) delayCompensateRates(time_s, same_order_ ? temp_C : temp_.data());
 	// One predictable test for the common case: is any reading or rate NaN? (Then the mask of
