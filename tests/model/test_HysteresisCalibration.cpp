@@ -17,23 +17,15 @@
 #include <string>
 #include <vector>
 
+#include "PiecewiseHistory.h"
+
 using namespace mrpt_fog;
 
 namespace
 {
 constexpr double kWidth_C = 2.0, kHystCoef = 0.3;  // play half-width [degC], bias per unit output [deg/h]
 
-double piecewise(const std::vector<std::pair<double, double>>& knots, double t)
-{
-	for (std::size_t i = 1; i < knots.size(); i++)
-		if (t <= knots[i].first)
-		{
-			const auto& [t0, x0] = knots[i - 1];
-			const auto& [t1, x1] = knots[i];
-			return x0 + (x1 - x0) * (t - t0) / (t1 - t0);
-		}
-	return knots.back().second;
-}
+using fogtest::piecewise;
 
 /** 1 Hz run of one thermistor Ti1 following `knots`; bias = 0.8 + 0.004 T + kHystCoef h with h
  * the play of half-width kWidth_C, p = T(0) at the start: h = (T - p) / w, p clamped to

@@ -14,24 +14,15 @@
 #include <string>
 #include <vector>
 
+#include "PiecewiseHistory.h"
+
 using namespace mrpt_fog;
 
 namespace
 {
 constexpr double kTau_s = 400.0, kLagCoef = 45.0;  // bias per lag rate [deg/h per degC/s]
 
-/** Piecewise-linear chamber histories through (time [s], temperature [degC]) knots. */
-double piecewise(const std::vector<std::pair<double, double>>& knots, double t)
-{
-	for (std::size_t i = 1; i < knots.size(); i++)
-		if (t <= knots[i].first)
-		{
-			const auto& [t0, x0] = knots[i - 1];
-			const auto& [t1, x1] = knots[i];
-			return x0 + (x1 - x0) * (t - t0) / (t1 - t0);
-		}
-	return knots.back().second;
-}
+using fogtest::piecewise;
 
 /** 1 Hz run of one thermistor following `knots`; bias = 0.8 + 0.004 T + kLagCoef dy/dt with
  * dy/dt = (T - y) / kTau_s integrated by RK4 (0.25 s steps) from y(0) = T(0). */
