@@ -66,6 +66,7 @@ int main(int argc, char** argv)
 	std::string second_calibration;
 	if (const char* name = std::getenv("FOG_BENCH_CAL2")) second_calibration = name;  // the session-7 spelling of --cal2
 	bool warmup_calibration = false, also_seed_run_only = false, also_no_warmup = false;
+	std::string calibration_profile;  // empty: the seed profile
 	for (int i = 1; i < argc; i++)
 	{
 		const std::string a = argv[i];
@@ -97,6 +98,7 @@ int main(int argc, char** argv)
 		else if (a == "--ideal-thermistors") ideal = true;
 		else if (a == "--cal2" && i + 1 < argc) second_calibration = argv[++i];
 		else if (a == "--warmup-cal") warmup_calibration = true;
+		else if (a == "--cal-profile" && i + 1 < argc) calibration_profile = argv[++i];
 		else if (a == "--also-seed-run-only") also_seed_run_only = true;
 		else if (a == "--also-no-warmup") also_no_warmup = true;
 		else if (a == "--oracle") oracle = true;
@@ -133,10 +135,11 @@ int main(int argc, char** argv)
 		std::fprintf(stderr, "bench_generalization: --seeds must be tuning, heldout, final, fresh, all or seed numbers (17,18)\n");
 		return 2;
 	}
-	for (auto s : seeds) list.push_back({fogtest::Generator::FogSim, s, cap, effects, ideal, second_calibration, warmup_calibration});
+	for (auto s : seeds)
+		list.push_back({fogtest::Generator::FogSim, s, cap, effects, ideal, second_calibration, warmup_calibration, calibration_profile});
 	for (int s = 1; s <= sector_coil; s++)
 		list.push_back({fogtest::Generator::SectorCoil, static_cast<std::uint64_t>(s), cap, mrpt_fog::sim::defaultEffects(),
-						false, second_calibration, false});
+						false, second_calibration, false, calibration_profile});
 	auto presets = fogtest::benchPresets();
 	for (const auto& e : extra)
 	{

@@ -237,7 +237,7 @@ void forEachSample(const PreparedRun& r, RowCursor* cur, F&& f)
 }
 
 PreparedRun prepare(const FogRun& s, const ThermalFeatureSet& fs, const RateEstimatorSettings& est, GyroAxis axis,
-					TableSamples table)
+					TableSamples table, double exclusion_s)
 {
 	PreparedRun r;
 	r.run = &s;
@@ -267,9 +267,26 @@ PreparedRun prepare(const FogRun& s, const ThermalFeatureSet& fs, const RateEsti
 	RowCursor cur(r);
 	std::vector<double> temp(nt), rate(nt);
 	r.ok.assign(n, true);
+	// turn-ons: the samples of the first turn_on_exclusion_s after each stay out (FitOptions)
+	double excluded_until_s = -std::numeric_limits<double>::infinity();
+	double previous_power = 1.0;
+	bool first_sample = true;
 	forEachSample(r, &cur, [&](const FogSeries& c, std::size_t k0, std::size_t j) {
 		cur.row(c, k0, k0 + j, temp.data(), rate.data());
-		bool ok = std::isfinite(r.y(c, j)) && (c.power.empty() || c.power[j] != 0.0);
+		if (exclusion_s > 0)
+		{
+			if (first_sample)
+			{
+				const std::string meta = s.header().metadataValue("power_on_time_s");
+				const double t_on = meta.empty() ? std::numeric_limits<double>::quiet_NaN() : std::strtod(meta.c_str(), nullptr);
+				if (std::isfinite(t_on) && t_on <= c.time_s[j]) excluded_until_s = t_on + exclusion_s;
+				first_sample = false;
+			}
+			const double power = c.power.empty() ? 1.0 : c.power[j];
+			if (power != 0.0 && previous_power == 0.0) excluded_until_s = c.time_s[j] + exclusion_s;
+			previous_power = power;
+		}
+		bool ok = std::isfinite(r.y(c, j)) && (c.power.empty() || c.power[j] != 0.0) && !(c.time_s[j] < excluded_until_s);
 		for (std::size_t i = 0; i < nt && ok; i++) ok = std::isfinite(temp[i]) && std::isfinite(rate[i]);
 		r.ok.set(k0 + j, ok);
 		r.usable += ok;
@@ -759,6 +776,8 @@ void checkFitInputs(const std::vector<FogRun>& runs, const FitOptions& opt, cons
 	if (!(opt.min_relative_gain >= 0 && opt.min_relative_gain < 1))
 		throw std::invalid_argument("fit: min_relative_gain must be in [0, 1)");
 	if (!(opt.tau_s > 0)) throw std::invalid_argument("fit: tau_s must be > 0");
+	if (!(opt.turn_on_exclusion_s >= 0) || !std::isfinite(opt.turn_on_exclusion_s))
+		throw std::invalid_argument("fit: turn_on_exclusion_s must be finite and >= 0 [s]");
 	for (std::size_t i = 0; i < runs.size(); i++)
 	{
 		try
@@ -838,7 +857,7 @@ std::vector<PreparedRun> prepareRuns(const std::vector<FogRun>& runs, const Ther
 	usable = 0;
 	for (const auto& r : runs)
 	{
-		prep.push_back(prepare(r, fs, opt.rate_estimator, axis, opt.table_samples));
+		prep.push_back(prepare(r, fs, opt.rate_estimator, axis, opt.table_samples, opt.turn_on_exclusion_s));
 		usable += prep.back().usable;
 	}
 	return prep;

@@ -79,6 +79,20 @@ std::vector<BenchProfile> secondCalibrationProfiles()
 												  "  - {type: ramp, to_C: 55, rate_C_per_min: 3}\n"
 												  "  - {type: hold, duration_min: 45}\n"),
 				 false});
+	p.push_back({"cal_single", fromText("cal_single", "name: cal_single\ninitial_temp_C: 25\npower_initially: true\n"
+													  "initial_state: cold\nsegments:\n"
+													  "  - {type: hold, duration_min: 120}\n"
+													  "  - {type: ramp, to_C: -40, rate_C_per_min: 1}\n"
+													  "  - {type: hold, duration_min: 120}\n"
+													  "  - {type: ramp, to_C: 60, rate_C_per_min: 1}\n"
+													  "  - {type: hold, duration_min: 120}\n"
+													  "  - {type: ramp, to_C: 5, rate_C_per_min: 2}\n"
+													  "  - {type: sine, amplitude_C: 20, period_min: 30, cycles: 3}\n"
+													  "  - {type: ramp, to_C: -35, rate_C_per_min: 2}\n"
+													  "  - {type: hold, duration_min: 45}\n"
+													  "  - {type: ramp, to_C: 55, rate_C_per_min: 3}\n"
+													  "  - {type: hold, duration_min: 45}\n"),
+				 false});
 	p.push_back({"cal_turn_on", fromText("cal_turn_on", "name: cal_turn_on\ninitial_temp_C: 10\npower_initially: true\n"
 														"initial_state: cold\nsegments:\n"
 														"  - {type: hold, duration_min: 180}\n"),
@@ -291,7 +305,8 @@ DeviceRuns simulate(const BenchCase& c, const std::vector<BenchProfile>& profile
 		r.rate_hz = st.rate_hz;
 		r.thermistors = static_cast<int>(d.device.thermistors.size());
 		st.seed = 1000 * c.seed + 1;
-		r.cal = mrpt_fog::sim::simulateChamber(calibrationProfile(), d.device, st);
+		r.cal = mrpt_fog::sim::simulateChamber(
+			c.calibration_profile.empty() ? calibrationProfile() : secondCalibrationProfile(c.calibration_profile), d.device, st);
 		if (!c.second_calibration.empty() && !isEvaluationProfile(profiles, c.second_calibration))
 		{
 			st.seed = 1000 * c.seed + 50;
@@ -317,7 +332,9 @@ DeviceRuns simulate(const BenchCase& c, const std::vector<BenchProfile>& profile
 		p.rate_hz = std::min(p.rate_hz, c.rate_cap_hz);
 		r.rate_hz = p.rate_hz;
 		r.thermistors = p.thermistors;
-		r.cal = simulateSectorCoil(p, calibrationProfile(), 1000 * c.seed + 1);
+		r.cal = simulateSectorCoil(
+			p, c.calibration_profile.empty() ? calibrationProfile() : secondCalibrationProfile(c.calibration_profile),
+			1000 * c.seed + 1);
 		if (!c.second_calibration.empty() && !isEvaluationProfile(profiles, c.second_calibration))
 			r.cal2.push_back(simulateSectorCoil(p, secondCalibrationProfile(c.second_calibration), 1000 * c.seed + 50));
 		for (std::size_t i = 0; i < profiles.size(); i++)
@@ -434,8 +451,12 @@ std::vector<CaseResult> runBenchCase(const BenchCase& c, const std::vector<Bench
 	std::size_t cal2 = profiles.size();
 	for (std::size_t i = 0; i < profiles.size(); i++)
 		if (profiles[i].name == second) cal2 = i;
-	for (const auto& bp : presets)
+	for (const auto& preset : presets)
 	{
+		fogtest::BenchPreset bp = preset;
+		// a calibration run of another profile may hold a turn-on: its transient is the warm-up term's
+		const bool single_run = !c.calibration_profile.empty();
+		if (single_run && !bp.fit_on_evaluation) bp.options.turn_on_exclusion_s = kBenchTurnOnExclusion_s;
 		mrpt_fog::Calibration cal;
 		std::string error, note;
 		const auto fit = [&](const mrpt_fog::FogSeries& run) {
@@ -451,7 +472,19 @@ std::vector<CaseResult> runBenchCase(const BenchCase& c, const std::vector<Bench
 					cal = mrpt_fog::fitCalibration({run, runs.cal2[0]}, bp.preset, bp.options, {"calibration", second});
 				else
 					cal = mrpt_fog::fitCalibration({run}, bp.preset, bp.options, {"calibration"});
-				if (!runs.turn_on.empty() && !bp.fit_on_evaluation && !bp.seed_run_only && !bp.no_warmup)
+				if (single_run && !bp.fit_on_evaluation && !bp.no_warmup &&
+					(!runs.cal.turnOnSamples().empty() || !runs.cal.metadataValue("power_on_time_s").empty()))
+				{
+					try
+					{
+						cal.warmup = mrpt_fog::fitWarmup({runs.cal}, cal, {}, nullptr, {"calibration"});
+					}
+					catch (const mrpt_fog::WarmupFitError& e)
+					{
+						note = std::string(" (no warm-up term: ") + e.what() + ")";
+					}
+				}
+				else if (!runs.turn_on.empty() && !bp.fit_on_evaluation && !bp.seed_run_only && !bp.no_warmup)
 				{
 					try
 					{

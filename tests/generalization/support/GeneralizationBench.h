@@ -76,12 +76,23 @@ struct BenchCase
 	/** A turn-on run (cal_turn_on, fog-sim devices) fits the warm-up term (fitWarmup) on top of
 	 * each bias calibration, as fog-calibrate --warmup-run does. */
 	bool warmup_calibration = false;
+	/** The calibration run's profile: empty = the seed profile; otherwise the name of a profile of
+	 * secondCalibrationProfiles() (e.g. cal_single: one run that starts with a turn-on). A
+	 * calibration run holding a turn-on keeps the first kBenchTurnOnExclusion_s after it out of
+	 * the bias fit and fits the warm-up term on itself (fitWarmup), as fog-calibrate does. */
+	std::string calibration_profile;
 };
+
+/** Time after a turn-on left out of the bias fit in a calibration run that holds one [s]: 6 of
+ * fog-sim's warm-up time constants (600 s, an estimate: sim/FogDevice.h). */
+constexpr double kBenchTurnOnExclusion_s = 3600.0;
 
 /** Calibration runs a user with a chamber could add to the seed run, none of them an
  * evaluation profile: cal_sine (a 30 min sine of +-20 C about 5 C, then 2 and 3 C/min ramps to
  * -35 and 55 C with 45 min soaks) and cal_turn_on (a turn-on from unpowered equilibrium at
- * 10 C, 3 h: the cold start's history at another ambient). */
+ * 10 C, 3 h: the cold start's history at another ambient); cal_single, the three in one
+ * chamber run: a turn-on from unpowered equilibrium at 25 C, 2 h, the seed profile, then
+ * cal_sine's sine and ramps (12.8 h). */
 std::vector<BenchProfile> secondCalibrationProfiles();
 
 struct CaseResult

@@ -230,6 +230,12 @@ struct FitOptions
 	double min_temp_span_per_order_C = 0.5;  //!< T(a) of order k needs a span >= k x this [degC]
 	double tau_s = 100.0;  //!< averaging time of the stability figures [s]
 	bool fallbacks = true;  //!< fit one fallback model per thermistor
+	/** Samples within this time after a turn-on (a 0 -> 1 step in power, or metadata
+	 * power_on_time_s at or before the first sample) stay out of the bias fit [s]; 0: none left
+	 * out. Their transient is the warm-up term's (fitWarmup on the same runs), not a thermal
+	 * effect the bias model should take; this lets one chamber run that starts with a turn-on
+	 * calibrate both (docs/generalization.md, "One calibration run"). */
+	double turn_on_exclusion_s = 0.0;
 	/** Fit the rate-free start-up model (Calibration::startup) when the main model reads rates. */
 	bool startup_model = true;
 	ExtrapolationPolicy extrapolation = ExtrapolationPolicy::Linear;  //!< recorded in the calibration
