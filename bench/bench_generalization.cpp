@@ -67,6 +67,7 @@ int main(int argc, char** argv)
 	if (const char* name = std::getenv("FOG_BENCH_CAL2")) second_calibration = name;  // the session-7 spelling of --cal2
 	bool warmup_calibration = false, also_seed_run_only = false, also_no_warmup = false;
 	std::string calibration_profile;  // empty: the seed profile
+	double turn_on_exclusion_s = fogtest::kBenchTurnOnExclusion_s;
 	for (int i = 1; i < argc; i++)
 	{
 		const std::string a = argv[i];
@@ -99,6 +100,7 @@ int main(int argc, char** argv)
 		else if (a == "--cal2" && i + 1 < argc) second_calibration = argv[++i];
 		else if (a == "--warmup-cal") warmup_calibration = true;
 		else if (a == "--cal-profile" && i + 1 < argc) calibration_profile = argv[++i];
+		else if (a == "--turn-on-exclusion" && i + 1 < argc) turn_on_exclusion_s = std::atof(argv[++i]);
 		else if (a == "--also-seed-run-only") also_seed_run_only = true;
 		else if (a == "--also-no-warmup") also_no_warmup = true;
 		else if (a == "--oracle") oracle = true;
@@ -136,10 +138,11 @@ int main(int argc, char** argv)
 		return 2;
 	}
 	for (auto s : seeds)
-		list.push_back({fogtest::Generator::FogSim, s, cap, effects, ideal, second_calibration, warmup_calibration, calibration_profile});
+		list.push_back({fogtest::Generator::FogSim, s, cap, effects, ideal, second_calibration, warmup_calibration, calibration_profile,
+						turn_on_exclusion_s});
 	for (int s = 1; s <= sector_coil; s++)
 		list.push_back({fogtest::Generator::SectorCoil, static_cast<std::uint64_t>(s), cap, mrpt_fog::sim::defaultEffects(),
-						false, second_calibration, false, calibration_profile});
+						false, second_calibration, false, calibration_profile, turn_on_exclusion_s});
 	auto presets = fogtest::benchPresets();
 	for (const auto& e : extra)
 	{

@@ -62,7 +62,7 @@ int main(int argc, char** argv)
 	return mrpt_fog::app::runApp("fog-sim", [&]() -> int {
 		TCLAP::CmdLine cmd(
 			"fog-sim: physics simulation of a fiber-optic gyro with coil thermistors (thermal chamber or vehicle drive). "
-			"Built-in profiles: seed, B, warmup, rich, ratetable, drive_cabin(_mild, _hot), and drive (vehicle scenario, "
+			"Built-in profiles: seed, calibration (one run that calibrates bias, rate terms and warm-up), B, warmup, rich, ratetable, drive_cabin(_mild, _hot), and drive (vehicle scenario, "
 			"cabin chosen by --cabin).",
 			' ', "1.0");
 		TCLAP::ValueArg<std::string> profile("p", "profile", "built-in profile name or a profile YAML file", true, "",

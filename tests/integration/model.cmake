@@ -75,3 +75,10 @@ if(TARGET fog-sim)
             $<TARGET_FILE:fog-calibrate> ${FOG_SOURCE_DIR} ${_mo}/sf_trial)
   set_tests_properties(model.scale_factor_interval_trial PROPERTIES LABELS "long;integration;model" TIMEOUT 1800)
 endif()
+
+# One chamber run that starts with a turn-on calibrates bias and warm-up (--turn-on-exclusion).
+if(TARGET fog-sim)
+  add_test(NAME model.one_run_calibration COMMAND ${CMAKE_COMMAND} -DBIN=$<TARGET_FILE_DIR:fog-calibrate>
+    -DWORK=${CMAKE_CURRENT_BINARY_DIR}/model/one_run -P ${FOG_SOURCE_DIR}/tests/model/integration/one_run_calibration.cmake)
+  set_tests_properties(model.one_run_calibration PROPERTIES LABELS "integration;model")
+endif()

@@ -62,6 +62,28 @@ const std::map<std::string, std::string>& presetTable()
 		 "  - {type: hold, duration_min: 120}\n"
 		 "  - {type: ramp, to_C: 60, rate_C_per_min: 1}\n"
 		 "  - {type: hold, duration_min: 120}\n"},
+		{"calibration",
+		 // One chamber run that calibrates the bias model, its rate terms and the warm-up: a
+		 // turn-on from unpowered equilibrium at 25 C (2 h: the warm-up; fog-calibrate keeps the
+		 // first hour out of the bias fit), the seed's ramps and soaks, then a +-20 C sine of
+		 // 30 min period and 2 and 3 C/min ramps, which the seed's 1 C/min ramps leave out
+		 // (docs/generalization.md, "One calibration run"); 12.8 h.
+		 "name: calibration\n"
+		 "initial_temp_C: 25\n"
+		 "power_initially: true\n"
+		 "initial_state: cold\n"
+		 "segments:\n"
+		 "  - {type: hold, duration_min: 120}\n"
+		 "  - {type: ramp, to_C: -40, rate_C_per_min: 1}\n"
+		 "  - {type: hold, duration_min: 120}\n"
+		 "  - {type: ramp, to_C: 60, rate_C_per_min: 1}\n"
+		 "  - {type: hold, duration_min: 120}\n"
+		 "  - {type: ramp, to_C: 5, rate_C_per_min: 2}\n"
+		 "  - {type: sine, amplitude_C: 20, period_min: 30, cycles: 3}\n"
+		 "  - {type: ramp, to_C: -35, rate_C_per_min: 2}\n"
+		 "  - {type: hold, duration_min: 45}\n"
+		 "  - {type: ramp, to_C: 55, rate_C_per_min: 3}\n"
+		 "  - {type: hold, duration_min: 45}\n"},
 		{"B",
 		 // Held-out validation: other rates (0.5, 2, 1.5 C/min), a step, a log-swept sine.
 		 "name: B\n"

@@ -79,20 +79,7 @@ std::vector<BenchProfile> secondCalibrationProfiles()
 												  "  - {type: ramp, to_C: 55, rate_C_per_min: 3}\n"
 												  "  - {type: hold, duration_min: 45}\n"),
 				 false});
-	p.push_back({"cal_single", fromText("cal_single", "name: cal_single\ninitial_temp_C: 25\npower_initially: true\n"
-													  "initial_state: cold\nsegments:\n"
-													  "  - {type: hold, duration_min: 120}\n"
-													  "  - {type: ramp, to_C: -40, rate_C_per_min: 1}\n"
-													  "  - {type: hold, duration_min: 120}\n"
-													  "  - {type: ramp, to_C: 60, rate_C_per_min: 1}\n"
-													  "  - {type: hold, duration_min: 120}\n"
-													  "  - {type: ramp, to_C: 5, rate_C_per_min: 2}\n"
-													  "  - {type: sine, amplitude_C: 20, period_min: 30, cycles: 3}\n"
-													  "  - {type: ramp, to_C: -35, rate_C_per_min: 2}\n"
-													  "  - {type: hold, duration_min: 45}\n"
-													  "  - {type: ramp, to_C: 55, rate_C_per_min: 3}\n"
-													  "  - {type: hold, duration_min: 45}\n"),
-				 false});
+	p.push_back({"cal_single", ChamberProfile::preset("calibration"), false});  // fog-sim's one-run calibration profile
 	p.push_back({"cal_turn_on", fromText("cal_turn_on", "name: cal_turn_on\ninitial_temp_C: 10\npower_initially: true\n"
 														"initial_state: cold\nsegments:\n"
 														"  - {type: hold, duration_min: 180}\n"),
@@ -456,7 +443,7 @@ std::vector<CaseResult> runBenchCase(const BenchCase& c, const std::vector<Bench
 		fogtest::BenchPreset bp = preset;
 		// a calibration run of another profile may hold a turn-on: its transient is the warm-up term's
 		const bool single_run = !c.calibration_profile.empty();
-		if (single_run && !bp.fit_on_evaluation) bp.options.turn_on_exclusion_s = kBenchTurnOnExclusion_s;
+		if (single_run && !bp.fit_on_evaluation) bp.options.turn_on_exclusion_s = c.turn_on_exclusion_s;
 		mrpt_fog::Calibration cal;
 		std::string error, note;
 		const auto fit = [&](const mrpt_fog::FogSeries& run) {
@@ -472,7 +459,7 @@ std::vector<CaseResult> runBenchCase(const BenchCase& c, const std::vector<Bench
 					cal = mrpt_fog::fitCalibration({run, runs.cal2[0]}, bp.preset, bp.options, {"calibration", second});
 				else
 					cal = mrpt_fog::fitCalibration({run}, bp.preset, bp.options, {"calibration"});
-				if (single_run && !bp.fit_on_evaluation && !bp.no_warmup &&
+				if (single_run && c.turn_on_exclusion_s > 0 && !bp.fit_on_evaluation && !bp.no_warmup &&
 					(!runs.cal.turnOnSamples().empty() || !runs.cal.metadataValue("power_on_time_s").empty()))
 				{
 					try

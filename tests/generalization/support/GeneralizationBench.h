@@ -59,6 +59,10 @@ enum class Generator
 };
 const char* toString(Generator g);
 
+/** Time after a turn-on left out of the bias fit in a calibration run that holds one [s]:
+ * fog-calibrate's suggestion (kSuggestedTurnOnExclusion_s). */
+constexpr double kBenchTurnOnExclusion_s = mrpt_fog::kSuggestedTurnOnExclusion_s;
+
 struct BenchCase
 {
 	Generator generator = Generator::FogSim;
@@ -81,11 +85,10 @@ struct BenchCase
 	 * calibration run holding a turn-on keeps the first kBenchTurnOnExclusion_s after it out of
 	 * the bias fit and fits the warm-up term on itself (fitWarmup), as fog-calibrate does. */
 	std::string calibration_profile;
+	/** FitOptions::turn_on_exclusion_s for such a run (0: the turn-on joins the bias fit, no warm-up term). */
+	double turn_on_exclusion_s = kBenchTurnOnExclusion_s;
 };
 
-/** Time after a turn-on left out of the bias fit in a calibration run that holds one [s]: 6 of
- * fog-sim's warm-up time constants (600 s, an estimate: sim/FogDevice.h). */
-constexpr double kBenchTurnOnExclusion_s = 3600.0;
 
 /** Calibration runs a user with a chamber could add to the seed run, none of them an
  * evaluation profile: cal_sine (a 30 min sine of +-20 C about 5 C, then 2 and 3 C/min ramps to

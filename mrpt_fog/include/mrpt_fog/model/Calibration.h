@@ -143,6 +143,12 @@ enum class OrderSearch : unsigned char
 	Common = 1
 };
 
+/** The FitOptions::turn_on_exclusion_s suggested for a calibration run that starts with a
+ * turn-on (fog-sim's `calibration` profile) [s]: six time constants of a warm-up that settles in
+ * 10 min (an estimate: fog-sim's warmup_tau_s, sim/FogDevice.h; PHYSICS.md gives no number). A
+ * slower warm-up needs a longer exclusion. */
+constexpr double kSuggestedTurnOnExclusion_s = 3600.0;
+
 /** Lag time constants from the coil's thermal time constants [s] (shared/design/PHYSICS.md
  * "Thermal time constants": radial diffusion through the winding ~70 s, housing to air ~30 min;
  * docs/sim.md: the simulated network's modes at 1-3 min, ~6 min and 29.4 min): a geometric grid,
