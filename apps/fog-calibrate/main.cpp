@@ -107,8 +107,9 @@ RATES
   dT/dt from the causal estimator over the trailing --window seconds (default 60; order 2
   extrapolates the slope to the newest sample), the same estimator fog-compensate runs in real
   time. Without --window the window grows with the thermistors' reading quantum (the smallest
-  change between consecutive readings): 60 s x q / 0.01 degC, at least 60 s, at most 1200 s
-  (1/16 degC: 375 s), since a quantised reading's slope errs by about q / window. The
+  change between consecutive readings): 60 s x q / 0.02 degC, at least 60 s, at most 1200 s
+  (1/16 degC: 188 s), since a quantised reading's slope errs by about q / window (a longer
+  window would delay the rates more than it saves: docs/generalization.md). The
   calibration records the window; fog-compensate uses it. Until a rate window covers half its
   length (start of a log, each burst of a burst log, after a gap) the compensator uses the
   calibration's rate-free start-up model (flag rate_free). --estimator savgol uses a
@@ -338,8 +339,8 @@ void printAxis(const AxisFit& f, double tau_s, bool validated)
 				std::printf("    %.0f %%  held-out RMS %.4g deg/h  %s\n", 100.0 * a.share, a.held_out_rms_dph,
 							a.terms.c_str());
 	}
-	if (cal.reading_quantum_C > kReferenceQuantum_C * (1 + 1e-6) && cal.rate_estimator.window_s > 60.0)
-		std::printf("  rate window %g s for the thermistors' reading quantum %g degC (60 s x q / 0.01 degC; "
+	if (cal.reading_quantum_C > kQuantumWindowStart_C * (1 + 1e-6) && cal.rate_estimator.window_s > 60.0)
+		std::printf("  rate window %g s for the thermistors' reading quantum %g degC (60 s x q / 0.02 degC; "
 					"--window sets it)\n",
 					cal.rate_estimator.window_s, cal.reading_quantum_C);
 	if (cal.rates_unavailable)

@@ -83,9 +83,9 @@ double readingQuantum_C(const std::vector<double>& x)
 
 double windowForQuantum_s(double base_window_s, double quantum_C)
 {
-	// a quantum at the reference up to the round-off of decimal readings keeps the base exactly
-	if (!(quantum_C > kReferenceQuantum_C * (1 + 1e-6))) return base_window_s;
-	const double w = std::round(base_window_s * quantum_C / kReferenceQuantum_C);  // whole seconds
+	// a quantum at the start up to the round-off of decimal readings keeps the base exactly
+	if (!(quantum_C > kQuantumWindowStart_C * (1 + 1e-6))) return base_window_s;
+	const double w = std::round(base_window_s * quantum_C / kQuantumWindowStart_C);  // whole seconds
 	return std::max(base_window_s, std::min(w, kMaxQuantumWindow_s));
 }
 

@@ -110,6 +110,12 @@ class ReadingQuantum
 
 /** Quantum at which the default 60 s window was designed (0.01 degC; the seed's chamber logs). */
 constexpr double kReferenceQuantum_C = 0.01;
+/** Quanta up to this keep the base window; above it the window grows in proportion to the
+ * quantum (windowForQuantum_s). Twice kReferenceQuantum_C: chosen on the generalization bench's
+ * tuning devices, where 0.01 degC (the window keeping the reference's quantisation bound: 375 s
+ * at 1/16 degC) delayed the rates more than the quantisation error it saved (docs/generalization.md,
+ * "One calibration run"). */
+constexpr double kQuantumWindowStart_C = 0.02;
 /** Longest window windowForQuantum_s() gives [s]: the coil-housing time constants are 15-50 min,
  * a longer window no longer follows the rates the bias responds to. */
 constexpr double kMaxQuantumWindow_s = 1200.0;
@@ -117,10 +123,12 @@ constexpr double kMaxQuantumWindow_s = 1200.0;
 /** The rate window for readings of quantum `quantum_C`: the quantisation error of a
  * window's slope is bounded by about 1.5 q / window (7.5 q / window for the delay-compensated
  * order 2: its half-window slope counts twice), so the window grows in proportion to the
- * quantum to keep the bound of the reference (`base_window_s` at kReferenceQuantum_C):
- * base x max(1, q / 0.01 degC) rounded to whole seconds, at most kMaxQuantumWindow_s (never
- * below base; a quantum within 1e-6 of the reference, decimal round-off, keeps base exactly). A 1/16 degC
- * thermistor gets 375 s for a 60 s base; 0.01 and 1/256 degC keep the base. */
+ * quantum to keep the bound of `base_window_s` at kQuantumWindowStart_C (twice the bound at
+ * the 0.01 degC the base was designed for; a longer window delays the rates more):
+ * base x max(1, q / 0.02 degC) rounded to whole seconds, at most kMaxQuantumWindow_s (never
+ * below base; a quantum within 1e-6 of 0.02 degC, decimal round-off, keeps base exactly). A
+ * 1/16 degC thermistor gets 188 s for a 60 s base (375 s before the bench's one-run
+ * calibration showed the delay cost); 0.01 and 1/256 degC keep the base. */
 double windowForQuantum_s(double base_window_s, double quantum_C);
 
 /** Builds the estimator named by settings (validated first; throws std::invalid_argument). */
