@@ -7,6 +7,7 @@
  *   bench_generalization [--seeds tuning|heldout|final|fresh|all|N[,N..]] [--sector-coil N] [--rate-cap HZ] [--cases]
  *                        [--extrapolation clamp|linear|polynomial] [--preset TEXT] [--extra PRESET]...
  *                        [--effects SEL] [--ideal-thermistors] [--oracle] [--rate-window S]
+ *                        [--cal2 PROFILE] [--warmup-cal] [--cal-profile NAME] [--turn-on-exclusion S]
  *
  * Seeds 1..16 are the tuning devices, 17..24 were kept out of every tuning decision, 25..32
  * ("final") out of everything until the end of issue 11 session 5, 33..40 ("fresh") until the
@@ -39,7 +40,14 @@
  * _BINS / _PARSIMONY / _VARIANTS add selection variants (GeneralizationBench.cpp); FOG_BENCH_LAGS=1
  * (or a list of time constants, e.g. 100,400) adds the lag-rate variants: "auto no lags" (the
  * default before them), "auto lag steps", "auto lag base" (the default's rule) and "auto lag all".
- * Seeds 41..56 and 57..72 were each run once as fresh sets (docs/generalization.md); 73 on are unused. */
+ * One calibration run: --cal-profile NAME calibrates on that profile of secondCalibrationProfiles()
+ * instead of the seed profile, e.g. cal_single (fog-sim's `calibration` profile: a turn-on, the
+ * seed ramps, a sine and fast ramps in one run); a turn-on in it keeps the first
+ * --turn-on-exclusion S seconds (default 3600) out of the bias fit and fits the warm-up term on
+ * the same run (0: the turn-on in the bias fit, no term).
+ * Seeds 41..56 and 57..72 were each run once as fresh sets, 73..104 once for the one-run
+ * calibration and 105..120 once after the quantum-window change (docs/generalization.md); 121 on
+ * are unused. */
 #include "DeviceEnsemble.h"
 #include "GeneralizationBench.h"
 
