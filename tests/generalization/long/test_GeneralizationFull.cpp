@@ -2,8 +2,9 @@
 // The full generalization bench (label "long"): 24 fog-sim devices (tuning seeds 1..16, held-out
 // seeds 17..24 never used in any tuning decision) at their drawn sample rates (1..100 Hz) and 8
 // sector-coil devices (independent generator), every bench preset. Prints the table the issue asks
-// for; asserts the targets the default meets (the noise-floor targets 1.3x / 2x are printed and
-// documented as missed in docs/model.md, not asserted).
+// for; asserts the targets the default meets. Calibrated on the seed profile alone, the
+// noise-floor targets 1.3x / 2x are missed (printed, documented in docs/generalization.md, not
+// asserted); calibrated on one run of fog-sim's `calibration` profile they are asserted (last test).
 #include "DeviceEnsemble.h"
 #include "GeneralizationBench.h"
 
@@ -71,4 +72,31 @@ TEST(GeneralizationBenchFull, SectorCoilIndependentGenerator)
 	std::vector<BenchCase> cases;
 	for (std::uint64_t s = 1; s <= 8; s++) cases.push_back({Generator::SectorCoil, s});
 	checkTargets(runSet(cases, "sector-coil devices 1..8 (independent generator)"));
+}
+
+// One calibration run of fog-sim's `calibration` profile (a turn-on, the seed ramps, a sine and
+// fast ramps; the first hour after the turn-on out of the bias fit, the warm-up fitted on the same
+// run), seeds 105..120 at their drawn rates: the set first run after every choice (quantum window
+// 0.02 degC, one-run profile) was fixed, once. Measured: default median 1.13, p90 1.71, 4.6 %
+// behind multipoint@3/1, out of range 4.89. The same code on seeds 73..88 / 89..104: 1.17 / 1.66
+// and 1.21 / 2.07 (the p90 misses there by 0.07), on the tuning seeds 1..16: 1.22 / 2.70
+// (docs/generalization.md, "One calibration run"). Asserted: the issue's four bench targets.
+TEST(GeneralizationBenchFull, OneCalibrationRunFreshSeeds)
+{
+	std::vector<BenchCase> cases;
+	for (std::uint64_t s = 105; s <= 120; s++)
+	{
+		BenchCase c{Generator::FogSim, s};
+		c.calibration_profile = "cal_single";
+		cases.push_back(c);
+	}
+	const auto sum = runSet(cases, "fog-sim devices 105..120, one `calibration` run each");
+	checkTargets(sum);
+	const auto presets = benchPresets();
+	for (std::size_t i = 0; i < sum.size(); i++)
+		if (presets[i].label == "default (multipoint)")
+		{
+			EXPECT_LE(sum[i].median_ratio, 1.3);
+			EXPECT_LE(sum[i].p90_ratio, 2.0);
+		}
 }
