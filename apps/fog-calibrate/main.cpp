@@ -150,16 +150,16 @@ WARM-UP (--warmup-run RUN, repeatable; --warmup-terms 1|2|auto)
   (metadata power_on_time_s, 0 -> 1 steps). A run with no turn-on, a span under 600 s, or no
   decay resolved stops fog-calibrate with the reason.
   A turn-on inside an -i run (one chamber run that starts cold, e.g. fog-sim --profile
-  calibration) is used the same way with --turn-on-exclusion S (3600 suggested: six time
-  constants of a 10 min warm-up, an estimate): the first S seconds after each turn-on stay out
-  of the bias fit, and the run fits the warm-up term beside any --warmup-run; a line names each
-  such run. If no decay is resolved there, the reason is printed and the file is written
-  without the term. Without it (0, the default, unchanged) the whole run joins the bias fit, no
-  term is fitted on it, and a note names the run: there the transient is taken for a thermal
-  effect. One `calibration` run of the bundled device validated on datasets/chamber_B.rawlog:
-  11.0x with --turn-on-exclusion 3600 against 7.8x without (docs/generalization.md, "One
-  calibration run"). The default stays 0 because the bundled rate-table transient run, which
-  the recommended calibrations read with -i, holds turn-ons.
+  calibration): with --turn-on-exclusion S (3600 suggested: six time constants of a 10 min
+  warm-up, an estimate) the first S seconds after each turn-on stay out of the bias fit, and,
+  when no --warmup-run is given, the run fits the warm-up term; a line names each such run. If
+  no decay is resolved there, the reason is printed and the file is written without the term.
+  Without it (0, the default) the whole run joins the bias fit, no term is fitted on it, and a
+  note names the run: the transient is then taken for a thermal effect. One `calibration` run
+  of the bundled device validated on datasets/chamber_B.rawlog: 11.0x with 3600 against 7.8x
+  without (docs/generalization.md, "One calibration run"). The default stays 0 because runs
+  with power cycles (the bundled rate-table transient run, the model-gap trials' runs) have
+  documented figures fitted that way.
 
 MAGNETIC SENSITIVITY (--magnetic auto|off)
   With auto (the default), when an -i run has a field_uT column whose value changes over its
@@ -634,9 +634,9 @@ int main(int argc, char** argv)
 											  false, "RUN", cmd);
 		TCLAP::ValueArg<double> arg_turn_on_excl(
 			"", "turn-on-exclusion",
-			"Time after each turn-on in an -i run left out of the bias fit [s]; those runs then also fit the "
-			"warm-up term (3600 for a run that starts cold, e.g. fog-sim --profile calibration). 0 (default): "
-			"the whole run joins the bias fit and no warm-up term is fitted on it",
+			"Time after each turn-on in an -i run left out of the bias fit [s]; without --warmup-run those "
+			"runs then fit the warm-up term (3600 for a run that starts cold, e.g. fog-sim --profile "
+			"calibration). 0 (default): the whole run joins the bias fit and no warm-up term is fitted on it",
 			false, 0.0, "S", cmd);
 		TCLAP::ValueArg<std::string> arg_warm_terms(
 			"", "warmup-terms",
@@ -837,13 +837,16 @@ int main(int argc, char** argv)
 			if (f.cal.model.features.thermistors().empty()) f.why_empty = whyNoThermalTerm(set.runs, f.cal.model);
 			fits.push_back(std::move(f));
 		}
-		std::vector<FogRun> warm;  // the -i runs holding a turn-on, then the --warmup-run runs
+		// the warm-up term: from the --warmup-run runs when given (the user's choice), else from the
+		// -i runs holding a turn-on
+		std::vector<FogRun> warm;
 		std::vector<std::string> warm_paths;
-		for (std::size_t i : turn_on_inputs)
-		{
-			warm.push_back(std::move(runs[i]));
-			warm_paths.push_back(arg_in.getValue()[i]);
-		}
+		if (arg_warm.getValue().empty())
+			for (std::size_t i : turn_on_inputs)
+			{
+				warm.push_back(std::move(runs[i]));
+				warm_paths.push_back(arg_in.getValue()[i]);
+			}
 		std::vector<FogRun>().swap(runs);
 		if (!warm.empty() || !arg_warm.getValue().empty())
 		{
@@ -957,12 +960,13 @@ int main(int argc, char** argv)
 							rp.role.c_str(), rp.path.c_str(), rp.counts.gyro_off_rows, rp.counts.turn_ons);
 		}
 		for (std::size_t i : turn_on_inputs)
-			std::printf("  turn-on in -i %s: the first %.0f s after each turn-on stayed out of the bias fit and fitted the "
-						"warm-up term (--turn-on-exclusion)\n",
-						arg_in.getValue()[i].c_str(), opt.turn_on_exclusion_s);
+			std::printf("  turn-on in -i %s: the first %.0f s after each turn-on stayed out of the bias fit%s "
+						"(--turn-on-exclusion)\n",
+						arg_in.getValue()[i].c_str(), opt.turn_on_exclusion_s,
+						arg_warm.getValue().empty() ? " and went to the warm-up fit" : " (the warm-up term: from --warmup-run)");
 		for (std::size_t i : turn_on_in_fit)
-			std::printf("  note: -i %s holds a turn-on; its warm-up joined the bias fit (taken for a thermal effect) and no "
-						"warm-up term was fitted (--turn-on-exclusion %.0f keeps the first hour out and fits the term on it)\n",
+			std::printf("  note: -i %s holds a turn-on; its warm-up joined the bias fit (taken for a thermal effect) and "
+						"no warm-up term was fitted (--turn-on-exclusion %.0f keeps the first hour out and fits the term)\n",
 						arg_in.getValue()[i].c_str(), kSuggestedTurnOnExclusion_s);
 		std::printf("  wrote %s\n", arg_out.getValue().c_str());
 
