@@ -8,11 +8,9 @@
 #include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/discrepancy/MagneticFit.h>
 #include <mrpt_fog/io/FogLogIO.h>
-#include <mrpt_fog/model/AxisRuns.h>
 #include <mrpt_fog/model/Calibration.h>
+#include <mrpt_fog/model/CalibrationRecipe.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
-#include <mrpt_fog/model/ScaleFactorFit.h>
-#include <mrpt_fog/model/WarmupFit.h>
 
 #include <cmath>
 #include <algorithm>
@@ -37,7 +35,16 @@ WHAT IT DOES
   YAML for fog-compensate / fog-evaluate / fog-drift. Every figure is printed twice, side by
   side: IN-SAMPLE (the data the model was fitted on: optimistic) and HELD-OUT (data the model
   did not see: what to expect in use). Held-out = leave-one-run-out with several -i runs,
-  leave-regime-out with one run, plus the --validate run if given.
+  leave-regime-out with one run, plus the --validate run if given. A held-out figure with no
+  held-out sample prints n/a with the reason.
+
+THE DEFAULT: GIVE IT EVERY RUN YOU HAVE (docs/guide/calibration.md)
+  fog-calibrate -i RUN -i RUN ... -o cal.yaml chooses the whole model from the data, under the
+  data's own thermistor names: bias terms, their orders (curvature) and ridge by held-out error;
+  a run with a turn-on keeps the hour after it out of the bias fit and fits the warm-up term;
+  a rate-table run fits the scale factor vs temperature; a run whose field changes fits the
+  magnetic sensitivity (not written when its 95 % interval spans zero). The options below are
+  for experts.
 
 MODEL PRESETS (--model)
   multipoint            seed eq. 2: per thermistor T^1..T^5 and dT/dt^1..^3 (all thermistors)
@@ -149,17 +156,14 @@ WARM-UP (--warmup-run RUN, repeatable; --warmup-terms 1|2|auto)
   residual RMS without / with the term. The compensator adds the term from each turn-on on
   (metadata power_on_time_s, 0 -> 1 steps). A run with no turn-on, a span under 600 s, or no
   decay resolved stops fog-calibrate with the reason.
-  A turn-on inside an -i run (one chamber run that starts cold, e.g. fog-sim --profile
-  calibration): with --turn-on-exclusion S (3600 suggested: six time constants of a 10 min
-  warm-up, an estimate) the first S seconds after each turn-on stay out of the bias fit, and,
-  when no --warmup-run is given, the run fits the warm-up term; a line names each such run. If
-  no decay is resolved there, the reason is printed and the file is written without the term.
-  Without it (0, the default) the whole run joins the bias fit, no term is fitted on it, and a
-  note names the run: the transient is then taken for a thermal effect. One `calibration` run
-  of the bundled device validated on datasets/chamber_B.rawlog: 11.0x with 3600 against 7.8x
-  without (docs/generalization.md, "One calibration run"). The default stays 0 because runs
-  with power cycles (the bundled rate-table transient run, the model-gap trials' runs) have
-  documented figures fitted that way.
+  A turn-on inside an -i run (a run that starts cold, or powers off and on): the first
+  --turn-on-exclusion seconds after each turn-on (default 3600: six time constants of a 10 min
+  warm-up, an estimate) stay out of the bias fit and, when no --warmup-run is given, the run
+  fits the warm-up term; a line names each such run. If no decay is resolved there, the reason
+  is printed and the file is written without the term. --turn-on-exclusion 0: the whole run
+  joins the bias fit, no term is fitted on it, and a note names the run (the transient is then
+  taken for a thermal effect). A run that is also a --warmup-run is noted. A run that is never
+  powered holds no turn-on, whatever its metadata says.
 
 MAGNETIC SENSITIVITY (--magnetic auto|off)
   With auto (the default), when an -i run has a field_uT column whose value changes over its
@@ -182,16 +186,12 @@ THREE AXES (--axis x|y|z|all)
   rate (earth_rate handling in_table_rate); state it for all runs of an axis or none.
 
 EXAMPLES
-  fog-calibrate -i datasets/chamber_A.rawlog --model multipoint -o cal.yaml --validate datasets/chamber_B.rawlog
-  fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable_A.rawlog -o cal_sf.yaml
-  fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable_A.rawlog -i datasets/ratetable_transient.rawlog \
-                -i datasets/warmup.rawlog -o cal_full.yaml        (warm-up run in the bias fit: the recommendation before)
-  fog-sim --profile calibration --seed 7 -o cal_run.rawlog && fog-calibrate -i cal_run.rawlog --turn-on-exclusion 3600 -o cal1.yaml
-                (one chamber run calibrates bias, rate terms and warm-up: docs/generalization.md, "One calibration run")
-  fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable_A.rawlog -i datasets/ratetable_transient.rawlog \
-                --warmup-run datasets/warmup.rawlog --warmup-run datasets/warmup_B.rawlog --selection none \
-                --model "terms:T(Ti1)^1;dT/dt(Ti1)^1;T(To1)^1;dT/dt(To1)^1;T(Ti2)^1;dT/dt(Ti2)^1;T(To2)^1;dT/dt(To2)^1;T(To1)^2" \
-                -o cal_wu.yaml    (the recommended calibration: docs/nav.md, "Error budget")
+  fog-calibrate -i datasets/chamber_A.rawlog -i datasets/chamber_C.rawlog -i datasets/ratetable_A.rawlog \
+                -i datasets/ratetable_transient.rawlog -i datasets/warmup.rawlog -i datasets/warmup_B.rawlog \
+                -o cal.yaml        (the recommended calibration: every run you have, no other option)
+  fog-calibrate -i datasets/chamber_A.rawlog -o cal.yaml --validate datasets/chamber_B.rawlog
+  fog-sim --profile calibration --seed 7 -o cal_run.rawlog && fog-calibrate -i cal_run.rawlog -o cal1.yaml
+                (one chamber run that starts cold calibrates bias, rate terms and warm-up)
   fog-calibrate -i chamber3.rawlog -i rt_x.rawlog -i rt_y.rawlog -i rt_z.rawlog -o cal3.yaml   (triad, fog-sim --triad)
   fog-calibrate -i runA.csv -i runB.csv --model points:2 -o cal2.yaml --json fit.json
   fog-calibrate -i runA.csv --model M3:Ti1,To1 --selection none -o m3.yaml
@@ -199,14 +199,16 @@ EXAMPLES
 
 std::string fmt(double v, const char* f = "%.6g") { return formatValue(f, v); }
 
-void printFigures(const std::vector<const FitFigures*>& figs)
+/** The figures side by side; a column without data behind it prints "n/a" (its reason below). */
+void printFigures(const std::vector<const FitFigures*>& figs, const std::vector<std::string>& why_not)
 {
 	std::printf("  %-28s", "figure [deg/h]");
 	for (const auto* f : figs) std::printf(" %-34s", f->label.c_str());
 	std::printf("\n");
 	const auto row = [&](const char* name, double FitFigures::*m) {
 		std::printf("  %-28s", name);
-		for (const auto* f : figs) std::printf(" %-34s", fmt(f->*m).c_str());
+		for (std::size_t i = 0; i < figs.size(); i++)
+			std::printf(" %-34s", !figs[i]->valid && !why_not[i].empty() ? "n/a" : fmt(figs[i]->*m).c_str());
 		std::printf("\n");
 	};
 	row("raw stability (tau avg)", &FitFigures::raw_stability_dph);
@@ -214,6 +216,8 @@ void printFigures(const std::vector<const FitFigures*>& figs)
 	row("raw range (tau avg)", &FitFigures::raw_range_dph);
 	row("compensated range", &FitFigures::range_dph);
 	row("compensated RMS", &FitFigures::rms_dph);
+	for (std::size_t i = 0; i < figs.size(); i++)
+		if (!figs[i]->valid && !why_not[i].empty()) std::printf("  n/a (%s): %s\n", figs[i]->label.c_str(), why_not[i].c_str());
 }
 
 JsonValue figuresJson(const FitFigures& f)
@@ -231,74 +235,7 @@ JsonValue figuresJson(const FitFigures& f)
 	return j;
 }
 
-/** Why a fit selected no thermal term, from the runs themselves (issue 14: such a calibration
- * used to be written silently as "1 terms (0 thermistors)"). */
-std::string whyNoThermalTerm(const std::vector<FogRun>& runs, const BiasModel& m)
-{
-	std::size_t samples = 0;
-	double span_C = 0.0;
-	std::string span_name;
-	double table_range = 0.0, residual_range = 0.0;
-	for (const auto& r : runs)
-	{
-		samples += r.size();
-		const std::size_t nt = r.header().thermistorCount();
-		std::vector<double> lo(nt, INFINITY), hi(nt, -INFINITY);
-		double tlo = INFINITY, thi = -INFINITY, rlo = INFINITY, rhi = -INFINITY;
-		r.forEachChunk([&](const FogSeries& c, std::size_t) {
-			for (std::size_t i = 0; i < nt; i++)
-				for (double t : c.temp_C[i])
-					if (std::isfinite(t)) lo[i] = std::min(lo[i], t), hi[i] = std::max(hi[i], t);
-			if (c.table_rate_dph.empty()) return;
-			const auto& rate = c.primaryRate_dph();
-			for (std::size_t k = 0; k < c.size(); k++)
-			{
-				if (!std::isfinite(c.table_rate_dph[k]) || !std::isfinite(rate[k])) continue;
-				tlo = std::min(tlo, c.table_rate_dph[k]), thi = std::max(thi, c.table_rate_dph[k]);
-				const double res = rate[k] - c.table_rate_dph[k];
-				rlo = std::min(rlo, res), rhi = std::max(rhi, res);
-			}
-		});
-		for (std::size_t i = 0; i < nt; i++)
-			if (hi[i] - lo[i] > span_C) span_C = hi[i] - lo[i], span_name = r.header().thermistors[i].name;
-		if (thi >= tlo) table_range = std::max(table_range, thi - tlo), residual_range = std::max(residual_range, rhi - rlo);
-	}
-	char b[400];
-	if (samples < 100 || m.samples < 100)
-		std::snprintf(b, sizeof(b), "too few samples (%zu): a thermal term needs hundreds over the temperature range", samples);
-	else if (span_C < 2.0)
-		std::snprintf(b, sizeof(b),
-					  "no temperature span: the thermistors vary by at most %.3g C (%s); a thermal model needs runs over "
-					  "several degrees",
-					  span_C, span_name.empty() ? "no valid reading" : span_name.c_str());
-	else if (table_range > 0 && table_range > 100.0 * residual_range)
-		std::snprintf(b, sizeof(b),
-					  "the applied table rates dominate the output (table range %.4g deg/h, gyro minus table %.4g deg/h): "
-					  "an error proportional to the rate (scale factor) hides the thermal bias",
-					  table_range, residual_range);
-	else
-		std::snprintf(b, sizeof(b),
-					  "no thermal term lowered the held-out error (thermistors span %.3g C): the bias does not follow these "
-					  "thermistors, or the noise hides it",
-					  span_C);
-	return b;
-}
-
-/** One axis' calibration and what its summary needs. */
-struct AxisFit
-{
-	Calibration cal;
-	ScaleFactorFitReport sf_report;
-	std::size_t run_count = 0;
-	bool table_rates = false;
-	std::string why_empty;  //!< why no thermal term was kept (empty model only)
-	std::vector<std::string> skipped;  //!< -i runs left out for this axis, with the reason
-	bool earth_rate_removed = false;
-	bool validated = false;
-	std::string warmup_terms_why;  //!< how the warm-up term count was chosen
-	std::string warmup_why_not;  //!< why the turn-ons of the -i runs gave no warm-up term ("" otherwise)
-	std::string magnetic_why_not;  //!< why the runs' field segments gave no magnetic section ("" otherwise)
-};
+using AxisFit = AxisCalibration;
 
 CompensationCounters validationRange(const Calibration& cal)
 {
@@ -324,6 +261,11 @@ void printAxis(const AxisFit& f, double tau_s, bool validated)
 	std::printf("  terms:");
 	for (std::size_t i = 1; i < m.features.termCount(); i++) std::printf(" %s", m.features.termNames()[i].c_str());
 	std::printf("\n  fallbacks: %zu (one per thermistor of the model)\n", cal.fallbacks.size());
+	if (!f.refinement.empty())
+	{
+		std::printf("  refinement by held-out stability (tau %g s):\n", tau_s);
+		for (const auto& line : f.refinement) std::printf("    %s\n", line.c_str());
+	}
 	const auto& st = cal.selection_stability;
 	if (st.resamples > 0)
 	{
@@ -356,8 +298,13 @@ void printAxis(const AxisFit& f, double tau_s, bool validated)
 					cal.rate_gaps, cal.rate_estimator.window_s);
 	std::printf("  tau = %g s\n", tau_s);
 	std::vector<const FitFigures*> figs{&cal.in_sample, &cal.held_out};
-	if (validated) figs.push_back(&cal.validation);
-	printFigures(figs);
+	std::vector<std::string> why_not{"no usable sample", f.held_out_why_not.empty() ? "no held-out sample" : f.held_out_why_not};
+	if (validated)
+	{
+		figs.push_back(&cal.validation);
+		why_not.push_back("no usable sample in the validation run");
+	}
+	printFigures(figs, why_not);
 	const CompensationCounters range = validationRange(cal);
 	if (validated) std::fputs(app::outOfRangeWarning(range, cal.extrapolation).c_str(), stdout);
 	if (cal.scale_factor)
@@ -437,6 +384,8 @@ JsonValue axisJson(const AxisFit& f, double tau_s, bool validated)
 	j["samples"] = static_cast<unsigned long>(m.samples);
 	j["in_sample"] = figuresJson(cal.in_sample);
 	j["held_out"] = figuresJson(cal.held_out);
+	if (!f.held_out_why_not.empty()) j["held_out"]["not_available"] = f.held_out_why_not;
+	j["refinement"] = JsonValue::arrayOf(f.refinement, [](const std::string& s) { return JsonValue(s); });
 	if (validated)
 	{
 		j["validation"] = figuresJson(cal.validation);
@@ -628,6 +577,11 @@ int main(int argc, char** argv)
 											 "auto (default): fit the bias per applied axial field when an -i run has a "
 											 "changing field_uT column; off: never",
 											 false, "auto", "auto|off", cmd);
+		TCLAP::ValueArg<std::string> arg_refine("", "refine",
+												"one thermistor: refine the selected model by held-out stability "
+												"(curvature T^2, T^3; without the lag rates): auto or off (default; "
+												"studies: docs/validation/calibration-default.md)",
+												false, "off", "auto|off", cmd);
 		TCLAP::MultiArg<std::string> arg_warm("", "warmup-run",
 											  "Run holding a turn-on (cold start) to fit the warm-up term; repeatable; "
 											  "not used in the bias fit",
@@ -635,9 +589,9 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<double> arg_turn_on_excl(
 			"", "turn-on-exclusion",
 			"Time after each turn-on in an -i run left out of the bias fit [s]; without --warmup-run those "
-			"runs then fit the warm-up term (3600 for a run that starts cold, e.g. fog-sim --profile "
-			"calibration). 0 (default): the whole run joins the bias fit and no warm-up term is fitted on it",
-			false, 0.0, "S", cmd);
+			"runs fit the warm-up term (default 3600: six time constants of a 10 min warm-up). 0: the whole "
+			"run joins the bias fit and no warm-up term is fitted on it",
+			false, kSuggestedTurnOnExclusion_s, "S", cmd);
 		TCLAP::ValueArg<std::string> arg_warm_terms(
 			"", "warmup-terms",
 			"Exponential terms of the warm-up: 1, 2, or auto (default: chosen by held-out error, each "
@@ -696,10 +650,6 @@ int main(int argc, char** argv)
 			throw std::invalid_argument("--folds-by must be regimes or blocks, got '" + arg_foldby.getValue() + "'");
 		opt.fold_scheme = arg_foldby.getValue() == "regimes" ? FoldScheme::Regimes : FoldScheme::Blocks;
 
-		if (arg_sf.getValue() != "auto" && arg_sf.getValue() != "off")
-			throw std::invalid_argument("--scale-factor: '" + arg_sf.getValue() + "' is not auto or off");
-		if (arg_mag.getValue() != "auto" && arg_mag.getValue() != "off")
-			throw std::invalid_argument("--magnetic: '" + arg_mag.getValue() + "' is not auto or off");
 		const bool screen = !arg_no_screen.getValue();
 		std::string screening_text;
 		// Each log is read once into a run spilled to a temporary file (memory independent of the
@@ -727,198 +677,44 @@ int main(int argc, char** argv)
 			run_power.push_back(std::move(rp));
 			return run;
 		};
-		// The scale-factor and warm-up fits take their runs in memory (rate-table and turn-on runs).
-		const auto inMemory = [](const std::vector<FogRun>& rs) {
-			std::vector<FogSeries> out;
-			for (const auto& r : rs)
-			{
-				out.push_back(r.load());
-				std::vector<double>().swap(out.back().field_uT);  // not read by these fits (memory)
-			}
-			return out;
-		};
-		const auto hasTableRates = [](const std::vector<FogRun>& rs) {  // chunk by chunk
-			bool any = false;
-			for (const auto& r : rs)
-				r.forEachChunk([&](const FogSeries& c, std::size_t) {
-					for (std::size_t k = 0; k < c.table_rate_dph.size() && !any; k++)
-						any = c.table_rate_dph[k] != 0.0 && c.gyroOn(k);
-				});
-			return any;
-		};
-		std::vector<FogRun> runs;
-		for (const auto& path : arg_in.getValue()) runs.push_back(readScreened(path, "-i"));
-		// -i runs that hold a turn-on (a 0 -> 1 power step, or metadata power_on_time_s): with
-		// --turn-on-exclusion > 0 their first hour after it stays out of the bias fit and they fit
-		// the warm-up term, beside the --warmup-run runs (one chamber run that starts cold
-		// calibrates both: docs/calibration.md, "One chamber run").
-		std::vector<std::size_t> turn_on_inputs;
-		for (std::size_t i = 0; i < runs.size(); i++)
-			if (run_power[i].counts.turn_ons > 0 || !runs[i].header().metadataValue("power_on_time_s").empty())
-				turn_on_inputs.push_back(i);
-		std::vector<std::size_t> turn_on_in_fit;  // without --turn-on-exclusion: in the bias fit, no term
-		if (!(opt.turn_on_exclusion_s > 0)) turn_on_in_fit.swap(turn_on_inputs);
-
-		// The axes to calibrate: --axis, else every axis the -i runs share.
-		std::vector<GyroAxis> axes;
-		if (arg_axis.getValue() == "all" || arg_axis.getValue().empty())
+		CalibrationRuns in;
+		for (const auto& path : arg_in.getValue())
 		{
-			axes = commonAxes(runs);
-			if (axes.empty()) throw std::invalid_argument("the -i runs share no gyro axis; give --axis");
+			in.runs.push_back(readScreened(path, "-i"));
+			in.labels.push_back(path);
 		}
-		else if (arg_axis.getValue() == "x" || arg_axis.getValue() == "y" || arg_axis.getValue() == "z")
-			axes.push_back(static_cast<GyroAxis>(arg_axis.getValue()[0] - 'x'));
-		else
-			throw std::invalid_argument("--axis: '" + arg_axis.getValue() + "' is not x, y, z or all");
-		const bool several = axes.size() > 1;
-		if (arg_sf_temp.getValue() != "thermistor" && arg_sf_temp.getValue() != "mean")
-			throw std::invalid_argument("--sf-temperature: '" + arg_sf_temp.getValue() + "' is not thermistor or mean");
-		ScaleFactorFitOptions sf_opt;
-		sf_opt.thermistor_mean = arg_sf_temp.getValue() == "mean";
-
-		std::vector<AxisFit> fits;
-		for (std::size_t ia = 0; ia < axes.size(); ia++)
+		for (const auto& path : arg_warm.getValue())
 		{
-			const GyroAxis axis = axes[ia];
-			const std::string who = several ? std::string("axis ") + axisLetter(axis) + ": " : std::string();
-			AxisRunViews set = runsForAxis(runs, arg_in.getValue(), axis);
-			if (set.runs.empty())
-			{
-				std::string why;
-				for (const auto& sk : set.skipped) why += "; " + sk;
-				throw std::invalid_argument(who + "no -i run serves axis " + std::string(1, axisLetter(axis)) + why);
-			}
-			AxisFit f;
-			f.skipped = set.skipped;
-			f.earth_rate_removed = set.earth_rate_removed;
-			FitOptions aopt = opt;
-			const bool fit_sf = arg_sf.getValue() == "auto" && hasTableRates(set.runs);
-			if (fit_sf) aopt.table_samples = TableSamples::Exclude;
-			f.cal = fitCalibrationRuns(set.runs, arg_model.getValue(), aopt, set.labels);
-			if (set.earth_rate_removed) f.cal.earth_rate = EarthRateHandling::InTableRate;
-			if (fit_sf)
-			{
-				try
-				{
-					f.cal.scale_factor = fitScaleFactor(inMemory(set.runs), f.cal, sf_opt, &f.sf_report, set.labels);
-				}
-				catch (const ScaleFactorFitError& e)
-				{
-					throw std::runtime_error(who + e.what() +
-											 "; the runs apply table rates, so a bias-only calibration would be wrong "
-											 "there (give --scale-factor off to fit the bias alone anyway)");
-				}
-			}
-			// The magnetic sensitivity on the residual of the calibration so far (MagneticFit.h),
-			// when a run has field segments; the runs with a field column in memory for it.
-			bool any_field = false;
-			for (const auto& r : set.runs) any_field |= r.hasField();
-			if (arg_mag.getValue() == "auto" && any_field)
-			{
-				std::vector<FogSeries> with_field;
-				for (const auto& r : set.runs)
-					if (r.hasField()) with_field.push_back(r.load());
-				if (discrepancy::hasFieldVariation(with_field))
-				{
-					try
-					{
-						f.cal.magnetic = discrepancy::fitMagneticSensitivity(f.cal, with_field);
-					}
-					catch (const discrepancy::MagneticFitError& e)
-					{
-						f.magnetic_why_not = e.what();
-					}
-				}
-			}
-			// What the summary needs from the runs, then they are freed before the warm-up and
-			// validation runs are read (memory: one log at a time, issue 14).
-			f.run_count = set.runs.size();
-			f.table_rates = hasTableRates(set.runs);
-			if (f.cal.model.features.thermistors().empty()) f.why_empty = whyNoThermalTerm(set.runs, f.cal.model);
-			fits.push_back(std::move(f));
-		}
-		// the warm-up term: from the --warmup-run runs when given (the user's choice), else from the
-		// -i runs holding a turn-on
-		std::vector<FogRun> warm;
-		std::vector<std::string> warm_paths;
-		if (arg_warm.getValue().empty())
-			for (std::size_t i : turn_on_inputs)
-			{
-				warm.push_back(std::move(runs[i]));
-				warm_paths.push_back(arg_in.getValue()[i]);
-			}
-		std::vector<FogRun>().swap(runs);
-		if (!warm.empty() || !arg_warm.getValue().empty())
-		{
-			for (const auto& path : arg_warm.getValue())
-			{
-				warm.push_back(readScreened(path, "--warmup-run"));
-				warm_paths.push_back(path);
-			}
-			// a failed warm-up fit stops fog-calibrate when --warmup-run asked for it; from -i runs
-			// alone it is reported and the calibration written without the term
-			const bool asked = !arg_warm.getValue().empty();
-			for (std::size_t ia = 0; ia < fits.size(); ia++)
-			{
-				Calibration& cal = fits[ia].cal;
-				AxisRunViews set = runsForAxis(warm, warm_paths, cal.axis);
-				const std::string who = several ? std::string("axis ") + axisLetter(cal.axis) + ": " : std::string();
-				if (set.earth_rate_removed != fits[ia].earth_rate_removed)
-					throw std::runtime_error(who + "--warmup-run: the warm-up runs " +
-											 (set.earth_rate_removed ? "state" : "do not state") +
-											 " the Earth rate (metadata earth_rate_dph) and the -i runs " +
-											 (set.earth_rate_removed ? "do not" : "do"));
-				try
-				{
-					if (set.runs.empty()) throw WarmupFitError("no warm-up run has this axis");
-					WarmupFitOptions wo;
-					const std::string& terms = arg_warm_terms.getValue();
-					if (terms == "auto")
-					{
-						const WarmupTermsChoice ch = selectWarmupTerms(inMemory(set.runs), cal, wo, set.labels);
-						wo.exponentials = ch.exponentials;
-						fits[ia].warmup_terms_why = ch.why;
-					}
-					else if (terms == "1" || terms == "2")
-					{
-						wo.exponentials = terms == "1" ? 1 : 2;
-						fits[ia].warmup_terms_why = "--warmup-terms " + terms;
-					}
-					else
-						throw std::invalid_argument("--warmup-terms: '" + terms + "' is not 1, 2 or auto");
-					cal.warmup = fitWarmup(inMemory(set.runs), cal, wo, nullptr, set.labels);
-				}
-				catch (const WarmupFitError& e)
-				{
-					if (asked) throw std::runtime_error(who + e.what() + " (--warmup-run)");
-					fits[ia].warmup_why_not = e.what();
-				}
-			}
+			in.warmup_runs.push_back(readScreened(path, "--warmup-run"));
+			in.warmup_labels.push_back(path);
 		}
 		if (!arg_val.getValue().empty())
 		{
-			std::vector<FogRun> val;
-			val.push_back(readScreened(arg_val.getValue(), "--validate"));
-			for (std::size_t ia = 0; ia < fits.size(); ia++)
-			{
-				Calibration& cal = fits[ia].cal;
-				AxisRunViews set = runsForAxis(val, {arg_val.getValue()}, cal.axis);
-				if (set.runs.empty())
-				{
-					cal.validation.label = "validation run " + arg_val.getValue() + ": " + set.skipped.front();
-					continue;
-				}
-				if (set.earth_rate_removed != fits[ia].earth_rate_removed)
-					throw std::runtime_error(arg_val.getValue() + ": --validate run and -i runs disagree on stating the "
-											 "Earth rate (metadata earth_rate_dph." +
-											 std::string(1, axisLetter(cal.axis)) + ")");
-				cal.validation =
-					evaluateCalibration(cal, set.runs.front(), "validation run " + arg_val.getValue(), opt.tau_s);
-				fits[ia].validated = true;
-			}
+			in.validation.push_back(readScreened(arg_val.getValue(), "--validate"));
+			in.validation_label = arg_val.getValue();
 		}
-		else
-			for (auto& f : fits) f.cal.validation.label = "validation run (none given)";
+		CalibrateOptions copt;
+		copt.fit = opt;
+		copt.model = arg_model.getValue();
+		copt.scale_factor = app::parseChoice(arg_sf, partFitFromString);
+		copt.scale_factor_fit.thermistor_mean = arg_sf_temp.getValue() == "mean";
+		copt.magnetic = app::parseChoice(arg_mag, partFitFromString);
+		copt.magnetic_fit = discrepancy::magneticFitter();
+		copt.refine = app::parseChoice(arg_refine, partFitFromString);
+		const std::string& warm_terms = arg_warm_terms.getValue();
+		if (warm_terms != "auto" && warm_terms != "1" && warm_terms != "2")
+			throw std::invalid_argument("--warmup-terms: '" + warm_terms + "' is not 1, 2 or auto");
+		copt.warmup_exponentials = warm_terms == "auto" ? 0 : static_cast<std::size_t>(warm_terms[0] - '0');
+		if (arg_axis.getValue() == "x" || arg_axis.getValue() == "y" || arg_axis.getValue() == "z")
+			copt.axes.push_back(static_cast<GyroAxis>(arg_axis.getValue()[0] - 'x'));
+		else if (arg_axis.getValue() != "all" && !arg_axis.getValue().empty())
+			throw std::invalid_argument("--axis: '" + arg_axis.getValue() + "' is not x, y, z or all");
+		if (arg_sf_temp.getValue() != "thermistor" && arg_sf_temp.getValue() != "mean")
+			throw std::invalid_argument("--sf-temperature: '" + arg_sf_temp.getValue() + "' is not thermistor or mean");
+
+		const CalibrationOutcome outcome = calibrate(in, copt);
+		const std::vector<AxisFit>& fits = outcome.axes;
+		const bool several = fits.size() > 1;
 		for (const auto& f : fits)
 		{
 			const Calibration& cal = f.cal;
@@ -938,9 +734,7 @@ int main(int argc, char** argv)
 							 "(%.4g -> %.4g deg/h): the model compensates nothing these runs can show\n",
 							 who.c_str(), cal.held_out.raw_stability_dph, cal.held_out.stability_dph);
 		}
-		CalibrationSet cal_set;
-		for (const auto& f : fits) cal_set.axes.push_back(f.cal);
-		saveCalibrationSet(cal_set, arg_out.getValue());
+		saveCalibrationSet(outcome.set(), arg_out.getValue());
 
 		for (const auto& f : fits)
 		{
@@ -959,15 +753,29 @@ int main(int argc, char** argv)
 							"kept); turn-on events: %zu\n",
 							rp.role.c_str(), rp.path.c_str(), rp.counts.gyro_off_rows, rp.counts.turn_ons);
 		}
-		for (std::size_t i : turn_on_inputs)
-			std::printf("  turn-on in -i %s: the first %.0f s after each turn-on stayed out of the bias fit%s "
-						"(--turn-on-exclusion)\n",
-						arg_in.getValue()[i].c_str(), opt.turn_on_exclusion_s,
-						arg_warm.getValue().empty() ? " and went to the warm-up fit" : " (the warm-up term: from --warmup-run)");
-		for (std::size_t i : turn_on_in_fit)
-			std::printf("  note: -i %s holds a turn-on; its warm-up joined the bias fit (taken for a thermal effect) and "
-						"no warm-up term was fitted (--turn-on-exclusion %.0f keeps the first hour out and fits the term)\n",
-						arg_in.getValue()[i].c_str(), kSuggestedTurnOnExclusion_s);
+		bool warmup_fitted = false;
+		for (const auto& f : fits) warmup_fitted |= f.cal.warmup.has_value();
+		for (const auto& u : outcome.turn_ons)
+		{
+			const std::string events = u.turn_on_events ? std::to_string(u.turn_on_events) + " turn-on event(s)"
+														: std::string("metadata power_on_time_s");
+			if (u.use == TurnOnUse::Use::ExcludedToWarmupFit || u.use == TurnOnUse::Use::ExcludedWarmupFromOtherRuns)
+				std::printf("  turn-on in -i %s: the first %.0f s after each turn-on stayed out of the bias fit%s "
+							"(--turn-on-exclusion; %s)\n",
+							u.label.c_str(), opt.turn_on_exclusion_s,
+							u.use == TurnOnUse::Use::ExcludedToWarmupFit ? " and went to the warm-up fit"
+																		 : " (the warm-up term: from --warmup-run)",
+							events.c_str());
+			else if (u.use == TurnOnUse::Use::InBiasFit)
+				std::printf("  note: -i %s holds a turn-on (%s); with --turn-on-exclusion 0 its warm-up joined the bias fit "
+							"(taken for a thermal effect)%s\n",
+							u.label.c_str(), events.c_str(),
+							warmup_fitted ? "; the warm-up term came from --warmup-run" : " and no warm-up term was fitted");
+		}
+		for (const auto& w : outcome.warmup_also_calibration)
+			std::printf("  note: %s is both an -i run and a --warmup-run: its turn-ons fitted the warm-up term, and the "
+						"bias fit used it %s\n",
+						w.c_str(), opt.turn_on_exclusion_s > 0 ? "without the first hour after each turn-on" : "whole");
 		std::printf("  wrote %s\n", arg_out.getValue().c_str());
 
 		if (!arg_json.getValue().empty())
@@ -986,7 +794,9 @@ int main(int argc, char** argv)
 			j["turn_on_events"] = static_cast<unsigned long>(turn_ons);
 			j["turn_on_exclusion_s"] = opt.turn_on_exclusion_s;
 			JsonValue& excl = j["turn_on_excluded_inputs"] = JsonValue::array();
-			for (std::size_t i : turn_on_inputs) excl.push_back(JsonValue(arg_in.getValue()[i]));
+			for (const auto& u : outcome.turn_ons)
+				if (u.use == TurnOnUse::Use::ExcludedToWarmupFit || u.use == TurnOnUse::Use::ExcludedWarmupFromOtherRuns)
+					excl.push_back(JsonValue(u.label));
 			JsonValue& per = j["power_by_run"] = JsonValue::array();
 			for (const auto& rp : run_power)
 			{

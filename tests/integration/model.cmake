@@ -76,6 +76,13 @@ if(TARGET fog-sim)
   set_tests_properties(model.scale_factor_interval_trial PROPERTIES LABELS "long;integration;model" TIMEOUT 1800)
 endif()
 
+# fog-calibrate on runs that give a part of the fit nothing: n/a held out, no turn-on in a run never
+# powered, one warm-up story when a run is both -i and --warmup-run, no unresolved magnetic term.
+add_test(NAME model.calibrate_edge_cases COMMAND ${CMAKE_COMMAND} -DBIN=$<TARGET_FILE_DIR:fog-calibrate>
+  -DDATA=${FOG_SOURCE_DIR}/tests/data/model -DWORK=${CMAKE_CURRENT_BINARY_DIR}/model/edge_cases
+  -P ${FOG_SOURCE_DIR}/tests/model/integration/calibrate_edge_cases.cmake)
+set_tests_properties(model.calibrate_edge_cases PROPERTIES LABELS "integration;model")
+
 # One chamber run that starts with a turn-on calibrates bias and warm-up (--turn-on-exclusion).
 if(TARGET fog-sim)
   add_test(NAME model.one_run_calibration COMMAND ${CMAKE_COMMAND} -DBIN=$<TARGET_FILE_DIR:fog-calibrate>

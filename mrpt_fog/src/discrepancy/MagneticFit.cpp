@@ -172,4 +172,20 @@ MagneticModel fitMagneticSensitivity(const Calibration& cal_in, const std::vecto
 	return m;
 }
 
+MagneticFitter magneticFitter()
+{
+	return [](const Calibration& cal, const std::vector<FogSeries>& runs, std::string& why_not) -> std::optional<MagneticModel> {
+		if (!hasFieldVariation(runs)) return std::nullopt;  // a constant field: nothing to fit, nothing to say
+		try
+		{
+			return fitMagneticSensitivity(cal, runs);
+		}
+		catch (const MagneticFitError& e)
+		{
+			why_not = e.what();
+			return std::nullopt;
+		}
+	};
+}
+
 }  // namespace mrpt_fog::discrepancy

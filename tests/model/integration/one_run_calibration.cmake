@@ -1,7 +1,7 @@
 # One chamber run that starts with a turn-on (fog-sim's `calibration` profile) through
-# fog-calibrate: without --turn-on-exclusion the warm-up joins the bias fit and a note names the
-# run; with --turn-on-exclusion 3600 the first hour stays out of the bias fit and the same run
-# fits the warm-up term (text and JSON); a bad value is one clear line and exit 1, no file.
+# fog-calibrate: with --turn-on-exclusion 0 the warm-up joins the bias fit and a note names the
+# run; by default (3600 s) the first hour stays out of the bias fit and the same run fits the
+# warm-up term (text and JSON); a bad value is one clear line and exit 1, no file.
 # -D BIN=<dir of the programs> -D WORK=<scratch dir>
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
@@ -20,7 +20,7 @@ function(expect_in text what)
 endfunction()
 
 run(fog-sim --profile calibration --seed 20240611 --rate-hz 0.5 -o ${WORK}/cal_run.rawlog)
-run(fog-calibrate -q -i ${WORK}/cal_run.rawlog -o ${WORK}/c0.yaml --json ${WORK}/c0.json)
+run(fog-calibrate -q -i ${WORK}/cal_run.rawlog --turn-on-exclusion 0 -o ${WORK}/c0.yaml --json ${WORK}/c0.json)
 expect_in("${last_stdout}" "note: -i ${WORK}/cal_run.rawlog holds a turn-on")
 file(READ ${WORK}/c0.json j0)
 string(JSON v GET "${j0}" turn_on_exclusion_s)
@@ -29,13 +29,17 @@ if(NOT v EQUAL 0)
 endif()
 string(JSON w ERROR_VARIABLE no_warmup GET "${j0}" warmup)
 if(NOT no_warmup)
-  message(FATAL_ERROR "c0.json: a warm-up term without --turn-on-exclusion")
+  message(FATAL_ERROR "c0.json: a warm-up term with --turn-on-exclusion 0")
 endif()
 
-run(fog-calibrate -q -i ${WORK}/cal_run.rawlog --turn-on-exclusion 3600 -o ${WORK}/c1.yaml --json ${WORK}/c1.json)
+run(fog-calibrate -q -i ${WORK}/cal_run.rawlog -o ${WORK}/c1.yaml --json ${WORK}/c1.json)
 expect_in("${last_stdout}" "turn-on in -i ${WORK}/cal_run.rawlog: the first 3600 s")
 expect_in("${last_stdout}" "warm-up: ")
 file(READ ${WORK}/c1.json j1)
+string(JSON excl GET "${j1}" turn_on_exclusion_s)
+if(NOT excl EQUAL 3600)
+  message(FATAL_ERROR "c1.json: default turn_on_exclusion_s = ${excl}, expected 3600")
+endif()
 string(JSON path GET "${j1}" turn_on_excluded_inputs 0)
 if(NOT path STREQUAL "${WORK}/cal_run.rawlog")
   message(FATAL_ERROR "c1.json: turn_on_excluded_inputs[0] = ${path}")

@@ -16,6 +16,7 @@
  */
 
 #include <mrpt_fog/model/Calibration.h>
+#include <mrpt_fog/model/CalibrationRecipe.h>
 #include <mrpt_fog/model/MagneticModel.h>
 
 #include <stdexcept>
@@ -43,5 +44,10 @@ bool hasFieldVariation(const std::vector<FogSeries>& runs);
  * on `runs` (each with the calibration's layout). Throws MagneticFitError when the runs cannot
  * support it, std::invalid_argument on a layout mismatch (from the compensator). */
 MagneticModel fitMagneticSensitivity(const Calibration& cal, const std::vector<FogSeries>& runs);
+
+/** fitMagneticSensitivity() as the calibration recipe's fitter (CalibrationRecipe.h,
+ * CalibrateOptions::magnetic_fit): nothing, with the reason, when no run's field changes over its
+ * powered samples or the runs cannot support the fit. */
+MagneticFitter magneticFitter();
 
 }  // namespace mrpt_fog::discrepancy
