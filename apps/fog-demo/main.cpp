@@ -23,21 +23,16 @@ namespace fs = std::filesystem;
 
 namespace
 {
-/** The recommended bias model (docs/nav.md, "Error budget"): the linear multipoint terms the
- * automatic selection keeps on the bundled runs, plus one curvature term (the static bias curve). */
-const char* const kCurvatureModel =
-	"terms:T(Ti1)^1;dT/dt(Ti1)^1;T(To1)^1;dT/dt(To1)^1;T(Ti2)^1;dT/dt(Ti2)^1;T(To2)^1;dT/dt(To2)^1;T(To1)^2";
-
 const char* const kHelp = R"(
 WHAT IT DOES
   The main job of mrpt_fog, end to end, on the bundled datasets (datasets/, simulated by
   fog-sim; missing files are simulated into <out>/datasets first):
-   1. fog-calibrate: fit the multi-point thermal-bias model (seed eq. 2, all four thermistors,
-      orders 5/3, conditioned basis, terms selected by held-out error) on chamber run A, and
-      validate it on chamber run B (a different temperature profile, never seen by the fit);
-      when the datasets hold chamber_C.rawlog (a second run of the same gyro: a +-20 C sine of
-      30 min period, ramps at 2 and 3 C/min), also on runs A + C, validated on B: one 1 C/min
-      profile leaves the rate (Shupe) terms weakly determined, a second history pins them;
+   1. fog-calibrate, the default calibration: every calibration run the datasets hold
+      (chamber runs A and C, the rate-table runs, the cold-start runs) and no other option; the
+      model is chosen from the data (bias terms by held-out error, the warm-up term from the
+      turn-ons, the scale factor from the rate tables: docs/guide/calibration.md), validated on
+      chamber run B (a different temperature profile, never seen by the fit); also chamber run A
+      alone and runs A + C, each validated on B;
    2. fog-evaluate: 100 s bias stability, range and Allan deviation, raw vs compensated, on
       A (in-sample) and B (held out), with plots;
    3. fog-drift: compensate the vehicle drive sample by sample (causal, as in real time),
@@ -45,21 +40,15 @@ WHAT IT DOES
       for the raw, compensated and ideal (no thermal error) gyros, against the ground truth;
    4. fog-localize (when built): MRPT particle-filter localization on a simulated world around
       the drive, odometry heading from the raw / compensated / ideal FOG, 5 filter seeds:
-      position RMS on the observation-poor (open-field) stretches. Its calibration: bias on
-      chamber run A plus the scale factor vs temperature on the rate-table run
-      (ratetable_A.rawlog) when the datasets have one, else the bias only (said in the report);
+      position RMS on the observation-poor (open-field) stretches, with the default calibration;
    5. fog-paper (when built): the seed paper's Tables 1-3 beside ours;
    6. stages of the thermal error model, each compensating the bundled drive plus --drives
       simulated drives (fog-sim --profile drive, seeds 11.., cabins winter / mild / hot in
       turn; fog-drift -i ... over all of them): bias only (chamber A), + scale factor vs
-      temperature (+ the rate-table run ratetable_A.rawlog, and ratetable_transient.rawlog when
-      present: table segments in transients, for the scale factor in a weighted sum of the
-      thermistors), + warm-up and curvature (the turn-on term fitted apart on the cold-start runs
-      warmup.rawlog and warmup_B.rawlog: one or two exponentials by held-out error and the
-      start-up model's offset after a turn-on; the bias model with one curvature term
-      T(To1)^2, the recommended calibration of docs/nav.md); the median heading RMS of each over
-      the drives leads the report. Stages whose runs the datasets folder lacks are skipped,
-      said in the report.
+      temperature (+ the rate-table runs), and the default calibration (every run: + warm-up
+      and the second chamber run), as an explanation of what each part buys; the median
+      heading RMS of the default calibration over the drives leads the report. Stages whose
+      runs the datasets folder lacks are skipped, said in the report.
   The report folder holds summary.md (key figures, tables, the command behind each), the
   calibration YAML, every program's JSON, PNG plots and logs.
 
@@ -169,23 +158,24 @@ int main(int argc, char** argv)
 		{
 			have_localize = false;
 		}
-		// Stages of the thermal error model (the runs each needs must be in the datasets folder).
+		// The calibration runs the datasets hold (the default calibration takes every one) and the
+		// stages of the thermal error model (the runs each needs must be in the datasets folder).
 		const fs::path table_run = data / "ratetable_A.rawlog", warm_run = data / "warmup.rawlog";
-		// table segments in transients (when bundled): the scale factor in a weighted sum of thermistors
 		const fs::path transient_run = data / "ratetable_transient.rawlog";
+		const fs::path warm_run_b = data / "warmup_B.rawlog";
+		const fs::path second_chamber_run = data / "chamber_C.rawlog";
 		const bool have_transient = fs::exists(transient_run);
 		const std::string table_runs = have_transient ? "rate table A + transient rate table" : "rate table A";
 		const bool stages_on = !arg_no_stages.getValue();
-		const bool have_table = stages_on && fs::exists(table_run), have_warm = have_table && fs::exists(warm_run);
-		const fs::path warm_run_b = data / "warmup_B.rawlog";  // a second warm-up run: the term count by held-out error
-		const bool have_warm_b = have_warm && fs::exists(warm_run_b);
-		const int n_drives = stages_on ? arg_drives.getValue() : 0;
-		const int stage_steps = n_drives + 1 + (have_table ? 2 : 0) + (have_warm ? 2 : 0);
-		// a second chamber run of the same device (a sine, 2-3 C/min ramps): the two-run calibration,
-		// validated on run B like the one-run calibration
-		const fs::path second_chamber_run = data / "chamber_C.rawlog";
+		const bool have_table = stages_on && fs::exists(table_run);
 		const bool have_second_chamber = fs::exists(second_chamber_run);
-		const int total = static_cast<int>(missing.size()) + 4 + (have_second_chamber ? 1 : 0) + (have_paper ? 1 : 0) +
+		std::vector<fs::path> other_runs;  // every calibration run besides chamber A, in this order
+		for (const fs::path& r : {second_chamber_run, table_run, transient_run, warm_run, warm_run_b})
+			if (fs::exists(r)) other_runs.push_back(r);
+		const bool default_stage = stages_on && !other_runs.empty();
+		const int n_drives = stages_on ? arg_drives.getValue() : 0;
+		const int stage_steps = n_drives + 1 + (have_table ? 2 : 0) + (default_stage ? 1 : 0);
+		const int total = static_cast<int>(missing.size()) + 5 + (have_second_chamber ? 1 : 0) + (have_paper ? 1 : 0) +
 						  (have_localize ? 1 : 0) + stage_steps;
 		StepRunner run(bin, (out / "logs").string(), total);
 
@@ -209,9 +199,26 @@ int main(int argc, char** argv)
 		ds.drive = path_of("drive.rawlog");
 		const std::string cal = (out / "calibration.yaml").string();
 
-		run.run({"calibrate", "calibrating '" + arg_model.getValue() + "' on chamber run A, validating on run B",
-				 {run.program("fog-calibrate"), "-i", ds.chamber_A, "--model", arg_model.getValue(), "--validate", ds.chamber_B,
-				  "-o", cal, "--json", (json / "calibrate.json").string()}});
+		const std::string cal_A = (out / "calibration_chamber_A.yaml").string();
+		// the model preset only when asked for (the default chooses from the data)
+		std::vector<std::string> model_arg;
+		if (arg_model.isSet()) model_arg = {"--model", arg_model.getValue()};
+		{
+			std::vector<std::string> argv{run.program("fog-calibrate"), "-i", ds.chamber_A};
+			for (const auto& r : other_runs) argv.insert(argv.end(), {"-i", r.string()});
+			argv.insert(argv.end(), model_arg.begin(), model_arg.end());
+			argv.insert(argv.end(), {"--validate", ds.chamber_B, "-o", cal, "--json", (json / "calibrate.json").string()});
+			run.run({"calibrate",
+					 "the default calibration: every calibration run of the datasets (" + std::to_string(1 + other_runs.size()) +
+						 "), nothing else; validating on run B",
+					 argv});
+		}
+		{
+			std::vector<std::string> argv{run.program("fog-calibrate"), "-i", ds.chamber_A};
+			argv.insert(argv.end(), model_arg.begin(), model_arg.end());
+			argv.insert(argv.end(), {"--validate", ds.chamber_B, "-o", cal_A, "--json", (json / "calibrate_A.json").string()});
+			run.run({"calibrate_A", "calibrating on chamber run A alone, validating on run B", argv});
+		}
 		if (have_second_chamber)
 			run.run({"calibrate_two_runs",
 					 "calibrating '" + arg_model.getValue() + "' on chamber runs A + C (a sine, 2-3 C/min ramps), validating on run B",
@@ -229,16 +236,11 @@ int main(int argc, char** argv)
 				  (plots / "drift").string(), "--odometry-out", (out / "odometry_compensated.rawlog").string()}});
 		if (have_localize)
 		{
-			// The drive turns: the localization compensates with the scale factor too when the
-			// datasets hold a rate-table run of the same gyro (fog-localize fits bias + scale factor).
-			const fs::path table = data / "ratetable_A.rawlog";
-			const std::string table_arg = fs::exists(table) ? table.string() : "none";
 			run.run({"localize",
-					 "MRPT particle-filter localization with raw / compensated / ideal FOG heading (fog-localize; "
-					 "calibration: chamber A" +
-						 std::string(fs::exists(table) ? " + rate table A, bias and scale factor)" : ", bias only)"),
-					 {run.program("fog-localize"), "--drive", ds.drive, "--chamber", ds.chamber_A, "--ratetable", table_arg,
-					  "--out", (out / "localize").string(), "--json", (json / "localize.json").string()}});
+					 "MRPT particle-filter localization with raw / compensated / ideal FOG heading (fog-localize; the "
+					 "default calibration)",
+					 {run.program("fog-localize"), "--drive", ds.drive, "--cal", cal, "--out", (out / "localize").string(),
+					  "--json", (json / "localize.json").string()}});
 		}
 		if (have_paper)
 		{
@@ -253,39 +255,23 @@ int main(int argc, char** argv)
 		{
 			std::string id, label, runs, cal;
 		};
-		std::vector<Stage> stages{{"bias", "bias only", "chamber A", cal}};
+		std::vector<Stage> stages{{"bias", "bias only", "chamber A", cal_A}};
 		const std::string cal_sf = (out / "calibration_scale_factor.yaml").string();
-		const std::string cal_full = (out / "calibration_full.yaml").string();
 		if (have_table)
 		{
 			std::vector<std::string> argv{run.program("fog-calibrate"), "-i", ds.chamber_A, "-i", table_run.string()};
 			if (have_transient) argv.insert(argv.end(), {"-i", transient_run.string()});
-			argv.insert(argv.end(), {"--model", arg_model.getValue(), "-o", cal_sf, "--json",
-									 (json / "calibrate_scale_factor.json").string()});
+			argv.insert(argv.end(), model_arg.begin(), model_arg.end());
+			// these runs hold a turn-on only in the transient table run: the stage is bias + scale factor
+			argv.insert(argv.end(), {"-o", cal_sf, "--json", (json / "calibrate_scale_factor.json").string()});
 			run.run({"calibrate_scale_factor", "stage + scale factor: calibrating on chamber run A + the rate-table run(s)", argv});
 			stages.push_back({"scale_factor", "+ scale factor vs temperature", "chamber A + " + table_runs, cal_sf});
 		}
-		if (have_warm)
+		if (default_stage)
 		{
-			// the recommended calibration (docs/nav.md, "Error budget"): the warm-up fitted apart on the
-			// cold-start run(s), the default model's linear terms plus one curvature term
-			std::vector<std::string> argv{run.program("fog-calibrate"), "-i", ds.chamber_A, "-i", table_run.string()};
-			if (have_transient) argv.insert(argv.end(), {"-i", transient_run.string()});
-			argv.insert(argv.end(), {"--warmup-run", warm_run.string()});
-			if (have_warm_b) argv.insert(argv.end(), {"--warmup-run", warm_run_b.string()});
-			const bool default_model = arg_model.getValue() == "multipoint";
-			if (default_model)
-				argv.insert(argv.end(), {"--model", kCurvatureModel, "--selection", "none"});
-			else
-				argv.insert(argv.end(), {"--model", arg_model.getValue()});
-			argv.insert(argv.end(), {"-o", cal_full, "--json", (json / "calibrate_full.json").string()});
-			run.run({"calibrate_full",
-					 "stage + warm-up: calibrating on chamber run A + the rate-table run(s), warm-up on the cold-start run(s)",
-					 argv});
-			stages.push_back({"full",
-							  std::string("+ warm-up (fitted apart on ") + (have_warm_b ? "two cold-start runs" : "the cold-start run") +
-								  ")" + (default_model ? " + curvature T(To1)^2" : ""),
-							  "chamber A + " + table_runs + " + warm-up", cal_full});
+			std::string runs = "chamber A";
+			for (const auto& r : other_runs) runs += " + " + r.stem().string();
+			stages.push_back({"default", "the default calibration (every run; + warm-up from the turn-ons)", runs, cal});
 		}
 		std::vector<std::string> drive_inputs{ds.drive};
 		const char* const cabins[] = {"drive_cabin", "drive_cabin_mild", "drive_cabin_hot"};
@@ -325,8 +311,9 @@ int main(int argc, char** argv)
 
 		std::ostringstream md;
 		md << "# mrpt_fog demo report\n\n"
-		   << "Multi-point thermal-bias model (`" << arg_model.getValue() << "`) fitted on chamber run A, validated on "
-		   << "chamber run B, applied causally to a vehicle drive. Datasets: `" << data.string() << "`.\n\n";
+		   << "The default calibration (`fog-calibrate` on every calibration run of the datasets, no other option: the "
+		   << "model chosen from the data), validated on chamber run B, applied causally to a vehicle drive; every "
+		   << "section below uses it (`calibration.yaml`) unless it says otherwise. Datasets: `" << data.string() << "`.\n\n";
 		md << "## Headline\n\n";
 		{
 			const JsonFigures last((json / ("drives_" + stages.back().id + ".json")).string());
@@ -384,7 +371,7 @@ int main(int argc, char** argv)
 		}
 		if (!stages_on) md << "\nScale-factor and warm-up stages and the simulated drives skipped (--no-stages).\n";
 		else if (!have_table) md << "\nNo `ratetable_A.rawlog` in the datasets folder: the scale-factor and warm-up stages are skipped.\n";
-		else if (!have_warm) md << "\nNo `warmup.rawlog` in the datasets folder: the warm-up stage is skipped.\n";
+		else if (!fs::exists(warm_run)) md << "\nNo `warmup.rawlog` in the datasets folder: no warm-up term in the default calibration.\n";
 		md << "\nWhere the remaining error comes from (decomposition by simulator effect): docs/nav.md.\n\n";
 		md << "## Bias (chamber runs, tau = 100 s)\n\n"
 		   << "| run | raw stability [deg/h] | compensated stability [deg/h] | raw range [deg/h] | compensated range [deg/h] |\n"
