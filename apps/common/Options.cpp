@@ -105,8 +105,12 @@ double NumberCheck::parse(const std::string& text) const
 	return std::strtod(text.c_str(), nullptr);
 }
 
-FileRegistration::FileRegistration(const TCLAP::Arg& arg, FileRole role, std::function<std::vector<std::string>()> paths)
+FileRegistration::FileRegistration(const TCLAP::Arg& arg, std::string& description, FileRole role,
+								   std::function<std::vector<std::string>()> paths)
 {
+	description += role == FileRole::Input	  ? " (file read)"
+				   : role == FileRole::Output ? " (file written)"
+											  : " (folder written into)";
 	registry().push_back({&arg, role, std::move(paths), this});
 }
 

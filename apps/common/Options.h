@@ -100,7 +100,10 @@ enum class FileRole
 class FileRegistration
 {
    public:
-	FileRegistration(const TCLAP::Arg& arg, FileRole role, std::function<std::vector<std::string>()> paths);
+	/** Appends the role to the option's help ("(file read)", "(file written)", "(folder written
+	 * into)": the output test reads it back). */
+	FileRegistration(const TCLAP::Arg& arg, std::string& description, FileRole role,
+					 std::function<std::vector<std::string>()> paths);
 	~FileRegistration();
 	FileRegistration(const FileRegistration&) = delete;
 	FileRegistration& operator=(const FileRegistration&) = delete;
@@ -154,7 +157,7 @@ class InputArg : public TCLAP::ValueArg<std::string>
 	using TCLAP::ValueArg<std::string>::ValueArg;
 
    private:
-	detail::FileRegistration reg_{*this, detail::FileRole::Input, [this] { return std::vector<std::string>{getValue()}; }};
+	detail::FileRegistration reg_{*this, _description, detail::FileRole::Input, [this] { return std::vector<std::string>{getValue()}; }};
 };
 
 /** Files the program reads, the option repeated. */
@@ -164,7 +167,7 @@ class InputMultiArg : public TCLAP::MultiArg<std::string>
 	using TCLAP::MultiArg<std::string>::MultiArg;
 
    private:
-	detail::FileRegistration reg_{*this, detail::FileRole::Input, [this] { return getValue(); }};
+	detail::FileRegistration reg_{*this, _description, detail::FileRole::Input, [this] { return getValue(); }};
 };
 
 /** A file the program writes. */
@@ -174,7 +177,7 @@ class OutputArg : public TCLAP::ValueArg<std::string>
 	using TCLAP::ValueArg<std::string>::ValueArg;
 
    private:
-	detail::FileRegistration reg_{*this, detail::FileRole::Output, [this] { return std::vector<std::string>{getValue()}; }};
+	detail::FileRegistration reg_{*this, _description, detail::FileRole::Output, [this] { return std::vector<std::string>{getValue()}; }};
 };
 
 /** A directory the program writes files into (created when missing): refused when it names an
@@ -185,7 +188,7 @@ class OutputDirArg : public TCLAP::ValueArg<std::string>
 	using TCLAP::ValueArg<std::string>::ValueArg;
 
    private:
-	detail::FileRegistration reg_{*this, detail::FileRole::OutputDir,
+	detail::FileRegistration reg_{*this, _description, detail::FileRole::OutputDir,
 								  [this] { return std::vector<std::string>{getValue()}; }};
 };
 
