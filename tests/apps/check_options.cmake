@@ -64,7 +64,7 @@ foreach(entry IN LISTS help_NUMERIC)
   foreach(v IN LISTS these)
     expect_accepted("${v}" ${kind} ${lb} ${lo} ${hi} ${hb})
     execute_process(COMMAND ${APP} --${opt} ${v} --option-test-sentinel
-      RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 20)
+      RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
     math(EXPR runs "${runs} + 1")
     string(REGEX MATCHALL "\n" nl "${err}")
     list(LENGTH nl n_lines)

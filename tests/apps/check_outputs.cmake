@@ -78,7 +78,7 @@ function(collide what out_opt)
     endif()
   endforeach()
   execute_process(COMMAND ${APP} ${args} WORKING_DIRECTORY ${WORK}
-    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 20)
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
   set(named 0)
   if(err MATCHES "--${out_opt}[ ':]" OR (NOT flag_${out_opt} STREQUAL "-" AND err MATCHES " -${flag_${out_opt}}[ ':]"))
     set(named 1)

@@ -9,7 +9,7 @@
 #     "(file read)", "(file written)", "(folder written into)";
 #   <prefix>_ALL: the long name of every option.
 function(fog_help_options exe prefix)
-  execute_process(COMMAND ${exe} --help RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 20)
+  execute_process(COMMAND ${exe} --help RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "${exe} --help exited ${rc}: ${err}")
   endif()
