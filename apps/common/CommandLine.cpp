@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "AppMain.h"
+#include "Options.h"
 
 namespace mrpt_fog::app
 {
@@ -27,7 +28,11 @@ std::optional<int> parseCommandLine(TCLAP::CmdLine& cmd, int argc, char** argv, 
 	const bool go_on = cmd.parse(argc, argv);
 	const bool failed = output.failed();
 	cmd.setOutput(nullptr);
-	if (go_on) return std::nullopt;
+	if (go_on)
+	{
+		checkDeclaredFiles();  // the output rule, before any work (Options.h)
+		return std::nullopt;
+	}
 	return failed ? kExitUsage : kExitOk;
 }
 }  // namespace mrpt_fog::app

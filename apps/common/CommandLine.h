@@ -36,7 +36,9 @@ class CommandLineOutput : public TCLAP::StdOutput
 };
 
 /** Parses; returns std::nullopt when the program should go on, else the exit code (0 after
- * --help/--version, kExitUsage after a usage error). */
+ * --help/--version, kExitUsage after a usage error). Numeric options declared with Options.h
+ * are checked while parsing; once parsed, the file options declared there are checked against
+ * each other (checkDeclaredFiles: throws std::invalid_argument, exit 1 through runApp). */
 std::optional<int> parseCommandLine(TCLAP::CmdLine& cmd, int argc, char** argv, const std::string& program,
 									const std::string& extra_help = {});
 

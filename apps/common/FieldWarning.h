@@ -19,7 +19,8 @@ std::string fieldWarning(const Calibration& cal, const CompensationCounters& c, 
 /** fieldWarning()'s lines (one or several axes) as one message for a JSON value: without the
  * "  warning: " prefixes and newlines, joined by "; ". */
 std::string fieldWarningMessage(const std::string& warning_lines);
-/** {"dph_per_uT", "field_column", "field_unknown_samples", "warning"} for a calibration with a
+/** {"dph_per_uT", "field_column", "field_unknown_samples", "field_range_uT", "field_outside_samples",
+ * "field_max_beyond_uT", "warning"} for a calibration with a
  * magnetic section (null otherwise). */
 JsonValue fieldJson(const Calibration& cal, const CompensationCounters& c, bool log_has_field);
 }  // namespace mrpt_fog::app

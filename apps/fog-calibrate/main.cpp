@@ -19,6 +19,7 @@
 
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "Options.h"
 #include "PowerCycles.h"
 #include "Progress.h"
 #include "RangeWarning.h"
@@ -516,24 +517,24 @@ int main(int argc, char** argv)
 		TCLAP::CmdLine cmd("fog-calibrate: fit the FOG thermal-bias model to chamber runs and write a calibration "
 						   "YAML. Presets, the over-fitting guard and examples below.",
 						   ' ', "0.1");
-		TCLAP::MultiArg<std::string> arg_in("i", "input", "Calibration run (.rawlog, .csv, .csv.gz); repeat for several", true, "RUN", cmd);
+		app::InputMultiArg arg_in("i", "input", "Calibration run (.rawlog, .csv, .csv.gz); repeat for several", true, "RUN", cmd);
 		TCLAP::ValueArg<std::string> arg_model("", "model", "Model preset (see below)", false, "multipoint", "PRESET", cmd);
-		TCLAP::ValueArg<std::string> arg_out("o", "output", "Calibration YAML to write", true, "", "CAL.yaml", cmd);
-		TCLAP::ValueArg<std::string> arg_val("", "validate", "Independent run for held-out figures", false, "", "RUN", cmd);
-		TCLAP::ValueArg<std::string> arg_json("", "json", "Write the figures as JSON", false, "", "FILE", cmd);
+		app::OutputArg arg_out("o", "output", "Calibration YAML to write", true, "", "CAL.yaml", cmd);
+		app::InputArg arg_val("", "validate", "Independent run for held-out figures", false, "", "RUN", cmd);
+		app::OutputArg arg_json("", "json", "Write the figures as JSON", false, "", "FILE", cmd);
 		TCLAP::ValueArg<std::string> arg_label("", "label", "FOG sensor label in rawlogs with several", false, "", "L", cmd);
 		TCLAP::ValueArg<std::string> arg_sel("", "selection", "auto (default) or none", false, "auto", "auto|none", cmd);
-		TCLAP::ValueArg<double> arg_ridge("", "ridge", "Fixed ridge for --selection none (relative)", false, 0.0, "X", cmd);
+		app::RealArg arg_ridge(cmd, "ridge", "Fixed ridge for --selection none (relative)", "1", app::Range::closed(0, 1e6), 0.0);
 		TCLAP::ValueArg<std::string> arg_est("", "estimator", "Rate estimator: causal (default) or savgol", false, "causal", "KIND", cmd);
-		TCLAP::ValueArg<double> arg_window("", "window", "Rate window [s]", false, 60.0, "S", cmd);
-		TCLAP::ValueArg<int> arg_order("", "savgol-order", "Savitzky-Golay polynomial order (1..4)", false, 2, "N", cmd);
-		TCLAP::ValueArg<int> arg_corder("", "causal-order",
-										"Causal estimator: 2 (default) extrapolates the window's slope to the newest sample "
-										"(no delay); 1 is the plain slope, about window/2 late",
-										false, 2, "1|2", cmd);
-		TCLAP::ValueArg<double> arg_selbin("", "selection-bin",
-											"auto: score candidates on the means of S-second bins (0 = every sample)", false,
-											FitOptions{}.selection_bin_s, "S", cmd);
+		app::RealArg arg_window(cmd, "window", "Rate window", "s", app::Range::aboveUpTo(0, 3600), 60.0, "S");
+		app::CountArg arg_order(cmd, "savgol-order", "Savitzky-Golay polynomial order", "1", 1, 4, 2);
+		app::CountArg arg_corder(cmd, "causal-order",
+								 "Causal estimator: 2 (default) extrapolates the window's slope to the newest sample "
+								 "(no delay); 1 is the plain slope, about window/2 late",
+								 "1", 1, 2, 2, "1|2");
+		app::RealArg arg_selbin(cmd, "selection-bin",
+								"auto: score candidates on the means of S-second bins (0 = every sample)", "s",
+								app::Range::closed(0, 86400), FitOptions{}.selection_bin_s, "S");
 		TCLAP::ValueArg<std::string> arg_step("", "step-rule",
 											  "auto: a step must lower the held-out RMS by 0.5 % (relative) or be "
 											  "significant over time blocks (significant)",
@@ -554,12 +555,12 @@ int main(int argc, char** argv)
 											  "multipoint / points:K with one thermistor: lag-rate candidates dTlag/dt(a,tau) "
 											  "(none, physics = 100,400,1600 s, or a list of seconds S,S,..)",
 											  false, FitOptions{}.lag_taus_s.empty() ? "none" : "physics", "none|physics|S,..", cmd);
-		TCLAP::ValueArg<unsigned> arg_lagmax("", "lag-max-thermistors",
-											 "offer the --lags candidates to presets reading at most N thermistors "
-											 "(default 1; studies: larger)",
-											 false, static_cast<unsigned>(FitOptions{}.lag_max_thermistors), "N", cmd);
-		TCLAP::ValueArg<unsigned> arg_folds("", "folds", "Cross-validation folds for a single run", false, 5, "K", cmd);
-		TCLAP::ValueArg<double> arg_tau("", "tau", "Averaging time of the stability figures [s]", false, 100.0, "S", cmd);
+		app::CountArg arg_lagmax(cmd, "lag-max-thermistors",
+								 "offer the --lags candidates to presets reading at most N thermistors "
+								 "(default 1; studies: larger)",
+								 "thermistors", 0, 64, static_cast<unsigned>(FitOptions{}.lag_max_thermistors));
+		app::CountArg arg_folds(cmd, "folds", "Cross-validation folds for a single run", "folds", 2, 100, 5, "K");
+		app::RealArg arg_tau(cmd, "tau", "Averaging time of the stability figures", "s", app::Range::aboveUpTo(0, 1e6), 100.0, "S");
 		TCLAP::SwitchArg arg_nofb("", "no-fallbacks", "Do not fit per-thermistor fallback models", cmd);
 		TCLAP::ValueArg<std::string> arg_extra("", "extrapolation", "Outside the calibrated range: linear (default), clamp or polynomial",
 											   false, "linear", "POLICY", cmd);
@@ -582,16 +583,16 @@ int main(int argc, char** argv)
 												"(curvature T^2, T^3; without the lag rates): auto or off (default; "
 												"studies: docs/validation/calibration-default.md)",
 												false, "off", "auto|off", cmd);
-		TCLAP::MultiArg<std::string> arg_warm("", "warmup-run",
+		app::InputMultiArg arg_warm("", "warmup-run",
 											  "Run holding a turn-on (cold start) to fit the warm-up term; repeatable; "
 											  "not used in the bias fit",
 											  false, "RUN", cmd);
-		TCLAP::ValueArg<double> arg_turn_on_excl(
-			"", "turn-on-exclusion",
-			"Time after each turn-on in an -i run left out of the bias fit [s]; without --warmup-run those "
+		app::RealArg arg_turn_on_excl(
+			cmd, "turn-on-exclusion",
+			"Time after each turn-on in an -i run left out of the bias fit; without --warmup-run those "
 			"runs fit the warm-up term (default 3600: six time constants of a 10 min warm-up). 0: the whole "
 			"run joins the bias fit and no warm-up term is fitted on it",
-			false, kSuggestedTurnOnExclusion_s, "S", cmd);
+			"s", app::Range::closed(0, 1e7), kSuggestedTurnOnExclusion_s, "S");
 		TCLAP::ValueArg<std::string> arg_warm_terms(
 			"", "warmup-terms",
 			"Exponential terms of the warm-up: 1, 2, or auto (default: chosen by held-out error, each "
@@ -612,11 +613,6 @@ int main(int argc, char** argv)
 		TCLAP::SwitchArg arg_quiet("q", "quiet", "No progress line on stderr while the runs are read", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-calibrate", kHelp)) return *rc;
 
-		std::vector<FileArg> inputs{{"--validate", arg_val.getValue()}};
-		for (const auto& p : arg_in.getValue()) inputs.push_back({"-i", p});
-		for (const auto& p : arg_warm.getValue()) inputs.push_back({"--warmup-run", p});
-		requireSafeOutputs(inputs, {{"-o", arg_out.getValue()}, {"--json", arg_json.getValue()}});
-
 		FitOptions opt;
 		opt.selection = app::parseChoice(arg_sel, termSelectionFromString);
 		opt.ridge = arg_ridge.getValue();
@@ -624,13 +620,9 @@ int main(int argc, char** argv)
 		opt.rate_estimator.window_s = arg_window.getValue();
 		opt.window_for_quantum = !arg_window.isSet();  // an explicit window is used as given
 		opt.rate_estimator.poly_order =
-			opt.rate_estimator.kind == RateEstimatorKind::SavitzkyGolay ? arg_order.getValue() : arg_corder.getValue();
-		opt.folds = arg_folds.getValue();
-		if (!(arg_turn_on_excl.getValue() >= 0) || !std::isfinite(arg_turn_on_excl.getValue()))
-			throw std::invalid_argument("--turn-on-exclusion must be a number of seconds >= 0");
+			opt.rate_estimator.kind == RateEstimatorKind::SavitzkyGolay ? arg_order.get<int>() : arg_corder.get<int>();
+		opt.folds = arg_folds.get<unsigned>();
 		opt.turn_on_exclusion_s = arg_turn_on_excl.getValue();
-		if (!(arg_selbin.getValue() >= 0) || !std::isfinite(arg_selbin.getValue()))
-			throw std::invalid_argument("--selection-bin must be a number of seconds >= 0");
 		opt.selection_bin_s = arg_selbin.getValue();
 		if (arg_step.getValue() != "relative" && arg_step.getValue() != "significant")
 			throw std::invalid_argument("--step-rule must be relative or significant, got '" + arg_step.getValue() + "'");
@@ -642,7 +634,7 @@ int main(int argc, char** argv)
 			throw std::invalid_argument("--run-folds must be runs or regimes, got '" + arg_runfolds.getValue() + "'");
 		opt.run_folds = arg_runfolds.getValue() == "regimes" ? RunFolds::RegimesWithinRuns : RunFolds::Runs;
 		opt.lag_taus_s = parseLagTaus(arg_lags.getValue());
-		opt.lag_max_thermistors = arg_lagmax.getValue();
+		opt.lag_max_thermistors = arg_lagmax.get<unsigned>();
 		opt.tau_s = arg_tau.getValue();
 		opt.fallbacks = !arg_nofb.getValue();
 		opt.extrapolation = extrapolationPolicyFromString(arg_extra.getValue());

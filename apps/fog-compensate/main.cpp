@@ -22,6 +22,7 @@
 #include "FieldWarning.h"
 #include "RangeWarning.h"
 #include "CommandLine.h"
+#include "Options.h"
 #include "Progress.h"
 #include "PowerCycles.h"
 #include "ThermistorScreeningReport.h"
@@ -148,11 +149,11 @@ int main(int argc, char** argv)
 		TCLAP::CmdLine cmd("fog-compensate: remove the thermal bias from a FOG log with a calibration from "
 						   "fog-calibrate (causal, sample by sample). Details and examples below.",
 						   ' ', "0.1");
-		TCLAP::ValueArg<std::string> arg_in("i", "input", "FOG log (.rawlog, .csv, .csv.gz)", true, "", "IN", cmd);
-		TCLAP::ValueArg<std::string> arg_cal("", "cal", "Calibration YAML (fog-calibrate)", true, "", "CAL.yaml", cmd);
-		TCLAP::ValueArg<std::string> arg_out("o", "output", "Output (.rawlog or .csv)", true, "", "OUT", cmd);
+		app::InputArg arg_in("i", "input", "FOG log (.rawlog, .csv, .csv.gz)", true, "", "IN", cmd);
+		app::InputArg arg_cal("", "cal", "Calibration YAML (fog-calibrate)", true, "", "CAL.yaml", cmd);
+		app::OutputArg arg_out("o", "output", "Output (.rawlog or .csv)", true, "", "OUT", cmd);
 		TCLAP::ValueArg<std::string> arg_label("", "label", "FOG sensor label in rawlogs with several", false, "", "L", cmd);
-		TCLAP::ValueArg<std::string> arg_json("", "json", "Write the summary as JSON", false, "", "FILE", cmd);
+		app::OutputArg arg_json("", "json", "Write the summary as JSON", false, "", "FILE", cmd);
 		TCLAP::SwitchArg arg_quiet("q", "quiet", "No progress line on stderr", cmd);
 		TCLAP::SwitchArg arg_no_screen("", "no-screening",
 									   "Do not screen thermistor readings (stuck / spike / out of range) before "
@@ -163,8 +164,6 @@ int main(int argc, char** argv)
 		const std::string out = arg_out.getValue(), ext = fileExtension(out);
 		if (ext != ".rawlog" && ext != ".csv")
 			throw std::runtime_error("output '" + out + "': unknown file type '" + ext + "' (expected .rawlog or .csv)");
-		requireSafeOutputs({{"-i", arg_in.getValue()}, {"--cal", arg_cal.getValue()}},
-						   {{"-o", out}, {"--json", arg_json.getValue()}});
 		const CalibrationSet cals = loadCalibrationSet(arg_cal.getValue());
 
 		// Sample by sample: read, screen, compensate, write. Memory does not grow with the log.

@@ -20,6 +20,7 @@
 
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "Options.h"
 #include "Progress.h"
 #include "PowerCycles.h"
 
@@ -83,11 +84,11 @@ int main(int argc, char** argv)
 			"fog-convert: FOG logs between lab CSV (.csv, .csv.gz) and MRPT rawlog (.rawlog), by file "
 			"extension. Format summary and examples below.",
 			' ', "0.1");
-		TCLAP::ValueArg<std::string> arg_in("i", "input", "Input log (.csv, .csv.gz or .rawlog)", true, "", "IN", cmd);
-		TCLAP::ValueArg<std::string> arg_out("o", "output", "Output log (.csv, .csv.gz or .rawlog)", true, "", "OUT", cmd);
+		app::InputArg arg_in("i", "input", "Input log (.csv, .csv.gz or .rawlog)", true, "", "IN", cmd);
+		app::OutputArg arg_out("o", "output", "Output log (.csv, .csv.gz or .rawlog)", true, "", "OUT", cmd);
 		TCLAP::ValueArg<std::string> arg_label("", "label",
 			"FOG sensor label to take from a rawlog holding several (e.g. FOG_IDEAL)", false, "", "L", cmd);
-		TCLAP::ValueArg<std::string> arg_json("", "json", "Write a JSON summary (counts, time span, sensors, "
+		app::OutputArg arg_json("", "json", "Write a JSON summary (counts, time span, sensors, "
 			"thermistors, axes, dropouts) to FILE", false, "", "FILE", cmd);
 		TCLAP::SwitchArg arg_quiet("q", "quiet", "No progress line on stderr", cmd);
 		TCLAP::SwitchArg arg_stock("", "to-stock", "Write stock MRPT CObservationIMU + CObservationRawDAQ instead "
@@ -97,7 +98,6 @@ int main(int argc, char** argv)
 		const std::string in = arg_in.getValue(), out = arg_out.getValue();
 		requireKnownExtension(in, "input");
 		requireKnownExtension(out, "output");
-		requireSafeOutputs({{"-i", in}}, {{"-o", out}, {"--json", arg_json.getValue()}});
 		if (arg_stock.getValue() && !isRawlog(out))
 			throw std::runtime_error("--to-stock writes a rawlog: the output '" + out + "' must end in .rawlog");
 

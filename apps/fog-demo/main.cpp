@@ -14,6 +14,7 @@
 
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "Options.h"
 #include "JsonFigures.h"
 #include "StepRunner.h"
 
@@ -101,24 +102,22 @@ int main(int argc, char** argv)
 {
 	return app::runApp("fog-demo", [&]() -> int {
 		TCLAP::CmdLine cmd("fog-demo: mrpt_fog end to end (calibrate, validate, compensate, navigate)", ' ', "0.1");
-		TCLAP::ValueArg<std::string> arg_out("o", "out", "report folder [default: fog-demo-report]", false,
+		app::OutputDirArg arg_out("o", "out", "report folder [default: fog-demo-report]", false,
 											 "fog-demo-report", "DIR", cmd);
-		TCLAP::ValueArg<std::string> arg_data("d", "datasets",
+		app::InputArg arg_data("d", "datasets",
 											  "folder with chamber_A.rawlog, chamber_B.rawlog, drive.rawlog "
 											  "[default: ./datasets, else the source tree's datasets/]",
 											  false, "", "DIR", cmd);
 		TCLAP::ValueArg<std::string> arg_model("m", "model", "bias-model preset [default: multipoint]", false,
 											   "multipoint", "PRESET", cmd);
-		TCLAP::ValueArg<int> arg_drives("", "drives",
-										"simulated drives (besides the bundled one) for the stage figures [default: 9]",
-										false, 9, "N", cmd);
+		app::CountArg arg_drives(cmd, "drives",
+								 "simulated drives (besides the bundled one) for the stage figures [default: 9]",
+								 "drives", 0, 100, 9);
 		TCLAP::SwitchArg arg_no_stages("", "no-stages",
 									   "bias-only stage on the bundled drive only (no rate-table / warm-up calibrations, no "
 									   "simulated drives): a quicker run",
 									   cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-demo", kHelp)) return *rc;
-		if (arg_drives.getValue() < 0 || arg_drives.getValue() > 100)
-			throw std::invalid_argument("--drives: " + std::to_string(arg_drives.getValue()) + " is not in 0..100");
 
 		const fs::path out = fs::absolute(arg_out.getValue());
 		prepareOutDir(out);
@@ -173,7 +172,7 @@ int main(int argc, char** argv)
 		for (const fs::path& r : {second_chamber_run, table_run, transient_run, warm_run, warm_run_b})
 			if (fs::exists(r)) other_runs.push_back(r);
 		const bool default_stage = stages_on && !other_runs.empty();
-		const int n_drives = stages_on ? arg_drives.getValue() : 0;
+		const int n_drives = stages_on ? arg_drives.get<int>() : 0;
 		const int stage_steps = n_drives + 1 + (have_table ? 2 : 0) + (default_stage ? 1 : 0);
 		const int total = static_cast<int>(missing.size()) + 5 + (have_second_chamber ? 1 : 0) + (have_paper ? 1 : 0) +
 						  (have_localize ? 1 : 0) + stage_steps;

@@ -21,6 +21,7 @@
 
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "Options.h"
 #include "Progress.h"
 #include "ThermistorScreeningReport.h"
 
@@ -34,27 +35,27 @@ int main(int argc, char** argv)
 			"(with alias groups where the run cannot separate candidates), add it, refit and show the gap "
 			"before/after. The first --measured run is analysed; a second one confirms.",
 			' ', "0.1");
-		TCLAP::MultiArg<std::string> measured("", "measured", "measured run (.rawlog, .csv, .csv.gz); give 1 or 2",
+		app::InputMultiArg measured("", "measured", "measured run (.rawlog, .csv, .csv.gz); give 1 or 2",
 											  true, "FILE", cmd);
-		TCLAP::ValueArg<std::string> model("", "model",
+		app::InputArg model("", "model",
 										   "bias model to test, built as fog-compensate runs it: a preset (multipoint, "
 										   "M1..M4[:...], points:K, terms:...) fitted on the first run with fog-calibrate's "
 										   "defaults, or a calibration YAML as is (its terms, normalisation, rate estimator, "
 										   "extrapolation); coefficients refitted on the measured run. static:P[:NAME]: a "
 										   "polynomial in one thermistor / their mean (synthetic proof trials)",
 										   false, "", "PRESET|CAL.yaml");
-		TCLAP::ValueArg<std::string> sim("", "sim", "simulator configuration to test (device, effects, free parameters, optional profile; see docs/discrepancy-sim.md); its free parameters are calibrated to the measured run. Without a profile (in SIM.yaml or the run metadata sim.profile) the simulator is driven from the log alone: power, table rate and field columns, chamber air reconstructed from the thermistors; a thermistor misfit above 0.1 C RMS is reported as the first disagreement and no bias effect is named on top of it; the share of the bias residual that follows air changes faster than the reconstruction resolves is reported ('Unresolved thermal content') and taken out before effects are named: give the profile to attribute it", false, "",
+		app::InputArg sim("", "sim", "simulator configuration to test (device, effects, free parameters, optional profile; see docs/discrepancy-sim.md); its free parameters are calibrated to the measured run. Without a profile (in SIM.yaml or the run metadata sim.profile) the simulator is driven from the log alone: power, table rate and field columns, chamber air reconstructed from the thermistors; a thermistor misfit above 0.1 C RMS is reported as the first disagreement and no bias effect is named on top of it; the share of the bias residual that follows air changes faster than the reconstruction resolves is reported ('Unresolved thermal content') and taken out before effects are named: give the profile to attribute it", false, "",
 										 "SIM.yaml");
 		cmd.xorAdd(model, sim);
-		TCLAP::ValueArg<std::string> json("", "json", "write the figures as JSON", false, "", "FILE", cmd);
-		TCLAP::ValueArg<std::string> plots("", "plots", "write residual PNGs into this directory", false, "", "DIR", cmd);
-		TCLAP::ValueArg<std::string> write_cal(
+		app::OutputArg json("", "json", "write the figures as JSON", false, "", "FILE", cmd);
+		app::OutputDirArg plots("", "plots", "write residual PNGs into this directory", false, "", "DIR", cmd);
+		app::OutputArg write_cal(
 			"", "write-cal",
 			"write the calibration under test plus the named, confirmed effects the compensator can run (thermal "
 			"terms), refitted on the first run, and show the gap before/after on the second run through the "
 			"compensator (--model only)",
 			false, "", "OUT.yaml", cmd);
-		TCLAP::ValueArg<double> alpha("", "alpha", "family-wise significance level (Holm)", false, 0.005, "P", cmd);
+		app::RealArg alpha(cmd, "alpha", "family-wise significance level (Holm)", "1", app::Range::open(0, 0.5), 0.005, "P");
 		TCLAP::ValueArg<std::string> scale_factor(
 			"", "scale-factor",
 			"with a preset: auto (default, as fog-calibrate) fits the scale factor versus temperature from the "
@@ -67,21 +68,21 @@ int main(int argc, char** argv)
 								   "do not screen thermistor readings (stuck / spike / out of range -> dropout) before "
 								   "the analysis (fog-compensate's screening)",
 								   cmd);
-		TCLAP::ValueArg<double> block_s(
-			"", "block-s",
+		app::RealArg block_s(
+			cmd, "block-s",
 			"analyse block means of at least this many seconds (default 1): a run sampled faster is reduced while it "
 			"is read to blocks of K = floor(S / sample period) consecutive samples (a block never mixes power "
 			"states, table rates or fields, nor bridges a gap); thermal effects vary over minutes, so blocks of "
 			"seconds keep them and average only the white part of the gyro noise: the residual RMS is that of "
 			"the block means. A run sampled at 1/S or slower is analysed sample by sample. 0: no reduction "
 			"(memory about 1.4 KB per sample)",
-			false, 1.0, "S", cmd);
-		TCLAP::ValueArg<std::size_t> max_rows(
-			"", "max-rows",
+			"s", app::Range::closed(0, 3600), 1.0, "S");
+		app::CountArg max_rows(
+			cmd, "max-rows",
 			"at most this many rows per run (default 65536, 18 h of 1 s blocks): beyond it adjacent blocks are "
 			"merged in pairs (2 S, 4 S, ...), which bounds memory (about 1.4 KB per row) and time; blocks stop "
 			"growing at 16 s (the compensator's rate window is 60 s), so beyond 12 days the rows grow",
-			false, 65536, "N", cmd);
+			"rows", 1000, 100000000, 65536);
 		TCLAP::SwitchArg quiet("q", "quiet", "No progress line on stderr while the runs are read", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-discrepancy")) return *rc;
 
@@ -90,12 +91,6 @@ int main(int argc, char** argv)
 									 " times: at most two runs (the first is analysed, the second confirms)");
 		if (scale_factor.getValue() != "auto" && scale_factor.getValue() != "off")
 			throw std::runtime_error("--scale-factor: '" + scale_factor.getValue() + "' is not auto or off");
-		if (!(block_s.getValue() >= 0 && block_s.getValue() <= 3600))
-			throw std::runtime_error("--block-s " + std::to_string(block_s.getValue()) + ": must be in [0, 3600] s");
-		if (max_rows.getValue() < 1000)
-			throw std::runtime_error("--max-rows " + std::to_string(max_rows.getValue()) + ": must be at least 1000");
-		if (!(alpha.getValue() > 0 && alpha.getValue() < 0.5))
-			throw std::runtime_error("--alpha " + std::to_string(alpha.getValue()) + ": must be in (0, 0.5)");
 		if (plots.isSet())
 		{
 			std::error_code ec;
@@ -105,9 +100,6 @@ int main(int argc, char** argv)
 										 (ec ? ": " + ec.message() : std::string()));
 		}
 
-		std::vector<FileArg> inputs{{"--model", model.getValue()}, {"--sim", sim.getValue()}};
-		for (const auto& f : measured.getValue()) inputs.push_back({"--measured", f});
-		requireSafeOutputs(inputs, {{"--json", json.getValue()}});
 
 		std::vector<FogSeries> runs;
 		std::vector<std::string> labels;
@@ -118,7 +110,7 @@ int main(int argc, char** argv)
 			// block means with bounded rows (io/BlockMeanReader.h)
 			BlockMeanOptions bopt;
 			bopt.min_block_s = block_s.getValue();
-			bopt.max_rows = max_rows.getValue();
+			bopt.max_rows = max_rows.get<std::size_t>();
 			// the simulator path puts each row on the profile's time grid: rows at their block's
 			// first sample (the log's own grid); the means lag that time by half a block
 			if (sim.isSet()) bopt.row_time = BlockMeanOptions::RowTime::FirstSample;

@@ -122,6 +122,7 @@ JsonValue driveJson(const DriveEvaluation& e, const DriftContext& ctx)
 	j["calibration_earth_rate_dph"] = ctx.calibration_earth_rate_dph;
 	j["calibration_latitude_source"] =
 		ctx.calibration_latitude_source.empty() ? JsonValue() : JsonValue(ctx.calibration_latitude_source);
+	j["option_conflicts"] = JsonValue::arrayOf(e.option_conflicts);
 	if (e.magnetic_term)  // only for a calibration with a magnetic section: other reports keep their keys
 		j["magnetic_field_warning"] =
 			e.field_warning.empty() ? JsonValue() : JsonValue(app::fieldWarningMessage(e.field_warning));

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <initializer_list>
 #include <limits>
 #include <optional>
@@ -19,6 +20,23 @@
 
 namespace mrpt_fog::drift
 {
+namespace
+{
+/** Latitudes further apart than this differ (metadata are written to 1e-6 deg or so). */
+constexpr double kLatitudeConflict_deg = 1e-3;
+
+std::string latitudeConflict(const char* option, double option_deg, const char* source, double meta_deg)
+{
+	char b[400];
+	std::snprintf(b, sizeof b,
+				  "%s %.6g overrides %s %.6g: the vertical Earth rate used differs by %.4g deg/h", option, option_deg,
+				  source, meta_deg,
+				  units::kEarthRate_dph *
+					  std::abs(std::sin(option_deg * units::kDegToRad) - std::sin(meta_deg * units::kDegToRad)));
+	return b;
+}
+}  // namespace
+
 bool noteCalibrationEarthRate(DriveEvaluation& e, const DriveSettings& st, const Calibration& zcal)
 {
 	double cal_lat_deg = e.latitude_deg;
@@ -27,6 +45,13 @@ bool noteCalibrationEarthRate(DriveEvaluation& e, const DriveSettings& st, const
 	{
 		cal_lat_deg = *st.cal_latitude_deg;
 		e.calibration_latitude_source = "option";
+		const bool in_file = std::isfinite(zcal.latitude_deg);
+		const double meta_deg = in_file ? zcal.latitude_deg : e.drive.latitude_deg.value_or(NAN);
+		if (std::isfinite(meta_deg) && std::abs(meta_deg - cal_lat_deg) > kLatitudeConflict_deg)
+			e.option_conflicts.push_back(latitudeConflict("--cal-latitude-deg", cal_lat_deg,
+														  in_file ? "the calibration file's latitude_deg"
+																  : "the drive's metadata latitude_deg (the calibration file has none)",
+														  meta_deg));
 	}
 	else if (std::isfinite(zcal.latitude_deg))
 	{
@@ -41,7 +66,13 @@ bool noteCalibrationEarthRate(DriveEvaluation& e, const DriveSettings& st, const
 
 HeadingOptions headingOptionsFor(DriveEvaluation& e, const std::string& path, const DriveSettings& st)
 {
-	if (st.latitude_deg) e.latitude_deg = *st.latitude_deg;
+	if (st.latitude_deg)
+	{
+		e.latitude_deg = *st.latitude_deg;
+		if (e.drive.latitude_deg && std::abs(*e.drive.latitude_deg - e.latitude_deg) > kLatitudeConflict_deg)
+			e.option_conflicts.push_back(latitudeConflict("--latitude-deg", e.latitude_deg,
+														  "the drive's metadata latitude_deg", *e.drive.latitude_deg));
+	}
 	else if (e.drive.latitude_deg) e.latitude_deg = *e.drive.latitude_deg;
 	else throw std::runtime_error(path + ": no latitude_deg in the metadata; give --latitude-deg");
 	if (!(std::abs(e.latitude_deg) <= 90)) throw std::runtime_error("--latitude-deg: must be within [-90, 90]");

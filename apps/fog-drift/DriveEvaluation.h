@@ -88,6 +88,9 @@ struct DriveEvaluation
 	double latitude_deg = 0.0;
 	double calibration_earth_rate_dph = 0.0;  //!< vertical Earth rate the calibration's bias held
 	std::string calibration_latitude_source;  //!< "option", "calibration" or "drive"
+	/** An option that overrides a different value in the drive's or the calibration's metadata
+	 * (--latitude-deg, --cal-latitude-deg), one sentence each: printed as notes and in --json. */
+	std::vector<std::string> option_conflicts;
 	/** A calibrated axis has a magnetic section (MagneticModel.h), and the warning when the drive
 	 * lacked the field on some samples (apps/common/FieldWarning.h; "" when it had it throughout). */
 	bool magnetic_term = false;

@@ -8,6 +8,7 @@
  * compares the three dead-reckoned trajectories with the truth. */
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "Options.h"
 #include "Compensation.h"
 #include "DriftOutputs.h"
 #include "DriveData.h"
@@ -109,31 +110,31 @@ int main(int argc, char** argv)
 	return app::runApp("fog-drift", [&] {
 		TCLAP::CmdLine cmd("fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive", ' ',
 						   "0.1");
-		TCLAP::MultiArg<std::string> in("i", "input",
+		app::InputMultiArg in("i", "input",
 										"drive rawlog (FOG, FOG_IDEAL, ODOMETRY, GROUND_TRUTH); repeat for several "
 										"drives: then each drive's figures and their median, quartiles and range",
 										true, "DRIVE.rawlog", cmd);
-		TCLAP::ValueArg<std::string> cal("", "cal", "calibration YAML for the FOG (fog-calibrate); without it the "
+		app::InputArg cal("", "cal", "calibration YAML for the FOG (fog-calibrate); without it the "
 														"compensated variant is left out",
 										 false, "", "CAL.yaml", cmd);
-		TCLAP::ValueArg<std::string> json("", "json", "write the drift figures as JSON", false, "", "F.json", cmd);
-		TCLAP::ValueArg<std::string> csv("", "csv",
+		app::OutputArg json("", "json", "write the drift figures as JSON", false, "", "F.json", cmd);
+		app::OutputArg csv("", "csv",
 										 "write the per-sample heading and position errors of each gyro (one drive)",
 										 false, "", "F.csv", cmd);
-		TCLAP::ValueArg<std::string> plots("", "plots", "write trajectories.png and heading_error.png here (one drive)",
+		app::OutputDirArg plots("", "plots", "write trajectories.png and heading_error.png here (one drive)",
 										   false, "", "DIR", cmd);
-		TCLAP::ValueArg<std::string> odo_out("", "odometry-out",
+		app::OutputArg odo_out("", "odometry-out",
 											 "write the compensated (else raw) dead-reckoned trajectory as a rawlog of "
 											 "CObservationOdometry + CObservationIMU for pf-localization (one drive)",
 											 false, "", "F.rawlog", cmd);
-		TCLAP::ValueArg<double> lat("", "latitude-deg", "latitude [deg] (default: from the drive's metadata)", false,
-									NAN, "DEG", cmd);
-		TCLAP::ValueArg<double> cal_lat("", "cal-latitude-deg",
-										"latitude [deg] of the calibration runs (default: the calibration file's "
-										"latitude_deg, else the drive's): a static calibration's bias absorbs the "
-										"vertical Earth rate there, which the compensator then removes; fog-drift adds "
-										"it back before its own Earth-rate removal so that it is not removed twice",
-										false, NAN, "DEG", cmd);
+		app::RealArg lat(cmd, "latitude-deg", "latitude (default: from the drive's metadata)", "deg",
+						 app::Range::closed(-90, 90), NAN, "DEG");
+		app::RealArg cal_lat(cmd, "cal-latitude-deg",
+							 "latitude of the calibration runs (default: the calibration file's latitude_deg, else the "
+							 "drive's): a static calibration's bias absorbs the vertical Earth rate there, which the "
+							 "compensator then removes; fog-drift adds it back before its own Earth-rate removal so "
+							 "that it is not removed twice",
+							 "deg", app::Range::closed(-90, 90), NAN, "DEG");
 		TCLAP::SwitchArg cal_no_earth("", "cal-no-earth-rate",
 									  "the calibration runs' table rate already included the Earth rate (their bias "
 									  "does not contain it; a version 2 file says so itself: earth_rate.handling)",
@@ -180,11 +181,6 @@ int main(int argc, char** argv)
 			throw std::runtime_error("--plots, --csv and --odometry-out take one drive (-i given " +
 									 std::to_string(inputs.size()) + " times)");
 
-		{
-			std::vector<FileArg> ins{{"--cal", cal.getValue()}};
-			for (const auto& p : inputs) ins.push_back({"-i", p});
-			requireSafeOutputs(ins, {{"--json", json.getValue()}, {"--odometry-out", odo_out.getValue()}, {"--csv", csv.getValue()}});
-		}
 		std::vector<drift::DriveEvaluation> evals;
 		std::vector<std::map<std::string, double>> tables;
 		for (const auto& path : inputs)
@@ -194,6 +190,7 @@ int main(int argc, char** argv)
 			std::printf("fog-drift: %s: %.0f s, %.1f m driven, latitude %.4f deg (Earth rate %.4f deg/h removed)\n",
 						path.c_str(), rep.duration_s, rep.distance_m, e.latitude_deg,
 						units::kEarthRate_dph * std::sin(e.latitude_deg * units::kDegToRad));
+			for (const auto& note : e.option_conflicts) std::printf("  note: %s\n", note.c_str());
 			std::printf("  %zu turns (%.0f deg turned), %zu straights (%.0f s) found on the truth\n", e.segments.turns.size(),
 						e.figures.begin()->second.turned_deg, e.segments.straights.size(),
 						e.figures.begin()->second.straight_time_s);

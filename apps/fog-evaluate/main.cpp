@@ -9,6 +9,7 @@
  * peak-to-peak and the Allan deviation measure spread and are unaffected by it. */
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "Options.h"
 #include "Progress.h"
 #include "PowerCycles.h"
 #include "ThermistorScreeningReport.h"
@@ -52,14 +53,14 @@ int main(int argc, char** argv)
 		TCLAP::CmdLine cmd("fog-evaluate: bias stability (std of tau-s averages), full-temperature range and Allan "
 						   "deviation of a FOG log, raw and (with --cal) compensated",
 						   ' ', "0.1");
-		TCLAP::ValueArg<std::string> in("i", "input", "FOG log (.rawlog, .csv or .csv.gz)", true, "", "IN", cmd);
-		TCLAP::ValueArg<std::string> cal("", "cal", "calibration YAML (fog-calibrate): also evaluate the compensated "
+		app::InputArg in("i", "input", "FOG log (.rawlog, .csv or .csv.gz)", true, "", "IN", cmd);
+		app::InputArg cal("", "cal", "calibration YAML (fog-calibrate): also evaluate the compensated "
 														"output",
 										 false, "", "CAL.yaml", cmd);
-		TCLAP::ValueArg<double> tau("", "tau", "averaging time of the stability and range figures [s]", false, 100.0,
-									"S", cmd);
-		TCLAP::ValueArg<std::string> json("", "json", "write the figures as JSON", false, "", "F.json", cmd);
-		TCLAP::ValueArg<std::string> plots("", "plots",
+		app::RealArg tau(cmd, "tau", "averaging time of the stability and range figures", "s",
+						 app::Range::aboveUpTo(0, 1e6), 100.0, "S");
+		app::OutputArg json("", "json", "write the figures as JSON", false, "", "F.json", cmd);
+		app::OutputDirArg plots("", "plots",
 										   "write bias_vs_time.png, bias_vs_temperature.png, allan_deviation.png here",
 										   false, "", "DIR", cmd);
 		TCLAP::ValueArg<std::string> label("", "label", "FOG sensor label in a rawlog with several", false, "", "FOG",
@@ -72,11 +73,8 @@ int main(int argc, char** argv)
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-evaluate")) return *rc;
 
 		const double tau_s = tau.getValue();
-		if (!std::isfinite(tau_s) || tau_s <= 0)
-			throw std::invalid_argument("--tau must be a positive number of seconds, got " + num(tau_s));
 
 		const std::string path = in.getValue();
-		requireSafeOutputs({{"-i", path}, {"--cal", cal.getValue()}}, {{"--json", json.getValue()}});
 		// The log is read once into a run spilled to a temporary file, screened on the way as
 		// fog-compensate screens it (so that a log gives the same compensated figures here and
 		// there); the figures are computed in passes (memory independent of the log's length, issue 14).

@@ -18,6 +18,7 @@
 #include "Localization.h"
 #include "LocalizationErrors.h"
 #include "LocalizeOutputs.h"
+#include "Options.h"
 #include "Sensors.h"
 #include "World.h"
 
@@ -108,59 +109,56 @@ int main(int argc, char** argv)
 		TCLAP::CmdLine cmd("fog-localize: MRPT particle-filter localization with raw, compensated and ideal FOG "
 						   "heading on a simulated world around a drive",
 						   ' ', "0.1");
-		TCLAP::ValueArg<std::string> arg_drive("", "drive", "drive rawlog (FOG, FOG_IDEAL, ODOMETRY, GROUND_TRUTH) "
+		app::InputArg arg_drive("", "drive", "drive rawlog (FOG, FOG_IDEAL, ODOMETRY, GROUND_TRUTH) "
 															"[default: the bundled datasets/drive.rawlog]",
 											   false, "", "F", cmd);
-		TCLAP::ValueArg<std::string> arg_cal("", "cal", "calibration YAML [default: fitted here on --chamber and "
+		app::InputArg arg_cal("", "cal", "calibration YAML [default: fitted here on --chamber and "
 														"--ratetable (bias + scale factor), written to DIR/calibration.yaml]",
 											 false, "", "CAL.yaml", cmd);
-		TCLAP::ValueArg<std::string> arg_chamber("", "chamber", "chamber run for the fit when no --cal [default: the "
+		app::InputArg arg_chamber("", "chamber", "chamber run for the fit when no --cal [default: the "
 																"bundled datasets/chamber_A.rawlog]",
 												 false, "", "F", cmd);
-		TCLAP::ValueArg<std::string> arg_table("", "ratetable",
+		app::InputArg arg_table("", "ratetable",
 											   "rate-table run of the same gyro for the scale-factor fit when no --cal, "
 											   "or 'none' (bias only) [default: the bundled datasets/ratetable_A.rawlog "
 											   "if present, else none, said on stdout]",
 											   false, "", "F|none", cmd);
-		TCLAP::ValueArg<std::string> arg_out("o", "out", "output folder [default: fog-localize-out]", false,
+		app::OutputDirArg arg_out("o", "out", "output folder [default: fog-localize-out]", false,
 											 "fog-localize-out", "DIR", cmd);
-		TCLAP::ValueArg<std::string> arg_json("", "json", "write the figures as JSON", false, "", "F", cmd);
-		TCLAP::ValueArg<unsigned> arg_seeds("", "seeds", "filter seeds per gyro (>= 1)", false, 5, "N", cmd);
-		TCLAP::ValueArg<unsigned> arg_seed0("", "first-seed", "first filter seed", false, 1, "S", cmd);
-		TCLAP::ValueArg<unsigned> arg_particles("", "particles", "particles per filter", false, 300, "N", cmd);
-		TCLAP::ValueArg<double> arg_period("", "scan-period-s", "time between scans (and filter steps) [s]", false, 1.0,
-										   "S", cmd);
-		TCLAP::ValueArg<double> arg_bias("", "fog-bias-dph",
-										 "motion model: FOG bias uncertainty the filter allows [deg/h]", false, 0.5,
-										 "DPH", cmd);
-		TCLAP::ValueArg<double> arg_horizon("", "fog-horizon-s",
-											"motion model: heading random walk per step = bias * sqrt(dt * horizon) [s]",
-											false, 60.0, "S", cmd);
-		TCLAP::ValueArg<double> arg_sf("", "fog-scale-factor-ppm",
-									   "motion model: heading error per turned angle [ppm]", false, 2000.0, "PPM", cmd);
-		TCLAP::ValueArg<double> arg_pow("", "pow-factor", "likelihood exponent of a scan (rays are not independent)",
-										false, 1.0, "X", cmd);
-		TCLAP::ValueArg<double> arg_rough("", "roughening-k",
-										  "jitter after each resampling, std K * range * N^(-1/3) per dimension "
-										  "(Gordon-Salmond-Smith 1993 roughening; 0 = off)",
-										  false, 0.0, "K", cmd);
-		TCLAP::ValueArg<unsigned> arg_dec("", "lf-decimation", "use every N-th laser ray in the likelihood", false, 1,
-										  "N", cmd);
+		app::OutputArg arg_json("", "json", "write the figures as JSON", false, "", "F", cmd);
+		app::CountArg arg_seeds(cmd, "seeds", "filter seeds per gyro", "filter runs", 1, 1000, 5);
+		app::CountArg arg_seed0(cmd, "first-seed", "first filter seed", "seed", 0, 4294966295ull, 1, "S");
+		app::CountArg arg_particles(cmd, "particles", "particles per filter", "particles", 10, 100000, 300);
+		app::RealArg arg_period(cmd, "scan-period-s", "time between scans (and filter steps)", "s",
+								app::Range::closed(0.1, 10), 1.0, "S");
+		app::RealArg arg_bias(cmd, "fog-bias-dph", "motion model: FOG bias uncertainty the filter allows", "deg/h",
+							  app::Range::closed(0, 1e4), 0.5, "DPH");
+		app::RealArg arg_horizon(cmd, "fog-horizon-s",
+								 "motion model: heading random walk per step = bias * sqrt(dt * horizon)", "s",
+								 app::Range::closed(0, 1e6), 60.0, "S");
+		app::RealArg arg_sf(cmd, "fog-scale-factor-ppm", "motion model: heading error per turned angle", "ppm",
+							app::Range::closed(0, 1e5), 2000.0, "PPM");
+		app::RealArg arg_pow(cmd, "pow-factor", "likelihood exponent of a scan (rays are not independent)", "1",
+							 app::Range::aboveUpTo(0, 10), 1.0);
+		app::RealArg arg_rough(cmd, "roughening-k",
+							   "jitter after each resampling, std K * range * N^(-1/3) per dimension "
+							   "(Gordon-Salmond-Smith 1993 roughening; 0 = off)",
+							   "1", app::Range::closed(0, 10), 0.0, "K");
+		app::CountArg arg_dec(cmd, "lf-decimation", "use every N-th laser ray in the likelihood", "rays", 1, 1000, 1);
 		TCLAP::ValueArg<std::string> arg_fields("", "fields",
 												"where the open fields go: 'turns' (the 3 most turning 4 km windows: "
 												"the gyro's bias and its scale-factor error at each turn act) or "
 												"'straights' (the 3 longest straights: the bias only; on the bundled "
 												"drive the map-matching's entry error dominates there)",
 												false, "turns", "turns|straights", cmd);
-		TCLAP::ValueArg<double> arg_wheel_a3("", "wheel-heading-deg-per-m",
-											 "motion model where the gyro is off (power 0; the wheel odometry alone): "
-											 "heading std per metre driven [deg/m] (MRPT's default Gaussian model's a3, "
-											 "what pf-localization applies to wheel odometry)",
-											 false, 1.0, "DEG", cmd);
-		TCLAP::ValueArg<double> arg_wheel_a4("", "wheel-heading-per-turn",
-											 "motion model where the gyro is off: heading std per turned angle [-] "
-											 "(MRPT's default a4)",
-											 false, 0.05, "X", cmd);
+		app::RealArg arg_wheel_a3(cmd, "wheel-heading-deg-per-m",
+								  "motion model where the gyro is off (power 0; the wheel odometry alone): heading std "
+								  "per metre driven (MRPT's default Gaussian model's a3, what pf-localization applies "
+								  "to wheel odometry)",
+								  "deg/m", app::Range::closed(0, 90), 1.0, "DEG");
+		app::RealArg arg_wheel_a4(cmd, "wheel-heading-per-turn",
+								  "motion model where the gyro is off: heading std per turned angle (MRPT's default a4)",
+								  "1", app::Range::closed(0, 10), 0.05);
 		const char* const recovery_help =
 			"at a turn-on after a gyro-off stretch: 'refix' re-draws the particles around a position and heading "
 			"fix as at the start (the truth, standing for GNSS, as fog-drift re-aligns there), 'none' goes on "
@@ -170,16 +168,7 @@ int main(int argc, char** argv)
 		TCLAP::SwitchArg arg_noscale("", "no-scale-calibration",
 									 "do not calibrate the wheel odometry's distance scale on urban stretches", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-localize", kHelp)) return *rc;
-		if (arg_seeds.getValue() < 1) throw std::runtime_error("--seeds: must be >= 1");
-		if (!(arg_rough.getValue() >= 0)) throw std::runtime_error("--roughening-k: must be >= 0");
-		if (arg_particles.getValue() < 10) throw std::runtime_error("--particles: must be >= 10");
-		if (!(arg_period.getValue() >= 0.1 && arg_period.getValue() <= 10))
-			throw std::runtime_error("--scan-period-s: must be within [0.1, 10] s");
 		const GyroOffRecovery recovery = gyroOffRecoveryFromString(arg_recovery.getValue());
-		if (!(arg_wheel_a3.getValue() >= 0 && arg_wheel_a3.getValue() <= 90))
-			throw std::runtime_error("--wheel-heading-deg-per-m: must be within [0, 90] deg/m");
-		if (!(arg_wheel_a4.getValue() >= 0 && arg_wheel_a4.getValue() <= 10))
-			throw std::runtime_error("--wheel-heading-per-turn: must be within [0, 10]");
 		WorldOptions wopt;
 		wopt.placement = fieldPlacementFromString(arg_fields.getValue());
 		const auto t_start = std::chrono::steady_clock::now();
@@ -288,12 +277,12 @@ int main(int argc, char** argv)
 		for (double t = t0 + 0.5 * arg_period.getValue(); t <= t1; t += arg_period.getValue()) scan_t.push_back(t);
 		const auto scans = simulateScans(*world.grid, drive.truth, scan_t, lopt);
 		MclOptions mopt;
-		mopt.particles = arg_particles.getValue();
+		mopt.particles = arg_particles.get<unsigned>();
 		mopt.motion.heading_bias_dph = arg_bias.getValue();
 		mopt.motion.horizon_s = arg_horizon.getValue();
 		mopt.motion.scale_factor_ppm = arg_sf.getValue();
 		mopt.pow_factor = arg_pow.getValue();
-		mopt.lf_decimation = arg_dec.getValue();
+		mopt.lf_decimation = arg_dec.get<unsigned>();
 		mopt.roughening_k = arg_rough.getValue();
 		mopt.calibrate_odometry_scale = !arg_noscale.getValue();
 		mopt.wheel_only_motion.gaussianModel.a3 = arg_wheel_a3.getValue() * M_PI / 180.0;
@@ -336,9 +325,9 @@ int main(int argc, char** argv)
 						refixes.push_back({k, mrpt::poses::CPose2D(p.x_m, p.y_m, p.yaw_rad)});
 					}
 			gr.refixes = refixes.size();
-			for (unsigned s = 0; s < arg_seeds.getValue(); ++s)
+			for (unsigned s = 0; s < arg_seeds.get<unsigned>(); ++s)
 			{
-				const unsigned seed = arg_seed0.getValue() + s;
+				const unsigned seed = arg_seed0.get<unsigned>() + s;
 				const MclRun run = runMcl(world, scans, scan_t, odo, so.step, refixes, start, mopt, seed);
 				gr.runs.push_back(computeErrors(run, drive.truth, world.stretches));
 				gr.seeds.push_back(seed);

@@ -27,6 +27,7 @@
 
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "Options.h"
 
 using namespace mrpt_fog;
 
@@ -147,16 +148,16 @@ int main(int argc, char** argv)
 			"fog-paper: the seed paper's Tables 1-3 (uncompensated, M1-M4, multi-point with 1-4 points, orders 5/3) "
 			"on the simulated gyro, in-sample on run A (seed profile) and held out on run B, beside the paper's.",
 			' ', "1.0");
-		TCLAP::ValueArg<std::string> json("", "json", "write the tables as JSON", false, "", "F", cmd);
-		TCLAP::ValueArg<std::string> plots("", "plots", "directory for fig5_points.png and fig2_temperatures.png", false,
+		app::OutputArg json("", "json", "write the tables as JSON", false, "", "F", cmd);
+		app::OutputDirArg plots("", "plots", "directory for fig5_points.png and fig2_temperatures.png", false,
 										   "", "DIR", cmd);
-		TCLAP::ValueArg<std::string> run_a("", "run-a", "run A log (default: simulate the seed profile)", false, "",
+		app::InputArg run_a("", "run-a", "run A log (default: simulate the seed profile)", false, "",
 										   "FILE", cmd);
-		TCLAP::ValueArg<std::string> run_b("", "run-b", "run B log (default: simulate profile B)", false, "", "FILE",
+		app::InputArg run_b("", "run-b", "run B log (default: simulate profile B)", false, "", "FILE",
 										   cmd);
-		TCLAP::ValueArg<unsigned long long> seed("", "seed", "simulation seed (default 20240501)", false,
-												 sim::kDefaultSeed, "N", cmd);
-		TCLAP::ValueArg<double> rate("", "rate-hz", "simulation sample rate [Hz] (default 10)", false, 10.0, "F", cmd);
+		app::CountArg seed(cmd, "seed", "simulation seed (default 20240501)", "seed", 0, UINT64_MAX, sim::kDefaultSeed);
+		app::RealArg rate(cmd, "rate-hz", "simulation sample rate (default 10)", "Hz", app::Range::closed(0.01, 1000), 10.0,
+						  "F");
 		TCLAP::ValueArg<std::string> selection(
 			"", "selection", "term selection: none (plain least squares on all terms, the paper's way; default) or auto",
 			false, "none", "none|auto", cmd);

@@ -28,6 +28,7 @@
 
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "Options.h"
 #include "StreamedRun.h"
 
 using namespace mrpt_fog;
@@ -65,20 +66,21 @@ int main(int argc, char** argv)
 			"Built-in profiles: seed, calibration (one run that calibrates bias, rate terms and warm-up), B, warmup, rich, ratetable, drive_cabin(_mild, _hot), and drive (vehicle scenario, "
 			"cabin chosen by --cabin).",
 			' ', "1.0");
-		TCLAP::ValueArg<std::string> profile("p", "profile", "built-in profile name or a profile YAML file", true, "",
+		app::InputArg profile("p", "profile", "built-in profile name or a profile YAML file", true, "",
 											 "NAME|FILE.yaml", cmd);
-		TCLAP::ValueArg<std::string> out("o", "output", "output file: .rawlog, .csv or .csv.gz", true, "", "OUT", cmd);
-		TCLAP::ValueArg<unsigned long long> seed("", "seed", "run seed (default 20240501)", false, kDefaultSeed, "N", cmd);
+		app::OutputArg out("o", "output", "output file: .rawlog, .csv or .csv.gz", true, "", "OUT", cmd);
+		app::CountArg seed(cmd, "seed", "run seed (default 20240501)", "seed", 0, UINT64_MAX, kDefaultSeed);
 		std::string effect_help =
 			"error source selection (repeatable): ID = only the listed ids, -ID removes, +ID adds, all, none. Ids:";
 		for (const auto& d : sim::effectDescriptors()) effect_help += std::string(" ") + d.id;
 		TCLAP::MultiArg<std::string> effect("", "effect", effect_help, false, "ID", cmd);
-		TCLAP::ValueArg<std::string> device("", "device", "device YAML (overlay on the default device)", false, "",
+		app::InputArg device("", "device", "device YAML (overlay on the default device)", false, "",
 											"FILE.yaml", cmd);
-		TCLAP::ValueArg<double> rate("", "rate-hz", "output sample rate [Hz] (default 10)", false, 10.0, "F", cmd);
-		TCLAP::ValueArg<double> duration("", "duration-s", "keep only the first F seconds of the run", false, -1.0, "F",
-										 cmd);
-		TCLAP::ValueArg<std::string> cabin("", "cabin",
+		app::RealArg rate(cmd, "rate-hz", "output sample rate (default 10)", "Hz", app::Range::closed(1e-4, 1000), 10.0,
+						  "F");
+		app::RealArg duration(cmd, "duration-s", "keep only the first F seconds of the run (default: all of it)", "s",
+							  app::Range::aboveUpTo(0, 1e9), NAN, "F");
+		app::InputArg cabin("", "cabin",
 										   "cabin profile of the vehicle scenario (--profile drive): a preset "
 										   "(drive_cabin: winter cold start, the default; drive_cabin_mild; "
 										   "drive_cabin_hot) or a profile YAML file; a {type: power, on: false} "
@@ -95,14 +97,12 @@ int main(int argc, char** argv)
 											 "with --triad in the chamber: the vertical axis, about which the table "
 											 "turns (a rate-table run calibrates that axis' scale factor)",
 											 false, "z", "x|y|z", cmd);
-		TCLAP::ValueArg<std::string> json("", "json", "write figures as JSON", false, "", "F", cmd);
+		app::OutputArg json("", "json", "write figures as JSON", false, "", "F", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-sim")) return *rc;
 
 		const std::string ext = fileExtension(out.getValue());
 		if (ext != ".rawlog" && ext != ".csv" && ext != ".csv.gz")
 			throw std::invalid_argument(out.getValue() + ": output must end in .rawlog, .csv or .csv.gz");
-		requireSafeOutputs({{"--profile", profile.getValue()}, {"--device", device.getValue()}},
-						   {{"-o", out.getValue()}, {"--json", json.getValue()}});
 		SimSettings settings;
 		settings.seed = seed.getValue();
 		settings.rate_hz = rate.getValue();
@@ -129,8 +129,8 @@ int main(int argc, char** argv)
 		{
 			// A single-axis run is simulated and written sample by sample (issue 14).
 			std::vector<std::pair<std::string, std::string>> extra;
-			if (duration.getValue() > 0) extra.emplace_back("sim.duration_s", std::to_string(duration.getValue()));
-			const double max_s = duration.getValue() > 0 ? duration.getValue() : INFINITY;
+			if (duration.isSet()) extra.emplace_back("sim.duration_s", std::to_string(duration.getValue()));
+			const double max_s = duration.isSet() ? duration.getValue() : INFINITY;
 			sum = vehicle ? app::writeDriveStreamed(out.getValue(), prof, dev, settings, max_s, extra)
 						  : app::writeChamberStreamed(out.getValue(), prof, dev, settings, max_s, extra);
 			transient_C = sum.coil_transient_C;
@@ -147,7 +147,7 @@ int main(int argc, char** argv)
 				fog = std::move(d.fog);
 				ideal_rate = d.fog_ideal.rate_dph[2];
 				transient_C = d.coil_transient_C;
-				if (duration.getValue() > 0)
+				if (duration.isSet())
 				{
 					fog = truncated(fog, duration.getValue());
 					const auto end = mrpt::Clock::fromDouble(fog.epoch_s + duration.getValue() + 1e-6);
@@ -161,11 +161,11 @@ int main(int argc, char** argv)
 			else
 			{
 				fog = triad.getValue() ? simulateTriadChamber(prof, dev, settings, up) : simulateChamber(prof, dev, settings);
-				if (duration.getValue() > 0) fog = truncated(fog, duration.getValue());
+				if (duration.isSet()) fog = truncated(fog, duration.getValue());
 			}
 			sim_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 			if (fog.size() < 2) throw std::invalid_argument("run has fewer than 2 samples (check --duration-s)");
-			if (duration.getValue() > 0) fog.setMetadata("sim.duration_s", std::to_string(duration.getValue()));
+			if (duration.isSet()) fog.setMetadata("sim.duration_s", std::to_string(duration.getValue()));
 
 			if (ext == ".rawlog")
 				writeFogRawlog(out.getValue(), fog, others);

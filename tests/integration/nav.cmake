@@ -69,6 +69,11 @@ if(TARGET fog-drift)
     -DDIR=${NAV_DRIVE_DIR} -P ${FOG_SOURCE_DIR}/tests/nav/integration/magnetic_warning_check.cmake)
   set_tests_properties(nav.fog_drift.magnetic_warning PROPERTIES FIXTURES_REQUIRED nav_drift_json
     LABELS "nav;integration")
+  # an option overriding a different latitude in the metadata: a note and --json option_conflicts
+  add_test(NAME nav.fog_drift.latitude_conflict_noted COMMAND ${CMAKE_COMMAND} -DDRIFT=$<TARGET_FILE:fog-drift>
+    -DDIR=${NAV_DRIVE_DIR} -P ${FOG_SOURCE_DIR}/tests/nav/integration/latitude_conflict_check.cmake)
+  set_tests_properties(nav.fog_drift.latitude_conflict_noted PROPERTIES FIXTURES_REQUIRED nav_drift_json
+    LABELS "nav;integration")
   add_test(NAME nav.fog_drift.check COMMAND nav_test_drive check ${NAV_DRIVE_DIR}/drift.json)
   set_tests_properties(nav.fog_drift.check PROPERTIES FIXTURES_REQUIRED nav_drift_json LABELS "nav;integration")
   # The same drive with the gyro off for 250 s (power 0 rows), and a fog-sim drive with a

@@ -122,6 +122,25 @@ TEST(HostileLogs, AbsurdRateRefusedWithLine)
 	EXPECT_NE(ioErrorOf([&] { readFogCsv(d.path("t.csv")); }).find("t.csv:2: column 3 (table_rate_dph)"), std::string::npos);
 }
 
+// An applied field beyond 1e4 uT (10 mT) is no gyro test's: refused naming the line and column
+// in a CSV and the object in a rawlog (was: 1e300 uT compensated to -2e296 deg/h, silently).
+TEST(HostileLogs, AbsurdFieldRefusedWithLine)
+{
+	iotest::ScratchDir d;
+	writeText(d.path("f.csv"), "time_s,rate_z_dph,field_uT\n0,1,50\n0.1,1,1e300\n");
+	const std::string e = ioErrorOf([&] { readFogCsv(d.path("f.csv")); });
+	EXPECT_NE(e.find("f.csv:3: column 3 (field_uT): applied field 1e300 uT is beyond the limit of 10000 uT"),
+			  std::string::npos)
+		<< e;
+	writeText(d.path("ok.csv"), "time_s,rate_z_dph,field_uT\n0,1,-10000\n0.1,1,\n");
+	FogSeries s = readFogCsv(d.path("ok.csv"));  // -1e4 uT (the limit) and an empty cell: read
+	EXPECT_EQ(s.field_uT[0], -10000.0);
+	s.field_uT = {50.0, 1e6};
+	writeFogRawlog(d.path("f.rawlog"), s);
+	const std::string r = ioErrorOf([&] { readFogRawlog(d.path("f.rawlog")); });
+	EXPECT_NE(r.find("field_uT 1000000 uT is beyond the limit of 10000 uT"), std::string::npos) << r;
+}
+
 // A 10 kB cell of binary bytes: the message shows 40 bytes, escaped, and the length.
 TEST(HostileLogs, LongBinaryCellCutAndEscaped)
 {

@@ -222,3 +222,42 @@ TEST(MagneticCalibration, BatchEqualsStreamingWithTheField)
 		EXPECT_EQ(comp.counters().field_unknown_samples, 0u);
 	}
 }
+
+// The term's contribution is bounded, not only its coefficient: |dph_per_uT| x 1e4 uT (the
+// largest field a log may hold) must stay within 1e6 deg/h (was: 1e6 deg/h per uT accepted,
+// a bias of 5e7 deg/h at 50 uT); a recorded field range beyond 1e4 uT is refused.
+TEST(MagneticCalibration, TermContributionIsBounded)
+{
+	const std::string good = calibrationToYaml(withMagnetic(0.000244140625));
+	const auto withCoef = [&](const std::string& v) {
+		return replaced(good, "dph_per_uT: 0.000244140625 ", "dph_per_uT: " + v + " ");
+	};
+	EXPECT_EQ(errorOf(withCoef("100")), "");  // 1e6 deg/h at 1e4 uT: the bound itself
+	for (const char* v : {"100.5", "1000000", "-1000000"})
+	{
+		const std::string e = errorOf(withCoef(v));
+		EXPECT_NE(e.find("axes[0].magnetic.dph_per_uT"), std::string::npos) << v << " -> " << e;
+		EXPECT_NE(e.find("at 10000 uT"), std::string::npos) << v << " -> " << e;
+	}
+	const std::string e = errorOf(replaced(good, "field_range_uT: [-50, 100]", "field_range_uT: [-50, 20000]"));
+	EXPECT_NE(e.find("axes[0].magnetic.field_range_uT: beyond the plausible field of 10000 uT"), std::string::npos) << e;
+}
+
+// Fields outside the calibration's recorded range [-50, 100] uT are counted, with the largest
+// distance beyond it, as temperatures outside the calibrated range are; the term still applies.
+TEST(MagneticCalibration, FieldOutsideTheRecordedRangeIsCounted)
+{
+	FogSeries b = fogtest::makeCoilRun("B", 85);
+	b.field_uT = fieldSteps(b);
+	const Calibration cal = withMagnetic(4e-4);
+	const CompensatedSeries inside = compensate(cal, b);
+	EXPECT_EQ(inside.counters.field_outside_samples, 0u);
+	EXPECT_EQ(inside.counters.max_field_excursion_uT, 0.0);
+	for (std::size_t i = 0; i < 10; i++) b.field_uT[i] = 150.0;  // 50 uT above
+	for (std::size_t i = 10; i < 13; i++) b.field_uT[i] = -80.0;  // 30 uT below
+	const CompensatedSeries out = compensate(cal, b);
+	EXPECT_EQ(out.counters.field_outside_samples, 13u);
+	EXPECT_EQ(out.counters.max_field_excursion_uT, 50.0);
+	const CompensatedSeries plain = compensate(biasOnly(), b);
+	EXPECT_EQ(out.bias_dph[0], plain.bias_dph[0] + 4e-4 * 150.0);
+}

@@ -346,6 +346,10 @@ class CsvReaderImpl : public FogLogReader::Impl
 						if (col.kind == Column::Kind::TableRate && std::abs(v) > limits_.max_abs_rate_dph)
 							failCell(line, c, "table rate " + shown(cell) + " deg/h is beyond the limit of " +
 												  io::formatNumber(limits_.max_abs_rate_dph) + " deg/h");
+						if (col.kind == Column::Kind::Field && std::abs(v) > limits_.max_abs_field_uT)
+							failCell(line, c, "applied field " + shown(cell) + " uT is beyond the limit of " +
+												  io::formatNumber(limits_.max_abs_field_uT) +
+												  " uT (no gyro test applies that)");
 					}
 					if (col.kind == Column::Kind::Temp) x.temp_C[col.index] = v;
 					else (col.kind == Column::Kind::TableRate ? x.table_rate_dph : x.field_uT) = v;

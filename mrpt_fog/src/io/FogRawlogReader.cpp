@@ -190,6 +190,14 @@ class RawlogReaderImpl : public FogLogReader::Impl
 		}
 		x.table_rate_dph = o->hasTableRate ? o->tableRate_dph : NAN;
 		x.field_uT = o->hasField ? o->field_uT : NAN;
+		if (std::isinf(x.table_rate_dph) || std::abs(x.table_rate_dph) > limits_.max_abs_rate_dph)
+			throw FogIoError(path_ + ": object #" + std::to_string(index) + ": sensor '" + chosen_ + "': table rate " +
+							 io::formatNumber(x.table_rate_dph) + " deg/h is beyond the limit of " +
+							 io::formatNumber(limits_.max_abs_rate_dph) + " deg/h");
+		if (std::isinf(x.field_uT) || std::abs(x.field_uT) > limits_.max_abs_field_uT)
+			throw FogIoError(path_ + ": object #" + std::to_string(index) + ": sensor '" + chosen_ + "': field_uT " +
+							 io::formatNumber(x.field_uT) + " uT is beyond the limit of " +
+							 io::formatNumber(limits_.max_abs_field_uT) + " uT (no gyro test applies that)");
 		x.power = o->hasPower ? (o->powerOn ? 1.0 : 0.0) : NAN;
 		samples++;
 		if (o.use_count() == 1 && spare_.size() < 4) spare_.push_back(o);  // reused by the fast path

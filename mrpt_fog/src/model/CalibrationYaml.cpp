@@ -6,6 +6,7 @@
 #include <mrpt_fog/common/YamlGuard.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/common/NumberFormat.h>
+#include <mrpt_fog/obs/Units.h>
 
 #include <cmath>
 #include <cstdio>
@@ -545,6 +546,13 @@ MagneticModel readMagnetic(const Reader& rd, const yaml& n, const std::string& p
 	if (!std::isfinite(range[0]) || !std::isfinite(range[1]))
 		rd.fail(path + ".field_range_uT", "must be finite numbers");
 	if (range[0] > range[1]) rd.fail(path + ".field_range_uT", "min > max");
+	if (std::abs(range[0]) > units::kMaxAbsField_uT || std::abs(range[1]) > units::kMaxAbsField_uT)
+		rd.fail(path + ".field_range_uT", "beyond the plausible field of " + num(units::kMaxAbsField_uT) + " uT");
+	// the term's contribution, not only its coefficient: up to the largest field a log may hold
+	if (std::abs(m.dph_per_uT) * units::kMaxAbsField_uT > kMaxCoef_dph)
+		rd.fail(path + ".dph_per_uT", num(m.dph_per_uT) + " deg/h per uT gives a term of " +
+										  num(std::abs(m.dph_per_uT) * units::kMaxAbsField_uT) + " deg/h at " +
+										  num(units::kMaxAbsField_uT) + " uT: " + kCoefWhy);
 	m.field_min_uT = range[0];
 	m.field_max_uT = range[1];
 	m.samples = rd.count(n, "samples", path, 0, kMaxSamples);

@@ -353,7 +353,16 @@ void Compensator::notePowerOnFromMetadata(const FogSeries& log)
 		if (std::isnan(field_uT_))
 			counters_.field_unknown_samples++;
 		else
+		{
 			out.bias_dph += magnetic_->bias_dph(field_uT_);
+			const double beyond_uT =
+				std::max(magnetic_->field_min_uT - field_uT_, field_uT_ - magnetic_->field_max_uT);
+			if (beyond_uT > 0)
+			{
+				counters_.field_outside_samples++;
+				counters_.max_field_excursion_uT = std::max(counters_.max_field_excursion_uT, beyond_uT);
+			}
+		}
 	}
 	double r = raw_dph - out.bias_dph;
 	if (sf_)

@@ -9,7 +9,11 @@
  * how many objects were read; times must be strictly increasing.
  *
  * Input limits (ReadLimits), each failing early with the limit named: line length, thermistor
- * count (so the number of columns), and plausible numbers: |rate| <= max_abs_rate_dph.
+ * count (so the number of columns), and plausible numbers: |rate| and |table rate| <=
+ * max_abs_rate_dph, |applied field| <= max_abs_field_uT (a cell beyond is refused, naming the file,
+ * line or object and the column). Temperatures: infinite is refused; implausible finite
+ * readings are left to the thermistor screening (ThermistorHealth.h: dropout) and the
+ * out-of-calibrated-range warning of the programs.
  *
  * Rawlog: the FOG sensor is `fog_label`, or the first FOG label met when empty (a second FOG
  * label is then an error asking for --label). Every other observation (other sensors, other FOG
@@ -20,6 +24,7 @@
 
 #include <mrpt/obs/CObservation.h>
 #include <mrpt_fog/obs/FogSeriesLayout.h>  // FogSeries, emptySeriesLike
+#include <mrpt_fog/obs/Units.h>
 
 #include <array>
 #include <cstdint>
@@ -38,6 +43,9 @@ struct ReadLimits
 	std::size_t max_thermistors = 64;  //!< per sensor (screening costs n^2 per sample)
 	/** |gyro rate| [deg/h]: 1e8 deg/h = 27 800 deg/s, beyond any gyro's range. */
 	double max_abs_rate_dph = 1e8;
+	/** |applied axial field| [uT] (units::kMaxAbsField_uT, 10 mT; MagneticModel.h bounds a
+	 * magnetic term's contribution with it). */
+	double max_abs_field_uT = units::kMaxAbsField_uT;
 };
 
 /** One sample of a FOG log, in the reader's layout (FogLogReader::header()). */

@@ -99,6 +99,10 @@ struct CompensationCounters
 	/** Samples without a known applied field (noteField never called, or NaN) while the
 	 * calibration has a magnetic section: compensated without the field term. */
 	std::size_t field_unknown_samples = 0;
+	/** Samples whose applied field lies outside the calibration's recorded field range
+	 * (MagneticModel::field_min_uT..field_max_uT): the term is extrapolated there. */
+	std::size_t field_outside_samples = 0;
+	double max_field_excursion_uT = 0;  //!< largest distance of the field beyond that range [uT]
 };
 
 /** Which build of the per-sample code a Compensator runs. Both give bitwise the same numbers

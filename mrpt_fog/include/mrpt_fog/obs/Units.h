@@ -20,4 +20,8 @@ constexpr double kRadPerSecToDegPerHour = kRadToDeg * kSecondsPerHour;
 constexpr double kEarthRate_dph = 7.292115e-5 * kRadPerSecToDegPerHour;
 /** Earth rotation rate [rad/s] (WGS-84). */
 constexpr double kEarthRate_rad_s = 7.292115e-5;
+/** Largest plausible applied axial magnetic field [uT]: 10 mT, 150x the Earth's field and beyond
+ * the test coils of a gyro lab. Readers refuse larger field cells; a calibration's magnetic term
+ * must stay a plausible bias up to it. */
+constexpr double kMaxAbsField_uT = 1e4;
 }  // namespace mrpt_fog::units
