@@ -8,6 +8,7 @@
  * its vertical component is a constant, which moves mean_dph only; stability, range,
  * peak-to-peak and the Allan deviation measure spread and are unaffected by it. */
 #include "AppMain.h"
+#include "LogInput.h"
 #include "CommandLine.h"
 #include "Progress.h"
 #include "PowerCycles.h"
@@ -69,6 +70,7 @@ int main(int argc, char** argv)
 								   "compensating (fog-compensate's screening)",
 								   cmd);
 		TCLAP::SwitchArg quiet("q", "quiet", "No progress line on stderr while the log is read", cmd);
+		app::LogInput log_input(cmd, "fog-evaluate");
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-evaluate")) return *rc;
 
 		const double tau_s = tau.getValue();
@@ -76,14 +78,15 @@ int main(int argc, char** argv)
 			throw std::invalid_argument("--tau must be a positive number of seconds, got " + num(tau_s));
 
 		const std::string path = in.getValue();
-		requireSafeOutputs({{"-i", path}, {"--cal", cal.getValue()}}, {{"--json", json.getValue()}});
+		requireSafeOutputs({{"-i", path}, {"--cal", cal.getValue()}, {"--format", log_input.formatPath()}}, {{"--json", json.getValue()}});
 		// The log is read once into a run spilled to a temporary file, screened on the way as
 		// fog-compensate screens it (so that a log gives the same compensated figures here and
 		// there); the figures are computed in passes (memory independent of the log's length, issue 14).
 		app::StreamScreening screener(!no_screen.getValue());
 		app::Progress progress("fog-evaluate: reading " + path, quiet.getValue());
 		const FogRun run = readFogRun(path, label.getValue(), screener.hook(),
-									  [&](std::uint64_t n, std::uint64_t done, std::uint64_t total) { progress.update(n, done, total); });
+									  [&](std::uint64_t n, std::uint64_t done, std::uint64_t total) { progress.update(n, done, total); },
+									  log_input.options());
 		progress.finish();
 		const ThermistorScreening screening = screener.result(run);
 		if (run.size() < 2) throw std::invalid_argument(path + ": fewer than 2 samples");
@@ -212,6 +215,7 @@ int main(int argc, char** argv)
 		{
 			JsonValue j = JsonValue::object();
 			j["input"] = path;
+			j["input_notices"] = log_input.json();
 			j["samples"] = run.size();
 			j["duration_s"] = duration_s;
 			j["axis"] = std::string(1, axis);

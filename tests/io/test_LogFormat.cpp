@@ -84,8 +84,8 @@ TEST(LogFormat, VendorLayoutReadsAsTheNativeCsv)
 	std::string native = "# sensor: FOG_Z\n# epoch_s: 1700000000\n# latitude_deg: 45.5\n# site: lab 3\n"
 						 "# thermistor Ti1: side=inner angle_deg=0\n# thermistor To1: side=outer angle_deg=180\n"
 						 "time_s,rate_z_dph,temp_Ti1_C,temp_To1_C,table_rate_dph,power\n";
-	std::string vendor = "Logger v2 export\nrun: 17\n\"Status\";\"T coil out 1 [degC]\";\"Time [ms]\";\"Gyro Z [deg/s]\";"
-						 "\"T coil in 1 [K]\";\"Table [rad/s]\";\"PWR\"\n";
+	std::string vendor = "Logger v2 export\nrun: 17\n\"Status\";\"Time [ms]\";\"Gyro Z [deg/s]\";\"T coil in 1 [K]\";"
+						 "\"T coil out 1 [degC]\";\"Table [rad/s]\";\"PWR\"\n";
 	const double pi = 3.14159265358979323846;
 	for (int k = 0; k < 50; k++)
 	{
@@ -93,8 +93,8 @@ TEST(LogFormat, VendorLayoutReadsAsTheNativeCsv)
 		char line[512];
 		std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g,%.17g,1\n", t, r + tab, ti, to, tab);
 		native += line;
-		std::snprintf(line, sizeof line, "\"ok; fine\";%.17g;%.17g;%.17g;%.17g;%.17g;1\n", to, t * 1000, (r + tab) / 3600,
-					  ti + 273.15, tab / 3600 * pi / 180);
+		std::snprintf(line, sizeof line, "\"ok; fine\";%.17g;%.17g;%.17g;%.17g;%.17g;1\n", t * 1000, (r + tab) / 3600,
+					  ti + 273.15, to, tab / 3600 * pi / 180);
 		vendor += line;
 	}
 	spit(dir.path("native.csv"), native);

@@ -414,9 +414,11 @@ class CsvReaderImpl : public FogLogReader::Impl
 				place(*f.rates[a], Column::Kind::Rate, a).scale = degPerHourPer(f.rates[a]->unit);
 				s_.has_axis[a] = true;
 			}
-		// Thermistors in the format's order (sorted by name).
+		// Thermistors in the order of their columns, as the native CSV orders them (the fit's
+		// term order follows it).
 		std::vector<const ThermistorColumn*> th;
 		for (const auto& t : f.thermistors) th.push_back(&t);
+		std::sort(th.begin(), th.end(), [&](auto* a, auto* b) { return find(*a) < find(*b); });
 		if (th.size() > limits_.max_thermistors)
 			failFormat("thermistors", "more than the limit of " + std::to_string(limits_.max_thermistors) + " thermistors");
 		for (const ThermistorColumn* t : th)
@@ -453,7 +455,7 @@ class CsvReaderImpl : public FogLogReader::Impl
 				n_ignored++;
 			}
 		if (n_ignored)
-			notes_.push_back(path_ + ": " + std::to_string(n_ignored) + " column" + (n_ignored > 1 ? "s" : "") +
+			notes_.push_back(std::to_string(n_ignored) + " column" + (n_ignored > 1 ? "s" : "") +
 							 " not in the format " + f.source + ", ignored: " + ignored);
 		for (const auto& [key, value] : f.metadata)
 		{

@@ -94,7 +94,7 @@ struct LogFormat
 	FormatColumn time;
 	TimeUnit time_unit = TimeUnit::s;
 	std::array<std::optional<RateColumn>, 3> rates;  //!< x, y, z
-	std::vector<ThermistorColumn> thermistors;  //!< sorted by name (the log's thermistor order)
+	std::vector<ThermistorColumn> thermistors;  //!< sorted by name; a log orders them by column
 	std::optional<RateColumn> table_rate;
 	std::optional<FormatColumn> field;  //!< uT
 	std::optional<FormatColumn> power;  //!< 1 / 0
