@@ -28,10 +28,29 @@ def main():
     ap.add_argument("--delimiter", default=";")
     ap.add_argument("--preamble", type=int, default=2)
     ap.add_argument("--max-rows", type=int, default=0, help="stop after this many kept rows (0: all)")
+    ap.add_argument("--average", action="store_true",
+                    help="each kept row is the mean of its --every rows (time: the block's mean; power: "
+                         "its minimum; empty cells left out), as a logger averaging its samples")
+    ap.add_argument("--logger-digits", action="store_true",
+                    help="print as a logger would (integer ms, 7 significant digits of rate, 0.01 C) "
+                         "instead of every digit")
     a = ap.parse_args()
 
     opener = gzip.open if a.input.endswith(".gz") else open
-    meta, body, kept = [], [], []
+    meta, body, kept, block = [], [], [], []
+
+    def mean_row(rows):
+        cells = []
+        for j, name in enumerate(body[0].split(",")):
+            vals = [float(r[j]) for r in rows if r[j] != ""]
+            if name == "power":
+                cells.append("%d" % min(vals))
+            elif not vals or (name.startswith("rate_") and any(r[j] == "" for r in rows)):
+                cells.append("")  # a gyro-off sample in the block: no rate
+            else:
+                cells.append(repr(sum(vals) / len(vals)))
+        return ",".join(cells)
+
     with opener(a.input, "rt", newline="") as f:
         k = 0
         for line in f:
@@ -41,10 +60,15 @@ def main():
             elif not body:
                 body.append(line)
             elif line:
-                if k % a.every == 0:
+                if a.average:
+                    block.append(line.split(","))
+                    if len(block) == a.every:
+                        kept.append(mean_row(block))
+                        block = []
+                elif k % a.every == 0:
                     kept.append(line)
-                    if a.max_rows and len(kept) >= a.max_rows:
-                        break
+                if a.max_rows and len(kept) >= a.max_rows:
+                    break
                 k += 1
     header = body[0].split(",")
 
@@ -58,7 +82,7 @@ def main():
         if col.startswith("rate_") and col.endswith("_dph"):
             return "Gyro %s [deg/s]" % col[5].upper()
         if col.startswith("temp_") and col.endswith("_C"):
-            return "Temp %s [%s]" % (col[5:-2], "degC" if a.temp_unit == "C" else "K")
+            return "%s [%s]" % (col[5:-2], "degC" if a.temp_unit == "C" else "K")
         if col == "table_rate_dph":
             return "Table [deg/s]"
         if col == "power":
@@ -71,14 +95,21 @@ def main():
         if cell == "":
             return ""
         v = float(cell)
+        if col == "power":
+            return "%d" % int(v)
         if col == "time_s":
             v = v * 1000.0
+            if a.logger_digits:
+                return "%d" % round(v)
         elif col.endswith("_dph"):
             v = v / 3600.0
-        elif col.startswith("temp_") and a.temp_unit == "K":
-            v = v + 273.15
-        elif col == "power":
-            return "%d" % int(v)
+            if a.logger_digits:
+                return "%.7g" % v
+        elif col.startswith("temp_"):
+            if a.temp_unit == "K":
+                v = v + 273.15
+            if a.logger_digits:
+                return "%.2f" % v
         return repr(v)
 
     d = a.delimiter

@@ -77,3 +77,11 @@ if(FOG_PYTHON3_IO AND TARGET fog-calibrate AND TARGET fog-evaluate)
   set_tests_properties(io.format_equivalence_full PROPERTIES LABELS "io;integration;long"
     PASS_REGULAR_EXPRESSION "format_equivalence: same calibration and figures")
 endif()
+
+# The quickstart of docs/guide/calibrate-your-gyro.md on examples/your_gyro/, as written.
+if(TARGET fog-convert AND TARGET fog-calibrate AND TARGET fog-evaluate AND TARGET fog-compensate)
+  add_test(NAME guide.calibrate_your_gyro COMMAND sh ${io_scripts}/guide_quickstart.sh ${FOG_SOURCE_DIR}
+    $<TARGET_FILE_DIR:fog-convert> ${io_work}/guide_quickstart)
+  set_tests_properties(guide.calibrate_your_gyro PROPERTIES LABELS "io;integration"
+    PASS_REGULAR_EXPRESSION "guide_quickstart: the quickstart runs")
+endif()

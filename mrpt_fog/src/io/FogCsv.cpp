@@ -119,6 +119,23 @@ char detectDelimiter(std::string_view line)
 	return best;
 }
 
+/** compensated_rate_<a>_dph, a column of fog-compensate's CSV. */
+bool isCompensatedRate(const std::string& n)
+{
+	return n.size() == 22 && n.rfind("compensated_rate_", 0) == 0 && n[17] >= 'x' && n[17] <= 'z' &&
+		   n.compare(18, 4, "_dph") == 0;
+}
+
+/** raw_rate_<a>_dph, bias_<a>_dph, flags, flags_<a>: fog-compensate's other columns. */
+bool isCompensationDetail(const std::string& n)
+{
+	const auto axisCol = [&](const char* prefix, std::size_t p) {
+		return n.size() == p + 5 && n.rfind(prefix, 0) == 0 && n[p] >= 'x' && n[p] <= 'z' && n.compare(p + 1, 4, "_dph") == 0;
+	};
+	return axisCol("raw_rate_", 9) || axisCol("bias_", 5) || n == "flags" ||
+		   (n.size() == 7 && n.rfind("flags_", 0) == 0 && n[6] >= 'x' && n[6] <= 'z');
+}
+
 /** A cell for an error message: cut to 40 bytes, binary bytes escaped. */
 std::string shown(std::string_view cell) { return io::detail::quoteForError(cell.data(), cell.size()); }
 
@@ -331,6 +348,22 @@ class CsvReaderImpl : public FogLogReader::Impl
 				col.index = n[5] - 'x';
 				s_.has_axis[col.index] = true;
 			}
+			else if (isCompensatedRate(n))
+			{
+				// fog-compensate's CSV: its compensated rate is the log's rate
+				col.kind = Column::Kind::Rate;
+				col.index = n[17] - 'x';
+				if (s_.has_axis[col.index])
+					fail(line, "column " + std::to_string(c + 1) + " '" + shown(n) + "': a second rate column for axis " +
+								   std::string(1, n[17]));
+				s_.has_axis[col.index] = true;
+				compensated_ = true;
+			}
+			else if (isCompensationDetail(n))
+			{
+				col.kind = Column::Kind::Ignored;
+				compensation_details_ += (compensation_details_.empty() ? "" : ", ") + n;
+			}
 			else if (n == "table_rate_dph") col.kind = Column::Kind::TableRate;
 			else if (n == "field_uT") col.kind = Column::Kind::Field;
 			else if (n == "power") col.kind = Column::Kind::Power;
@@ -364,6 +397,15 @@ class CsvReaderImpl : public FogLogReader::Impl
 		if (seen.count("table_rate_dph")) has_table_ = true;
 		if (seen.count("field_uT")) has_field_ = true;
 		if (seen.count("power")) has_power_ = true;
+		if (compensated_)
+		{
+			// fog-compensate leaves the compensated cells empty where the gyro was off: such a row
+			// is a power-off row (power 0) of the log read back.
+			power_from_empty_rate_ = !has_power_;
+			has_power_ = true;
+			notes_.push_back("fog-compensate's output: its compensated rates are read as the rates" +
+							 (compensation_details_.empty() ? std::string() : " (" + compensation_details_ + " ignored)"));
+		}
 		cells_.resize(columns_.size());
 	}
 
@@ -562,6 +604,7 @@ class CsvReaderImpl : public FogLogReader::Impl
 				case Column::Kind::Ignored: break;
 			}
 		}
+		if (power_from_empty_rate_) x.power = empty_rate_col >= 0 ? 0.0 : 1.0;
 		if (empty_rate_col >= 0 && x.power != 0.0)
 			failCell(line, static_cast<std::size_t>(empty_rate_col),
 					 has_power_ ? "empty cell with the gyro powered (a rate may be empty only where power is 0)"
@@ -592,6 +635,9 @@ class CsvReaderImpl : public FogLogReader::Impl
 	std::vector<std::string_view> cells_;
 	std::size_t header_line_ = 0;
 	bool has_table_ = false, has_field_ = false, has_power_ = false;
+	bool compensated_ = false;  // fog-compensate's CSV
+	bool power_from_empty_rate_ = false;  // its power column: 0 where the compensated rate is empty
+	std::string compensation_details_;  // its raw, bias and flags columns (ignored)
 	double last_t_ = 0;
 	FogSeries s_;  // layout being built from the header
 };
