@@ -85,3 +85,9 @@ if(TARGET fog-convert AND TARGET fog-calibrate AND TARGET fog-evaluate AND TARGE
   set_tests_properties(guide.calibrate_your_gyro PROPERTIES LABELS "io;integration"
     PASS_REGULAR_EXPRESSION "guide_quickstart: the quickstart runs")
 endif()
+if(TARGET fog-convert AND TARGET fog-calibrate AND TARGET fog-evaluate AND TARGET fog-compensate)
+  add_test(NAME io.format_errors COMMAND sh ${io_scripts}/format_errors.sh $<TARGET_FILE_DIR:fog-convert>
+    ${FOG_SOURCE_DIR} ${io_work}/format_errors)
+  set_tests_properties(io.format_errors PROPERTIES LABELS "io;integration"
+    PASS_REGULAR_EXPRESSION "format_errors: every bad format stopped with its key named and no output")
+endif()
