@@ -91,3 +91,8 @@ if(TARGET fog-convert AND TARGET fog-calibrate AND TARGET fog-evaluate AND TARGE
   set_tests_properties(io.format_errors PROPERTIES LABELS "io;integration"
     PASS_REGULAR_EXPRESSION "format_errors: every bad format stopped with its key named and no output")
 endif()
+if(FOG_PYTHON3_IO AND TARGET fog-calibrate AND TARGET fog-evaluate)
+  add_test(NAME io.unit_slip_warned COMMAND sh ${io_scripts}/unit_slip.sh $<TARGET_FILE_DIR:fog-calibrate>
+    ${FOG_SOURCE_DIR} ${io_work}/unit_slip)
+  set_tests_properties(io.unit_slip_warned PROPERTIES LABELS "io;integration" PASS_REGULAR_EXPRESSION "unit_slip: named")
+endif()

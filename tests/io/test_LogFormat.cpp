@@ -170,3 +170,18 @@ TEST(LogFormat, GuessReadsNamesAndBracketedUnits)
 	EXPECT_EQ(f.thermistors[0].column, "T coil in 1 [degC]");
 	EXPECT_NE(g.find("\"Status\""), std::string::npos) << g;
 }
+
+// A public IMU log's header (EuRoC MAV, imu0/data.csv): units written as "rad s^-1".
+TEST(LogFormat, GuessReadsExponentUnits)
+{
+	iotest::ScratchDir dir;
+	spit(dir.path("imu.csv"), "#timestamp [ns],w_RS_S_x [rad s^-1],w_RS_S_y [rad s^-1],w_RS_S_z [rad s^-1],a_RS_S_x [m s^-2]\n"
+							  "1403636579758555392,-0.099,0.147,0.027,8.14\n1403636579763555584,-0.099,0.140,0.029,8.03\n");
+	const LogFormat f = parseLogFormat(guessLogFormat(dir.path("imu.csv")), "guess");
+	EXPECT_EQ(f.time_unit, TimeUnit::ns);
+	for (int a = 0; a < 3; a++)
+	{
+		ASSERT_TRUE(f.rates[a]) << a;
+		EXPECT_EQ(f.rates[a]->unit, RateUnit::rad_per_s);
+	}
+}

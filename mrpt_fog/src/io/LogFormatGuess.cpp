@@ -99,8 +99,16 @@ std::optional<std::string> timeUnit(const std::string& u)
 }
 std::optional<std::string> rateUnit(const std::string& u)
 {
-	std::string l = lower(u);
+	std::string l;
+	for (char c : lower(u))
+		if (c != ' ' && c != '*' && c != '.') l += c;
 	if (l.rfind("\xc2\xb0", 0) == 0) l = "deg" + l.substr(2);  // degree sign
+	for (const char* per : {"s^-1", "s-1"})  // "rad s^-1", "deg.s-1"
+		if (const auto k = l.find(per); k != std::string::npos && k + std::string(per).size() == l.size())
+			l = l.substr(0, k) + "/s";
+	for (const char* per : {"h^-1", "h-1"})
+		if (const auto k = l.find(per); k != std::string::npos && k + std::string(per).size() == l.size())
+			l = l.substr(0, k) + "/h";
 	if (l == "deg/s" || l == "dps" || l == "deg/sec" || l == "degs") return "deg/s";
 	if (l == "deg/h" || l == "dph" || l == "deg/hr" || l == "degh") return "deg/h";
 	if (l == "rad/s" || l == "rps" || l == "rads" || l == "rad/sec") return "rad/s";

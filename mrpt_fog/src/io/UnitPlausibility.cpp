@@ -196,6 +196,9 @@ std::vector<UnitFinding> UnitPlausibility::findings() const
 		f.declared_unit = toString(declared_.rate[a]);
 		f.evidence = "its sample-to-sample noise is an angle random walk of " + num(arw) + " deg/sqrt(h) (any gyro: " +
 					 num(kMinArw) + " .. " + num(kMaxArw) + ")";
+		if (arw > kMaxArw)
+			f.evidence += "; or the time column's unit is too large (this noise grows with the square root of the " +
+						  num(dt_s) + " s sample interval)";
 		nameCandidates<RateUnit>(f, declared_.rate[a], rates, [&](double k) { return arw * k >= 1e-4 && arw * k <= 3; });
 		out.push_back(f);
 		flagged[a] = true;
