@@ -647,7 +647,7 @@ int main(int argc, char** argv)
 		const bool screen = !arg_no_screen.getValue();
 		std::string screening_text;
 		// Each log is read once into a run spilled to a temporary file (memory independent of the
-		// log's length, issue 14), screened on the way as fog-compensate screens it.
+		// log's length), screened on the way as fog-compensate screens it.
 		// Gyro-off rows and turn-on events of each log read (apps/common/PowerCycles.h, the rule of
 		// fog-evaluate and fog-compensate): those rows give no gyro sample to any fit or figure.
 		struct RunPower

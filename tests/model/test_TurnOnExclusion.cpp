@@ -7,6 +7,7 @@
 // back, and fitWarmup on the same run finds A and tau.
 #include <gtest/gtest.h>
 #include <mrpt_fog/model/Calibration.h>
+#include <mrpt_fog/model/CalibrationRecipe.h>
 #include <mrpt_fog/model/Compensator.h>
 #include <mrpt_fog/model/WarmupFit.h>
 
@@ -105,4 +106,36 @@ TEST(TurnOnExclusion, MetadataTurnOnAtTheFirstSampleAndBadValues)
 		opt.turn_on_exclusion_s = bad;
 		EXPECT_THROW(fitCalibration({run}, "M1:Ti1@1/0", opt), std::invalid_argument) << bad;
 	}
+}
+
+// The recipe (CalibrationRecipe.h) with nothing but the run: the hour after the turn-on stays out
+// of the bias fit by default and the same run fits the warm-up term (the closed form's slope, A
+// and tau come back); a copy of the run that is never powered holds no turn-on although its
+// metadata names one.
+TEST(TurnOnExclusion, TheRecipeDefaultFitsTheWarmupOnTheRunWithTheTurnOn)
+{
+	const FogSeries run = coldStartRamp(5, 300, 20000, false);
+	CalibrationRuns in;
+	in.runs.emplace_back(run);
+	in.labels.push_back("cold start");
+	CalibrateOptions opt;
+	opt.model = "M1:Ti1@1/0";
+	opt.fit.selection = TermSelection::None;
+	const CalibrationOutcome out = calibrate(in, opt);
+	ASSERT_EQ(out.axes.size(), 1u);
+	ASSERT_EQ(out.turn_ons.size(), 1u);
+	EXPECT_EQ(out.turn_ons[0].turn_on_events, 1u);
+	EXPECT_EQ(out.turn_ons[0].use, TurnOnUse::Use::ExcludedToWarmupFit);
+	const Calibration& cal = out.axes[0].cal;
+	EXPECT_NEAR(slopeOf(cal), kB1_dph_per_C, 5e-5);
+	ASSERT_TRUE(cal.warmup.has_value());
+	EXPECT_NEAR(cal.warmup->amplitude_dph, kWarmA_dph, std::max(3 * cal.warmup->amplitude_std_dph, 0.05));
+	EXPECT_NEAR(cal.warmup->tau_s, kWarmTau_s, std::max(3 * cal.warmup->tau_std_s, 60.0));
+
+	FogSeries off = run;
+	for (auto& p : off.power) p = 0.0;
+	off.setMetadata("power_on_time_s", "0");
+	EXPECT_EQ(turnOnsOf(FogRun(off), "off").turn_on_events, 0u);
+	EXPECT_FALSE(turnOnsOf(FogRun(off), "off").power_on_metadata);
+	EXPECT_TRUE(turnOnsOf(FogRun(run), "on").turn_on_events == 1u);
 }
