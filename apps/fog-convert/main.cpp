@@ -114,7 +114,11 @@ int main(int argc, char** argv)
 			return app::kExitOk;
 		}
 		const std::string in = arg_in.getValue(), out = arg_out.getValue();
-		if (in.empty() || out.empty()) throw std::invalid_argument("-i IN and -o OUT are required (or --guess-format LOG)");
+		if (in.empty() || out.empty())
+		{
+			std::cerr << "fog-convert: error: -i IN and -o OUT are required (or --guess-format LOG); see fog-convert --help\n";
+			return app::kExitUsage;
+		}
 		if (log_input.formatPath().empty() || isRawlog(in)) requireKnownExtension(in, "input");
 		requireKnownExtension(out, "output");
 		if (arg_stock.getValue() && !isRawlog(out))

@@ -204,7 +204,6 @@ void writeOutputs(const std::string& dir, const std::string& json_path, const Lo
 	// ---- JSON
 	JsonValue j = JsonValue::object();
 	j["drive"] = r.drive;
-	j["input_notices"] = r.input_notices;
 	{
 		// always present: total_s 0 on a powered drive
 		JsonValue& go = j["gyro_off"];
@@ -396,6 +395,9 @@ void writeOutputs(const std::string& dir, const std::string& json_path, const Lo
 		st.push_back(e);
 	}
 	j["runtime_s"] = r.runtime_s;
+	// Added last: the references into j taken above (j["diverged_runs"] ...) would not survive
+	// another member added before they are filled.
+	j["input_notices"] = r.input_notices;
 	const std::string json_text = j.dump();
 	writeTextFileAtomically(dir + "/localize.json", json_text);
 	if (!json_path.empty()) writeTextFileAtomically(json_path, json_text);

@@ -185,3 +185,12 @@ TEST(LogFormat, GuessReadsExponentUnits)
 		EXPECT_EQ(f.rates[a]->unit, RateUnit::rad_per_s);
 	}
 }
+
+// Text after a closing quote is an error naming the line, not a number made of both parts.
+TEST(LogFormat, TextAfterAClosingQuoteIsAnError)
+{
+	iotest::ScratchDir dir;
+	spit(dir.path("v.csv"), "time_s,rate_z_dph\n0,\"1\"2\n");
+	const std::string m = ioErrorOf([&] { readFogLog(dir.path("v.csv")); });
+	EXPECT_NE(m.find("v.csv:2: a quoted cell is malformed"), std::string::npos) << m;
+}

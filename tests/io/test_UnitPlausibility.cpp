@@ -187,3 +187,18 @@ TEST(UnitPlausibility, QuantisedOutputCannotTell)
 	for (auto& x : log) x.rate_dph[2] = std::round(x.rate_dph[2] / 5) * 5;
 	EXPECT_TRUE(judge(log).empty()) << all(judge(log));
 }
+
+// A noiseless synthetic record (a ramp: its second differences are rounding only) cannot tell.
+TEST(UnitPlausibility, NoiselessRampCannotTell)
+{
+	std::vector<FogSample> log;
+	for (int k = 0; k < 300; k++)
+	{
+		FogSample x;
+		x.time_s = k;
+		x.rate_dph = {NAN, NAN, 9.67 + 0.001 * k};
+		x.temp_C = {25};
+		log.push_back(x);
+	}
+	EXPECT_TRUE(judge(log).empty()) << all(judge(log));
+}

@@ -44,7 +44,7 @@ std::string_view trimView(std::string_view s)
 
 /** Cells of a line split at `delim`; a cell in double quotes may hold the delimiter, and ""
  * inside quotes is one quote. Blanks around a cell are trimmed, the quotes removed. Returns
- * false on an unterminated quote. */
+ * false on a malformed quoted cell (a quote not closed, or text after the closing quote). */
 bool splitQuotedCells(std::string_view line, char delim, std::vector<std::string>& cells)
 {
 	cells.clear();
@@ -84,11 +84,7 @@ bool splitQuotedCells(std::string_view line, char delim, std::vector<std::string
 			cell.clear();
 			continue;
 		}
-		if (was_quoted && c != ' ' && c != '\t')
-		{
-			cell += c;  // text after the closing quote: kept, so that the cell fails to parse
-			continue;
-		}
+		if (was_quoted && c != ' ' && c != '\t') return false;  // text after the closing quote
 		if (!was_quoted) cell += c;
 	}
 	return true;
@@ -157,7 +153,11 @@ struct Column
 	double scale = 1;  //!< value in the native unit = cell x scale / divisor + offset
 	double divisor = 1;
 	double offset = 0;
-	double toNative(double v) const { return v * scale / divisor + offset; }
+	double toNative(double v) const
+	{
+		if (scale == 1 && divisor == 1 && offset == 0) return v;  // native units: untouched (keeps -0)
+		return v * scale / divisor + offset;
+	}
 };
 
 /** Streaming CSV reader: metadata and header at construction, then one row per next(). */
@@ -323,7 +323,7 @@ class CsvReaderImpl : public FogLogReader::Impl
 	{
 		header_line_ = line;
 		std::vector<std::string> cells;
-		if (!splitQuotedCells(l, ',', cells)) fail(line, "header row: a quote is not closed");
+		if (!splitQuotedCells(l, ',', cells)) fail(line, "header row: a quoted cell is malformed (a quote not closed, or text after its closing quote)");
 		if (!cells.empty() && io::parseNumber(cells[0]))
 			fail(line, "header row missing: the first non-'#' line starts with a number ('" + shown(cells[0]) +
 						   "'); expected column names such as time_s,rate_z_dph,temp_Ti1_C");
@@ -417,7 +417,7 @@ class CsvReaderImpl : public FogLogReader::Impl
 		header_line_ = line;
 		delim_ = f.delimiter ? *f.delimiter : detectDelimiter(l);
 		std::vector<std::string> cells;
-		if (!splitQuotedCells(l, delim_, cells)) fail(line, "header line: a quote is not closed");
+		if (!splitQuotedCells(l, delim_, cells)) fail(line, "header line: a quoted cell is malformed (a quote not closed, or text after its closing quote)");
 		std::string listed;
 		for (const auto& c : cells) listed += (listed.empty() ? "" : ", ") + ("\"" + shown(c) + "\"");
 		const auto failFormat = [&](const std::string& key, const std::string& what) {
@@ -522,7 +522,8 @@ class CsvReaderImpl : public FogLogReader::Impl
 		std::size_t ncells = 1;
 		if (l.find('"') != std::string::npos)
 		{
-			if (!splitQuotedCells(l, delim, quoted_cells_)) fail(line, "a quote is not closed");
+			if (!splitQuotedCells(l, delim, quoted_cells_))
+				fail(line, "a quoted cell is malformed (a quote not closed, or text after its closing quote)");
 			ncells = quoted_cells_.size();
 			if (ncells != columns_.size())
 				fail(line, std::to_string(ncells) + " cells, but the header (line " + std::to_string(header_line_) +

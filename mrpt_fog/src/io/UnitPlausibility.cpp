@@ -130,12 +130,20 @@ void UnitPlausibility::add(const FogSample& x, bool gyro_on)
 		const double r = gyro_on ? x.rate_dph[a] : NAN;
 		if (!std::isfinite(r))
 		{
-			has_last_[a] = false;
+			has_last_[a] = has_prev_[a] = false;
 			all_axes = false;
 			continue;
 		}
 		seen_axis_[a] = true;
-		if (sampled && has_last_[a]) abs_diff_[a].push_back(std::abs(r - last_rate_[a]));
+		// second differences: a trend (a ramp, a slow thermal drift) cancels, white noise stays
+		if (sampled && has_last_[a] && has_prev_[a]) abs_diff_[a].push_back(std::abs(r - 2 * last_rate_[a] + prev_rate_[a]));
+		if (sampled)
+		{
+			sum_abs_rate_[a] += std::abs(r);
+			n_rate_[a]++;
+		}
+		prev_rate_[a] = last_rate_[a];
+		has_prev_[a] = has_last_[a];
 		last_rate_[a] = r;
 		has_last_[a] = true;
 		if (table && std::abs(x.table_rate_dph) >= kMinTableRate_dph)
@@ -186,9 +194,12 @@ std::vector<UnitFinding> UnitPlausibility::findings() const
 	for (int a = 0; a < 3; a++)
 	{
 		if (!interval_ok || abs_diff_[a].size() < 20) continue;
-		// Robust sigma of one sample from |differences|: median |d| = 0.6745 sqrt(2) sigma.
-		const double sigma = median(abs_diff_[a]) / (0.6745 * std::sqrt(2.0));
-		if (!(sigma > 0)) continue;  // quantised output that rarely changes: cannot tell
+		// Robust sigma of one sample from |second differences|: median |d2| = 0.6745 sqrt(6) sigma.
+		const double sigma = median(abs_diff_[a]) / (0.6745 * std::sqrt(6.0));
+		// A quantised output that rarely changes, or a noiseless record (a synthetic ramp: what
+		// remains is the rounding of the numbers): cannot tell.
+		const double mean_abs = sum_abs_rate_[a] / std::max(1.0, n_rate_[a]);
+		if (!(sigma > 1e-9 * std::max(mean_abs, 1e-6))) continue;
 		const double arw = sigma * std::sqrt(dt_s) / 60;
 		if (arw >= kMinArw && arw <= kMaxArw) continue;
 		UnitFinding f;

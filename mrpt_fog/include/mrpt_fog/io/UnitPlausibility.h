@@ -7,7 +7,8 @@
  * looks fine and is wrong by a constant factor, so it must never pass silently. Each check
  * compares the numbers with what any gyro or lab can produce, after conversion to the native
  * units (deg/h, s, degC):
- *  - rate noise: the per-sample noise (robust spread of sample-to-sample differences) as an
+ *  - rate noise: the per-sample noise (robust spread of second differences, which a ramp or a
+ *    slow drift does not enter; a noiseless record cannot tell) as an
  *    angle random walk N = sigma x sqrt(dt) / 60 [deg/sqrt(h)]. Below 2e-5 deg/sqrt(h) no gyro
  *    made is that quiet (the best strategic-grade FOGs are near 1e-4); above 30 deg/sqrt(h) no
  *    gyro is that noisy (consumer MEMS are near 1);
@@ -84,9 +85,10 @@ class UnitPlausibility
 	DeclaredUnits declared_;
 	std::size_t rows_ = 0;
 	double last_t_ = 0;
-	std::array<double, 3> last_rate_{};
-	std::array<bool, 3> has_last_{};
-	std::array<std::vector<double>, 3> abs_diff_;  // |rate[k] - rate[k-1]|, first kSampledRows
+	std::array<double, 3> last_rate_{}, prev_rate_{};
+	std::array<bool, 3> has_last_{}, has_prev_{};
+	std::array<std::vector<double>, 3> abs_diff_;  // |rate[k+1] - 2 rate[k] + rate[k-1]|, first kSampledRows
+	std::array<double, 3> sum_abs_rate_{}, n_rate_{};  // mean |rate| of the sampled rows
 	std::vector<double> dt_s_;
 	std::vector<double> temp_C_;
 	// Table regression per axis: sums over samples with |table| >= 100 deg/h.
