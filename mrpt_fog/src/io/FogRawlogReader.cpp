@@ -151,6 +151,7 @@ class RawlogObjects
 		if (in_.atEnd()) return nullptr;
 		const uint64_t offset = in_.position();
 		mrpt::serialization::CSerializable::Ptr obj;
+		reading_class_.clear();
 		try
 		{
 			obj = readChecked(Nesting::Top, offset);
@@ -161,7 +162,8 @@ class RawlogObjects
 		}
 		catch (const std::bad_alloc&)
 		{
-			throw FogIoError(stoppedAt(offset) + "corrupt object: it asks for more memory than the limit of " +
+			throw FogIoError(stoppedAt(offset) + "corrupt object" + (reading_class_.empty() ? "" : " (a " + reading_class_ + ")") +
+							 ": MRPT's reader of it asks for more memory than the limit of " +
 							 std::to_string(limits_.max_object_allocation_bytes) +
 							 " bytes per allocation (a corrupt size field; ReadLimits::max_object_allocation_bytes)");
 		}
@@ -237,6 +239,7 @@ class RawlogObjects
 								 " are read safely (docs/hardening.md); keep the FOG's observations and those sensors' "
 								 "first, e.g. with `rawlog-edit --keep-label FOG,ODOMETRY` (refused unread)");
 		}
+		if (h.cls) reading_class_ = h.cls->className;
 		io::detail::AllocationGuard guard(limits_.max_object_allocation_bytes);
 		return arch_.ReadObject();
 	}
@@ -311,6 +314,7 @@ class RawlogObjects
 	mrpt::serialization::CArchiveStreamBase<mrpt::io::CStream> arch_;
 	std::size_t objects_ = 0;
 	bool actions_format_ = false;
+	std::string reading_class_;  // the class MRPT is reading (for the messages)
 	static constexpr uint32_t kMaxMembers = 1u << 20;  // observations in one sensory frame, actions in a collection
 };
 
@@ -644,6 +648,9 @@ FogObservationSamples::FogObservationSamples(const FogSeries& header, std::strin
 	  epoch_ticks_(io::detail::ticksOf(mrpt::Clock::fromDouble(header.epoch_s)))
 {
 	header_.epoch_s = header.epoch_s;
+	if (!header.table_rate_dph.empty()) header_.table_rate_dph.assign(1, NAN);
+	if (!header.field_uT.empty()) header_.field_uT.assign(1, NAN);
+	if (!header.power.empty()) header_.power.assign(1, NAN);
 }
 
 void FogObservationSamples::toSample(const CObservationFOG& o, std::size_t index, FogSample& x)
