@@ -77,7 +77,7 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 	e.input = path;
 	{
 		app::Progress progress("fog-drift: reading " + path, st.quiet);
-		e.drive = readDrive(path, {}, [&](std::uint64_t n, std::uint64_t done, std::uint64_t total) {
+		e.drive = readDrive(path, st.labels, [&](std::uint64_t n, std::uint64_t done, std::uint64_t total) {
 			progress.update(n, done, total);
 		});
 	}
