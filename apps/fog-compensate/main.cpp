@@ -236,6 +236,8 @@ int main(int argc, char** argv)
 		else if (!actions_format)
 		{
 			rawlog_out = std::make_unique<FogLogWriter>(out, layout, RawlogForm::Stock);
+			// the FOG's metadata comment (consumed by the reader) stays too, first
+			if (keep_others && reader.metadataObservation()) rawlog_out->writeOther(*reader.metadataObservation()), others_kept++;
 			for (const auto& o : others_before) rawlog_out->writeOther(*o);
 			others_before.clear();
 			others_to = rawlog_out.get();

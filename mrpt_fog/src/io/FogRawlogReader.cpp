@@ -368,6 +368,7 @@ class RawlogReaderImpl : public FogLogReader::Impl
 
 	std::size_t objectsRead() const override { return objs_.objects(); }
 	bool isRawlog() const override { return true; }
+	mrpt::obs::CObservation::Ptr metadataObservation() const override { return meta_obs_; }
 	std::uint64_t fileBytesRead() const override { return objs_.in().fileBytesRead(); }
 	std::uint64_t fileBytes() const override { return objs_.in().fileBytes(); }
 
@@ -439,7 +440,11 @@ class RawlogReaderImpl : public FogLogReader::Impl
 			if (auto m = io::parseFogRawlogMetadata(c->text); m && !metas_.count(m->sensor_label))
 			{
 				metas_[m->sensor_label] = *m;
-				if (!label_.empty() && m->sensor_label == label_) return;  // the chosen sensor's own block
+				if (!label_.empty() && m->sensor_label == label_)  // the chosen sensor's own block
+				{
+					meta_obs_ = o;
+					return;
+				}
 				if (label_.empty() && chosen_.empty())
 				{
 					pending_meta_.emplace_back(m->sensor_label, o);  // whose it is: known at the first FOG sample
@@ -459,6 +464,7 @@ class RawlogReaderImpl : public FogLogReader::Impl
 			// Metadata blocks met before: the sensor's own is consumed, the others go on.
 			for (auto& [l, c] : pending_meta_)
 				if (l != chosen_ && sink_) sink_(c);
+				else if (l == chosen_) meta_obs_ = c;
 			pending_meta_.clear();
 		}
 		if (f->sensorLabel == chosen_)
@@ -521,6 +527,7 @@ class RawlogReaderImpl : public FogLogReader::Impl
 	std::map<std::string, std::size_t> other_fog_;
 	std::vector<std::pair<std::string, mrpt::obs::CObservation::Ptr>> pending_meta_;
 	std::optional<FogObservationSamples> samples_;
+	mrpt::obs::CObservation::Ptr meta_obs_;  // the chosen sensor's metadata comment
 	std::optional<detail::SerializedPose> pose_;  // of the last FOG observation read by CArchive
 	std::vector<CObservationFOG::Ptr> spare_;  // consumed observations, reused by the fast path
 	static constexpr std::size_t kFastPeekBytes = 64 * 1024;  // a FOG object of 255 named thermistors fits

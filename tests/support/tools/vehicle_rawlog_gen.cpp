@@ -13,7 +13,12 @@
  * plane around the drive's latitude), a camera 'CAMERA' (CObservationImage, external image
  * file, not written) and a MEMS IMU 'IMU_MEMS' (CObservationIMU: the truth yaw rate + 0.5 deg/s
  * bias). --repeat N drives the drive N times in a row (odometry and time continued; for the
- * memory check). */
+ * memory check).
+ *
+ *   vehicle-rawlog-gen --count FILE.rawlog
+ *
+ * prints the format and one line per class and label ("COUNT <class> '<label>' <n>"), read with
+ * MRPT's archive alone. */
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CActionCollection.h>
@@ -32,6 +37,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -85,9 +91,50 @@ struct Writers
 };
 }  // namespace
 
+/** --count: the objects of a rawlog by class and label, with MRPT's archive. */
+int countObjects(const char* path)
+{
+	mrpt::io::CFileGZInputStream in(path);
+	auto arch = mrpt::serialization::archiveFrom(in);
+	std::map<std::string, std::size_t> n;
+	bool actions = false;
+	const auto key = [](const mrpt::serialization::CSerializable& o) {
+		std::string k = o.GetRuntimeClass()->className;
+		if (const auto* ob = dynamic_cast<const CObservation*>(&o)) k += " '" + ob->sensorLabel + "'";
+		return k;
+	};
+	for (;;)
+	{
+		mrpt::serialization::CSerializable::Ptr obj;
+		try
+		{
+			obj = arch.ReadObject();
+		}
+		catch (const std::exception&)
+		{
+			break;
+		}
+		n[key(*obj)]++;
+		if (auto sf = std::dynamic_pointer_cast<CSensoryFrame>(obj))
+		{
+			actions = true;
+			for (const auto& o : *sf) n[key(*o)]++;
+		}
+		else if (auto acts = std::dynamic_pointer_cast<CActionCollection>(obj))
+		{
+			actions = true;
+			for (std::size_t i = 0; i < acts->size(); i++) n[key(*acts->get(i))]++;
+		}
+	}
+	std::printf("FORMAT %s\n", actions ? "actions-observations" : "observations-only");
+	for (const auto& [k, c] : n) std::printf("COUNT %s %zu\n", k.c_str(), c);
+	return 0;
+}
+
 int main(int argc, char** argv)
 try
 {
+	if (argc == 3 && !std::strcmp(argv[1], "--count")) return countObjects(argv[2]);
 	if (argc < 3)
 	{
 		std::fprintf(stderr, "usage: vehicle-rawlog-gen DRIVE.rawlog OUT_PREFIX [--duration-s S] [--repeat N] [--scan-hz H]\n");

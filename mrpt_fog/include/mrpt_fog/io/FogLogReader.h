@@ -80,6 +80,9 @@ class FogLogReader
 
 	std::size_t samplesRead() const;
 	std::size_t objectsRead() const;  //!< rawlog objects so far (0 for CSV)
+	/** Rawlog: the sensor's own metadata comment, which the reader consumes (it is not passed to
+	 * `others`); null when none was met (or a CSV). For a program that keeps every object. */
+	mrpt::obs::CObservation::Ptr metadataObservation() const;
 	bool isRawlog() const;
 	/** Progress: bytes of the file consumed so far, and its size (0 when unknown, e.g. a pipe). */
 	std::uint64_t fileBytesRead() const;
