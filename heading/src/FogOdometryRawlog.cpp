@@ -201,10 +201,14 @@ class Rewriter
 		}
 	}
 
+	/** An estimate is held only once a truth was met (none before it can be compared; without a
+	 * truth nothing is held: flat memory). */
+	bool comparing() const { return any_truth_ || (truth_file_ && truth_file_->poses() > 0); }
+
 	void wheel(double t, double x, double y, double phi)
 	{
 		if (truth_file_) truth_file_->feedTo(t, fog_cmp_, wheel_cmp_);
-		wheel_cmp_.addEstimate(t, x, y, phi);
+		if (comparing()) wheel_cmp_.addEstimate(t, x, y, phi);
 	}
 
 	/** true when the pipeline took the sample (it then gives a pose for it). */
@@ -230,7 +234,7 @@ class Rewriter
 			const Waiting w = waiting_.front();
 			waiting_.pop_front();
 			if (truth_file_) truth_file_->feedTo(p.t_s, fog_cmp_, wheel_cmp_);
-			fog_cmp_.addEstimate(p.t_s, p.x_m, p.y_m, p.heading_rad);
+			if (comparing()) fog_cmp_.addEstimate(p.t_s, p.x_m, p.y_m, p.heading_rad);
 			if (w.odometry)
 			{
 				w.odometry->odometry = mrpt::poses::CPose2D(p.x_m, p.y_m, p.heading_rad);
