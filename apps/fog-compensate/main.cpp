@@ -12,6 +12,7 @@
 #include <mrpt_fog/io/RawlogObjectReader.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/obs/CObservationComment.h>
 #include <mrpt_fog/io/NumberText.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/Compensator.h>
@@ -58,7 +59,8 @@ OUTPUT (by extension of -o)
             in the FOG observation's place. A rawlog input keeps every other object (odometry,
             lidar, cameras, GPS...), in order and in its format: observations-only, or
             actions-observations (CActionCollection + CSensoryFrame: the pair takes the FOG's
-            place in its frame).
+            place in its frame). The FOG's own metadata comment is not written (the stock form
+            has none).
   .csv      time_s, raw_rate_<a>_dph, bias_<a>_dph, compensated_rate_<a>_dph, flags,
             temp_<name>_C...  flags: 1 fallback, 2 no model, 4 clamped, 8 rate warm-up,
             16 rate-free start-up model (rates not yet estimable: start, burst, gap).
@@ -236,8 +238,6 @@ int main(int argc, char** argv)
 		else if (!actions_format)
 		{
 			rawlog_out = std::make_unique<FogLogWriter>(out, layout, RawlogForm::Stock);
-			// the FOG's metadata comment (consumed by the reader) stays too, first
-			if (keep_others && reader.metadataObservation()) rawlog_out->writeOther(*reader.metadataObservation()), others_kept++;
 			for (const auto& o : others_before) rawlog_out->writeOther(*o);
 			others_before.clear();
 			others_to = rawlog_out.get();
@@ -289,8 +289,17 @@ int main(int argc, char** argv)
 			const auto isChosen = [&](const mrpt::obs::CObservation::Ptr& o) {
 				return o->sensorLabel == layout.sensor_label && std::dynamic_pointer_cast<CObservationFOG>(o);
 			};
+			// the FOG's own metadata comment goes with the FOG (the stock form has none, as in the
+			// observations-only format, where the reader consumes it)
+			const auto meta = std::dynamic_pointer_cast<mrpt::obs::CObservationComment>(reader.metadataObservation());
+			const auto isFogMetadata = [&](const mrpt::obs::CObservation::Ptr& o) {
+				const auto c = std::dynamic_pointer_cast<mrpt::obs::CObservationComment>(o);
+				return meta && c && c->text == meta->text;
+			};
 			while (auto obj = objects.next())
 			{
+				if (auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj); o && isFogMetadata(o))
+					continue;
 				if (auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj); o && isChosen(o))
 				{
 					const auto [imu, daq] = pairOf(*std::dynamic_pointer_cast<CObservationFOG>(o));
@@ -302,6 +311,7 @@ int main(int argc, char** argv)
 					mrpt::obs::CSensoryFrame copy;
 					for (const auto& so : *sf)
 					{
+						if (isFogMetadata(so)) continue;
 						if (isChosen(so))
 						{
 							const auto [imu, daq] = pairOf(*std::dynamic_pointer_cast<CObservationFOG>(so));
