@@ -364,7 +364,7 @@ int main(int argc, char** argv)
 					comps.front()->counters().samples,
 					several ? (std::string(axis_letter.begin(), axis_letter.end()) + " (one model each)").c_str()
 							: std::string(1, axis_letter.front()).c_str());
-		if (keep_others || actions_format)
+		if ((keep_others || actions_format) && others_kept > 0)
 			std::printf("  kept every other object (%zu, %s format)\n", others_kept,
 						actions_format ? "actions-observations" : "observations-only");
 		if (!uncalibrated.empty())
