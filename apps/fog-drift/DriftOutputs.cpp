@@ -429,4 +429,89 @@ nav::TrajectoryPoint writeOdometryRawlog(const std::string& path, const SpilledS
 	return first_pose;
 }
 
+std::string noTruthText(const std::string& path, const heading::NoTruthReport& r)
+{
+	std::string o;
+	char b[512];
+	std::snprintf(b, sizeof b,
+				  "fog-drift: %s: no truth; %.0f s, %zu FOG samples, latitude %.4f deg. What can be known: the "
+				  "compensated heading against the raw one%s\n",
+				  path.c_str(), r.duration_s, r.fog_samples, r.latitude_deg,
+				  r.gps ? " and both against the GPS course" : " (no GPS course: which one is right cannot be told)");
+	o += b;
+	std::snprintf(b, sizeof b, "  compensated - raw heading at the end: %.4f deg\n", r.final_difference_deg);
+	o += b;
+	std::snprintf(b, sizeof b,
+				  "  between turns (%zu straights found on the compensated rate): compensated - raw drifts %.4f deg/h "
+				  "(pooled)\n",
+				  r.straights.size(), r.pooled_slope_dph);
+	o += b;
+	double turned = 0, change = 0;
+	for (const auto& t : r.turns) turned += std::abs(t.turned_deg), change += t.difference_change_deg;
+	std::snprintf(b, sizeof b, "  over the %zu turns (%.0f deg turned): compensated - raw changes %.4f deg in all\n",
+				  r.turns.size(), turned, change);
+	o += b;
+	for (const auto& t : r.turns)
+	{
+		std::snprintf(b, sizeof b, "    turn %9.1f .. %9.1f s: %8.2f deg turned, compensated - raw %+.5f deg\n",
+					  t.t0_s - r.start_s, t.t1_s - r.start_s, t.turned_deg, t.difference_change_deg);
+		o += b;
+	}
+	if (r.gps)
+	{
+		const auto& g = *r.gps;
+		std::snprintf(b, sizeof b,
+					  "  against the GPS course over ground (%s, %zu fixes above the speed threshold; constant offset "
+					  "removed):\n    raw          RMS %.4f deg, slope %.4f deg/h\n    compensated  RMS %.4f deg, "
+					  "slope %.4f deg/h\n    (the course is the direction of travel: side slip and GPS noise limit it "
+					  "to about a degree)\n",
+					  g.from_rmc ? "RMC" : "from GGA positions", g.fixes, g.raw_rms_deg, g.raw_slope_dph,
+					  g.compensated_rms_deg, g.compensated_slope_dph);
+		o += b;
+	}
+	return o;
+}
+
+JsonValue noTruthJson(const std::string& path, const heading::NoTruthReport& r)
+{
+	JsonValue j = JsonValue::object();
+	j["input"] = path;
+	j["truth"] = false;
+	j["duration_s"] = r.duration_s;
+	j["fog_samples"] = static_cast<unsigned long>(r.fog_samples);
+	j["latitude_deg"] = r.latitude_deg;
+	j["final_difference_deg"] = r.final_difference_deg;
+	j["pooled_difference_slope_dph"] = r.pooled_slope_dph;
+	JsonValue& turns = j["turns"] = JsonValue::array();
+	for (const auto& t : r.turns)
+	{
+		JsonValue x = JsonValue::object();
+		x["t0_s"] = t.t0_s;
+		x["t1_s"] = t.t1_s;
+		x["turned_deg"] = t.turned_deg;
+		x["difference_change_deg"] = t.difference_change_deg;
+		turns.push_back(std::move(x));
+	}
+	JsonValue& straights = j["straights"] = JsonValue::array();
+	for (const auto& s : r.straights)
+	{
+		JsonValue x = JsonValue::object();
+		x["t0_s"] = s.t0_s;
+		x["t1_s"] = s.t1_s;
+		x["difference_slope_dph"] = s.difference_slope_dph;
+		straights.push_back(std::move(x));
+	}
+	if (r.gps)
+	{
+		JsonValue& g = j["gps_course"] = JsonValue::object();
+		g["fixes"] = static_cast<unsigned long>(r.gps->fixes);
+		g["source"] = std::string(r.gps->from_rmc ? "rmc" : "gga");
+		g["raw_rms_deg"] = r.gps->raw_rms_deg;
+		g["compensated_rms_deg"] = r.gps->compensated_rms_deg;
+		g["raw_slope_dph"] = r.gps->raw_slope_dph;
+		g["compensated_slope_dph"] = r.gps->compensated_slope_dph;
+	}
+	return j;
+}
+
 }  // namespace mrpt_fog::drift

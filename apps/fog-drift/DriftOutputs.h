@@ -9,6 +9,7 @@
 #include "DriveEvaluation.h"
 
 #include <mrpt_fog/common/JsonWriter.h>
+#include <mrpt_fog_heading/HeadingWithoutTruth.h>
 #include <mrpt_fog_nav/DriftReport.h>
 
 #include <map>
@@ -33,6 +34,11 @@ struct DriftContext
 
 /** The text lines on the drive's gyro-off stretches ("" without any; GyroOff.h). */
 std::string gyroOffText(const DriveEvaluation& e);
+
+/** A drive without truth: compensated vs raw heading per turn and between turns, and against
+ * the GPS course when there is one (text and JSON). */
+std::string noTruthText(const std::string& path, const heading::NoTruthReport& r);
+JsonValue noTruthJson(const std::string& path, const heading::NoTruthReport& r);
 
 /** One drive: the report's tables at the top level (as before) plus the navigation figures.
  * Several drives: {"drives": [one object per drive], "over_drives": {figure: spread}}. */

@@ -113,10 +113,10 @@ DriveData readDrive(const std::string& path, const DriveLabels& labels,
 	if (d.fog_ideal) shrinkToFit(*d.fog_ideal);
 	for (auto* v : {&d.odometry.t_s, &d.odometry.x_m, &d.odometry.y_m, &d.odometry.phi_rad}) v->shrink_to_fit();
 	d.truth.shrink_to_fit();
+	if (d.truth.size() < 2)
+		throw NoTruthError(path + ": fewer than 2 CObservationRobotPose with label '" + labels.truth + "'");
 	if (d.odometry.t_s.size() < 2)
 		throw std::runtime_error(path + ": fewer than 2 CObservationOdometry with label '" + labels.odometry + "'");
-	if (d.truth.size() < 2)
-		throw std::runtime_error(path + ": fewer than 2 CObservationRobotPose with label '" + labels.truth + "'");
 	return d;
 }
 

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,14 @@ struct DriveLabels
 	std::string fog_ideal = "FOG_IDEAL";
 	std::string odometry = "ODOMETRY";
 	std::string truth = "GROUND_TRUTH";
+};
+
+/** The drive has no truth (fewer than 2 poses with the truth label): what can be known without
+ * one is heading::compareHeadingsWithoutTruth's. */
+class NoTruthError : public std::runtime_error
+{
+   public:
+	using std::runtime_error::runtime_error;
 };
 
 struct OdometryPoses

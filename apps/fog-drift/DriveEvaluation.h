@@ -54,6 +54,7 @@ struct DriveSettings
 	 * streaming evaluation is tested against). */
 	bool in_memory = false;
 	HeadingOptions heading;  //!< latitude_deg filled per drive
+	DriveLabels labels;  //!< --fog-label, --odometry-label, --truth-label
 	nav::HeadingFigureOptions figures;
 };
 

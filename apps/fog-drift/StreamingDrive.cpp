@@ -553,7 +553,7 @@ bool canStream(const DriveSettings& st)
 
 std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, const DriveSettings& st)
 {
-	const DriveLabels labels;
+	const DriveLabels labels = st.labels;
 	DriveScan scan;
 	// ---- pass 1: ends, path length, segments
 	{
@@ -629,10 +629,10 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 	DriveEvaluation e;
 	e.input = path;
 	e.drive.latitude_deg = driveLatitude(scan.header);
+	if (scan.truth.n < 2)
+		throw NoTruthError(path + ": fewer than 2 CObservationRobotPose with label '" + labels.truth + "'");
 	if (scan.odometry.n < 2)
 		throw std::runtime_error(path + ": fewer than 2 CObservationOdometry with label '" + labels.odometry + "'");
-	if (scan.truth.n < 2)
-		throw std::runtime_error(path + ": fewer than 2 CObservationRobotPose with label '" + labels.truth + "'");
 	const HeadingOptions hopt = headingOptionsFor(e, path, st);
 	const FogSeries& h = scan.header;
 

@@ -20,6 +20,9 @@
 #include <mrpt_fog/common/OutputSafety.h>
 #include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog_nav/DriftReport.h>
+#include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt_fog/model/CalibrationYaml.h>
+#include <mrpt_fog_heading/HeadingWithoutTruth.h>
 
 #include <algorithm>
 #include <cmath>
@@ -159,6 +162,13 @@ int main(int argc, char** argv)
 								   "and streamed: memory does not grow with the drive; the same figures)",
 								   cmd);
 		app::LogInput log_input(cmd, "fog-drift");
+		TCLAP::ValueArg<std::string> fog_label("", "fog-label", "label of the CObservationFOG", false, "FOG", "L", cmd);
+		TCLAP::ValueArg<std::string> odo_label("", "odometry-label", "label of the CObservationOdometry", false,
+											   "ODOMETRY", "L", cmd);
+		TCLAP::ValueArg<std::string> truth_label("", "truth-label", "label of the CObservationRobotPose truth", false,
+												 "GROUND_TRUTH", "L", cmd);
+		app::RealArg gps_speed(cmd, "gps-min-speed-mps", "without truth: GPS course over ground used above this speed",
+							   "m/s", app::Range::closed(0, 1000), 5.0, "MPS");
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-drift", kHelp)) return *rc;
 
 		drift::DriveSettings st;
@@ -175,6 +185,10 @@ int main(int argc, char** argv)
 		st.quiet = quiet.getValue();
 		st.keep_series = !csv.getValue().empty();
 		st.in_memory = in_memory.getValue();
+		st.labels.fog = fog_label.getValue();
+		st.labels.odometry = odo_label.getValue();
+		st.labels.truth = truth_label.getValue();
+		if (!(gps_speed.getValue() >= 0)) throw std::invalid_argument("--gps-min-speed-mps: must be >= 0");
 		// The trajectories the outputs draw or write are kept; the others go once measured.
 		st.keep_trajectories = !plots.getValue().empty()  ? drift::KeptTrajectories::All
 							   : !odo_out.getValue().empty() ? drift::KeptTrajectories::ForOdometry
@@ -188,7 +202,35 @@ int main(int argc, char** argv)
 		std::vector<std::map<std::string, double>> tables;
 		for (const auto& path : inputs)
 		{
-			drift::DriveEvaluation e = drift::evaluateDrive(path, st);
+			drift::DriveEvaluation e;
+			try
+			{
+				e = drift::evaluateDrive(path, st);
+			}
+			catch (const drift::NoTruthError& err)
+			{
+				// A vehicle's own log: what can be known without a truth
+				if (inputs.size() > 1 || st.cal_path.empty() || !plots.getValue().empty() || !csv.getValue().empty() ||
+					!odo_out.getValue().empty())
+					throw std::runtime_error(std::string(err.what()) +
+											 " (without a truth fog-drift compares the compensated with the raw heading: "
+											 "give one drive and --cal, without --plots, --csv or --odometry-out)");
+				heading::NoTruthOptions nt;
+				nt.fog_label = st.labels.fog;
+				nt.pipeline.latitude_deg = st.latitude_deg ? *st.latitude_deg : NAN;
+				nt.pipeline.sampling = st.heading.sampling;
+				nt.pipeline.screen_thermistors = st.screen_thermistors;
+				nt.pipeline.earth.calibration_latitude_deg = st.cal_latitude_deg;
+				nt.pipeline.earth.bias_without_earth_rate = st.cal_no_earth_rate;
+				nt.gps_min_speed_mps = gps_speed.getValue();
+				const CalibrationSet cals = loadCalibrationSet(st.cal_path);
+				const Calibration* zcal = cals.forAxis(GyroAxis::Z);
+				if (!zcal) throw std::runtime_error(st.cal_path + ": no calibration for axis z (the heading gyro)");
+				const heading::NoTruthReport r = heading::compareHeadingsWithoutTruth(path, *zcal, nt);
+				std::fputs(drift::noTruthText(path, r).c_str(), stdout);
+				if (!json.getValue().empty()) writeTextFileAtomically(json.getValue(), drift::noTruthJson(path, r).dump());
+				return app::kExitOk;
+			}
 			const nav::DriftReport& rep = e.report;
 			std::printf("fog-drift: %s: %.0f s, %.1f m driven, latitude %.4f deg (Earth rate %.4f deg/h removed)\n",
 						path.c_str(), rep.duration_s, rep.distance_m, e.latitude_deg,

@@ -15,32 +15,11 @@
 
 namespace mrpt_fog::localize
 {
-mrpt::obs::CActionRobotMovement2D::TMotionModelOptions FogMotionModel::toMrpt(double dt_s) const
-{
-	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions m;
-	m.modelSelection = mrpt::obs::CActionRobotMovement2D::mmGaussian;
-	auto& g = m.gaussianModel;
-	g.a1 = distance_frac;  // [m/m]
-	g.a2 = 0.0;  // no position noise from turning
-	g.a3 = 0.0;  // no heading noise per metre: the heading is the FOG's, not the wheels'
-	g.a4 = scale_factor_ppm * 1e-6;  // [rad/rad]
-	g.minStdXY = min_std_xy_m;
-	g.minStdPHI = heading_bias_dph / 3600.0 * M_PI / 180.0 * std::sqrt(dt_s * horizon_s);  // [rad]
-	return m;
-}
-
 GyroOffRecovery gyroOffRecoveryFromString(const std::string& text)
 {
 	if (text == "refix") return GyroOffRecovery::Refix;
 	if (text == "none") return GyroOffRecovery::None;
 	throw std::invalid_argument("gyro-off recovery '" + text + "' is not refix|none");
-}
-
-mrpt::obs::CActionRobotMovement2D::TMotionModelOptions wheelOnlyMotionModel()
-{
-	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions m;  // MRPT's defaults, gaussianModel included
-	m.modelSelection = mrpt::obs::CActionRobotMovement2D::mmGaussian;
-	return m;
 }
 
 void applyLikelihoodOptions(mrpt::maps::COccupancyGridMap2D& grid, const MclOptions& o, double laser_range_m)

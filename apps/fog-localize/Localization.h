@@ -25,6 +25,7 @@
  * ratio: 0.056 % on the bundled drive for the raw and compensated gyros, 3 m along the road at
  * the end of a 6 km open field.) */
 
+#include <mrpt_fog_heading/FogMotionModel.h>
 #include "GyroOffOdometry.h"
 #include "Sensors.h"
 #include "World.h"
@@ -38,26 +39,14 @@
 
 namespace mrpt_fog::localize
 {
-/** A FOG's heading noise and a wheel's distance noise per step (defaults documented in
- * docs/localize.md). */
-struct FogMotionModel
-{
-	double heading_bias_dph = 0.5;  //!< FOG bias uncertainty the filter allows [deg/h]
-	double horizon_s = 60.0;  //!< time over which the heading random walk matches a constant bias of that size [s]
-	double scale_factor_ppm = 2000.0;  //!< heading error per turned angle [ppm]
-	double distance_frac = 0.003;  //!< distance std per metre driven [-]
-	double min_std_xy_m = 0.05;  //!< position std per step [m]
-
-	/** MRPT's Gaussian model for a step of dt_s. Per-step heading std = bias * sqrt(dt * horizon):
-	 * a random walk whose spread after `horizon` equals the drift of a constant bias of that size. */
-	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions toMrpt(double dt_s) const;
-};
+/** A FOG's heading noise and a wheel's distance noise per step (heading/FogMotionModel.h; defaults
+ * documented in docs/localize.md). */
+using FogMotionModel = heading::FogMotionModel;
 
 /** The motion model of a step without the gyro (GyroOffOdometry.h): MRPT's default Gaussian model,
- * what pf-localization applies to wheel odometry (a1 0.01 m/m, a2 0.001 rad/m... as
- * CActionRobotMovement2D::TMotionModelOptions::TOptions_GaussianModel's defaults: heading std
- * 0.2 deg + 1 deg per metre driven + 5 % of the turn). */
-mrpt::obs::CActionRobotMovement2D::TMotionModelOptions wheelOnlyMotionModel();
+ * what pf-localization applies to wheel odometry (heading std 0.2 deg + 1 deg per metre driven +
+ * 5 % of the turn). */
+inline mrpt::obs::CActionRobotMovement2D::TMotionModelOptions wheelOnlyMotionModel() { return heading::wheelMotionModel(); }
 
 /** What the filter does at a turn-on after a gyro-off stretch (GyroOffOdometry.h). */
 enum class GyroOffRecovery

@@ -87,6 +87,7 @@ bool FogLogReader::hasField() const { return !impl_->header.field_uT.empty(); }
 bool FogLogReader::hasPower() const { return !impl_->header.power.empty(); }
 std::size_t FogLogReader::samplesRead() const { return impl_->samples; }
 std::size_t FogLogReader::objectsRead() const { return impl_->objectsRead(); }
+mrpt::obs::CObservation::Ptr FogLogReader::metadataObservation() const { return impl_->metadataObservation(); }
 bool FogLogReader::isRawlog() const { return impl_->isRawlog(); }
 std::uint64_t FogLogReader::fileBytesRead() const { return impl_->fileBytesRead(); }
 std::uint64_t FogLogReader::fileBytes() const { return impl_->fileBytes(); }

@@ -16,6 +16,7 @@ class FogLogReader::Impl
 	virtual bool next(FogSample& s) = 0;
 	virtual std::size_t objectsRead() const { return 0; }
 	virtual bool isRawlog() const = 0;
+	virtual mrpt::obs::CObservation::Ptr metadataObservation() const { return nullptr; }
 	virtual std::uint64_t fileBytesRead() const = 0;
 	virtual std::uint64_t fileBytes() const = 0;
 	virtual std::vector<std::string> notes() const { return {}; }

@@ -23,6 +23,7 @@
  * whole second of the first timestamp. */
 
 #include <mrpt/obs/CObservation.h>
+#include <mrpt_fog/obs/CObservationFOG.h>
 #include <mrpt_fog/obs/FogSeriesLayout.h>  // FogSeries, emptySeriesLike
 #include <mrpt_fog/obs/Units.h>
 
@@ -46,6 +47,9 @@ struct ReadLimits
 	/** |applied axial field| [uT] (units::kMaxAbsField_uT, 10 mT; MagneticModel.h bounds a
 	 * magnetic term's contribution with it). */
 	double max_abs_field_uT = units::kMaxAbsField_uT;
+	/** One allocation by MRPT's reader of another sensor's object (a scan, an image, a point
+	 * cloud) [bytes]: beyond it the object is taken as corrupt (docs/hardening.md). */
+	std::size_t max_object_allocation_bytes = std::size_t(256) << 20;
 };
 
 /** One sample of a FOG log, in the reader's layout (FogLogReader::header()). */
@@ -116,6 +120,9 @@ class FogLogReader
 
 	std::size_t samplesRead() const;
 	std::size_t objectsRead() const;  //!< rawlog objects so far (0 for CSV)
+	/** Rawlog: the sensor's own metadata comment, which the reader consumes (it is not passed to
+	 * `others`); null when none was met (or a CSV). For a program that keeps every object. */
+	mrpt::obs::CObservation::Ptr metadataObservation() const;
 	bool isRawlog() const;
 	/** Progress: bytes of the file consumed so far, and its size (0 when unknown, e.g. a pipe). */
 	std::uint64_t fileBytesRead() const;
@@ -130,6 +137,26 @@ class FogLogReader
 	struct Judge;
 	std::unique_ptr<Judge> judge_;
 	bool ended_ = false;
+};
+
+/** CObservationFOG objects of one sensor, met one by one (e.g. by RawlogObjectReader), as
+ * samples in a header's layout (FogLogReader::header()), with FogLogReader's per-sample checks:
+ * the same layout as the header, times strictly increasing (time_s = timestamp - epoch_s, exact
+ * to MRPT's 100 ns tick), a finite rate within the limit unless the power is off, no infinite
+ * temperature. A defect throws FogIoError naming `source` and the object index given. */
+class FogObservationSamples
+{
+   public:
+	FogObservationSamples(const FogSeries& header, std::string source, const ReadLimits& limits = {});
+	void toSample(const CObservationFOG& obs, std::size_t object_index, FogSample& sample);
+	std::size_t samples() const { return samples_; }
+
+   private:
+	FogSeries header_;
+	std::string source_;
+	ReadLimits limits_;
+	std::int64_t epoch_ticks_ = 0, last_ticks_ = 0;
+	std::size_t samples_ = 0;
 };
 
 /** Appends a sample read by `reader` to a series of the reader's layout (emptySeriesLike). */
