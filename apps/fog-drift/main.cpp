@@ -18,6 +18,7 @@
 #include <mrpt_fog/common/OutputSafety.h>
 #include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog_nav/DriftReport.h>
+#include <mrpt_fog_nav/StandstillDetector.h>
 
 #include <algorithm>
 #include <cmath>
@@ -70,6 +71,17 @@ SEVERAL DRIVES
   the ratios compensated/raw (heading RMS, drift between turns) and compensated/ideal (heading
   RMS). Drives to try: fog-sim --profile drive --seed N [--cabin PRESET|FILE.yaml]
   (scripts/drift_over_drives.sh makes a set and runs this).
+
+FIELD REFINEMENT (compensated single-axis gyro; on by default, --no-field-refinement)
+  No chamber calibration holds the offset a FOG picks at each turn-on, nor its aging. While the
+  vehicle stands still (wheels stopped and the gyro sees no rotation: --standstill-source) the
+  compensated rate should read the vertical Earth rate; a Kalman filter of the offset (prior:
+  0 +- the calibration's held-out stability and --turn-on-repeatability-dph combined; noise:
+  --gyro-arw-deg-rt-h, --gyro-bias-instability-dph) takes what it reads beyond that and
+  subtracts its estimate from every later sample (causal). The first and last second of each
+  standstill are left out; a standstill shorter than --min-standstill-s, or too short to beat
+  what is known, changes nothing. A drive without a standstill is not changed (the output says
+  so). JSON: field_refinement (each update, the offset and its 1-sigma).
 
 EXAMPLES
   fog-drift -i datasets/drive.rawlog --cal cal.yaml --json drift.json --csv drift.csv --plots plots/
@@ -150,6 +162,28 @@ int main(int argc, char** argv)
 								   "do not screen the FOG's thermistor readings (stuck / spike / out of range -> "
 								   "dropout, fallback model) before compensating",
 								   cmd);
+		TCLAP::SwitchArg no_refine("", "no-field-refinement",
+								   "do not update the compensated gyro's bias offset at standstills (the thermal "
+								   "model alone)",
+								   cmd);
+		TCLAP::ValueArg<double> turn_on_rep("", "turn-on-repeatability-dph",
+											"1-sigma turn-on to turn-on repeatability of the bias offset [deg/h]: with "
+											"the calibration's held-out stability it is the prior of the standstill "
+											"updates",
+											false, 1.0, "DPH", cmd);
+		TCLAP::ValueArg<double> arw("", "gyro-arw-deg-rt-h",
+									"angle random walk of the gyro [deg/sqrt(h)] (the standstill measurement's noise)",
+									false, 0.001, "N", cmd);
+		TCLAP::ValueArg<double> bias_inst("", "gyro-bias-instability-dph",
+										  "bias instability of the gyro [deg/h] (not taken for the offset)", false, 0.005,
+										  "B", cmd);
+		TCLAP::ValueArg<std::string> still_src("", "standstill-source",
+											   "what tells a standstill: 'both' (wheels stopped and the gyro sees no "
+											   "rotation), 'odometry' or 'gyro'",
+											   false, "both", "SRC", cmd);
+		TCLAP::ValueArg<double> min_still("", "min-standstill-s",
+										  "shortest standstill used for an update [s] (plus 1 s left out at each end)",
+										  false, 10.0, "S", cmd);
 		TCLAP::SwitchArg quiet("q", "quiet", "no progress line on stderr while a drive is read", cmd);
 		TCLAP::SwitchArg in_memory("", "in-memory",
 								   "hold the whole drive in memory, as --plots, "
@@ -171,6 +205,20 @@ int main(int argc, char** argv)
 		st.quiet = quiet.getValue();
 		st.keep_series = !csv.getValue().empty();
 		st.in_memory = in_memory.getValue();
+		st.refinement.enabled = !no_refine.getValue();
+		st.refinement.turn_on_repeatability_dph = turn_on_rep.getValue();
+		st.refinement.noise.arw_deg_rt_h = arw.getValue();
+		st.refinement.noise.bias_instability_dph = bias_inst.getValue();
+		st.refinement.min_still_s = min_still.getValue();
+		if (still_src.getValue() == "both") st.refinement.standstill.source = nav::StandstillSource::OdometryAndGyro;
+		else if (still_src.getValue() == "odometry") st.refinement.standstill.source = nav::StandstillSource::Odometry;
+		else if (still_src.getValue() == "gyro") st.refinement.standstill.source = nav::StandstillSource::Gyro;
+		else throw std::runtime_error("--standstill-source: '" + still_src.getValue() + "' is not both|odometry|gyro");
+		for (const auto& [name, v] : {std::pair<const char*, double>{"--turn-on-repeatability-dph", turn_on_rep.getValue()},
+									  {"--gyro-arw-deg-rt-h", arw.getValue()},
+									  {"--gyro-bias-instability-dph", bias_inst.getValue()},
+									  {"--min-standstill-s", min_still.getValue()}})
+			if (!(v >= 0) || !std::isfinite(v)) throw std::runtime_error(std::string(name) + ": must be a finite value >= 0");
 		// The trajectories the outputs draw or write are kept; the others go once measured.
 		st.keep_trajectories = !plots.getValue().empty()  ? drift::KeptTrajectories::All
 							   : !odo_out.getValue().empty() ? drift::KeptTrajectories::ForOdometry
@@ -198,6 +246,11 @@ int main(int argc, char** argv)
 						e.figures.begin()->second.turned_deg, e.segments.straights.size(),
 						e.figures.begin()->second.straight_time_s);
 			if (!e.gyro_off.empty()) std::fputs(drift::gyroOffText(e).c_str(), stdout);
+			if (!cal.getValue().empty())
+				std::fputs((st.refinement.enabled ? drift::refinementText(e.refinement, e.drive.fog.epoch_s)
+												  : std::string("  field refinement: off (--no-field-refinement)\n"))
+							   .c_str(),
+						   stdout);
 			std::printf("  %-12s %10s %10s %10s %14s %12s %12s\n", "gyro", "hdg RMS", "hdg max", "hdg final",
 						"drift betw.", "turn SF", "pos final");
 			std::printf("  %-12s %10s %10s %10s %14s %12s %12s\n", "", "[deg]", "[deg]", "[deg]", "turns [deg/h]", "[ppm]",

@@ -14,7 +14,8 @@ constexpr double kArcminPerDeg = 60.0;  // N [deg/sqrt h] -> white rate sigma 60
 FieldBiasRefiner::FieldBiasRefiner(const FieldRefinementOptions& options, double t0_s)
 	: opt_(options),
 	  detector_(options.standstill, options.expected_rate_dph),
-	  kf_(t0_s, options.prior_offset_dph, options.prior_sigma_dph, options.noise)
+	  kf_(t0_s, options.prior_offset_dph, options.prior_sigma_dph, options.noise),
+	  t0_s_(t0_s)
 {
 	if (!(options.min_still_s >= 0) || !(options.guard_s >= 0) || !std::isfinite(options.min_still_s) ||
 		!std::isfinite(options.guard_s))
@@ -53,6 +54,12 @@ void FieldBiasRefiner::endRun()
 
 void FieldBiasRefiner::take(const ClassifiedRate& c)
 {
+	if (c.turn_on && c.t_s > t0_s_)
+	{
+		endRun();
+		kf_ = BiasOffsetFilter(c.t_s, opt_.prior_offset_dph, opt_.prior_sigma_dph, opt_.noise);
+		restarts_++;
+	}
 	if (!c.still)
 		endRun();
 	else

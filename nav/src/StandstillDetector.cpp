@@ -64,10 +64,11 @@ bool StandstillDetector::odometryDecides(double t_s, bool& still)
 	return true;
 }
 
-void StandstillDetector::addRate(double t_s, double rate_dph)
+void StandstillDetector::addRate(double t_s, double rate_dph, bool turn_on)
 {
 	if (!std::isfinite(t_s) || !(t_s > last_rate_t_)) return;
 	ClassifiedRate c;
+	c.turn_on = turn_on;
 	c.t_s = t_s;
 	c.rate_dph = rate_dph;
 	c.dt_s = std::isfinite(last_rate_t_) ? t_s - last_rate_t_ : std::numeric_limits<double>::quiet_NaN();

@@ -17,7 +17,8 @@
  *    B: bias instability), must be below the offset's current variance. A standstill that
  *    cannot beat what is already known changes nothing (counted in shortStandstills()).
  * A drive without a standstill is passed through unchanged (the prior offset, 0 unless a
- * refined calibration gives one, is what is subtracted: x - 0.0 is x). */
+ * refined calibration gives one, is what is subtracted: x - 0.0 is x). At a turn-on within the
+ * log the gyro picks a new offset: the filter restarts from the prior there. */
 
 #include <mrpt_fog_nav/BiasOffsetFilter.h>
 #include <mrpt_fog_nav/StandstillDetector.h>
@@ -70,7 +71,10 @@ class FieldBiasRefiner
 	FieldBiasRefiner(const FieldRefinementOptions& options, double t0_s);
 
 	void addOdometry(double t_s, double x_m, double y_m, double yaw_rad) { detector_.addOdometry(t_s, x_m, y_m, yaw_rad), drain(); }
-	void addRate(double t_s, double rate_dph) { detector_.addRate(t_s, rate_dph), drain(); }
+	/** A gyro sample (times must increase: a repeated or earlier time is dropped and gives no
+	 * output). turn_on: the gyro was powered on at this sample: a new turn-on offset, so the
+	 * filter restarts from the prior. */
+	void addRate(double t_s, double rate_dph, bool turn_on = false) { detector_.addRate(t_s, rate_dph, turn_on), drain(); }
 	void finish();
 	/** The next corrected sample, in the input's order; false when none is ready (waiting for
 	 * the odometry that covers it). */
@@ -80,6 +84,8 @@ class FieldBiasRefiner
 	/** Standstills that ended before they could change anything (shorter than min_still_s plus
 	 * the guards, or too short to beat the prior). */
 	std::size_t shortStandstills() const { return short_; }
+	/** Turn-ons after the first sample (each restarted the filter from the prior). */
+	std::size_t restarts() const { return restarts_; }
 	const BiasOffsetFilter& filter() const { return kf_; }
 	const FieldRefinementOptions& options() const { return opt_; }
 
@@ -98,7 +104,8 @@ class FieldBiasRefiner
 	std::optional<StandstillUpdate> current_;
 	double reading_sum_ = 0;
 	std::vector<StandstillUpdate> updates_;
-	std::size_t short_ = 0;
+	std::size_t short_ = 0, restarts_ = 0;
+	double t0_s_;
 	std::deque<RefinedRate> out_;
 };
 

@@ -51,6 +51,7 @@ struct ClassifiedRate
 	double rate_dph = 0;
 	double dt_s = std::numeric_limits<double>::quiet_NaN();  //!< since the previous sample (NaN: first)
 	bool still = false;
+	bool turn_on = false;  //!< the gyro was (re)powered at this sample (passed through)
 };
 
 class StandstillDetector
@@ -66,8 +67,8 @@ class StandstillDetector
 	void addOdometry(double t_s, double x_m, double y_m, double yaw_rad);
 	/** A gyro sample: the mean rate over the interval ending at t_s [deg/h]. Times must
 	 * increase; a repeated or earlier time is ignored. A non-finite rate is passed on as not
-	 * still. */
-	void addRate(double t_s, double rate_dph);
+	 * still. turn_on marks the first sample after a power-on (passed through to the output). */
+	void addRate(double t_s, double rate_dph, bool turn_on = false);
 	/** No more input: every sample waiting for odometry is decided (not still). */
 	void finish();
 	/** The next decided sample, in time order; false when none is ready. */
