@@ -116,6 +116,8 @@ JsonValue driveJson(const DriveEvaluation& e, const DriftContext& ctx)
 		const FieldRefinementResult& fr = e.refinement;
 		JsonValue& f = j["field_refinement"] = JsonValue::object();
 		f["ran"] = fr.ran;
+		f["calibration_field_offset_dph"] =
+			fr.calibration_offset ? JsonValue(fr.calibration_offset_at_drive_dph) : JsonValue();
 		f["note"] = fr.note.empty() ? JsonValue() : JsonValue(fr.note);
 		if (fr.ran)
 		{

@@ -11,7 +11,7 @@
 namespace mrpt_fog::drift
 {
 nav::FieldRefinementOptions refinementOptionsFor(const FieldRefinementSettings& st, const Calibration& zcal,
-												 double latitude_deg, FieldRefinementResult& r)
+												 double latitude_deg, double t0_unix_s, FieldRefinementResult& r)
 {
 	nav::FieldRefinementOptions o;
 	o.standstill = st.standstill;
@@ -24,6 +24,8 @@ nav::FieldRefinementOptions refinementOptionsFor(const FieldRefinementSettings& 
 	r.thermal_sigma_dph = std::isfinite(held) && held > 0 ? held : (std::isfinite(in) && in > 0 ? in : 0.0);
 	o.prior_offset_dph = 0.0;
 	o.prior_sigma_dph = std::hypot(r.thermal_sigma_dph, st.turn_on_repeatability_dph);
+	if (r.calibration_offset)  // the calibration's field offset is already applied: its uncertainty adds
+		o.prior_sigma_dph = std::hypot(o.prior_sigma_dph, r.calibration_offset->sigmaAt_dph(t0_unix_s));
 	r.prior_offset_dph = o.prior_offset_dph;
 	r.prior_sigma_dph = o.prior_sigma_dph;
 	r.expected_rate_dph = o.expected_rate_dph;
@@ -78,8 +80,12 @@ void refineInMemory(const std::vector<double>& t_s, std::vector<double>& rate_dp
 
 std::string refinementText(const FieldRefinementResult& r, double epoch_s)
 {
-	if (!r.ran) return r.note.empty() ? "" : "  field refinement: " + r.note + "\n";
-	std::string s = formatValue("  field refinement (standstill zero-rate updates; prior offset %.4f", r.prior_offset_dph) +
+	std::string s;
+	if (r.calibration_offset)
+		s += formatValue("  calibration field offset (fog-refine, revision %.0f): ", r.calibration_offset->revision) +
+			 formatValue("%+.4f deg/h at the drive's date applied", r.calibration_offset_at_drive_dph) + "\n";
+	if (!r.ran) return s + (r.note.empty() ? "" : "  field refinement: " + r.note + "\n");
+	s += formatValue("  field refinement (standstill zero-rate updates; prior offset %.4f", r.prior_offset_dph) +
 					formatValue(" +- %.4f deg/h", r.prior_sigma_dph) +
 					formatValue(", thermal model share %.4f", r.thermal_sigma_dph) +
 					formatValue("; still reads Earth rate %.4f deg/h): ", r.expected_rate_dph) + r.note + "\n";

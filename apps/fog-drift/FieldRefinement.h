@@ -11,6 +11,7 @@
 #include "DriveData.h"
 
 #include <mrpt_fog/model/Calibration.h>
+#include <mrpt_fog/model/FieldOffset.h>
 #include <mrpt_fog_nav/FieldBiasRefiner.h>
 
 #include <string>
@@ -40,12 +41,17 @@ struct FieldRefinementResult
 	std::vector<nav::StandstillUpdate> updates;  //!< absolute times
 	std::size_t short_standstills = 0, restarts = 0;
 	double offset_dph = 0, offset_sigma_dph = 0;  //!< at the end of the drive
+	/** The calibration file's field offset (fog-refine), applied to the compensated rate at the
+	 * drive's date whether or not the standstill updates run; their prior is then the turn-on's
+	 * own draw around it. */
+	std::optional<FieldOffset> calibration_offset;
+	double calibration_offset_at_drive_dph = 0;
 };
 
 /** The refiner's options for the z calibration `zcal` at the drive's latitude; fills the prior
  * and the expected rate into `result`. */
 nav::FieldRefinementOptions refinementOptionsFor(const FieldRefinementSettings& settings, const Calibration& zcal,
-												 double latitude_deg, FieldRefinementResult& result);
+												 double latitude_deg, double t0_unix_s, FieldRefinementResult& result);
 
 /** Copies the refiner's updates and final state into `result` (ran = true) and writes its note. */
 void noteRefinement(const nav::FieldBiasRefiner& refiner, FieldRefinementResult& result);

@@ -740,9 +740,16 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 	};
 	std::deque<PendingComp> comp_pending;
 	bool prev_on = true;
+	if (zcal)
+	{
+		e.refinement.calibration_offset = loadFieldOffset(st.cal_path);
+		if (e.refinement.calibration_offset)
+			e.refinement.calibration_offset_at_drive_dph = e.refinement.calibration_offset->offsetAt_dph(scan.fog.first);
+	}
+	const FieldOffset* field_offset = e.refinement.calibration_offset ? &*e.refinement.calibration_offset : nullptr;
 	if (zcal && st.refinement.enabled)
 		refiner = std::make_unique<nav::FieldBiasRefiner>(
-			refinementOptionsFor(st.refinement, *zcal, e.latitude_deg, e.refinement), scan.fog.first);
+			refinementOptionsFor(st.refinement, *zcal, e.latitude_deg, scan.fog.first, e.refinement), scan.fog.first);
 	const auto drainRefiner = [&] {
 		nav::RefinedRate x;
 		while (refiner->next(x))
@@ -820,16 +827,19 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 				{
 					throw std::runtime_error(st.cal_path + ": cannot compensate the drive's FOG: " + ex.what());
 				}
+				// the calibration's field offset at this date (as evaluateDrive)
+				const double v = field_offset ? r + e.calibration_earth_rate_dph - field_offset->offsetAt_dph(t)
+											  : r + e.calibration_earth_rate_dph;
 				if (refiner)
 				{
 					const bool on = !has_power || x.power != 0.0;
-					comp_pending.push_back({k, r + e.calibration_earth_rate_dph, on});
-					refiner->addRate(t, on ? r + e.calibration_earth_rate_dph : NAN, k > 0 && on && !prev_on);
+					comp_pending.push_back({k, v, on});
+					refiner->addRate(t, on ? v : NAN, k > 0 && on && !prev_on);
 					prev_on = on;
 					drainRefiner();
 				}
 				else
-					comp_var->addGyro(t, r + e.calibration_earth_rate_dph, k);
+					comp_var->addGyro(t, v, k);
 			}
 			if (++since_pump >= 64) pumpAll(), since_pump = 0;
 		}

@@ -1,6 +1,7 @@
 /* mrpt_fog: the simulator's turn-on repeatability and aging (FogDevice::turn_on). */
 #include <gtest/gtest.h>
 #include <mrpt/containers/yaml.h>
+#include <mrpt_fog/sim/ChamberRun.h>
 #include <mrpt_fog/sim/FogSimulator.h>
 
 #include <cmath>
@@ -152,4 +153,13 @@ TEST(TurnOnAging, DeviceFileReadsAndChecksTheSection)
 	EXPECT_NE(fogtest::fromYamlTextError<FogDevice>("turn_on: {bias_repeatability_dph: -1}\n", "dev.yaml")
 				  .find("turn_on.bias_repeatability_dph"),
 			  std::string::npos);
+}
+
+// Logs of an aging device carry their dates: t = 0 is age_days after the simulator's epoch.
+TEST(TurnOnAging, AgedDeviceIsSimulatedLater)
+{
+	FogDevice d = FogDevice::defaultDevice();
+	EXPECT_EQ(d.epoch_s(), kSimEpoch_s);
+	d.turn_on.age_days = 30;
+	EXPECT_EQ(d.epoch_s(), kSimEpoch_s + 30 * 86400.0);
 }

@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/sim/EffectRegistry.h>
+#include <mrpt_fog/sim/ChamberRun.h>
 #include <mrpt_fog/sim/FogDevice.h>
 #include <mrpt_fog/common/NumberFormat.h>
 
@@ -256,6 +257,12 @@ FogDevice FogDevice::fromYaml(const mrpt::containers::yaml& doc, const std::stri
 FogDevice FogDevice::fromFile(const std::string& path)
 {
 	return fromYaml(parseYamlFile(path), path);
+}
+
+double FogDevice::epoch_s() const
+{
+	constexpr double kSecondsPerDay = 86400.0;
+	return kSimEpoch_s + turn_on.age_days * kSecondsPerDay;
 }
 
 FogDevice FogDevice::withoutNoise() const

@@ -129,6 +129,9 @@ struct FogDevice
 	 * random walk, angle quantisation, thermistor noise and quantisation): the deterministic
 	 * response that model fits and reconstructions compare against. */
 	FogDevice withoutNoise() const;
+	/** The absolute time [s] of the run's t = 0: the simulator's epoch (ChamberRun.h), moved
+	 * turn_on.age_days later, so that logs of an aging device carry their dates. */
+	double epoch_s() const;
 	/** Consistency checks (throws std::invalid_argument naming the field). */
 	void validate() const;
 	/** Every parameter as (key, value) text pairs, keys "device.<section>.<field>". */
