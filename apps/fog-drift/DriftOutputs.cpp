@@ -139,6 +139,7 @@ JsonValue driveJson(const DriveEvaluation& e, const DriftContext& ctx)
 				o["sigma_before_dph"] = u.sigma_before_dph;
 				o["offset_after_dph"] = u.offset_after_dph;
 				o["sigma_after_dph"] = u.sigma_after_dph;
+				o["applied"] = u.applied;
 				list.push_back(o);
 			}
 			f["updates"] = list;
@@ -146,6 +147,9 @@ JsonValue driveJson(const DriveEvaluation& e, const DriftContext& ctx)
 			f["turn_on_restarts"] = static_cast<unsigned long>(fr.restarts);
 			f["offset_dph"] = fr.offset_dph;
 			f["offset_sigma_dph"] = fr.offset_sigma_dph;
+			f["applied"] = fr.applied;
+			f["applied_from_s"] = fr.applied ? JsonValue(fr.applied_since_s - e.drive.fog.epoch_s) : JsonValue();
+			f["significance_sigma"] = fr.significance_sigma;
 		}
 	}
 	j["distance_m"] = report.distance_m;

@@ -18,6 +18,8 @@ nav::FieldRefinementOptions refinementOptionsFor(const FieldRefinementSettings& 
 	o.noise = st.noise;
 	o.min_still_s = st.min_still_s;
 	o.guard_s = st.guard_s;
+	o.significance_sigma = st.significance_sigma;
+	r.significance_sigma = st.significance_sigma;
 	o.expected_rate_dph = units::kEarthRate_dph * std::sin(latitude_deg * units::kDegToRad);
 	// the thermal model's uncertainty: its held-out 100 s stability (else the in-sample one)
 	const double held = zcal.held_out.stability_dph, in = zcal.in_sample.stability_dph;
@@ -40,12 +42,20 @@ void noteRefinement(const nav::FieldBiasRefiner& f, FieldRefinementResult& r)
 	r.restarts = f.restarts();
 	r.offset_dph = f.filter().offset_dph();
 	r.offset_sigma_dph = f.filter().offset_sigma_dph();
+	r.applied = f.applied();
+	r.applied_since_s = f.appliedSince_s();
 	if (r.updates.empty())
 		r.note = "no standstill long enough to beat the prior (" + std::to_string(r.short_standstills) +
 				 " shorter ones): no update; the compensated output is the thermal model's alone, identical to "
 				 "--no-field-refinement";
+	else if (!r.applied)
+		r.note = std::to_string(r.updates.size()) +
+				 " standstill update(s), offset within " + formatValue("%.3g", r.significance_sigma) +
+				 " sigma of the prior: not applied; the compensated output is the thermal model's alone, identical "
+				 "to --no-field-refinement";
 	else
-		r.note = std::to_string(r.updates.size()) + " standstill update(s)";
+		r.note = std::to_string(r.updates.size()) + " standstill update(s), the estimate applied from the first "
+				 "that showed the prior wrong";
 }
 
 void refineInMemory(const std::vector<double>& t_s, std::vector<double>& rate_dph, const std::vector<bool>& on,
@@ -93,7 +103,8 @@ std::string refinementText(const FieldRefinementResult& r, double epoch_s)
 		s += formatValue("    still %.1f", u.start_s - epoch_s) + formatValue("-%.1f s: ", u.end_s - epoch_s) +
 			 std::to_string(u.samples) + " samples used, read" + formatValue(" %+.4f deg/h; offset", u.mean_reading_dph) +
 			 formatValue(" %+.4f", u.offset_before_dph) + formatValue(" +- %.4f ->", u.sigma_before_dph) +
-			 formatValue(" %+.4f", u.offset_after_dph) + formatValue(" +- %.4f deg/h\n", u.sigma_after_dph);
+			 formatValue(" %+.4f", u.offset_after_dph) + formatValue(" +- %.4f deg/h", u.sigma_after_dph) +
+			 (u.applied ? ", applied" : "") + "\n";
 	if (!r.updates.empty())
 		s += formatValue("    offset at the end %+.4f", r.offset_dph) + formatValue(" +- %.4f deg/h", r.offset_sigma_dph) +
 			 (r.restarts ? ", restarted at " + std::to_string(r.restarts) + " turn-on(s)" : std::string()) + "\n";

@@ -28,6 +28,7 @@ struct FieldRefinementSettings
 	nav::GyroNoiseModel noise;
 	nav::StandstillOptions standstill;
 	double min_still_s = 10.0, guard_s = 1.0;
+	double significance_sigma = 3.0;  //!< the estimate is applied once it differs from the prior by this many sigma
 };
 
 /** What the refinement did on one drive (fog-drift's text and JSON "field_refinement"). */
@@ -41,6 +42,9 @@ struct FieldRefinementResult
 	std::vector<nav::StandstillUpdate> updates;  //!< absolute times
 	std::size_t short_standstills = 0, restarts = 0;
 	double offset_dph = 0, offset_sigma_dph = 0;  //!< at the end of the drive
+	bool applied = false;  //!< the estimate was applied (significant) by the end of the drive
+	double applied_since_s = 0;  //!< absolute time it was first applied in the last turn-on
+	double significance_sigma = 3.0;
 	/** The calibration file's field offset (fog-refine), applied to the compensated rate at the
 	 * drive's date whether or not the standstill updates run; their prior is then the turn-on's
 	 * own draw around it. */

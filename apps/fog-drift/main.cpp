@@ -78,7 +78,9 @@ FIELD REFINEMENT (compensated single-axis gyro; on by default, --no-field-refine
   compensated rate should read the vertical Earth rate; a Kalman filter of the offset (prior:
   0 +- the calibration's held-out stability and --turn-on-repeatability-dph combined; noise:
   --gyro-arw-deg-rt-h, --gyro-bias-instability-dph) takes what it reads beyond that and
-  subtracts its estimate from every later sample (causal). The first and last second of each
+  subtracts its estimate from every later sample (causal), once the estimate differs from the
+  prior by more than --significance-sigma (3) of its sigma: a calibration the standstills do
+  not contradict is left alone (0: the plain filter, always). The first and last second of each
   standstill are left out; a standstill shorter than --min-standstill-s, or too short to beat
   what is known, changes nothing. A drive without a standstill is not changed (the output says
   so). JSON: field_refinement (each update, the offset and its 1-sigma).
@@ -184,6 +186,10 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<double> min_still("", "min-standstill-s",
 										  "shortest standstill used for an update [s] (plus 1 s left out at each end)",
 										  false, 10.0, "S", cmd);
+		TCLAP::ValueArg<double> signif("", "significance-sigma",
+									   "apply the standstill estimate once it differs from the prior by more than this "
+									   "many of its sigma [-] (0: always, the plain Kalman filter)",
+									   false, 3.0, "K", cmd);
 		TCLAP::SwitchArg quiet("q", "quiet", "no progress line on stderr while a drive is read", cmd);
 		TCLAP::SwitchArg in_memory("", "in-memory",
 								   "hold the whole drive in memory, as --plots, "
@@ -210,6 +216,7 @@ int main(int argc, char** argv)
 		st.refinement.noise.arw_deg_rt_h = arw.getValue();
 		st.refinement.noise.bias_instability_dph = bias_inst.getValue();
 		st.refinement.min_still_s = min_still.getValue();
+		st.refinement.significance_sigma = signif.getValue();
 		if (still_src.getValue() == "both") st.refinement.standstill.source = nav::StandstillSource::OdometryAndGyro;
 		else if (still_src.getValue() == "odometry") st.refinement.standstill.source = nav::StandstillSource::Odometry;
 		else if (still_src.getValue() == "gyro") st.refinement.standstill.source = nav::StandstillSource::Gyro;
@@ -217,7 +224,8 @@ int main(int argc, char** argv)
 		for (const auto& [name, v] : {std::pair<const char*, double>{"--turn-on-repeatability-dph", turn_on_rep.getValue()},
 									  {"--gyro-arw-deg-rt-h", arw.getValue()},
 									  {"--gyro-bias-instability-dph", bias_inst.getValue()},
-									  {"--min-standstill-s", min_still.getValue()}})
+									  {"--min-standstill-s", min_still.getValue()},
+									  {"--significance-sigma", signif.getValue()}})
 			if (!(v >= 0) || !std::isfinite(v)) throw std::runtime_error(std::string(name) + ": must be a finite value >= 0");
 		// The trajectories the outputs draw or write are kept; the others go once measured.
 		st.keep_trajectories = !plots.getValue().empty()  ? drift::KeptTrajectories::All

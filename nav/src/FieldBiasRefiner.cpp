@@ -18,8 +18,8 @@ FieldBiasRefiner::FieldBiasRefiner(const FieldRefinementOptions& options, double
 	  t0_s_(t0_s)
 {
 	if (!(options.min_still_s >= 0) || !(options.guard_s >= 0) || !std::isfinite(options.min_still_s) ||
-		!std::isfinite(options.guard_s))
-		throw std::invalid_argument("field refinement: min standstill and guard must be finite and >= 0 s");
+		!std::isfinite(options.guard_s) || !(options.significance_sigma >= 0) || !std::isfinite(options.significance_sigma))
+		throw std::invalid_argument("field refinement: min standstill, guard and significance must be finite and >= 0");
 }
 
 bool FieldBiasRefiner::beatsPrior(double length_s) const
@@ -27,7 +27,7 @@ bool FieldBiasRefiner::beatsPrior(double length_s) const
 	if (!(length_s > 0)) return false;
 	const double white = kArcminPerDeg * opt_.noise.arw_deg_rt_h;
 	const double B = opt_.noise.bias_instability_dph;
-	const double P = kf_.offset_sigma_dph();
+	const double P = opt_.prior_sigma_dph;  // the prior, not what earlier standstills learned
 	return white * white / length_s + B * B < P * P;
 }
 
@@ -41,6 +41,7 @@ void FieldBiasRefiner::endRun()
 			current_->offset_after_dph = kf_.offset_dph();
 			current_->sigma_after_dph = kf_.offset_sigma_dph();
 			current_->mean_reading_dph = reading_sum_ / static_cast<double>(current_->samples);
+			current_->applied = applied_;
 			updates_.push_back(*current_);
 		}
 		else if (run_last_s_ > run_start_s_)
@@ -59,6 +60,8 @@ void FieldBiasRefiner::take(const ClassifiedRate& c)
 		endRun();
 		kf_ = BiasOffsetFilter(c.t_s, opt_.prior_offset_dph, opt_.prior_sigma_dph, opt_.noise);
 		restarts_++;
+		applied_ = false;
+		applied_since_s_ = std::numeric_limits<double>::quiet_NaN();
 	}
 	if (!c.still)
 		endRun();
@@ -96,9 +99,15 @@ void FieldBiasRefiner::take(const ClassifiedRate& c)
 				run_.pop_front();
 			}
 	}
+	if (!applied_ && current_ &&
+		std::abs(kf_.offset_dph() - opt_.prior_offset_dph) > opt_.significance_sigma * kf_.offset_sigma_dph())
+	{
+		applied_ = true;
+		applied_since_s_ = c.t_s;
+	}
 	RefinedRate r;
 	r.t_s = c.t_s;
-	r.correction_dph = kf_.correctionAt_dph(c.t_s);
+	r.correction_dph = applied_ ? kf_.correctionAt_dph(c.t_s) : opt_.prior_offset_dph;
 	r.rate_dph = c.rate_dph - r.correction_dph;
 	out_.push_back(r);
 }

@@ -139,6 +139,7 @@ struct RefineRun
 	std::vector<StandstillUpdate> updates;
 	std::size_t short_standstills = 0;
 	double offset = 0, sigma = 0;
+	bool applied = false;
 };
 
 RefineRun refine(const Motion& m, double offset_dph, double arw, std::uint64_t seed, FieldRefinementOptions o)
@@ -164,6 +165,7 @@ RefineRun refine(const Motion& m, double offset_dph, double arw, std::uint64_t s
 	run.short_standstills = r.shortStandstills();
 	run.offset = r.filter().offset_dph();
 	run.sigma = r.filter().offset_sigma_dph();
+	run.applied = r.applied();
 	return run;
 }
 }  // namespace
@@ -220,4 +222,23 @@ TEST(FieldBiasRefiner, ShortStandstillChangesNothing)
 	const RefineRun b = refine(stop20, 0.0, 0.001, 7, tight);
 	EXPECT_TRUE(b.updates.empty());
 	EXPECT_EQ(b.short_standstills, 1u);
+}
+
+// A calibration the standstills do not contradict is left alone: with no offset, the estimate
+// stays within 3 sigma of the prior, nothing is applied and the output is the input bit for bit
+// although the filter ran; the plain filter (significance 0) applies its noisy estimate.
+TEST(FieldBiasRefiner, OffsetWithinItsUncertaintyIsNotApplied)
+{
+	const Motion m = makeMotion({{121, 0, 0, 0}, {200, 5, 1, 0}, {260, 0, 0, 0}, {300, 5, 0, 0}});
+	const RefineRun gated = refine(m, 0.0, 0.001, 9, {});
+	EXPECT_EQ(gated.updates.size(), 2u);
+	EXPECT_FALSE(gated.applied);
+	EXPECT_LT(std::abs(gated.offset), 3 * gated.sigma);
+	for (std::size_t k = 0; k < gated.in.size(); k++) EXPECT_EQ(gated.out[k].rate_dph, gated.in[k]);
+	FieldRefinementOptions plain;
+	plain.significance_sigma = 0;
+	const RefineRun p = refine(m, 0.0, 0.001, 9, plain);
+	EXPECT_TRUE(p.applied);
+	EXPECT_NE(p.out.back().rate_dph, p.in.back());
+	EXPECT_NEAR(p.out.back().correction_dph, p.offset, 1e-3);  // c + g, g decayed over 40 s
 }

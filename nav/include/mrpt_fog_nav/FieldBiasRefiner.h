@@ -14,8 +14,12 @@
  *    taken for bias);
  *  - none until the standstill has lasted min_still_s AND is long enough to beat the prior:
  *    its white-noise variance over its length, (60 N)^2 / T + B^2 (N: angle random walk,
- *    B: bias instability), must be below the offset's current variance. A standstill that
- *    cannot beat what is already known changes nothing (counted in shortStandstills()).
+ *    B: bias instability), must be below the prior's variance. A standstill that cannot beat
+ *    the prior changes nothing (counted in shortStandstills()); one that can is weighed by the
+ *    filter against what earlier standstills learned.
+ * The estimate replaces the prior only once it differs from it by more than significance_sigma
+ * (3) of its own 1-sigma: a calibration the standstills do not contradict is left alone, and
+ * noise of a few thousandths of a deg/h is not added to a good thermal model.
  * A drive without a standstill is passed through unchanged (the prior offset, 0 unless a
  * refined calibration gives one, is what is subtracted: x - 0.0 is x). At a turn-on within the
  * log the gyro picks a new offset: the filter restarts from the prior there. */
@@ -25,6 +29,7 @@
 
 #include <cstddef>
 #include <deque>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -41,6 +46,10 @@ struct FieldRefinementOptions
 	double prior_sigma_dph = 1.0;  //!< its 1-sigma [deg/h]: thermal model uncertainty and turn-on repeatability
 	double min_still_s = 10.0;  //!< shortest standstill used [s]
 	double guard_s = 1.0;  //!< left out at both ends of a standstill [s]
+	/** The estimate replaces the prior only once the standstills show the prior wrong:
+	 * |offset - prior offset| > significance_sigma x its 1-sigma (then for the rest of the turn-on).
+	 * 0: always (the plain filter). */
+	double significance_sigma = 3.0;
 };
 
 /** What one standstill did to the offset. */
@@ -53,6 +62,9 @@ struct StandstillUpdate
 	double offset_after_dph = 0, sigma_after_dph = 0;
 	/** Mean of (rate - expected rate) over the samples used [deg/h]: what the standstill read. */
 	double mean_reading_dph = 0;
+	/** After this standstill the estimate is applied (it differs significantly from the prior,
+	 * now or at an earlier standstill of the same turn-on). */
+	bool applied = false;
 };
 
 /** A corrected sample. */
@@ -87,6 +99,10 @@ class FieldBiasRefiner
 	/** Turn-ons after the first sample (each restarted the filter from the prior). */
 	std::size_t restarts() const { return restarts_; }
 	const BiasOffsetFilter& filter() const { return kf_; }
+	/** Whether the estimate is applied (see FieldRefinementOptions::significance_sigma), and
+	 * since when (NaN: not yet in this turn-on). */
+	bool applied() const { return applied_; }
+	double appliedSince_s() const { return applied_since_s_; }
 	const FieldRefinementOptions& options() const { return opt_; }
 
    private:
@@ -105,6 +121,8 @@ class FieldBiasRefiner
 	double reading_sum_ = 0;
 	std::vector<StandstillUpdate> updates_;
 	std::size_t short_ = 0, restarts_ = 0;
+	bool applied_ = false;
+	double applied_since_s_ = std::numeric_limits<double>::quiet_NaN();
 	double t0_s_;
 	std::deque<RefinedRate> out_;
 };
