@@ -103,6 +103,10 @@ class FieldBiasRefiner
 	 * since when (NaN: not yet in this turn-on). */
 	bool applied() const { return applied_; }
 	double appliedSince_s() const { return applied_since_s_; }
+	/** The correction at t_s [deg/h] from what is decided so far, for a caller that cannot wait
+	 * for the odometry covering t_s (a per-sample pipeline): causal, but unlike next() it depends
+	 * on how the caller interleaves gyro and odometry. */
+	double currentCorrection_dph(double t_s) const { return applied_ ? kf_.correctionAt_dph(t_s) : opt_.prior_offset_dph; }
 	const FieldRefinementOptions& options() const { return opt_; }
 
    private:
