@@ -9,15 +9,16 @@
  * the compensator restarts its warm-up only at an explicit 0 -> 1 step. fog-drift's powered
  * spans and gyro-off stretches (apps/fog-drift/GyroOff.h) follow the same rule. */
 
+#include <mrpt_fog/obs/GyroPower.h>
+
 #include <cmath>
 #include <cstddef>
 
 namespace mrpt_fog::app
 {
-/** The rule, for one row: the gyro is off when its power is 0. */
-inline bool isGyroOff(double power) { return power == 0.0; }
-/** The rule, for one row after another: a turn-on is power 1 right after power 0. */
-inline bool isTurnOn(double prev_power, double power) { return power == 1.0 && prev_power == 0.0; }
+/** The rule (obs/GyroPower.h), for the programs' rows. */
+using mrpt_fog::isGyroOff;
+using mrpt_fog::isTurnOn;
 
 /** Gyro-off rows and turn-ons of a log, counted row by row. */
 class PowerCycles

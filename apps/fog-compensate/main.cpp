@@ -9,6 +9,9 @@
 #include <mrpt_fog/io/FogLogReader.h>
 #include <mrpt_fog/io/FogLogWriter.h>
 #include <mrpt_fog/io/GzStream.h>
+#include <mrpt_fog/io/RawlogObjectReader.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt_fog/io/NumberText.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/model/Compensator.h>
@@ -51,7 +54,11 @@ THERMISTOR SCREENING (on by default)
 OUTPUT (by extension of -o)
   .rawlog   stock MRPT observations: per sample a CObservationIMU (compensated rates in
             IMU_WX/WY/WZ [rad/s], mean temperature in IMU_TEMPERATURE) and a
-            CObservationRawDAQ '<label>_THERMISTORS' (thermistors [degC], NaN = dropout).
+            CObservationRawDAQ '<label>_THERMISTORS' (thermistors [degC], NaN = dropout),
+            in the FOG observation's place. A rawlog input keeps every other object (odometry,
+            lidar, cameras, GPS...), in order and in its format: observations-only, or
+            actions-observations (CActionCollection + CSensoryFrame: the pair takes the FOG's
+            place in its frame).
   .csv      time_s, raw_rate_<a>_dph, bias_<a>_dph, compensated_rate_<a>_dph, flags,
             temp_<name>_C...  flags: 1 fallback, 2 no model, 4 clamped, 8 rate warm-up,
             16 rate-free start-up model (rates not yet estimable: start, burst, gap).
@@ -168,7 +175,29 @@ int main(int argc, char** argv)
 		const CalibrationSet cals = loadCalibrationSet(arg_cal.getValue());
 
 		// Sample by sample: read, screen, compensate, write. Memory does not grow with the log.
-		FogLogReader reader(arg_in.getValue(), arg_label.getValue());
+		// A rawlog into a rawlog keeps every other object in its place: observations-only, the
+		// reader passes them in file order between the samples; actions-observations, the objects
+		// are rewritten one by one (RawlogObjectReader).
+		const bool in_rawlog = fileExtension(arg_in.getValue()) == ".rawlog";
+		bool actions_format = false;
+		if (in_rawlog && ext == ".rawlog")
+		{
+			RawlogObjectReader probe(arg_in.getValue());
+			const auto first = probe.next();
+			actions_format = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(first) ||
+							 std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(first);
+		}
+		std::vector<mrpt::obs::CObservation::Ptr> others_before;  // met before the writer exists
+		FogLogWriter* others_to = nullptr;
+		std::size_t others_kept = 0;
+		FogLogReader::ObservationSink keep_others;
+		if (in_rawlog && ext == ".rawlog" && !actions_format)
+			keep_others = [&](const mrpt::obs::CObservation::Ptr& o) {
+				others_kept++;
+				if (others_to) others_to->writeOther(*o);
+				else others_before.push_back(o);
+			};
+		FogLogReader reader(arg_in.getValue(), arg_label.getValue(), ReadLimits{}, keep_others);
 		const FogSeries& layout = reader.header();
 		const auto withInput = [&](const std::exception& e) {
 			return std::runtime_error(arg_in.getValue() + " with " + arg_cal.getValue() + ": " + e.what());
@@ -204,7 +233,13 @@ int main(int argc, char** argv)
 		std::unique_ptr<FogLogWriter> rawlog_out;
 		std::unique_ptr<CompensatedCsvWriter> csv_out;
 		if (ext == ".csv") csv_out = std::make_unique<CompensatedCsvWriter>(out, layout, axis_letter, arg_cal.getValue());
-		else rawlog_out = std::make_unique<FogLogWriter>(out, layout, RawlogForm::Stock);
+		else if (!actions_format)
+		{
+			rawlog_out = std::make_unique<FogLogWriter>(out, layout, RawlogForm::Stock);
+			for (const auto& o : others_before) rawlog_out->writeOther(*o);
+			others_before.clear();
+			others_to = rawlog_out.get();
+		}
 		// Turn-ons for the warm-up term (as compensate() does): before the log, and 0 -> 1 power steps.
 		if (any_warmup)
 		{
@@ -223,8 +258,7 @@ int main(int argc, char** argv)
 		std::vector<double> temps, raw(comps.size());
 		std::vector<Compensator::Output> r(comps.size());
 		app::PowerCycles power_cycles;
-		while (reader.next(x))
-		{
+		const auto compensateSample = [&](FogSample& x) {
 			temps = x.temp_C;  // the output keeps the temperatures as read
 			if (screen) health.step(x.time_s, temps.data());
 			const bool turn_on = power_cycles.add(x.power);
@@ -235,16 +269,74 @@ int main(int argc, char** argv)
 				if (comps[i]->readsField()) comps[i]->noteField(x.field_uT);  // NaN when the log has none
 				r[i] = comps[i]->step(x.time_s, raw[i], temps.data());
 			}
-			if (csv_out) csv_out->write(x.time_s, raw, r, x.temp_C);
-			else
+		};
+		if (actions_format)
+		{
+			// actions-observations: each object as it stands, the chosen FOG's observations replaced
+			// in their frame by the compensated stock pair
+			RawlogObjectReader objects(arg_in.getValue());
+			RawlogObjectWriter writer(out);
+			FogObservationSamples samples(layout, arg_in.getValue());
+			const auto pairOf = [&](const CObservationFOG& f) {
+				samples.toSample(f, objects.objectsRead() - 1, x);
+				compensateSample(x);
+				CObservationFOG c = f;
+				for (std::size_t i = 0; i < comps.size(); i++) c.rate_dph[axis_index[i]] = r[i].compensated_dph;
+				return std::pair<mrpt::obs::CObservation::Ptr, mrpt::obs::CObservation::Ptr>(c.toIMU(), c.toRawDAQ());
+			};
+			const auto isChosen = [&](const mrpt::obs::CObservation::Ptr& o) {
+				return o->sensorLabel == layout.sensor_label && std::dynamic_pointer_cast<CObservationFOG>(o);
+			};
+			while (auto obj = objects.next())
 			{
-				for (std::size_t i = 0; i < comps.size(); i++) x.rate_dph[axis_index[i]] = r[i].compensated_dph;
-				rawlog_out->write(x);
+				if (auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj); o && isChosen(o))
+				{
+					const auto [imu, daq] = pairOf(*std::dynamic_pointer_cast<CObservationFOG>(o));
+					writer.write(*imu);
+					writer.write(*daq);
+				}
+				else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj))
+				{
+					mrpt::obs::CSensoryFrame copy;
+					for (const auto& so : *sf)
+					{
+						if (isChosen(so))
+						{
+							const auto [imu, daq] = pairOf(*std::dynamic_pointer_cast<CObservationFOG>(so));
+							copy.insert(imu);
+							copy.insert(daq);
+						}
+						else
+						{
+							copy.insert(so);
+							others_kept++;
+						}
+					}
+					writer.write(copy);
+				}
+				else
+				{
+					writer.write(*obj);
+					others_kept++;
+				}
+				progress.update(samples.samples(), objects.fileBytesRead(), objects.fileBytes());
 			}
-			progress.update(reader.samplesRead(), reader.fileBytesRead(), reader.fileBytes());
+			writer.close();
 		}
+		else
+			while (reader.next(x))
+			{
+				compensateSample(x);
+				if (csv_out) csv_out->write(x.time_s, raw, r, x.temp_C);
+				else
+				{
+					for (std::size_t i = 0; i < comps.size(); i++) x.rate_dph[axis_index[i]] = r[i].compensated_dph;
+					rawlog_out->write(x);
+				}
+				progress.update(reader.samplesRead(), reader.fileBytesRead(), reader.fileBytes());
+			}
 		if (csv_out) csv_out->close();
-		else rawlog_out->close();
+		else if (rawlog_out) rawlog_out->close();
 		progress.finish();
 		ThermistorScreening screening;
 		if (screen)
@@ -260,6 +352,9 @@ int main(int argc, char** argv)
 					comps.front()->counters().samples,
 					several ? (std::string(axis_letter.begin(), axis_letter.end()) + " (one model each)").c_str()
 							: std::string(1, axis_letter.front()).c_str());
+		if (keep_others || actions_format)
+			std::printf("  kept every other object (%zu, %s format)\n", others_kept,
+						actions_format ? "actions-observations" : "observations-only");
 		if (!uncalibrated.empty())
 			std::printf("  axis %s: not in the calibration, written raw\n", uncalibrated.c_str());
 		for (std::size_t i = 0; i < comps.size(); i++)

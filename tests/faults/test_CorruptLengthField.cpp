@@ -144,11 +144,12 @@ TEST(CorruptLengthField, SensoryFrameCountBounded)
 // A valid MRPT observation class with a corrupt size: a CObservation3DRangeScan (written by MRPT
 // 2.5) whose range image claims 2147483647 x 2147483647 pixels. MRPT's matrix allocates through its
 // aligned allocator, which returns null, and writes through it: fog-convert died of SIGSEGV (exit
-// 139) before the fix. Only observation classes whose MRPT readers fail cleanly are read now.
-TEST(CorruptLengthField, ObservationClassWithUnsafeReaderRefusedUnread)
+// 139) before the fix. Every observation class is read now, MRPT's readers under the bounded-
+// allocation guard (io/AllocationGuard.h): the request beyond the limit throws instead.
+TEST(CorruptLengthField, ObservationClassWithUnsafeReaderStoppedByTheAllocationGuard)
 {
 	EXPECT_EQ(refusedInChild(dataFile("corrupt_3d_range_image.rawlog"),
-							 {"object #0", "CObservation3DRangeScan", "rawlog-edit --keep-label"}),
+							 {"object #0", "CObservation3DRangeScan", "more memory than the limit"}),
 			  0)
-		<< "0 = FogIoError naming the file, the object, its class and the remedy; 1 = read; 2 = other message; 3 = other exception; else a crash";
+		<< "0 = FogIoError naming the file, the object, its class and why; 1 = read; 2 = other message; 3 = other exception; else a crash";
 }

@@ -8,7 +8,11 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt_fog/io/FogLogIO.h>
+#include <mrpt_fog/io/AllocationGuard.h>
 #include <mrpt_fog/io/FogRawlogMetadata.h>
+#include <mrpt_fog/io/RawlogObjectReader.h>
+#include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt/obs/CAction.h>
 #include <mrpt_fog/io/GzStream.h>
 #include <mrpt_fog/io/NumberText.h>
 #include <mrpt_fog/obs/FogSeriesConversion.h>
@@ -81,13 +85,13 @@ ObjectHeader parseObjectHeader(const unsigned char* p, std::size_t n)
 	return h;
 }
 
-/** The observation classes this reader lets MRPT deserialise: their MRPT readers size what they
- * allocate with std::vector or fixed members, so a corrupt length ends in std::bad_alloc, which is
- * reported. Other classes are refused unread: several (CObservation3DRangeScan's range image,
- * CObservation2DRangeScan's scan, CMatrixD) allocate through MRPT's aligned allocator, which returns
- * null on failure, and MRPT then writes through it: a corrupt size crashes the program (SIGSEGV,
- * found by fuzz_rawlog and by hand) instead of throwing. */
-const std::vector<const mrpt::rtti::TRuntimeClassId*>& readableObservationClasses()
+/** The observation classes whose MRPT readers size what they allocate with std::vector or fixed
+ * members (a corrupt length ends in std::bad_alloc, which is reported). The others may allocate
+ * through MRPT's aligned allocator, which returns null on failure, and MRPT then writes through
+ * it: a corrupt size would crash the program (SIGSEGV, found by fuzz_rawlog) instead of
+ * throwing. They are read under the bounded-allocation guard (io/AllocationGuard.h); only when
+ * that guard cannot be active in this program are they refused unread. */
+const std::vector<const mrpt::rtti::TRuntimeClassId*>& plainAllocatingClasses()
 {
 	static const std::vector<const mrpt::rtti::TRuntimeClassId*> classes{
 		CLASS_ID(CObservationFOG),			   CLASS_ID(mrpt::obs::CObservationIMU),
@@ -96,21 +100,28 @@ const std::vector<const mrpt::rtti::TRuntimeClassId*>& readableObservationClasse
 	return classes;
 }
 
-std::string readableClassList()
+std::string plainClassList()
 {
 	std::string s;
-	for (const auto* c : readableObservationClasses()) s += (s.empty() ? "" : ", ") + std::string(c->className);
+	for (const auto* c : plainAllocatingClasses()) s += (s.empty() ? "" : ", ") + std::string(c->className);
 	return s;
 }
 
-/** Whether objects of `c` may stand at the top level of a rawlog (observations-only or
- * sensory-frame format), or inside a sensory frame (observations only). */
-bool allowedClass(const mrpt::rtti::TRuntimeClassId* c, bool nested)
+bool isPlainAllocating(const mrpt::rtti::TRuntimeClassId* c)
 {
-	for (const auto* r : readableObservationClasses())
+	for (const auto* r : plainAllocatingClasses())
 		if (c == r) return true;
-	return !nested && c == CLASS_ID(mrpt::obs::CSensoryFrame);
+	return false;
 }
+
+/** Where an object stands: at the top level of the rawlog, inside a sensory frame, or inside an
+ * action collection. */
+enum class Nesting
+{
+	Top,
+	InFrame,
+	InActions
+};
 
 std::string labelList(const std::map<std::string, std::size_t>& counts)
 {
@@ -119,153 +130,117 @@ std::string labelList(const std::map<std::string, std::size_t>& counts)
 	return s;
 }
 
-/** Streaming rawlog reader: objects are deserialised one at a time from a GzReader. */
-class RawlogReaderImpl : public FogLogReader::Impl
+}  // namespace
+
+/** The top-level objects of a rawlog, each checked before MRPT reads it: its class must be able
+ * to stand there (an observation, a sensory frame or an action collection at the top level;
+ * observations in a frame; actions in a collection), sensory frames and action collections are
+ * read here (their counts bounded, each member checked the same way), and every other object is
+ * read by MRPT under the bounded-allocation guard. */
+class RawlogObjects
 {
    public:
-	RawlogReaderImpl(const std::string& path, const std::string& label, const ReadLimits& limits,
-					 FogLogReader::ObservationSink others)
-		: path_(path), label_(label), limits_(limits), sink_(std::move(others)), in_(path), arch_(in_)
+	RawlogObjects(const std::string& path, const ReadLimits& limits) : path_(path), limits_(limits), in_(path), arch_(in_)
 	{
 		registerAllClasses_mrpt_fog();
-		if (in_.atEnd()) throw FogIoError(path_ + ": empty rawlog (0 objects)");
-		// Read up to the first sample of the sensor: its layout and metadata are the header.
-		while (queue_.empty())
-			if (!readObject()) break;
-		if (!first_) failNoSensor();
-		header = emptySeriesLike(seriesFromObservations({first_}));
-		header.epoch_s = std::floor(mrpt::Clock::toDouble(first_->timestamp));
-		if (auto m = metas_.find(chosen_); m != metas_.end())
-		{
-			header.epoch_s = m->second.epoch_s;
-			header.metadata = m->second.metadata;
-		}
-		if (first_->hasTableRate) header.table_rate_dph.assign(1, NAN);
-		if (first_->hasField) header.field_uT.assign(1, NAN);
-		if (first_->hasPower) header.power.assign(1, NAN);
-		epoch_ticks_ = ticksOf(mrpt::Clock::fromDouble(header.epoch_s));
-		if (header.thermistors.size() > limits_.max_thermistors)
-			throw FogIoError(path_ + ": sensor '" + chosen_ + "' has " + std::to_string(header.thermistors.size()) +
-							 " thermistors, more than the limit of " + std::to_string(limits_.max_thermistors));
 	}
 
-	bool next(FogSample& x) override
+	/** The next top-level object; null at the end of the data. Throws FogIoError. */
+	mrpt::serialization::CSerializable::Ptr readTop()
 	{
-		while (queue_.empty())
-			if (!readObject())
-			{
-				finish();
-				return false;
-			}
-		CObservationFOG::Ptr o = std::move(queue_.front().first);
-		const std::size_t index = queue_.front().second;
-		queue_.pop_front();
-		const int64_t ticks = ticksOf(o->timestamp);
-		if (samples > 0 && ticks <= last_ticks_)
-			throw FogIoError(path_ + ": object #" + std::to_string(index) + ": sensor '" + chosen_ + "': time " +
-							 io::formatNumber(static_cast<double>(ticks - epoch_ticks_) / kTicksPerSecond) + " s " +
-							 (ticks == last_ticks_ ? "duplicates the previous sample's time" : "goes backwards") +
-							 "; times must be strictly increasing");
-		last_ticks_ = ticks;
-		x.time_s = static_cast<double>(ticks - epoch_ticks_) / kTicksPerSecond;
-		const bool off = o->hasPower && !o->powerOn;
-		for (int a = 0; a < 3; a++)
-		{
-			x.rate_dph[a] = o->hasAxis[a] ? o->rate_dph[a] : NAN;
-			if (!o->hasAxis[a]) continue;
-			const double r = x.rate_dph[a];
-			if (!(std::isfinite(r) || (std::isnan(r) && off)) || std::abs(r) > limits_.max_abs_rate_dph)
-				throw FogIoError(path_ + ": object #" + std::to_string(index) + ": sensor '" + chosen_ + "': rate_" +
-								 axisLetter(static_cast<GyroAxis>(a)) + "_dph " + io::formatNumber(r) +
-								 (std::isfinite(r) ? " deg/h is beyond the limit of " + io::formatNumber(limits_.max_abs_rate_dph) + " deg/h"
-												   : " is not finite (a missing rate is allowed only where power is 0)"));
-		}
-		x.temp_C.resize(header.thermistors.size());
-		for (std::size_t i = 0; i < x.temp_C.size(); i++)
-		{
-			x.temp_C[i] = o->temperature_C(i);
-			if (std::isinf(x.temp_C[i]))
-				throw FogIoError(path_ + ": object #" + std::to_string(index) + ": infinite temperature of thermistor '" +
-								 header.thermistors[i].name + "'");
-		}
-		x.table_rate_dph = o->hasTableRate ? o->tableRate_dph : NAN;
-		x.field_uT = o->hasField ? o->field_uT : NAN;
-		x.power = o->hasPower ? (o->powerOn ? 1.0 : 0.0) : NAN;
-		samples++;
-		if (o.use_count() == 1 && spare_.size() < 4) spare_.push_back(o);  // reused by the fast path
-		return true;
-	}
-
-	std::size_t objectsRead() const override { return objects_; }
-	bool isRawlog() const override { return true; }
-	std::uint64_t fileBytesRead() const override { return in_.fileBytesRead(); }
-	std::uint64_t fileBytes() const override { return in_.fileBytes(); }
-
-   private:
-	/** Reads one object; false at the end of the data. */
-	bool readObject()
-	{
-		if (in_.atEnd()) return false;
-		if (readFogObservationFast()) return true;
+		if (in_.atEnd()) return nullptr;
 		const uint64_t offset = in_.position();
 		mrpt::serialization::CSerializable::Ptr obj;
+		reading_class_.clear();
 		try
 		{
-			obj = readCheckedObject(false, offset);
+			obj = readChecked(Nesting::Top, offset);
 		}
 		catch (const FogIoError&)
 		{
 			throw;  // corrupt or truncated gzip data, or an object refused unread: says so itself
 		}
+		catch (const std::bad_alloc&)
+		{
+			throw FogIoError(stoppedAt(offset) + "corrupt object" + (reading_class_.empty() ? "" : " (a " + reading_class_ + ")") +
+							 ": MRPT's reader of it asks for more memory than the limit of " +
+							 std::to_string(limits_.max_object_allocation_bytes) +
+							 " bytes per allocation (a corrupt size field; ReadLimits::max_object_allocation_bytes)");
+		}
 		catch (const std::exception& e)
 		{
-			const bool at_end = in_.atEnd();
-			throw FogIoError(path_ + ": read " + std::to_string(objects_) + " objects, then stopped at object #" +
-							 std::to_string(objects_) + " (byte offset " + std::to_string(offset) +
-							 " of the decompressed data, " + std::to_string(in_.position()) + " bytes in all" +
-							 (at_end ? "" : " read") + "): " + whyReadFailed(e.what(), at_end));
+			throw FogIoError(stoppedAt(offset) + whyReadFailed(e.what(), in_.atEnd()));
 		}
-		if (auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj)) take(o, objects_);
-		else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj))
-		{
-			for (const auto& so : *sf) take(so, objects_);
-		}
-		else
+		if (!obj)
 			throw FogIoError(path_ + ": object #" + std::to_string(objects_) + " (byte offset " + std::to_string(offset) +
-							 ") is a " + (obj ? obj->GetRuntimeClass()->className : "null object") + ", not an observation");
+							 ") is a null object");
+		if (obj->GetRuntimeClass()->derivedFrom(CLASS_ID(mrpt::obs::CActionCollection)) ||
+			obj->GetRuntimeClass()->derivedFrom(CLASS_ID(mrpt::obs::CSensoryFrame)))
+			actions_format_ = true;
 		objects_++;
-		return true;
+		return obj;
 	}
 
-	/** Reads the next object through CArchive after checking its header: a class that cannot stand
-	 * here is refused unread (see allowedClass), and a sensory frame is read here, each of its
-	 * observations checked the same way, because MRPT would read whatever class its list names.
-	 * `offset`: where the top-level object starts (for messages). */
-	mrpt::serialization::CSerializable::Ptr readCheckedObject(bool nested, uint64_t offset)
+	io::GzReader& in() const { return in_; }
+	std::size_t objects() const { return objects_; }
+	void countObject() { objects_++; }
+	bool actionsFormat() const { return actions_format_; }
+	const std::string& path() const { return path_; }
+
+   private:
+	std::string stoppedAt(uint64_t offset)
+	{
+		const bool at_end = in_.atEnd();
+		return path_ + ": read " + std::to_string(objects_) + " objects, then stopped at object #" +
+			   std::to_string(objects_) + " (byte offset " + std::to_string(offset) + " of the decompressed data, " +
+			   std::to_string(in_.position()) + " bytes in all" + (at_end ? "" : " read") + "): ";
+	}
+
+	/** Checks the header of the next object, then reads it. `offset`: where the top-level object
+	 * starts (for messages). */
+	mrpt::serialization::CSerializable::Ptr readChecked(Nesting nesting, uint64_t offset)
 	{
 		const unsigned char* p = nullptr;
 		const std::size_t n = in_.peek(p, 4 + 127 + 4);
 		const ObjectHeader h = parseObjectHeader(p, n);
-		if (h.cls && !allowedClass(h.cls, nested))
+		if (h.cls)
 		{
 			const std::string where = path_ + ": object #" + std::to_string(objects_) + " (byte offset " + std::to_string(offset) + ")";
-			if (h.cls->derivedFrom(CLASS_ID(mrpt::obs::CActionCollection)))
-				throw FogIoError(where + " is a CActionCollection: rawlogs with actions (sensory-frame format) are not "
-										 "supported; use the observations-only format (refused unread)");
-			const std::string what = where + (nested ? ": the sensory frame holds a " : " is a ") + h.cls->className;
-			if (!h.cls->derivedFrom(CLASS_ID(mrpt::obs::CObservation)))
-				throw FogIoError(what + ", not an observation (refused unread: a rawlog holds observations" +
-								 (nested ? ")" : " or sensory frames of observations)"));
-			throw FogIoError(what + ": this reader lets MRPT read only " + readableClassList() +
-							 " (MRPT's readers of other classes can crash on a corrupt size instead of failing); "
-							 "keep the FOG's and those sensors' observations first, e.g. with MRPT's "
-							 "`rawlog-edit --keep-label FOG,ODOMETRY -i in.rawlog -o out.rawlog` (refused unread)");
+			const bool frame = h.cls == CLASS_ID(mrpt::obs::CSensoryFrame);
+			const bool actions = h.cls->derivedFrom(CLASS_ID(mrpt::obs::CActionCollection));
+			const bool observation = h.cls->derivedFrom(CLASS_ID(mrpt::obs::CObservation));
+			const bool action = h.cls->derivedFrom(CLASS_ID(mrpt::obs::CAction));
+			const bool fits = nesting == Nesting::Top ? (frame || actions || observation)
+													  : nesting == Nesting::InFrame ? observation : action;
+			if (!fits)
+			{
+				const std::string what = where + (nesting == Nesting::InFrame	  ? ": the sensory frame holds a "
+												  : nesting == Nesting::InActions ? ": the action collection holds a "
+																				  : " is a ") +
+										 h.cls->className;
+				throw FogIoError(what + (nesting == Nesting::InActions
+											 ? ", not an action (refused unread)"
+											 : std::string(", not an observation (refused unread: a rawlog holds observations") +
+												   (nesting == Nesting::InFrame ? ")" : ", sensory frames of observations or action collections)")));
+			}
+			if (frame)
+			{
+				in_.consume(h.bytes);
+				return readSensoryFrameBody(h, offset);
+			}
+			if (actions && h.cls == CLASS_ID(mrpt::obs::CActionCollection))
+			{
+				in_.consume(h.bytes);
+				return readActionCollectionBody(h, offset);
+			}
+			if (!isPlainAllocating(h.cls) && !io::detail::AllocationGuard::active())
+				throw FogIoError(where + (nesting == Nesting::Top ? " is a " : " holds a ") + h.cls->className +
+								 ": in this program MRPT's allocator cannot be bounded, and only " + plainClassList() +
+								 " are read safely (docs/hardening.md); keep the FOG's observations and those sensors' "
+								 "first, e.g. with `rawlog-edit --keep-label FOG,ODOMETRY` (refused unread)");
 		}
-		if (h.cls == CLASS_ID(mrpt::obs::CSensoryFrame))
-		{
-			in_.consume(h.bytes);
-			return readSensoryFrameBody(h, offset);
-		}
+		if (h.cls) reading_class_ = h.cls->className;
+		io::detail::AllocationGuard guard(limits_.max_object_allocation_bytes);
 		return arch_.ReadObject();
 	}
 
@@ -283,26 +258,135 @@ class RawlogReaderImpl : public FogLogReader::Impl
 		if (h.version < 2) arch_ >> id;
 		if (h.version == 0) arch_.ReadBufferFixEndianness(&stamp, 1);
 		arch_ >> count;
-		if (count > kMaxFrameObservations)
+		if (count > kMaxMembers)
 			throw FogIoError(where + ": holds " + std::to_string(count) + " observations, more than the limit of " +
-							 std::to_string(kMaxFrameObservations) + " (a corrupt count)");
+							 std::to_string(kMaxMembers) + " (a corrupt count)");
 		auto sf = mrpt::obs::CSensoryFrame::Create();
 		for (uint32_t i = 0; i < count; i++)
 		{
-			auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(readCheckedObject(true, offset));
+			auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(readChecked(Nesting::InFrame, offset));
 			if (!o) throw FogIoError(where + ": its observation " + std::to_string(i) + " is a null object");
 			if (h.version == 0) o->timestamp = stamp;
 			sf->insert(o);
 		}
-		if (!h.old_format)
-		{
-			uint8_t end_flag = 0;
-			arch_ >> end_flag;
-			if (end_flag != 0x88)  // MRPT's SERIALIZATION_END_FLAG
-				throw FogIoError(where + ": end-of-object mark missing after its " + std::to_string(count) +
-								 " observations (corrupt object)");
-		}
+		readEndFlag(h, where, count);
 		return sf;
+	}
+
+	/** The body of a CActionCollection (its header consumed), as CActionCollection::serializeFrom
+	 * reads it (version 0: count, the actions), then MRPT's end flag; each action checked before
+	 * it is read, the count bounded. */
+	mrpt::serialization::CSerializable::Ptr readActionCollectionBody(const ObjectHeader& h, uint64_t offset)
+	{
+		const std::string where = path_ + ": object #" + std::to_string(objects_) + " (byte offset " +
+								  std::to_string(offset) + "), an action collection";
+		if (h.version > 0)
+			throw FogIoError(where + ": unknown serialization version " + std::to_string(h.version) + " (MRPT 2.5 writes 0)");
+		uint32_t count = 0;
+		arch_ >> count;
+		if (count > kMaxMembers)
+			throw FogIoError(where + ": holds " + std::to_string(count) + " actions, more than the limit of " +
+							 std::to_string(kMaxMembers) + " (a corrupt count)");
+		auto acts = mrpt::obs::CActionCollection::Create();
+		for (uint32_t i = 0; i < count; i++)
+		{
+			auto a = std::dynamic_pointer_cast<mrpt::obs::CAction>(readChecked(Nesting::InActions, offset));
+			if (!a) throw FogIoError(where + ": its action " + std::to_string(i) + " is a null object");
+			acts->insertPtr(a);
+		}
+		readEndFlag(h, where, count);
+		return acts;
+	}
+
+	void readEndFlag(const ObjectHeader& h, const std::string& where, uint32_t count)
+	{
+		if (h.old_format) return;
+		uint8_t end_flag = 0;
+		arch_ >> end_flag;
+		if (end_flag != 0x88)  // MRPT's SERIALIZATION_END_FLAG
+			throw FogIoError(where + ": end-of-object mark missing after its " + std::to_string(count) +
+							 " members (corrupt object)");
+	}
+
+	std::string path_;
+	ReadLimits limits_;
+	mutable io::GzReader in_;
+	mrpt::serialization::CArchiveStreamBase<mrpt::io::CStream> arch_;
+	std::size_t objects_ = 0;
+	bool actions_format_ = false;
+	std::string reading_class_;  // the class MRPT is reading (for the messages)
+	static constexpr uint32_t kMaxMembers = 1u << 20;  // observations in one sensory frame, actions in a collection
+};
+
+namespace
+{
+/** Streaming rawlog reader: objects are deserialised one at a time from a GzReader. */
+class RawlogReaderImpl : public FogLogReader::Impl
+{
+   public:
+	RawlogReaderImpl(const std::string& path, const std::string& label, const ReadLimits& limits,
+					 FogLogReader::ObservationSink others)
+		: path_(path), label_(label), limits_(limits), sink_(std::move(others)), objs_(path, limits)
+	{
+		if (objs_.in().atEnd()) throw FogIoError(path_ + ": empty rawlog (0 objects)");
+		// Read up to the first sample of the sensor: its layout and metadata are the header.
+		while (queue_.empty())
+			if (!readObject()) break;
+		if (!first_) failNoSensor();
+		header = emptySeriesLike(seriesFromObservations({first_}));
+		header.epoch_s = std::floor(mrpt::Clock::toDouble(first_->timestamp));
+		if (auto m = metas_.find(chosen_); m != metas_.end())
+		{
+			header.epoch_s = m->second.epoch_s;
+			header.metadata = m->second.metadata;
+		}
+		if (first_->hasTableRate) header.table_rate_dph.assign(1, NAN);
+		if (first_->hasField) header.field_uT.assign(1, NAN);
+		if (first_->hasPower) header.power.assign(1, NAN);
+		samples_.emplace(header, path_, limits_);
+		if (header.thermistors.size() > limits_.max_thermistors)
+			throw FogIoError(path_ + ": sensor '" + chosen_ + "' has " + std::to_string(header.thermistors.size()) +
+							 " thermistors, more than the limit of " + std::to_string(limits_.max_thermistors));
+	}
+
+	bool next(FogSample& x) override
+	{
+		while (queue_.empty())
+			if (!readObject())
+			{
+				finish();
+				return false;
+			}
+		CObservationFOG::Ptr o = std::move(queue_.front().first);
+		const std::size_t index = queue_.front().second;
+		queue_.pop_front();
+		samples_->toSample(*o, index, x);
+		samples++;
+		if (o.use_count() == 1 && spare_.size() < 4) spare_.push_back(o);  // reused by the fast path
+		return true;
+	}
+
+	std::size_t objectsRead() const override { return objs_.objects(); }
+	bool isRawlog() const override { return true; }
+	std::uint64_t fileBytesRead() const override { return objs_.in().fileBytesRead(); }
+	std::uint64_t fileBytes() const override { return objs_.in().fileBytes(); }
+
+   private:
+	/** Reads one object; false at the end of the data. Actions (the actions-observations format)
+	 * are not observations: FogLogReader passes them on to no one (RawlogObjectReader gives them). */
+	bool readObject()
+	{
+		if (objs_.in().atEnd()) return false;
+		if (readFogObservationFast()) return true;
+		const std::size_t index = objs_.objects();
+		const auto obj = objs_.readTop();
+		if (!obj) return false;
+		if (auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj)) take(o, index);
+		else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj))
+		{
+			for (const auto& so : *sf) take(so, index);
+		}
+		return true;
 	}
 
 	/** The common case, a CObservationFOG whose sensor pose is the last one read, decoded straight
@@ -314,6 +398,7 @@ class RawlogReaderImpl : public FogLogReader::Impl
 	{
 		if (!pose_) return false;  // the first FOG observation goes through CArchive
 		const unsigned char* p = nullptr;
+		io::GzReader& in_ = objs_.in();
 		std::size_t n = in_.peek(p, 1);
 		CObservationFOG::Ptr o;
 		if (!spare_.empty())
@@ -335,8 +420,8 @@ class RawlogReaderImpl : public FogLogReader::Impl
 			return false;
 		}
 		in_.consume(used);
-		takeFog(o, objects_);
-		objects_++;
+		takeFog(o, objs_.objects());
+		objs_.countObject();
 		return true;
 	}
 
@@ -399,10 +484,12 @@ class RawlogReaderImpl : public FogLogReader::Impl
 		counts[chosen_] += samples + queue_.size();
 		try
 		{
-			while (!in_.atEnd())
+			while (auto obj = objs_.readTop())
 			{
-				auto obj = readCheckedObject(false, in_.position());
 				if (auto f = std::dynamic_pointer_cast<CObservationFOG>(obj)) counts[f->sensorLabel]++;
+				else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj))
+					for (const auto& so : *sf)
+						if (auto g = std::dynamic_pointer_cast<CObservationFOG>(so)) counts[g->sensorLabel]++;
 			}
 		}
 		catch (const std::exception&)
@@ -415,7 +502,7 @@ class RawlogReaderImpl : public FogLogReader::Impl
 	[[noreturn]] void failNoSensor() const
 	{
 		if (label_.empty())
-			throw FogIoError(path_ + ": no CObservationFOG in the file (" + std::to_string(objects_) + " objects read)");
+			throw FogIoError(path_ + ": no CObservationFOG in the file (" + std::to_string(objs_.objects()) + " objects read)");
 		throw FogIoError(path_ + ": no FOG sensor labelled '" + label_ + "'" +
 						 (other_fog_.empty() ? std::string(" (the file has no CObservationFOG)")
 											 : " (present: " + labelList(other_fog_) + ")"));
@@ -426,19 +513,16 @@ class RawlogReaderImpl : public FogLogReader::Impl
 	std::string path_, label_;
 	ReadLimits limits_;
 	FogLogReader::ObservationSink sink_;
-	io::GzReader in_;
-	mrpt::serialization::CArchiveStreamBase<mrpt::io::CStream> arch_;
+	RawlogObjects objs_;
 	std::string chosen_;
 	CObservationFOG::Ptr first_;
 	std::deque<std::pair<CObservationFOG::Ptr, std::size_t>> queue_;
 	std::map<std::string, io::FogRawlogMetadata> metas_;
 	std::map<std::string, std::size_t> other_fog_;
 	std::vector<std::pair<std::string, mrpt::obs::CObservation::Ptr>> pending_meta_;
-	std::size_t objects_ = 0;
-	int64_t epoch_ticks_ = 0, last_ticks_ = 0;
+	std::optional<FogObservationSamples> samples_;
 	std::optional<detail::SerializedPose> pose_;  // of the last FOG observation read by CArchive
 	std::vector<CObservationFOG::Ptr> spare_;  // consumed observations, reused by the fast path
-	static constexpr uint32_t kMaxFrameObservations = 1u << 20;  // observations in one sensory frame
 	static constexpr std::size_t kFastPeekBytes = 64 * 1024;  // a FOG object of 255 named thermistors fits
 };
 }  // namespace
@@ -467,4 +551,148 @@ FogRawlogContents readFogRawlog(const std::string& path, const std::string& fog_
 	return out;
 }
 
+}  // namespace mrpt_fog
+
+namespace mrpt_fog
+{
+const char* rawlogFormatName(RawlogFormat f)
+{
+	return f == RawlogFormat::ActionsObservations ? "actions-observations" : "observations-only";
+}
+
+RawlogObjectReader::RawlogObjectReader(const std::string& path, const ReadLimits& limits)
+	: impl_(std::make_unique<RawlogObjects>(path, limits))
+{
+	if (impl_->in().atEnd()) throw FogIoError(path + ": empty rawlog (0 objects)");
+}
+RawlogObjectReader::~RawlogObjectReader() = default;
+mrpt::serialization::CSerializable::Ptr RawlogObjectReader::next() { return impl_->readTop(); }
+std::size_t RawlogObjectReader::objectsRead() const { return impl_->objects(); }
+RawlogFormat RawlogObjectReader::format() const
+{
+	return impl_->actionsFormat() ? RawlogFormat::ActionsObservations : RawlogFormat::ObservationsOnly;
+}
+std::uint64_t RawlogObjectReader::fileBytesRead() const { return impl_->in().fileBytesRead(); }
+std::uint64_t RawlogObjectReader::fileBytes() const { return impl_->in().fileBytes(); }
+
+class RawlogObjectWriter::Impl
+{
+   public:
+	explicit Impl(const std::string& path)
+		: path_(path), out_(path), gz_(out_.writePath(), true, 1, path), arch_(mrpt::serialization::archiveFrom(static_cast<mrpt::io::CStream&>(gz_)))
+	{
+	}
+	std::string path_;
+	AtomicOutput out_;
+	io::GzWriter gz_;
+	mrpt::serialization::CArchiveStreamBase<mrpt::io::CStream> arch_;
+};
+
+RawlogObjectWriter::RawlogObjectWriter(const std::string& path)
+{
+	try
+	{
+		impl_ = std::make_unique<Impl>(path);
+	}
+	catch (const FogIoError&)
+	{
+		throw;
+	}
+	catch (const std::exception& e)
+	{
+		throw FogIoError(path + ": cannot write: " + oneLineErrorMessage(e.what()));
+	}
+}
+RawlogObjectWriter::~RawlogObjectWriter() = default;
+
+void RawlogObjectWriter::write(const mrpt::serialization::CSerializable& obj)
+{
+	try
+	{
+		impl_->arch_ << obj;
+		written_++;
+	}
+	catch (const FogIoError&)
+	{
+		throw;
+	}
+	catch (const std::exception& e)
+	{
+		throw FogIoError(impl_->path_ + ": cannot write: " + oneLineErrorMessage(e.what()));
+	}
+}
+
+void RawlogObjectWriter::close()
+{
+	try
+	{
+		impl_->gz_.close();
+		impl_->out_.commit();
+	}
+	catch (const FogIoError&)
+	{
+		throw;
+	}
+	catch (const std::exception& e)
+	{
+		throw FogIoError(impl_->path_ + ": cannot write: " + oneLineErrorMessage(e.what()));
+	}
+}
+
+}  // namespace mrpt_fog
+
+namespace mrpt_fog
+{
+FogObservationSamples::FogObservationSamples(const FogSeries& header, std::string source, const ReadLimits& limits)
+	: header_(emptySeriesLike(header)), source_(std::move(source)), limits_(limits),
+	  epoch_ticks_(io::detail::ticksOf(mrpt::Clock::fromDouble(header.epoch_s)))
+{
+	header_.epoch_s = header.epoch_s;
+	if (!header.table_rate_dph.empty()) header_.table_rate_dph.assign(1, NAN);
+	if (!header.field_uT.empty()) header_.field_uT.assign(1, NAN);
+	if (!header.power.empty()) header_.power.assign(1, NAN);
+}
+
+void FogObservationSamples::toSample(const CObservationFOG& o, std::size_t index, FogSample& x)
+{
+	using io::detail::kTicksPerSecond;
+	const std::string& chosen = header_.sensor_label;
+	if (o.thermistors != header_.thermistors || o.hasAxis != header_.has_axis ||
+		o.hasTableRate != !header_.table_rate_dph.empty() || o.hasField != !header_.field_uT.empty() ||
+		o.hasPower != !header_.power.empty())
+		throw FogIoError(source_ + ": object #" + std::to_string(index) + ": FOG observation of sensor '" + o.sensorLabel +
+						 "' has another layout (thermistors, axes or optional fields) than its first one");
+	const int64_t ticks = io::detail::ticksOf(o.timestamp);
+	if (samples_ > 0 && ticks <= last_ticks_)
+		throw FogIoError(source_ + ": object #" + std::to_string(index) + ": sensor '" + chosen + "': time " +
+						 io::formatNumber(static_cast<double>(ticks - epoch_ticks_) / kTicksPerSecond) + " s " +
+						 (ticks == last_ticks_ ? "duplicates the previous sample's time" : "goes backwards") +
+						 "; times must be strictly increasing");
+	last_ticks_ = ticks;
+	x.time_s = static_cast<double>(ticks - epoch_ticks_) / kTicksPerSecond;
+	const bool off = o.hasPower && !o.powerOn;
+	for (int a = 0; a < 3; a++)
+	{
+		x.rate_dph[a] = o.hasAxis[a] ? o.rate_dph[a] : NAN;
+		if (!o.hasAxis[a]) continue;
+		const double r = x.rate_dph[a];
+		if (!(std::isfinite(r) || (std::isnan(r) && off)) || std::abs(r) > limits_.max_abs_rate_dph)
+			throw FogIoError(source_ + ": object #" + std::to_string(index) + ": sensor '" + chosen + "': rate_" +
+							 axisLetter(static_cast<GyroAxis>(a)) + "_dph " + io::formatNumber(r) +
+							 (std::isfinite(r) ? " deg/h is beyond the limit of " + io::formatNumber(limits_.max_abs_rate_dph) + " deg/h"
+											   : " is not finite (a missing rate is allowed only where power is 0)"));
+	}
+	x.temp_C.resize(header_.thermistors.size());
+	for (std::size_t i = 0; i < x.temp_C.size(); i++)
+	{
+		x.temp_C[i] = o.temperature_C(i);
+		if (std::isinf(x.temp_C[i]))
+			throw FogIoError(source_ + ": object #" + std::to_string(index) + ": infinite temperature of thermistor '" +
+							 header_.thermistors[i].name + "'");
+	}
+	x.table_rate_dph = o.hasTableRate ? o.tableRate_dph : NAN;
+	x.field_uT = o.hasField ? o.field_uT : NAN;
+	x.power = o.hasPower ? (o.powerOn ? 1.0 : 0.0) : NAN;
+	samples_++;
+}
 }  // namespace mrpt_fog

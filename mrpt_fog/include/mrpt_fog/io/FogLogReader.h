@@ -19,6 +19,7 @@
  * whole second of the first timestamp. */
 
 #include <mrpt/obs/CObservation.h>
+#include <mrpt_fog/obs/CObservationFOG.h>
 #include <mrpt_fog/obs/FogSeriesLayout.h>  // FogSeries, emptySeriesLike
 
 #include <array>
@@ -38,6 +39,9 @@ struct ReadLimits
 	std::size_t max_thermistors = 64;  //!< per sensor (screening costs n^2 per sample)
 	/** |gyro rate| [deg/h]: 1e8 deg/h = 27 800 deg/s, beyond any gyro's range. */
 	double max_abs_rate_dph = 1e8;
+	/** One allocation by MRPT's reader of another sensor's object (a scan, an image, a point
+	 * cloud) [bytes]: beyond it the object is taken as corrupt (docs/hardening.md). */
+	std::size_t max_object_allocation_bytes = std::size_t(256) << 20;
 };
 
 /** One sample of a FOG log, in the reader's layout (FogLogReader::header()). */
@@ -85,6 +89,26 @@ class FogLogReader
 
    private:
 	std::unique_ptr<Impl> impl_;
+};
+
+/** CObservationFOG objects of one sensor, met one by one (e.g. by RawlogObjectReader), as
+ * samples in a header's layout (FogLogReader::header()), with FogLogReader's per-sample checks:
+ * the same layout as the header, times strictly increasing (time_s = timestamp - epoch_s, exact
+ * to MRPT's 100 ns tick), a finite rate within the limit unless the power is off, no infinite
+ * temperature. A defect throws FogIoError naming `source` and the object index given. */
+class FogObservationSamples
+{
+   public:
+	FogObservationSamples(const FogSeries& header, std::string source, const ReadLimits& limits = {});
+	void toSample(const CObservationFOG& obs, std::size_t object_index, FogSample& sample);
+	std::size_t samples() const { return samples_; }
+
+   private:
+	FogSeries header_;
+	std::string source_;
+	ReadLimits limits_;
+	std::int64_t epoch_ticks_ = 0, last_ticks_ = 0;
+	std::size_t samples_ = 0;
 };
 
 /** Appends a sample read by `reader` to a series of the reader's layout (emptySeriesLike). */
