@@ -4,11 +4,11 @@
 #   scripts/turn_on_refinement.sh OUT_DIR        (from the source tree; BUILD=build by default)
 # Writes OUT_DIR/*.json, *.txt and OUT_DIR/summary.txt (scripts/turn_on_refinement_summary.py).
 # Seeds 61-69 (turn-on drives) and 71-76 (aging) were never used to choose anything; the
-# refinement runs at fog-drift's defaults. PARTS="bundled sweep nostill aging" selects parts.
+# refinement runs at fog-drift's defaults. PARTS="bundled sweep sweepsf nostill aging" selects parts.
 set -eu
 B=${BUILD:-build}
 OUT=${1:-turn_on_refinement}
-PARTS=${PARTS:-"bundled sweep nostill aging"}
+PARTS=${PARTS:-"bundled sweep sweepsf nostill aging"}
 mkdir -p "$OUT"
 has() { case " $PARTS " in *" $1 "*) return 0 ;; esac; return 1; }
 
@@ -32,26 +32,32 @@ if has bundled; then
   drift plus03 -i "$OUT/drive_plus03.rawlog"
 fi
 
-if has sweep; then
-  # 9 drives whose gyro draws its turn-on offset and scale factor at 0.3 deg/h and 50 ppm (1-sigma)
-  printf 'turn_on: {bias_repeatability_dph: 0.3, sf_repeatability_ppm: 50}\n' > "$OUT/turn_on_device.yaml"
+sweep() {  # name, device turn_on section: 9 drives (seeds 61-69, the three cabins in turn)
+  name=$1
+  printf 'turn_on: %s\n' "$2" > "$OUT/${name}_device.yaml"
   set --
   i=0
   for seed in 61 62 63 64 65 66 67 68 69; do
     case $((i % 3)) in 0) cabin=drive_cabin ;; 1) cabin=drive_cabin_mild ;; 2) cabin=drive_cabin_hot ;; esac
-    f="$OUT/turnon_seed${seed}.rawlog"
-    [ -f "$f" ] || "$B/apps/fog-sim" --profile drive --cabin "$cabin" --seed "$seed" --device "$OUT/turn_on_device.yaml" -o "$f" > /dev/null
+    f="$OUT/${name}_seed${seed}.rawlog"
+    [ -f "$f" ] || "$B/apps/fog-sim" --profile drive --cabin "$cabin" --seed "$seed" --device "$OUT/${name}_device.yaml" -o "$f" > /dev/null
     set -- "$@" -i "$f"
     i=$((i + 1))
   done
-  drift sweep "$@"
-fi
+  drift "$name" "$@"
+}
+# the gyro draws its turn-on offset at 0.3 deg/h (1-sigma) ...
+if has sweep; then sweep sweep "{bias_repeatability_dph: 0.3}"; fi
+# ... and also its scale factor at 50 ppm (what standstills cannot see)
+if has sweepsf; then sweep sweepsf "{bias_repeatability_dph: 0.3, sf_repeatability_ppm: 50}"; fi
 
 if has nostill; then
   # a piece of the bundled drive without a standstill (gyro-shift's window, shift 0.3 deg/h)
   [ -f "$OUT/nostill.rawlog" ] || "$B/tests/gyro-shift" datasets/drive.rawlog "$OUT/nostill.rawlog" 0.3 FOG "${NOSTILL_FROM:-130}" "${NOSTILL_TO:-400}" > /dev/null
-  drift nostill -i "$OUT/nostill.rawlog"
-  cmp "$OUT/nostill_refined.json" "$OUT/nostill_thermal.json" > "$OUT/nostill_cmp.txt" 2>&1 || true
+  "$B/apps/fog-drift" -q -i "$OUT/nostill.rawlog" --cal "$CAL" --json "$OUT/nostill_refined.json" --csv "$OUT/nostill_refined.csv" > "$OUT/nostill_refined.txt"
+  "$B/apps/fog-drift" -q -i "$OUT/nostill.rawlog" --cal "$CAL" --no-field-refinement --json "$OUT/nostill_thermal.json" --csv "$OUT/nostill_thermal.csv" > "$OUT/nostill_thermal.txt"
+  # the per-sample heading and position errors of every gyro, byte for byte
+  cmp "$OUT/nostill_refined.csv" "$OUT/nostill_thermal.csv" > "$OUT/nostill_cmp.txt" 2>&1 || true
 fi
 
 if has aging; then

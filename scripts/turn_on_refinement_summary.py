@@ -21,7 +21,7 @@ def fig(d, key, v):
     return float("nan") if x is None else x
 
 
-for part in ["bundled", "plus03", "sweep", "nostill"]:
+for part in ["bundled", "plus03", "sweep", "sweepsf", "nostill"]:
     rows = {}
     for mode in ["thermal", "refined"]:
         rows[mode] = drives(f"{part}_{mode}.json")
@@ -48,7 +48,7 @@ for part in ["bundled", "plus03", "sweep", "nostill"]:
                       f"+- {fr.get('offset_sigma_dph', float('nan')):.4f} deg/h; {fr.get('note')}")
 if os.path.exists(os.path.join(out, "nostill_cmp.txt")):
     t = open(os.path.join(out, "nostill_cmp.txt")).read().strip()
-    print("== nostill: JSON with and without refinement " + ("identical (cmp)" if t == "" else "DIFFER: " + t))
+    print("== nostill: per-sample errors (--csv) with and without refinement " + ("identical (cmp)" if t == "" else "DIFFER: " + t))
 for c in ["cal_wu", "cal_refined"]:
     ds = drives(f"aging_{c}.json")
     if ds is None:

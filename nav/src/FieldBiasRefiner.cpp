@@ -31,12 +31,24 @@ bool FieldBiasRefiner::beatsPrior(double length_s) const
 	return white * white / length_s + B * B < P * P;
 }
 
+void FieldBiasRefiner::testSignificance(double t_s)
+{
+	look_ = false;
+	if (applied_) return;
+	if (std::abs(kf_.offset_dph() - opt_.prior_offset_dph) > opt_.significance_sigma * kf_.offset_sigma_dph())
+	{
+		applied_ = true;
+		applied_since_s_ = t_s;
+	}
+}
+
 void FieldBiasRefiner::endRun()
 {
 	if (in_run_)
 	{
 		if (current_)
 		{
+			testSignificance(run_last_s_);  // the second look: what the whole standstill says
 			current_->end_s = run_last_s_;
 			current_->offset_after_dph = kf_.offset_dph();
 			current_->sigma_after_dph = kf_.offset_sigma_dph();
@@ -86,6 +98,7 @@ void FieldBiasRefiner::take(const ClassifiedRate& c)
 				{
 					if (!current_)
 					{
+						look_ = true;  // the first look: the standstill's first min_still_s
 						current_ = StandstillUpdate{};
 						current_->start_s = run_start_s_;
 						current_->first_used_s = u.t_s;
@@ -99,12 +112,7 @@ void FieldBiasRefiner::take(const ClassifiedRate& c)
 				run_.pop_front();
 			}
 	}
-	if (!applied_ && current_ &&
-		std::abs(kf_.offset_dph() - opt_.prior_offset_dph) > opt_.significance_sigma * kf_.offset_sigma_dph())
-	{
-		applied_ = true;
-		applied_since_s_ = c.t_s;
-	}
+	if (look_) testSignificance(c.t_s);
 	RefinedRate r;
 	r.t_s = c.t_s;
 	r.correction_dph = applied_ ? kf_.correctionAt_dph(c.t_s) : opt_.prior_offset_dph;

@@ -224,17 +224,28 @@ TEST(FieldBiasRefiner, ShortStandstillChangesNothing)
 	EXPECT_EQ(b.short_standstills, 1u);
 }
 
-// A calibration the standstills do not contradict is left alone: with no offset, the estimate
-// stays within 3 sigma of the prior, nothing is applied and the output is the input bit for bit
-// although the filter ran; the plain filter (significance 0) applies its noisy estimate.
+// A calibration the standstills do not contradict is left alone. With no offset the estimate is
+// noise; the 3-sigma test looks twice per standstill (4 looks here, 0.27 % each for a Gaussian):
+// over 400 noise seeds at most 3 % of the runs may apply it (expected about 1 %), and where it
+// is not applied the output is the input bit for bit although the filter ran. The plain filter
+// (significance 0) always applies its noisy estimate.
 TEST(FieldBiasRefiner, OffsetWithinItsUncertaintyIsNotApplied)
 {
 	const Motion m = makeMotion({{121, 0, 0, 0}, {200, 5, 1, 0}, {260, 0, 0, 0}, {300, 5, 0, 0}});
-	const RefineRun gated = refine(m, 0.0, 0.001, 9, {});
-	EXPECT_EQ(gated.updates.size(), 2u);
-	EXPECT_FALSE(gated.applied);
-	EXPECT_LT(std::abs(gated.offset), 3 * gated.sigma);
-	for (std::size_t k = 0; k < gated.in.size(); k++) EXPECT_EQ(gated.out[k].rate_dph, gated.in[k]);
+	std::size_t applied = 0;
+	const std::size_t runs = 400;
+	for (std::uint64_t seed = 1000; seed < 1000 + runs; seed++)
+	{
+		const RefineRun g = refine(m, 0.0, 0.001, seed, {});
+		ASSERT_EQ(g.updates.size(), 2u);
+		if (g.applied)
+		{
+			applied++;
+			continue;
+		}
+		for (std::size_t k = 0; k < g.in.size(); k++) ASSERT_EQ(g.out[k].rate_dph, g.in[k]);
+	}
+	EXPECT_LE(applied, runs * 3 / 100);
 	FieldRefinementOptions plain;
 	plain.significance_sigma = 0;
 	const RefineRun p = refine(m, 0.0, 0.001, 9, plain);

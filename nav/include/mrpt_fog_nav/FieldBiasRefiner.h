@@ -19,7 +19,9 @@
  *    filter against what earlier standstills learned.
  * The estimate replaces the prior only once it differs from it by more than significance_sigma
  * (3) of its own 1-sigma: a calibration the standstills do not contradict is left alone, and
- * noise of a few thousandths of a deg/h is not added to a good thermal model.
+ * noise of a few thousandths of a deg/h is not added to a good thermal model. The test looks
+ * twice per standstill (when its first min_still_s are in, and at its end), not at every
+ * sample: every look is a chance of a false alarm (tests/nav: the rate on 400 runs).
  * A drive without a standstill is passed through unchanged (the prior offset, 0 unless a
  * refined calibration gives one, is what is subtracted: x - 0.0 is x). At a turn-on within the
  * log the gyro picks a new offset: the filter restarts from the prior there. */
@@ -114,6 +116,7 @@ class FieldBiasRefiner
 	void take(const ClassifiedRate& c);
 	void endRun();
 	bool beatsPrior(double length_s) const;
+	void testSignificance(double t_s);
 
 	FieldRefinementOptions opt_;
 	StandstillDetector detector_;
@@ -126,6 +129,7 @@ class FieldBiasRefiner
 	std::vector<StandstillUpdate> updates_;
 	std::size_t short_ = 0, restarts_ = 0;
 	bool applied_ = false;
+	bool look_ = false;  //!< test the significance at this sample (twice per standstill)
 	double applied_since_s_ = std::numeric_limits<double>::quiet_NaN();
 	double t0_s_;
 	std::deque<RefinedRate> out_;
