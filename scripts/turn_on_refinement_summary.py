@@ -5,7 +5,7 @@ import os
 import statistics
 import sys
 
-out = sys.argv[1]
+out = sys.argv[1]  # then optionally --check: exit 1 when a target is missed
 
 
 def drives(name):
@@ -63,3 +63,26 @@ if os.path.exists(os.path.join(out, "refine.json")):
     print("== fog-refine: logs " + ", ".join(f"{l['offset_dph']:+.4f}+-{l['sigma_dph']:.4f}" for l in r["logs"] if l["measured"])
           + f"; field offset {fo['offset_dph']:+.4f} +- {fo['sigma_dph']:.4f} deg/h at day 90, trend "
           f"{fo['aging_dph_per_day'] * 365.25:+.3f} +- {fo['aging_sigma_dph_per_day'] * 365.25:.3f} deg/h per year (truth 1.0)")
+
+if "--check" in sys.argv:
+    # the targets of docs/validation/turn-on-refinement.md (ctest nav.turn_on_refinement, label long)
+    def comp(name, mode):
+        return [fig(d, "heading_error_rms_deg", "compensated") for d in drives(f"{name}_{mode}.json")]
+    failures = []
+    if comp("plus03", "refined")[0] > 0.01:
+        failures.append("bundled + 0.3 deg/h: heading RMS > 0.01 deg")
+    if comp("bundled", "refined")[0] > 0.0012:
+        failures.append("bundled drive: heading RMS > 0.0012 deg")
+    ds = drives("sweep_refined.json")
+    if statistics.median(fig(d, "heading_error_rms_deg", "compensated") / fig(d, "heading_error_rms_deg", "ideal") for d in ds) > 3:
+        failures.append("sweep: median comp/ideal > 3")
+    if open(os.path.join(out, "nostill_cmp.txt")).read().strip() != "":
+        failures.append("no-standstill drive: output differs with refinement")
+    if drives("aging_cal_refined.json") is not None:
+        refined = [fig(d, "heading_error_rms_deg", "compensated") for d in drives("aging_cal_refined.json")]
+        original = [fig(d, "heading_error_rms_deg", "compensated") for d in drives("aging_cal_wu.json")]
+        if not all(r < o for r, o in zip(refined, original)):
+            failures.append("aging: the refined calibration is not better on every later drive")
+    for f in failures:
+        print("FAILED: " + f)
+    sys.exit(1 if failures else 0)
