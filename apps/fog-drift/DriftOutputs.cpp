@@ -111,6 +111,47 @@ JsonValue driveJson(const DriveEvaluation& e, const DriftContext& ctx)
 											   : "powered spans only, each re-aligned from the truth (heading and "
 												 "position) at its start; heading not observable while the gyro is off";
 	}
+	if (!ctx.calibration.empty())  // the compensated variant's standstill updates (FieldRefinement.h)
+	{
+		const FieldRefinementResult& fr = e.refinement;
+		JsonValue& f = j["field_refinement"] = JsonValue::object();
+		f["ran"] = fr.ran;
+		f["calibration_field_offset_dph"] =
+			fr.calibration_offset ? JsonValue(fr.calibration_offset_at_drive_dph) : JsonValue();
+		f["note"] = fr.note.empty() ? JsonValue() : JsonValue(fr.note);
+		if (fr.ran)
+		{
+			f["prior_offset_dph"] = fr.prior_offset_dph;
+			f["prior_sigma_dph"] = fr.prior_sigma_dph;
+			f["thermal_model_sigma_dph"] = fr.thermal_sigma_dph;
+			f["expected_still_rate_dph"] = fr.expected_rate_dph;
+			JsonValue list = JsonValue::array();
+			for (const auto& u : fr.updates)
+			{
+				JsonValue o = JsonValue::object();
+				o["still_from_s"] = u.start_s - e.drive.fog.epoch_s;
+				o["still_to_s"] = u.end_s - e.drive.fog.epoch_s;
+				o["first_used_s"] = u.first_used_s - e.drive.fog.epoch_s;
+				o["last_used_s"] = u.last_used_s - e.drive.fog.epoch_s;
+				o["samples"] = static_cast<unsigned long>(u.samples);
+				o["mean_reading_dph"] = u.mean_reading_dph;
+				o["offset_before_dph"] = u.offset_before_dph;
+				o["sigma_before_dph"] = u.sigma_before_dph;
+				o["offset_after_dph"] = u.offset_after_dph;
+				o["sigma_after_dph"] = u.sigma_after_dph;
+				o["applied"] = u.applied;
+				list.push_back(o);
+			}
+			f["updates"] = list;
+			f["short_standstills"] = static_cast<unsigned long>(fr.short_standstills);
+			f["turn_on_restarts"] = static_cast<unsigned long>(fr.restarts);
+			f["offset_dph"] = fr.offset_dph;
+			f["offset_sigma_dph"] = fr.offset_sigma_dph;
+			f["applied"] = fr.applied;
+			f["applied_from_s"] = fr.applied ? JsonValue(fr.applied_since_s - e.drive.fog.epoch_s) : JsonValue();
+			f["significance_sigma"] = fr.significance_sigma;
+		}
+	}
 	j["distance_m"] = report.distance_m;
 	j["duration_s"] = report.duration_s;
 	j["latitude_deg"] = ctx.latitude_deg;

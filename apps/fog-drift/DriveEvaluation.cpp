@@ -244,6 +244,23 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 		// bias (hence its Earth rate) is removed before the division, so the Earth rate goes
 		// back unscaled.
 		for (double& r : comp[2]) r += e.calibration_earth_rate_dph;
+		// What the calibration learned in the field (fog-refine), at the drive's date
+		e.refinement.calibration_offset = loadFieldOffset(st.cal_path);
+		if (const auto& fo = e.refinement.calibration_offset; fo && !t_fog.empty())
+		{
+			e.refinement.calibration_offset_at_drive_dph = fo->offsetAt_dph(t_fog.front());
+			for (std::size_t k = 0; k < t_fog.size(); k++) comp[2][k] -= fo->offsetAt_dph(t_fog[k]);
+		}
+		// What the thermal model cannot hold (the turn-on offset): standstill updates
+		if (st.refinement.enabled && e.three_axis)
+			e.refinement.note = "not run: a triad FOG runs the 3-D strapdown, which is not refined";
+		else if (st.refinement.enabled)
+		{
+			std::vector<bool> on(fog.size());
+			for (std::size_t k = 0; k < on.size(); k++) on[k] = fog.gyroOn(k);
+			const auto o = refinementOptionsFor(st.refinement, *zcal, e.latitude_deg, t_fog.front(), e.refinement);
+			refineInMemory(t_fog, comp[2], on, e.drive.odometry, o, e.refinement);
+		}
 		// The temperatures have served (compensation is the last to read them): released, 8 B per
 		// thermistor and sample (issue 14). The drive's FOG keeps its times, rates and power.
 		e.drive.fog.thermistors.clear();

@@ -9,6 +9,7 @@
  * (median, quartiles, min, max of each figure and ratio). */
 
 #include "DriveData.h"
+#include "FieldRefinement.h"
 #include "GyroOff.h"
 #include "HeadingDeadReckoning.h"
 
@@ -56,6 +57,9 @@ struct DriveSettings
 	HeadingOptions heading;  //!< latitude_deg filled per drive
 	DriveLabels labels;  //!< --fog-label, --odometry-label, --truth-label
 	nav::HeadingFigureOptions figures;
+	/** Standstill updates of the compensated gyro's bias offset (on by default; the compensated
+	 * variant of a single-axis FOG only). */
+	FieldRefinementSettings refinement;
 };
 
 /** Attitude errors of a triad variant against the truth (3-D strapdown) [deg]. */
@@ -97,6 +101,8 @@ struct DriveEvaluation
 	 * lacked the field on some samples (apps/common/FieldWarning.h; "" when it had it throughout). */
 	bool magnetic_term = false;
 	std::string field_warning;
+	/** The in-field refinement of the compensated variant (FieldRefinement.h). */
+	FieldRefinementResult refinement;
 	std::vector<nav::NamedTrajectory> variants;  //!< names; trajectories as DriveSettings::keep_trajectories says (else empty)
 	std::vector<VariantResult> results;  //!< same order as variants (their trajectories moved there)
 	nav::DriftReport report;

@@ -732,6 +732,37 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 		}
 		if (screen) health = std::make_unique<ThermistorHealth>(h.thermistors.size());
 	}
+	// the in-field refinement of the compensated rate (as evaluateDrive: refineInMemory); its
+	// output waits for the odometry that covers each sample
+	std::unique_ptr<nav::FieldBiasRefiner> refiner;
+	struct PendingComp
+	{
+		std::size_t k;
+		double rate_dph;
+		bool on;
+	};
+	std::deque<PendingComp> comp_pending;
+	bool prev_on = true;
+	if (zcal)
+	{
+		e.refinement.calibration_offset = loadFieldOffset(st.cal_path);
+		if (e.refinement.calibration_offset)
+			e.refinement.calibration_offset_at_drive_dph = e.refinement.calibration_offset->offsetAt_dph(scan.fog.first);
+	}
+	const FieldOffset* field_offset = e.refinement.calibration_offset ? &*e.refinement.calibration_offset : nullptr;
+	if (zcal && st.refinement.enabled)
+		refiner = std::make_unique<nav::FieldBiasRefiner>(
+			refinementOptionsFor(st.refinement, *zcal, e.latitude_deg, scan.fog.first, e.refinement), scan.fog.first);
+	const auto drainRefiner = [&] {
+		nav::RefinedRate x;
+		while (refiner->next(x))
+		{
+			if (comp_pending.empty()) throw std::logic_error("field refinement: output out of step");
+			const PendingComp p = comp_pending.front();
+			comp_pending.pop_front();
+			comp_var->addGyro(x.t_s, p.on ? x.rate_dph : p.rate_dph, p.k);
+		}
+	};
 	const auto pumpAll = [&] {
 		for (auto& v : vars) v->pump(truth, odo);
 		std::size_t tn = truth.end(), on = odo.end();
@@ -748,7 +779,14 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 		const double t = ideal_times.add(o);
 		if (ideal_var) ideal_var->addGyro(t, o.rate_dph[2], ideal_times.n - 1);
 	};
-	others.on_odometry = [&](const OdoPose& p) { odo.q.push_back(p); };
+	others.on_odometry = [&](const OdoPose& p) {
+		odo.q.push_back(p);
+		if (refiner)
+		{
+			refiner->addOdometry(p.t_s, p.x_m, p.y_m, p.phi_rad);
+			drainRefiner();
+		}
+	};
 	TruthYawAt off_yaw(stretchQueryTimes(scan.gyro_off));
 	others.on_truth = [&](const nav::TrajectoryPoint& p) {
 		off_yaw.add(p.t_s, p.yaw_rad);
@@ -795,9 +833,28 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 				{
 					throw std::runtime_error(st.cal_path + ": cannot compensate the drive's FOG: " + ex.what());
 				}
-				comp_var->addGyro(t, r + e.calibration_earth_rate_dph, k);
+				// the calibration's field offset at this date (as evaluateDrive)
+				const double v = field_offset ? r + e.calibration_earth_rate_dph - field_offset->offsetAt_dph(t)
+											  : r + e.calibration_earth_rate_dph;
+				if (refiner)
+				{
+					const bool on = !has_power || x.power != 0.0;
+					comp_pending.push_back({k, v, on});
+					refiner->addRate(t, on ? v : NAN, k > 0 && on && !prev_on);
+					prev_on = on;
+					drainRefiner();
+				}
+				else
+					comp_var->addGyro(t, v, k);
 			}
 			if (++since_pump >= 64) pumpAll(), since_pump = 0;
+		}
+		if (refiner)
+		{
+			refiner->finish();
+			drainRefiner();
+			if (!comp_pending.empty()) throw std::runtime_error(path + ": field refinement: FOG samples lost (times not increasing)");
+			noteRefinement(*refiner, e.refinement);
 		}
 		truth.done = odo.done = true;
 		for (auto& v : vars) v->gyroDone();

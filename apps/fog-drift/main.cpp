@@ -23,6 +23,7 @@
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog_heading/HeadingWithoutTruth.h>
+#include <mrpt_fog_nav/StandstillDetector.h>
 
 #include <algorithm>
 #include <cmath>
@@ -75,6 +76,19 @@ SEVERAL DRIVES
   the ratios compensated/raw (heading RMS, drift between turns) and compensated/ideal (heading
   RMS). Drives to try: fog-sim --profile drive --seed N [--cabin PRESET|FILE.yaml]
   (scripts/drift_over_drives.sh makes a set and runs this).
+
+FIELD REFINEMENT (compensated single-axis gyro; on by default, --no-field-refinement)
+  No chamber calibration holds the offset a FOG picks at each turn-on, nor its aging. While the
+  vehicle stands still (wheels stopped and the gyro sees no rotation: --standstill-source) the
+  compensated rate should read the vertical Earth rate; a Kalman filter of the offset (prior:
+  0 +- the calibration's held-out stability and --turn-on-repeatability-dph combined; noise:
+  --gyro-arw-deg-rt-h, --gyro-bias-instability-dph) takes what it reads beyond that and
+  subtracts its estimate from every later sample (causal), once the estimate differs from the
+  prior by more than --significance-sigma (3) of its sigma: a calibration the standstills do
+  not contradict is left alone (0: the plain filter, always). The first and last second of each
+  standstill are left out; a standstill shorter than --min-standstill-s, or too short to beat
+  what is known, changes nothing. A drive without a standstill is not changed (the output says
+  so). JSON: field_refinement (each update, the offset and its 1-sigma).
 
 EXAMPLES
   fog-drift -i datasets/drive.rawlog --cal cal.yaml --json drift.json --csv drift.csv --plots plots/
@@ -155,6 +169,28 @@ int main(int argc, char** argv)
 								   "do not screen the FOG's thermistor readings (stuck / spike / out of range -> "
 								   "dropout, fallback model) before compensating",
 								   cmd);
+		TCLAP::SwitchArg no_refine("", "no-field-refinement",
+								   "do not update the compensated gyro's bias offset at standstills (the thermal "
+								   "model alone)",
+								   cmd);
+		app::RealArg turn_on_rep(cmd, "turn-on-repeatability-dph",
+								 "1-sigma turn-on to turn-on repeatability of the bias offset: with the calibration's "
+								 "held-out stability it is the prior of the standstill updates",
+								 "deg/h", app::Range::aboveUpTo(0, 1e4), 1.0, "DPH");
+		app::RealArg arw(cmd, "gyro-arw-deg-rt-h", "angle random walk of the gyro (the standstill measurement's noise)",
+						 "deg/sqrt(h)", app::Range::aboveUpTo(0, 100), 0.001, "N");
+		app::RealArg bias_inst(cmd, "gyro-bias-instability-dph", "bias instability of the gyro (not taken for the offset)",
+							   "deg/h", app::Range::closed(0, 1e4), 0.005, "B");
+		TCLAP::ValueArg<std::string> still_src("", "standstill-source",
+											   "what tells a standstill: 'both' (wheels stopped and the gyro sees no "
+											   "rotation), 'odometry' or 'gyro'",
+											   false, "both", "SRC", cmd);
+		app::RealArg min_still(cmd, "min-standstill-s", "shortest standstill used for an update (plus 1 s left out at each end)",
+							   "s", app::Range::closed(0, 86400), 10.0, "S");
+		app::RealArg signif(cmd, "significance-sigma",
+							"apply the standstill estimate once it differs from the prior by more than this many of its "
+							"sigma (0: always, the plain Kalman filter)",
+							"sigma", app::Range::closed(0, 100), 3.0, "K");
 		TCLAP::SwitchArg quiet("q", "quiet", "no progress line on stderr while a drive is read", cmd);
 		TCLAP::SwitchArg in_memory("", "in-memory",
 								   "hold the whole drive in memory, as --plots, "
@@ -188,7 +224,16 @@ int main(int argc, char** argv)
 		st.labels.fog = fog_label.getValue();
 		st.labels.odometry = odo_label.getValue();
 		st.labels.truth = truth_label.getValue();
-		if (!(gps_speed.getValue() >= 0)) throw std::invalid_argument("--gps-min-speed-mps: must be >= 0");
+		st.refinement.enabled = !no_refine.getValue();
+		st.refinement.turn_on_repeatability_dph = turn_on_rep.getValue();
+		st.refinement.noise.arw_deg_rt_h = arw.getValue();
+		st.refinement.noise.bias_instability_dph = bias_inst.getValue();
+		st.refinement.min_still_s = min_still.getValue();
+		st.refinement.significance_sigma = signif.getValue();
+		if (still_src.getValue() == "both") st.refinement.standstill.source = nav::StandstillSource::OdometryAndGyro;
+		else if (still_src.getValue() == "odometry") st.refinement.standstill.source = nav::StandstillSource::Odometry;
+		else if (still_src.getValue() == "gyro") st.refinement.standstill.source = nav::StandstillSource::Gyro;
+		else throw std::runtime_error("--standstill-source: '" + still_src.getValue() + "' is not both|odometry|gyro");
 		// The trajectories the outputs draw or write are kept; the others go once measured.
 		st.keep_trajectories = !plots.getValue().empty()  ? drift::KeptTrajectories::All
 							   : !odo_out.getValue().empty() ? drift::KeptTrajectories::ForOdometry
@@ -240,6 +285,11 @@ int main(int argc, char** argv)
 						e.figures.begin()->second.turned_deg, e.segments.straights.size(),
 						e.figures.begin()->second.straight_time_s);
 			if (!e.gyro_off.empty()) std::fputs(drift::gyroOffText(e).c_str(), stdout);
+			if (!cal.getValue().empty())
+				std::fputs((st.refinement.enabled ? drift::refinementText(e.refinement, e.drive.fog.epoch_s)
+												  : std::string("  field refinement: off (--no-field-refinement)\n"))
+							   .c_str(),
+						   stdout);
 			std::printf("  %-12s %10s %10s %10s %14s %12s %12s\n", "gyro", "hdg RMS", "hdg max", "hdg final",
 						"drift betw.", "turn SF", "pos final");
 			std::printf("  %-12s %10s %10s %10s %14s %12s %12s\n", "", "[deg]", "[deg]", "[deg]", "turns [deg/h]", "[ppm]",

@@ -49,6 +49,12 @@ TRUTH (optional)
   When the input holds CObservationRobotPose '--truth-label', or --truth names a held-back
   rawlog with them, the FOG odometry's and the wheels' heading and position errors are printed
   (each track moved rigidly onto the truth at its first pose; --compare-s limits the span).
+FIELD REFINEMENT (on by default; --no-field-refinement)
+  While the vehicle stands still (wheels stopped, the gyro sees no rotation) the compensated rate
+  should read the vertical Earth rate; a Kalman filter of the turn-on bias offset learns from it
+  and corrects every later sample once the offset differs from 0 by more than 3 of its sigma
+  (docs/reference/field-refinement.md). No standstill: no update, the thermal model alone.
+  JSON: field_refinement.
 
 EXAMPLES
   fog-odometry -i vehicle.rawlog --cal cal.yaml -o vehicle_fog.rawlog
@@ -100,6 +106,8 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<std::string> arg_json("", "json", "Write the summary as JSON", false, "", "FILE", cmd);
 		TCLAP::SwitchArg arg_no_screen("", "no-screening", "Do not screen thermistor readings before compensating", cmd);
 		TCLAP::SwitchArg arg_quiet("q", "quiet", "No progress line on stderr", cmd);
+		TCLAP::SwitchArg arg_no_refine("", "no-field-refinement",
+									   "No standstill updates of the compensated gyro's turn-on bias offset", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-odometry", kHelp)) return *rc;
 
 		for (auto* a : {&arg_bias, &arg_horizon, &arg_sf, &arg_dist, &arg_minxy})
@@ -124,6 +132,7 @@ int main(int argc, char** argv)
 		o.compare_s = arg_compare.getValue();
 		o.pipeline.latitude_deg = arg_lat.getValue();
 		o.pipeline.screen_thermistors = !arg_no_screen.getValue();
+		o.pipeline.field_refinement = !arg_no_refine.getValue();
 		o.motion.heading_bias_dph = arg_bias.getValue();
 		o.motion.horizon_s = arg_horizon.getValue();
 		o.motion.scale_factor_ppm = arg_sf.getValue();
@@ -169,6 +178,15 @@ int main(int argc, char** argv)
 		if (r.fog_vs_truth) printErr("FOG", *r.fog_vs_truth);
 		if (r.wheels_vs_truth) printErr("wheels", *r.wheels_vs_truth);
 		if (!r.fog_vs_truth) std::printf("  no truth: heading errors cannot be told (give --truth)\n");
+		if (!r.field_refinement)
+			std::printf("  field refinement: off\n");
+		else if (r.standstill_updates.empty())
+			std::printf("  field refinement: no standstill long enough to beat the prior: no update (the thermal model "
+						"alone)\n");
+		else
+			std::printf("  field refinement: %zu standstill update(s); turn-on offset %+.4f +- %.4f deg/h, %s\n",
+						r.standstill_updates.size(), r.offset_dph, r.offset_sigma_dph,
+						r.offset_applied ? "applied" : "within 3 sigma of the prior: not applied");
 
 		if (!arg_json.getValue().empty())
 		{
@@ -190,6 +208,25 @@ int main(int argc, char** argv)
 			j["counts_equal"] = same;
 			if (r.fog_vs_truth) j["fog_vs_truth"] = errorsJson(*r.fog_vs_truth);
 			if (r.wheels_vs_truth) j["wheels_vs_truth"] = errorsJson(*r.wheels_vs_truth);
+			JsonValue& fr = j["field_refinement"] = JsonValue::object();
+			fr["ran"] = r.field_refinement;
+			JsonValue ups = JsonValue::array();
+			for (const auto& u : r.standstill_updates)
+			{
+				JsonValue x = JsonValue::object();
+				x["still_from_s"] = u.start_s;
+				x["still_to_s"] = u.end_s;
+				x["samples"] = static_cast<unsigned long>(u.samples);
+				x["mean_reading_dph"] = u.mean_reading_dph;
+				x["offset_after_dph"] = u.offset_after_dph;
+				x["sigma_after_dph"] = u.sigma_after_dph;
+				x["applied"] = u.applied;
+				ups.push_back(x);
+			}
+			fr["updates"] = ups;
+			fr["offset_dph"] = r.offset_dph;
+			fr["offset_sigma_dph"] = r.offset_sigma_dph;
+			fr["applied"] = r.offset_applied;
 			writeTextFileAtomically(arg_json.getValue(), j.dump());
 		}
 		return app::kExitOk;

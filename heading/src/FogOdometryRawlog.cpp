@@ -138,6 +138,18 @@ class Rewriter
 		report_.pipeline = pipe_->counters();
 		if (const auto* c = pipe_->compensationCounters()) report_.compensation = *c;
 		report_.screening = pipe_->screeningCounters();
+		if (auto* sc = dynamic_cast<StandstillCorrection*>(pipe_->rateCorrection()))
+		{
+			sc->finish();
+			report_.field_refinement = true;
+			if (const auto* f = sc->refiner())
+			{
+				report_.standstill_updates = f->updates();
+				report_.offset_applied = f->applied();
+				report_.offset_dph = f->filter().offset_dph();
+				report_.offset_sigma_dph = f->filter().offset_sigma_dph();
+			}
+		}
 		if (truth_file_) truth_file_->feedTo(std::numeric_limits<double>::infinity(), fog_cmp_, wheel_cmp_);
 		if (any_truth_ || (truth_file_ && truth_file_->poses() > 0))
 		{

@@ -89,6 +89,7 @@ HeadingPipeline::HeadingPipeline(const FogSeries& header, const PipelineOptions&
 		if (cal_->warmup) compensator_->notePowerOnFromMetadata(header);
 		if (options.screen_thermistors) health_ = std::make_unique<ThermistorHealth>(header_.thermistors.size());
 		sigma_dph_ = cal_->model.rms_held_out_dph;
+		if (options.field_refinement) correction_ = std::make_shared<StandstillCorrection>(options.field);
 	}
 	temps_.resize(header_.thermistors.size());
 }

@@ -106,3 +106,12 @@ if(TARGET fog-drift)
   add_test(NAME nav.fog_drift.missing_input COMMAND fog-drift -i ${NAV_DRIVE_DIR}/no_such.rawlog)
   set_tests_properties(nav.fog_drift.missing_input PROPERTIES WILL_FAIL TRUE LABELS "nav;integration")
 endif()
+
+# The turn-on offset learned in the field (docs/validation/turn-on-refinement.md): the bundled
+# drive with and without +0.3 deg/h, nine drives with drawn offsets, a piece without a
+# standstill, months of aging through fog-refine; the script's targets checked. About 15 min.
+if(TARGET fog-drift AND TARGET fog-sim AND TARGET fog-calibrate AND TARGET fog-refine AND TARGET gyro-shift AND NAV_PYTHON3)
+  add_test(NAME nav.turn_on_refinement
+    COMMAND sh -c "cd '${FOG_SOURCE_DIR}' && BUILD='${PROJECT_BINARY_DIR}' NOSTILL_FROM=2760 NOSTILL_TO=4045 scripts/turn_on_refinement.sh '${CMAKE_CURRENT_BINARY_DIR}/turn_on_refinement' >/dev/null && python3 scripts/turn_on_refinement_summary.py '${CMAKE_CURRENT_BINARY_DIR}/turn_on_refinement' --check")
+  set_tests_properties(nav.turn_on_refinement PROPERTIES LABELS "long;nav;integration" TIMEOUT 3600)
+endif()

@@ -67,6 +67,12 @@ struct FogOdometryReport
 	std::size_t odometry_rewritten = 0;  //!< odometry observations or actions given the FOG heading
 	std::size_t odometry_unchanged = 0;  //!< written as read (time not after the previous one)
 	std::optional<TrackErrors> fog_vs_truth, wheels_vs_truth;
+	/** The standstill updates of the turn-on bias offset (PipelineOptions::field_refinement;
+	 * empty when off or when no standstill beat the prior), and the state at the end. */
+	bool field_refinement = false;
+	std::vector<nav::StandstillUpdate> standstill_updates;
+	bool offset_applied = false;
+	double offset_dph = 0.0, offset_sigma_dph = 0.0;
 };
 
 /** Reads `input`, writes `output` (atomic). cal: the z-axis calibration (null: the raw FOG

@@ -47,6 +47,7 @@
 #include <mrpt_fog/obs/CObservationFOG.h>
 #include <mrpt_fog_heading/CalibrationEarthRate.h>
 #include <mrpt_fog_heading/RateCorrection.h>
+#include <mrpt_fog_heading/StandstillCorrection.h>
 #include <mrpt_fog_nav/StrapdownAttitude.h>
 #include <mrpt_fog_nav/Trajectory.h>
 
@@ -76,6 +77,10 @@ struct PipelineOptions
 	Alignment alignment = Alignment::AtFirstOdometry;
 	/** How long an odometry sample may arrive after the FOG samples past its time [s]. */
 	double max_odometry_lag_s = 10.0;
+	/** Standstill updates of the turn-on bias offset (StandstillCorrection.h), installed as the
+	 * rate correction when there is a calibration; false: none. setRateCorrection() replaces it. */
+	bool field_refinement = true;
+	StandstillCorrectionOptions field;
 };
 
 /** One FOG sample through the pipeline. */
@@ -135,6 +140,8 @@ class HeadingPipeline
 
 	/** The correction stage (RateCorrection.h); null removes it. Set it before the first sample. */
 	void setRateCorrection(std::shared_ptr<RateCorrection> correction) { correction_ = std::move(correction); }
+	/** The correction stage (null: none). */
+	RateCorrection* rateCorrection() const { return correction_.get(); }
 
 	/** One FOG sample (FogSample::time_s relative to the header's epoch). */
 	const RateStep& addFog(const FogSample& sample);

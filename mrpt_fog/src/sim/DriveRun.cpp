@@ -46,6 +46,7 @@ double simulateDriveSteps(const ChamberProfile& cabin, const FogDevice& device, 
 	PlanarState prev = traj.at(0);
 	bool more = true;
 	DriveRecord r;
+	r.epoch_s = device.epoch_s();
 	for (std::size_t k = 0; k < n; k++)
 	{
 		const DriveStep step = driveStep(k, settings.rate_hz, traj, cabin, sim, prev);
@@ -111,7 +112,7 @@ mrpt::obs::CObservation::Ptr odometryObservation(const DriveRecord& r)
 {
 	auto o = mrpt::obs::CObservationOdometry::Create();
 	o->sensorLabel = "ODOMETRY";
-	o->timestamp = mrpt::Clock::fromDouble(kSimEpoch_s + r.t_s);
+	o->timestamp = mrpt::Clock::fromDouble(r.epoch_s + r.t_s);
 	o->odometry = mrpt::poses::CPose2D(r.odo_x_m, r.odo_y_m, r.odo_yaw_rad);
 	o->hasVelocities = true;
 	o->velocityLocal = mrpt::math::TTwist2D(r.odo_v_mps, 0.0, r.odo_w_rad_s);
@@ -122,7 +123,7 @@ mrpt::obs::CObservation::Ptr truthObservation(const DriveRecord& r)
 {
 	auto g = mrpt::obs::CObservationRobotPose::Create();
 	g->sensorLabel = "GROUND_TRUTH";
-	g->timestamp = mrpt::Clock::fromDouble(kSimEpoch_s + r.t_s);
+	g->timestamp = mrpt::Clock::fromDouble(r.epoch_s + r.t_s);
 	g->pose.mean = mrpt::poses::CPose3D(r.truth_x_m, r.truth_y_m, 0.0, r.truth_yaw_rad, 0.0, 0.0);
 	g->pose.cov.setZero();
 	return g;

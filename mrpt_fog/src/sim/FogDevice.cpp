@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/sim/EffectRegistry.h>
+#include <mrpt_fog/sim/ChamberRun.h>
 #include <mrpt_fog/sim/FogDevice.h>
 #include <mrpt_fog/common/NumberFormat.h>
 
@@ -85,6 +86,14 @@ std::vector<NumField> noiseFields(GyroNoiseParams& n)
 			{"angle_quantum_arcsec", &n.angle_quantum_arcsec}};
 }
 
+std::vector<NumField> turnOnFields(TurnOnParams& t)
+{
+	return {{"bias_repeatability_dph", &t.bias_repeatability_dph},
+			{"sf_repeatability_ppm", &t.sf_repeatability_ppm},
+			{"aging_dph_per_year", &t.aging_dph_per_year},
+			{"age_days", &t.age_days}};
+}
+
 std::set<std::string> keysOf(const std::vector<NumField>& f, std::set<std::string> extra = {})
 {
 	for (const auto& x : f) extra.insert(x.key);
@@ -127,7 +136,7 @@ FogDevice FogDevice::fromYaml(const mrpt::containers::yaml& doc, const std::stri
 	if (doc.isNullNode()) return d;
 	const std::string top = source + ":";
 	checkKeys(doc,
-			  {"name", "latitude_deg", "coil", "thermal", "errors", "noise", "thermistors", "thermistor_noise_C",
+			  {"name", "latitude_deg", "coil", "thermal", "errors", "noise", "turn_on", "thermistors", "thermistor_noise_C",
 			   "thermistor_quantum_C"},
 			  top);
 	d.name = readString(doc, "name", top, "custom");
@@ -199,6 +208,13 @@ FogDevice FogDevice::fromYaml(const mrpt::containers::yaml& doc, const std::stri
 		checkKeys(node, keysOf(noiseFields(d.noise)), w);
 		readFields(node, noiseFields(d.noise), w);
 	}
+	if (doc.has("turn_on"))
+	{
+		const auto node = doc["turn_on"];
+		const std::string w = source + ": turn_on";
+		checkKeys(node, keysOf(turnOnFields(d.turn_on)), w);
+		readFields(node, turnOnFields(d.turn_on), w);
+	}
 	if (doc.has("thermistors"))
 	{
 		if (!doc["thermistors"].isSequence()) fieldError(source + ": thermistors", "expected a list");
@@ -243,6 +259,12 @@ FogDevice FogDevice::fromFile(const std::string& path)
 	return fromYaml(parseYamlFile(path), path);
 }
 
+double FogDevice::epoch_s() const
+{
+	constexpr double kSecondsPerDay = 86400.0;
+	return kSimEpoch_s + turn_on.age_days * kSecondsPerDay;
+}
+
 FogDevice FogDevice::withoutNoise() const
 {
 	FogDevice dev = *this;
@@ -265,9 +287,13 @@ void FogDevice::validate() const
 		{"noise.rrw_deg_h_rt_h", noise.rrw_deg_h_rt_h},
 		{"noise.angle_quantum_arcsec", noise.angle_quantum_arcsec},
 		{"errors.hysteresis_dph", errors.hysteresis_dph()},
+		{"turn_on.bias_repeatability_dph", turn_on.bias_repeatability_dph},
+		{"turn_on.sf_repeatability_ppm", turn_on.sf_repeatability_ppm},
+		{"turn_on.age_days", turn_on.age_days},
 	};
 	for (const auto& [name, v] : nonneg)
 		if (!(v >= 0)) throw std::invalid_argument(std::string(name) + ": must be >= 0");
+	if (!std::isfinite(turn_on.aging_dph_per_year)) throw std::invalid_argument("turn_on.aging_dph_per_year: must be finite");
 	if (!(noise.bias_corr_time_s > 0)) throw std::invalid_argument("noise.bias_corr_time_s: must be > 0");
 	if (!(errors.hysteresis_span_C > 0)) throw std::invalid_argument("errors.hysteresis_span_C: must be > 0");
 	if (!(errors.warmup_tau_s > 0)) throw std::invalid_argument("errors.warmup_tau_s: must be > 0");
@@ -297,6 +323,11 @@ std::vector<std::pair<std::string, std::string>> FogDevice::describe() const
 	for (double v : errors.temp_poly_dph) poly += (poly.empty() ? "" : ",") + formatValue("%.10g", v);
 	out.emplace_back("device.errors.temp_poly_dph", "[" + poly + "]");
 	for (const auto& f : noiseFields(c.noise)) out.emplace_back(std::string("device.noise.") + f.key, formatValue("%.10g", *f.value));
+	// listed only when set, so that the metadata (and the bundled datasets' bytes) of devices
+	// without them do not change
+	if (turn_on.any())
+		for (const auto& f : turnOnFields(c.turn_on))
+			out.emplace_back(std::string("device.turn_on.") + f.key, formatValue("%.10g", *f.value));
 	for (const auto& t : thermistors)
 		out.emplace_back("device.thermistor." + t.info.name, std::string("side=") + toString(t.info.side) +
 																  " angle_deg=" + formatValue("%.10g", t.info.angle_deg) +

@@ -11,6 +11,7 @@ namespace
 {
 constexpr double kArcsecPerDeg = 3600.0;
 constexpr double kSecondsPerMinute = 60.0;
+constexpr double kSecondsPerDay = 86400.0;
 
 // Rounds to a multiple of q; when 1/q is an integer (0.01 C) divides by it, so that the result
 // is the double nearest to the decimal value (prints as "30.06", not "30.060000000000002").
@@ -29,9 +30,19 @@ FogSimulator::FogSimulator(const FogDevice& device, const EffectSet& effects, st
 	  thermal_((device.validate(), device.thermal)),
 	  winding_(device.winding, device.thermal.layers, device.thermal.sectors),
 	  rng_gyro_(seed, RandomStream::GyroNoise),
-	  rng_therm_(seed, RandomStream::Thermistors)
+	  rng_therm_(seed, RandomStream::Thermistors),
+	  rng_turn_on_(seed, RandomStream::TurnOn)
 {
 	for (const auto& id : effects_) on_[static_cast<std::size_t>(effectFromId(id))] = true;
+}
+
+void FogSimulator::drawTurnOn()
+{
+	// both drawn at every power-on, in this order, whatever is enabled (the offset of turn-on k
+	// does not depend on whether the scale-factor repeatability is on)
+	const double z_bias = rng_turn_on_.normal(), z_sf = rng_turn_on_.normal();
+	turn_on_offset_dph_ = dev_.turn_on.bias_repeatability_dph * z_bias;
+	turn_on_sf_ppm_ = dev_.turn_on.sf_repeatability_ppm * z_sf;
 }
 
 double FogSimulator::powerW(const ChamberState& s) const
@@ -57,6 +68,9 @@ FogSample FogSimulator::start(const ChamberState& s0, InitialThermalState init)
 	const bool cold = init == InitialThermalState::Cold;
 	T_ = thermal_.steadyState(s0.air_C, cold ? 0.0 : powerW(s0));
 	time_since_power_on_s_ = (cold && s0.power_on) ? 0.0 : std::numeric_limits<double>::infinity();
+	run_time_s_ = 0;
+	turn_on_offset_dph_ = turn_on_sf_ppm_ = 0;
+	if (s0.power_on) drawTurnOn();
 	therm_lag_C_.clear();
 	for (const auto& t : dev_.thermistors) therm_lag_C_.push_back(nodeAt(T_, t.info.side, t.info.angle_deg));
 	hysteresis_dph_ = 0;
@@ -72,6 +86,8 @@ FogSample FogSimulator::advance(double dt_s, const ChamberState& s1)
 	if (!(dt_s > 0) || !std::isfinite(dt_s)) throw std::invalid_argument("FogSimulator::advance: dt must be > 0");
 	const Eigen::VectorXd Tprev = T_;
 	T_ = thermal_.step(T_, dt_s, state_.air_C, s1.air_C, powerW(state_), powerW(s1));
+	run_time_s_ += dt_s;
+	if (s1.power_on && !state_.power_on) drawTurnOn();
 	if (s1.power_on && !state_.power_on) time_since_power_on_s_ = 0.0;
 	else if (s1.power_on) time_since_power_on_s_ += dt_s;
 	if (!s1.power_on) acc_deg_ = acc_ideal_deg_ = 0, q_prev_ = q_ideal_prev_ = 0;
@@ -164,7 +180,16 @@ FogSample FogSimulator::makeSample(double dt_s, const Eigen::VectorXd& Tprev, co
 	out.thermal_error_dph = thermal;
 
 	const double ideal = applied_dph + noise_dph;
-	const double full = ideal + e.constant_bias_dph + thermal;
+	double full = ideal + e.constant_bias_dph + thermal;
+	if (dev_.turn_on.any())
+	{
+		constexpr double kDaysPerYear = 365.25;
+		out.turn_on_bias_dph = turn_on_offset_dph_ + dev_.turn_on.aging_dph_per_year *
+														 (dev_.turn_on.age_days + run_time_s_ / kSecondsPerDay) /
+														 kDaysPerYear;
+		out.turn_on_sf_ppm = turn_on_sf_ppm_;
+		full += out.turn_on_bias_dph + turn_on_sf_ppm_ * 1e-6 * applied_dph;
+	}
 	if (!s.power_on)
 	{
 		out.rate_dph = out.ideal_rate_dph = 0;

@@ -7,12 +7,12 @@
 
 namespace mrpt_fog::sim
 {
-/** An empty series labelled FOG, z axis only, the device's thermistors, at the simulator's epoch. */
+/** An empty series labelled FOG, z axis only, the device's thermistors, at the device's epoch (FogDevice::epoch_s). */
 inline FogSeries emptySimulatedSeries(const FogDevice& device)
 {
 	FogSeries out;
 	out.sensor_label = "FOG";
-	out.epoch_s = kSimEpoch_s;
+	out.epoch_s = device.epoch_s();
 	out.has_axis = {false, false, true};
 	for (const auto& t : device.thermistors) out.thermistors.push_back(t.info);
 	out.temp_C.assign(device.thermistors.size(), {});

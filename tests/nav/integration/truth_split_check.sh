@@ -11,7 +11,8 @@ SIM=$1 DRIFT=$2 TRUTH=$3 SRC=$4 WORK=$5
 rm -rf "$WORK" && mkdir -p "$WORK" && cd "$WORK"
 CAL="$SRC/tests/data/model/cal_v2_full_A.yaml"
 "$SIM" --profile drive --cabin "$SRC/tests/nav/integration/cabin_cold_start.yaml" --seed 7 -o drive.rawlog >/dev/null
-"$DRIFT" -i drive.rawlog --cal "$CAL" --json drift.json >/dev/null
+# the split is of the thermal model's error: fog-drift without its standstill updates
+"$DRIFT" -i drive.rawlog --cal "$CAL" --no-field-refinement --json drift.json >/dev/null
 "$TRUTH" --seed 7 --cabin "$SRC/tests/nav/integration/cabin_cold_start.yaml" --cal "$CAL" -o truth.csv
 /usr/bin/python3 "$SRC/scripts/heading_budget_truth.py" truth.csv --json split.json >/dev/null
 /usr/bin/python3 - <<'PY'

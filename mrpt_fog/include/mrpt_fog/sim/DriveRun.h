@@ -58,6 +58,7 @@ struct DriveRecord
 	double table_rate_dph = 0;
 	double odo_x_m = 0, odo_y_m = 0, odo_yaw_rad = 0, odo_v_mps = 0, odo_w_rad_s = 0;
 	double truth_x_m = 0, truth_y_m = 0, truth_yaw_rad = 0;
+	double epoch_s = kSimEpoch_s;  //!< absolute time of t = 0 (FogDevice::epoch_s)
 };
 /** Called per step, in order; return false to be called no more (the simulation still runs to
  * the end, for the coil transient). */

@@ -17,6 +17,7 @@
  *             hysteresis_dph, hysteresis_span_C, warmup_dph, warmup_tau_s, sf_ppm_per_C,
  *             sf_ref_C, magnetic_dph_per_uT, temp_poly_dph: [c1, c2, ...], temp_poly_ref_C}
  *   noise:   {arw_deg_rt_h, bias_instability_dph, bias_corr_time_s, rrw_deg_h_rt_h, angle_quantum_arcsec}
+ *   turn_on: {bias_repeatability_dph, sf_repeatability_ppm, aging_dph_per_year, age_days}
  *   thermistors: [{name: Ti1, side: inner, angle_deg: 0, tau_s: 5, offset_C: 0.05}, ...]
  *   thermistor_noise_C: 0.003
  *   thermistor_quantum_C: 0.01
@@ -79,6 +80,22 @@ struct GyroNoiseParams
 	double angle_quantum_arcsec = 0.005;  //!< output angle LSB (estimate); 0 = none
 };
 
+/** What no chamber calibration holds: the bias offset and scale-factor error drawn at each
+ * turn-on (turn-on to turn-on repeatability, IEEE Std 952) and a slow bias drift with the
+ * device's age (aging). All zero by default (off): the bundled datasets do not contain them.
+ * docs/reference/simulator-turn-on-and-aging.md gives sourced values. */
+struct TurnOnParams
+{
+	double bias_repeatability_dph = 0.0;  //!< 1-sigma of the offset drawn at each power-on [deg/h]
+	double sf_repeatability_ppm = 0.0;  //!< 1-sigma of the scale-factor error drawn at each power-on [ppm]
+	double aging_dph_per_year = 0.0;  //!< bias drift with age [deg/h per year of 365.25 days]
+	double age_days = 0.0;  //!< the device's age at t = 0 of the run [days]
+	bool any() const
+	{
+		return bias_repeatability_dph != 0.0 || sf_repeatability_ppm != 0.0 || aging_dph_per_year != 0.0 || age_days != 0.0;
+	}
+};
+
 /** One thermistor glued on the coil. */
 struct ThermistorSpec
 {
@@ -95,6 +112,7 @@ struct FogDevice
 	WindingParams winding;
 	ErrorCoefficients errors;
 	GyroNoiseParams noise;
+	TurnOnParams turn_on;  //!< turn-on offset and aging (off by default)
 	std::vector<ThermistorSpec> thermistors;  //!< default: the seed's Ti1/To1 at 0, Ti2/To2 at 180 deg
 	double thermistor_noise_C = 0.003;  //!< white reading noise (estimate)
 	double thermistor_quantum_C = 0.01;  //!< reading resolution (PHYSICS.md)
@@ -111,6 +129,9 @@ struct FogDevice
 	 * random walk, angle quantisation, thermistor noise and quantisation): the deterministic
 	 * response that model fits and reconstructions compare against. */
 	FogDevice withoutNoise() const;
+	/** The absolute time [s] of the run's t = 0: the simulator's epoch (ChamberRun.h), moved
+	 * turn_on.age_days later, so that logs of an aging device carry their dates. */
+	double epoch_s() const;
 	/** Consistency checks (throws std::invalid_argument naming the field). */
 	void validate() const;
 	/** Every parameter as (key, value) text pairs, keys "device.<section>.<field>". */

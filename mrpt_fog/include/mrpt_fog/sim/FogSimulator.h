@@ -11,7 +11,11 @@
  * change over the step divided by dt (exact for that mean). Each sample carries two rates drawn
  * from the SAME noise realisation: `rate_dph` (all enabled errors) and `ideal_rate_dph`
  * (no thermal error, nominal scale factor, no constant bias; the vehicle scenario's FOG_IDEAL).
- * While the gyro is unpowered both rates are 0 and power_on is false. */
+ * While the gyro is unpowered both rates are 0 and power_on is false.
+ * Turn-on repeatability and aging (FogDevice::turn_on, off by default): at each power-on an
+ * offset and a scale-factor error are drawn from their own random stream (RandomStream::TurnOn,
+ * so the other streams do not change), and the bias drifts with the device's age
+ * (age_days + t); both enter `rate_dph` only, like the constant bias. */
 
 #include <mrpt_fog/sim/ChamberProfile.h>
 #include <mrpt_fog/sim/CoilThermalModel.h>
@@ -42,7 +46,10 @@ struct FogSample
 	double inner_C = 0;  //!< inner layer mean [degC]
 	double outer_C = 0;  //!< outer layer mean [degC]
 	double shupe_dph = 0;  //!< Shupe term this step [deg/h]
-	double thermal_error_dph = 0;  //!< rate_dph - ideal_rate_dph before quantisation [deg/h]
+	double thermal_error_dph = 0;  //!< rate_dph - ideal_rate_dph before quantisation [deg/h], without turn_on_bias_dph
+	/** Turn-on offset drawn at the last power-on plus the aging drift at this time [deg/h], and
+	 * the scale-factor error drawn at the last power-on [ppm] (FogDevice::turn_on; 0 when off). */
+	double turn_on_bias_dph = 0, turn_on_sf_ppm = 0;
 };
 
 class FogSimulator
@@ -84,6 +91,10 @@ class FogSimulator
 	double hysteresis_dph_ = 0;
 	double time_since_power_on_s_ = std::numeric_limits<double>::infinity();
 	double gm_bias_dph_ = 0, rrw_dph_ = 0;
+	SimRandom rng_turn_on_;
+	double turn_on_offset_dph_ = 0, turn_on_sf_ppm_ = 0;  //!< drawn at the last power-on
+	double run_time_s_ = 0;  //!< since start() (for the aging drift)
+	void drawTurnOn();
 	double acc_deg_ = 0, acc_ideal_deg_ = 0;
 	long long q_prev_ = 0, q_ideal_prev_ = 0;
 };

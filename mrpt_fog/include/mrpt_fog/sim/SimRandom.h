@@ -22,7 +22,8 @@ enum class RandomStream : std::uint64_t
 	GyroNoise = 1,
 	Thermistors = 2,
 	Odometry = 3,
-	Trajectory = 4
+	Trajectory = 4,
+	TurnOn = 5  //!< the turn-on offset and scale-factor draws (FogDevice::turn_on)
 };
 
 class SimRandom
