@@ -97,6 +97,8 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 			e["confirm_p"] = ne.confirm_p;
 			if (ne.confirmed) e["confirmed_by"] = ne.confirmed_by;
 		}
+		else if (!ne.confirm_cannot_tell.empty())
+			e["confirm_cannot_tell"] = ne.confirm_cannot_tell;  // the confirmation run cannot show it
 		named.push_back(e);
 	}
 	j["named_effects"] = named;
@@ -108,6 +110,17 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 	j["not_named"] = JsonValue::arrayOf(
 		rep.rejected, [](const auto& r) { return JsonValue::object({{"id", r.id}, {"reason", r.reason}}); });
 	j["cannot_tell"] = rep.cannot_tell;
+	{
+		const auto& t = rep.timescale;
+		JsonValue ts = JsonValue::object();
+		ts["row_period_s"] = t.row_period_s;
+		ts["block_s"] = t.block_s;
+		ts["limit_s"] = t.limit_s;
+		ts["limit_reason"] = t.limit_reason;
+		ts["white_corner_s"] = t.white_corner_s;  // null when not reached / not measured
+		ts["from_data"] = t.from_data;
+		j["analysis_timescale"] = ts;
+	}
 	if (rep.rate_estimator_gap.tested)
 	{
 		const auto& g = rep.rate_estimator_gap;
@@ -213,6 +226,8 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 					   ? ", by its alias " + ne.confirmed_by + ": the group is confirmed, not which member"
 					   : std::string())
 			   << ")\n";
+		else if (!ne.confirm_cannot_tell.empty())
+			os << "    confirmation run: cannot tell (" << ne.confirm_cannot_tell << ")\n";
 	}
 	for (const auto& ne : sel.not_confirmed)
 		os << "  not confirmed (named on " << rep.run_labels[0] << ", not added): " << ne.id << ", coefficient "
@@ -251,13 +266,34 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 	auto gapLine = [&](const RunGap& g)
 	{
 		os << "Gap on " << g.label << ": RMS " << formatValue("%.4g", g.before.rms_dph) << " -> " << formatValue("%.4g", g.after.rms_dph)
-		   << " deg/h; " << formatValue("%g", rep.tau_s) << " s stability " << formatValue("%.4g", g.before.stability_dph) << " -> "
-		   << formatValue("%.4g", g.after.stability_dph) << " deg/h; range " << formatValue("%.4g", g.before.range_dph) << " -> "
-		   << formatValue("%.4g", g.after.range_dph) << " deg/h\n";
+		   << " deg/h; ";
+		if (std::isfinite(g.before.stability_dph) && std::isfinite(g.after.stability_dph))
+			os << formatValue("%g", rep.tau_s) << " s stability " << formatValue("%.4g", g.before.stability_dph) << " -> "
+			   << formatValue("%.4g", g.after.stability_dph) << " deg/h; range " << formatValue("%.4g", g.before.range_dph)
+			   << " -> " << formatValue("%.4g", g.after.range_dph) << " deg/h\n";
+		else
+			os << formatValue("%g", rep.tau_s) << " s stability and range n/a (the run holds fewer than two "
+			   << formatValue("%g", rep.tau_s) << " s windows)\n";
 	};
 	gapLine(rep.gap);
 	if (rep.has_confirm) gapLine(rep.gap_confirm);
 	if (rep.has_confirm && !rep.gap_confirm.validity_note.empty()) os << "  (" << rep.gap_confirm.validity_note << ")\n";
+	{
+		const auto& t = rep.timescale;
+		if (t.block_s > 0)
+		{
+			os << "Timescale: block means of " << formatValue("%.3g", t.block_s) << " s (rows given every "
+			   << formatValue("%.3g", t.row_period_s) << " s; ";
+			if (t.from_data)
+				os << (std::isfinite(t.white_corner_s)
+						   ? "the base residual's Allan deviation stops falling as white noise at " +
+								 formatValue("%.3g", t.white_corner_s) + " s; blocks of a quarter of that"
+						   : std::string("white noise to the longest tau measured"))
+				   << ", at most " << formatValue("%.3g", t.limit_s) << " s: " << t.limit_reason << ")\n";
+			else
+				os << "as requested; at most " << formatValue("%.3g", t.limit_s) << " s: " << t.limit_reason << ")\n";
+		}
+	}
 	os << "Noise model: ARMA(" << sel.ar.order() << ",1) theta " << formatValue("%.2f", sel.ar.theta) << ", long-run factor "
 	   << formatValue("%.2f", sel.lrv_factor) << ", " << sel.outliers << " outlier(s) excluded\n";
 	return os.str();

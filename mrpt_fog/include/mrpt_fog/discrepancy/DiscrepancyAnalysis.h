@@ -15,6 +15,7 @@
 #include <mrpt_fog/discrepancy/SelectionResult.h>
 #include <mrpt_fog/obs/FogSeries.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,18 @@ struct DiscrepancyReport
 	bool has_confirm = false;
 	RunGap gap_confirm;
 	double tau_s = 100.0;
+	/** The timescale the runs were analysed at (DiscrepancyOptions::analysis_block_s). */
+	struct Timescale
+	{
+		double row_period_s = 0;  //!< median step of the rows given [s]
+		double block_s = 0;  //!< rows analysed: block means of about this [s] (= row_period_s: as given)
+		double limit_s = 0;  //!< longest block the model can serve [s]
+		std::string limit_reason;  //!< which window sets limit_s
+		/** Where the Allan deviation of the base model's residual stops falling as white noise
+		 * [s]; NaN when it does not within the run (or when not measured: block requested). */
+		double white_corner_s = std::numeric_limits<double>::quiet_NaN();
+		bool from_data = false;  //!< chosen from the white corner (not requested)
+	} timescale;
 	/** Significant effects NOT named, with the reason: fitted contribution larger than the raw
 	 * bias range (implausible), a 95 % interval that includes zero, or too small a held-out part
 	 * on the confirmation run (DiscrepancyOptions::min_held_out_effect_ratio). */
@@ -90,8 +103,9 @@ struct DiscrepancyReport
 };
 
 /** Runs the workflow. runs[0] is analysed, runs[1] (optional) confirms; more than two runs,
- * an empty list, runs of different layouts, or too few usable samples throw
- * std::invalid_argument. `model` is a preset or a calibration YAML (BaseModelDesign.h). */
+ * an empty list, runs of different layouts, the same samples given as both runs, a block
+ * longer than the model can serve, or too few usable samples throw std::invalid_argument (a
+ * message about one run starts with that run's label). `model` is a preset or a calibration YAML (BaseModelDesign.h). */
 DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const std::vector<std::string>& run_labels,
 									 const std::string& model, const DiscrepancyOptions& opt = {});
 
