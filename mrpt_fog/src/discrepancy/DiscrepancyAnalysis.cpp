@@ -233,6 +233,77 @@ auto aboutRun(const std::string& label, F&& f)
 }
 }  // namespace
 
+namespace
+{
+/** Residual structure left after the named effects that reproduces on the confirmation run:
+ * a segment group (type, direction, temperature band) whose RMS is at least flag_rms_ratio x
+ * its run's on BOTH runs, over at least 2 % of each run's time; with the temperature range it
+ * covers and the candidate closest to explaining it (the last round's largest chi-square). */
+std::vector<DiscrepancyReport::Unexplained> unexplainedStructure(const DiscrepancyReport& rep,
+																 const std::vector<Segment>& segs1, const RunSignals& sig1,
+																 const std::vector<Segment>& segs2,
+																 const Eigen::VectorXd& residual2,
+																 const std::vector<unsigned char>& rows2,
+																 const DiscrepancyOptions& opt)
+{
+	std::vector<DiscrepancyReport::Unexplained> out;
+	const auto r1 = rankSegments(segs1, rep.selection.residual_after, rep.selection.fit_rows);
+	const auto r2 = rankSegments(segs2, residual2, rows2);
+	std::string closest;
+	double closestChi2 = 0, closestP = 1;
+	if (!rep.selection.rounds.empty())
+		for (const auto& t : rep.selection.rounds.back())
+			if (t.status == CandidateStatus::Tested && t.dof > 0 && t.chi2 / t.dof > closestChi2)
+			{
+				closestChi2 = t.chi2 / t.dof;
+				closest = t.id;
+				closestP = t.p_adjusted;
+			}
+	for (const auto& g1 : r1.groups)
+	{
+		if (!(g1.rms_dph >= opt.flag_rms_ratio * r1.run_rms_dph) || g1.time_share < 0.02) continue;
+		for (const auto& g2 : r2.groups)
+			if (g2.description == g1.description && g2.rms_dph >= opt.flag_rms_ratio * r2.run_rms_dph &&
+				g2.time_share >= 0.02)
+			{
+				DiscrepancyReport::Unexplained u;
+				u.where = g1.description;
+				u.rms_dph = g1.rms_dph;
+				u.ratio = g1.rms_dph / r1.run_rms_dph;
+				u.rms_confirm_dph = g2.rms_dph;
+				u.ratio_confirm = g2.rms_dph / r2.run_rms_dph;
+				u.time_share = g1.time_share;
+				u.temp_low_C = INFINITY;
+				u.temp_high_C = -INFINITY;
+				// the temperatures the group's segments cover (a segment describes itself in the
+				// singular, "cooling ramp below 0 C"; its group in the plural, "cooling ramps ...")
+				for (const auto& sg : segs1)
+				{
+					const std::string d = sg.describe();
+					if (sg.band.empty() || d.size() <= sg.band.size() || g1.description.size() <= sg.band.size() ||
+						g1.description.compare(g1.description.size() - sg.band.size(), sg.band.size(), sg.band) != 0)
+						continue;
+					const std::string kind = d.substr(0, d.size() - sg.band.size());
+					const std::string groupKind = g1.description.substr(0, g1.description.size() - sg.band.size());
+					if (groupKind.rfind(kind.substr(0, kind.size() - 1), 0) != 0 || groupKind.size() > kind.size() + 2)
+						continue;
+					for (std::size_t k = sg.begin; k < sg.end && k < sig1.size(); ++k)
+						if (rep.selection.fit_rows[k])
+						{
+							u.temp_low_C = std::min(u.temp_low_C, sig1.temp_mean_C[k]);
+							u.temp_high_C = std::max(u.temp_high_C, sig1.temp_mean_C[k]);
+						}
+				}
+				u.closest_candidate = closest;
+				u.closest_chi2_per_dof = closestChi2;
+				u.closest_p_adjusted = closestP;
+				out.push_back(u);
+			}
+	}
+	return out;
+}
+}  // namespace
+
 DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& given_runs, const std::vector<std::string>& labels,
 									 const std::string& model, const DiscrepancyOptions& opt)
 {
@@ -344,6 +415,11 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& given_runs, c
 	rep.base_terms = base1.names;
 	rep.selection = aboutRun(rep.run_labels[0], [&] { return selectMissingEffects(sig1, base1, opt.selection); });
 	rep.cannot_tell = informationShortfall(sig1, runs[0], optRows);
+	// slow wander: with one run it ends in "cannot tell"; with a confirmation run an effect that
+	// the other run (its own, independent wander) confirms and that passes the held-out rail
+	// there is not a drift of the analysed run: only the effects the other run cannot show are
+	// held back, and the wander is stated as a note
+	std::string wander;
 	if (rep.cannot_tell.empty() && !rep.selection.named.empty() && !rep.selection.ar_after.phi.empty())
 	{
 		// slow bias wander: a run a few correlation times long cannot tell a drift from an effect.
@@ -362,7 +438,8 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& given_runs, c
 							  "the residual wanders with a correlation time of %.0f min: the run covers only %.1f of them "
 							  "(at least %.0f needed to tell a slow drift from an effect)",
 							  corr_s / 60.0, spans, opt.min_wander_spans);
-				rep.cannot_tell = buf;
+				wander = buf;
+				if (runs.size() < 2) rep.cannot_tell = wander;
 			}
 		}
 	}
@@ -402,6 +479,12 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& given_runs, c
 			const Eigen::Index q = candidateById(term.id).build(ctx, term.theta).cols();
 			std::string reason;
 			if (!rep.cannot_tell.empty()) reason = "cannot tell: " + rep.cannot_tell;
+			else if (!wander.empty())
+			{
+				for (const auto& ne : sel.named)
+					if (ne.id == term.id && !(ne.confirm_tested && ne.confirmed))
+						reason = "cannot tell: " + wander + ", and the confirmation run cannot show it";
+			}
 			else if (col + q <= X.cols() && col + q <= sel.coef_after.size())
 			{
 				const Eigen::VectorXd part = X.middleCols(col, q) * sel.coef_after.segment(col, q);
@@ -578,6 +661,13 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& given_runs, c
 			});
 		}
 	}
+	if (!wander.empty() && rep.cannot_tell.empty())
+	{
+		if (rep.selection.named.empty()) rep.cannot_tell = wander;
+		else
+			rep.notes.push_back(wander + "; the effects named were confirmed on " + rep.run_labels[1] +
+								" and pass the held-out rail there");
+	}
 	// the compensator's rate estimate as a gap of its own: the base with and without the
 	// "centred minus causal" nuisance columns, fitted on the analysed run, judged on the other
 	{
@@ -620,7 +710,10 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& given_runs, c
 		std::size_t outside = 0;
 		const auto range = fittedRanges(sig1);
 		const auto rows2 = rowsInsideRange(*sig2, range, outside);
-		rep.gap_confirm = makeRunGap(rep.run_labels[1], *sig2, segmentRun(*sig2, opt.segmentation), rb, ra, rows2, opt);
+		const auto segs2 = segmentRun(*sig2, opt.segmentation);
+		rep.gap_confirm = makeRunGap(rep.run_labels[1], *sig2, segs2, rb, ra, rows2, opt);
+		if (rep.cannot_tell.empty())
+			rep.unexplained = unexplainedStructure(rep, segmentRun(sig1, opt.segmentation), sig1, segs2, ra, rows2, opt);
 		rep.gap_confirm.outside_model_range = outside;
 		if (outside > 0)
 		{

@@ -110,6 +110,20 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 	j["not_named"] = JsonValue::arrayOf(
 		rep.rejected, [](const auto& r) { return JsonValue::object({{"id", r.id}, {"reason", r.reason}}); });
 	j["cannot_tell"] = rep.cannot_tell;
+	j["notes"] = JsonValue::arrayOf(rep.notes);
+	j["unexplained"] = JsonValue::arrayOf(rep.unexplained, [](const auto& u) {
+		return JsonValue::object({{"where", u.where},
+								  {"temp_low_C", u.temp_low_C},
+								  {"temp_high_C", u.temp_high_C},
+								  {"rms_dph", u.rms_dph},
+								  {"ratio_to_run", u.ratio},
+								  {"rms_confirm_dph", u.rms_confirm_dph},
+								  {"ratio_to_run_confirm", u.ratio_confirm},
+								  {"time_share", u.time_share},
+								  {"closest_candidate", u.closest_candidate},
+								  {"closest_chi2_per_dof", u.closest_chi2_per_dof},
+								  {"closest_p_adjusted", u.closest_p_adjusted}});
+	});
 	{
 		const auto& t = rep.timescale;
 		JsonValue ts = JsonValue::object();
@@ -202,6 +216,7 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 		   << " % of the energy" << (s.flagged ? "  (flagged)" : "") << "\n";
 	}
 	os << "Verdict: " << rep.verdict() << "\n";
+	for (const auto& note : rep.notes) os << "  note: " << note << "\n";
 	for (const auto& ne : sel.named)
 	{
 		os << "  " << ne.id << ": " << candidateDescription(ne.id) << "\n";
@@ -235,6 +250,18 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 		   << "; on the confirmation run p " << formatValue("%.2g", ne.confirm_p)
 		   << (ne.confirm_p < 0.01 ? " with the opposite sign" : "") << "\n";
 	for (const auto& r : rep.rejected) os << "  not named: " << r.id << " (" << r.reason << ")\n";
+	for (const auto& u : rep.unexplained)
+		os << "Unexplained (no candidate explains it; it reproduces on the confirmation run): " << u.where << " ("
+		   << formatValue("%.3g", u.temp_low_C) << " .. " << formatValue("%.3g", u.temp_high_C) << " C, "
+		   << formatValue("%.0f", 100 * u.time_share) << " % of the time): residual RMS " << formatValue("%.3g", u.rms_dph)
+		   << " deg/h, " << formatValue("%.2g", u.ratio) << " x the run's; on the confirmation run "
+		   << formatValue("%.3g", u.rms_confirm_dph) << " deg/h, " << formatValue("%.2g", u.ratio_confirm) << " x"
+		   << (u.closest_candidate.empty()
+				   ? std::string()
+				   : "; closest candidate " + u.closest_candidate + " (chi2 per dof " +
+						 formatValue("%.3g", u.closest_chi2_per_dof) + ", Holm p " +
+						 formatValue("%.2g", u.closest_p_adjusted) + ")")
+		   << "\n";
 	if (!sel.rounds.empty())
 	{
 		std::string list;

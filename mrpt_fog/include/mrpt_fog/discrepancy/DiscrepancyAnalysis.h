@@ -82,6 +82,21 @@ struct DiscrepancyReport
 		std::string id, reason;
 	};
 	std::vector<Rejected> rejected;
+	/** Residual structure that no candidate explained and that reproduces on the confirmation
+	 * run: after the named effects, a segment group (type, direction = rate sign, temperature
+	 * band) whose residual RMS is at least flag_rms_ratio x its run's on both runs. Reported so
+	 * that a shape no candidate has is not met with silence. */
+	struct Unexplained
+	{
+		std::string where;  //!< the segment group, e.g. "cooling ramps between 0 and 20 C"
+		double temp_low_C = 0, temp_high_C = 0;  //!< mean thermistor temperature over it (analysed run)
+		double rms_dph = 0, ratio = 0;  //!< its residual RMS on the analysed run, and / the run's
+		double rms_confirm_dph = 0, ratio_confirm = 0;  //!< the same on the confirmation run
+		double time_share = 0;  //!< of the analysed run's usable time
+		std::string closest_candidate;  //!< the last round's largest chi-square per dof ("" if none)
+		double closest_chi2_per_dof = 0, closest_p_adjusted = 1;
+	};
+	std::vector<Unexplained> unexplained;
 	/** The compensator's rate estimate as a gap of its own (not a physical effect): the model's
 	 * rate terms on the calibration's causal rate vs on the analysis' centred rate (the
 	 * "centred minus causal" nuisance columns, BaseModelDesign.h), both fitted on the analysed
@@ -98,6 +113,9 @@ struct DiscrepancyReport
 	/** Non-empty when the data cannot answer (too short, too narrow a temperature span, too
 	 * coarse a quantisation, bias wander too slow for the run): nothing is named, this says why. */
 	std::string cannot_tell;
+	/** What the reader should know about the verdict (e.g. a slow wander the confirmation run
+	 * answered). */
+	std::vector<std::string> notes;
 	/** "cannot tell: ...", "no missing effect found" or "missing: a, b (strongest first)". */
 	std::string verdict() const;
 };
