@@ -37,9 +37,9 @@ TEST(ShellCoilGenerator, HiddenEffectIsTheDifferenceToItsNullTwin)
 
 TEST(ShellCoilGenerator, WhiteNoiseHasTheStatedAngleRandomWalk)
 {
-	// first differences at 1 s are dominated by the white part: sd / sqrt(2) = ARW x 60 / sqrt(dt)
+	// first differences at 2 s are dominated by the white part: sd / sqrt(2) = ARW x 60 / sqrt(dt)
 	ShellCoilOptions o;
-	o.dt_s = 1.0;
+	o.dt_s = 2.0;
 	o.seed = 4;
 	const auto run = makeShellCoilRun(o);
 	double s = 0;
@@ -47,12 +47,13 @@ TEST(ShellCoilGenerator, WhiteNoiseHasTheStatedAngleRandomWalk)
 	for (std::size_t k = 1; k < run.series.size(); ++k)
 		if (run.series.gyroOn(k) && run.series.gyroOn(k - 1))
 		{
-			const double d = run.series.rate_dph[2][k] - run.series.rate_dph[2][k - 1];
+			const auto& table = run.series.table_rate_dph;  // the bias, not the applied table rate
+			const double d = (run.series.rate_dph[2][k] - table[k]) - (run.series.rate_dph[2][k - 1] - table[k - 1]);
 			s += d * d;
 			++n;
 		}
 	const double white = std::sqrt(s / n / 2.0);
-	EXPECT_NEAR(white, o.arw_dpsh * 60.0, 0.05 * o.arw_dpsh * 60.0);
+	EXPECT_NEAR(white, o.arw_dpsh * 60.0 / std::sqrt(o.dt_s), 0.05 * o.arw_dpsh * 60.0 / std::sqrt(o.dt_s));
 	EXPECT_GT(run.noise_100s_dph, 0.006);  // white alone gives 0.006 deg/h over 100 s; flicker and walk add
 	EXPECT_LT(run.noise_100s_dph, 0.02);
 }
