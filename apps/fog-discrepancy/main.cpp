@@ -15,6 +15,7 @@
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -71,12 +72,12 @@ int main(int argc, char** argv)
 								   cmd);
 		app::RealArg block_s(
 			cmd, "block-s",
-			"analyse block means of at least this many seconds (default 1): a run sampled faster is reduced while it "
-			"is read to blocks of K = floor(S / sample period) consecutive samples (a block never mixes power "
-			"states, table rates or fields, nor bridges a gap); thermal effects vary over minutes, so blocks of "
-			"seconds keep them and average only the white part of the gyro noise: the residual RMS is that of "
-			"the block means. A run sampled at 1/S or slower is analysed sample by sample. 0: no reduction "
-			"(memory about 1.4 KB per sample)",
+			"analyse block means of this length instead of the one chosen from the data. By default a run is "
+			"read as 1 s block means (a block never mixes power states, table rates or fields, nor bridges a gap) "
+			"and then analysed at a quarter of the tau where its base residual's Allan deviation stops falling as "
+			"white noise, at most what the model's rate window serves (window / 4: 15 s for the usual 60 s); the "
+			"report says which. S > 0 sets that length (longer than the model serves: refused, the limit stated); "
+			"0: every sample as a row, no reduction (memory about 1.4 KB per sample)",
 			"s", app::Range::closed(0, 3600), 1.0, "S");
 		app::CountArg max_rows(
 			cmd, "max-rows",
@@ -102,6 +103,13 @@ int main(int argc, char** argv)
 										 (ec ? ": " + ec.message() : std::string()));
 		}
 
+		if (measured.getValue().size() == 2)
+		{
+			std::error_code ec;
+			if (std::filesystem::equivalent(measured.getValue()[0], measured.getValue()[1], ec))
+				throw std::runtime_error("--measured " + measured.getValue()[1] +
+										 ": the same file as the first --measured: a confirmation needs another run");
+		}
 
 		std::vector<FogSeries> runs;
 		std::vector<std::string> labels;
@@ -111,7 +119,9 @@ int main(int argc, char** argv)
 			// read as a stream: screened sample by sample (as fog-compensate), then reduced to
 			// block means with bounded rows (io/BlockMeanReader.h)
 			BlockMeanOptions bopt;
-			bopt.min_block_s = block_s.getValue();
+			// rows of at most 1 s; the analysis merges them to its timescale (DiscrepancyOptions)
+			// (--sim analyses the rows as read: S as given, default 1 s)
+			bopt.min_block_s = sim.isSet() || !block_s.isSet() ? block_s.getValue() : std::min(block_s.getValue(), 1.0);
 			bopt.max_rows = max_rows.get<std::size_t>();
 			// the simulator path puts each row on the profile's time grid: rows at their block's
 			// first sample (the log's own grid); the means lag that time by half a block
@@ -141,6 +151,7 @@ int main(int argc, char** argv)
 		discrepancy::DiscrepancyOptions opt;
 		opt.selection.alpha = alpha.getValue();
 		opt.thermistor_quantum_C = analysed_quantum_C;
+		opt.analysis_block_s = !block_s.isSet() ? 0.0 : block_s.getValue() > 0 ? block_s.getValue() : -1.0;
 		opt.scale_factor = scale_factor.getValue() == "off" ? discrepancy::ScaleFactorFitting::Off
 															 : discrepancy::ScaleFactorFitting::Auto;
 		discrepancy::DiscrepancyReport rep;
@@ -173,7 +184,7 @@ int main(int argc, char** argv)
 			}
 			catch (const std::invalid_argument& e)
 			{
-				throw std::runtime_error(measured.getValue().front() + ": " + e.what());
+				throw std::runtime_error(e.what());  // a message about one run starts with its file name
 			}
 			doc = discrepancy::discrepancyJson(rep);
 			text = discrepancy::discrepancyText(rep);

@@ -111,3 +111,67 @@ TEST(DiscrepancyAnalysis, RawQuantumGivenIsWhatTheQuantisationRuleJudges)
 	EXPECT_NE(coarse.cannot_tell.find("quantised to about 5 C"), std::string::npos) << coarse.cannot_tell;
 	EXPECT_NE(coarse.verdict().find("cannot tell"), std::string::npos);
 }
+
+namespace
+{
+/** The first `rows` rows of a run. */
+FogSeries firstRows(const FogSeries& run, std::size_t rows)
+{
+	FogSeries out = run;
+	out.resize(0);
+	for (std::size_t k = 0; k < rows && k < run.size(); ++k) out.appendSampleFrom(run, k);
+	return out;
+}
+}  // namespace
+
+// A confirmation run too short to show an effect (its expected chi-square at the coefficient
+// named is below what a confirmation needs) says "cannot tell" for that effect instead of
+// vetoing it, and its stability is "n/a", not nan.
+TEST(DiscrepancyAnalysis, ConfirmationRunThatCannotShowTheEffectSaysCannotTell)
+{
+	const auto runs = twoRuns({{"hysteresis", 3.0}});
+	const FogSeries shortRun = firstRows(makeSyntheticChamberRun(4, 42, {{"hysteresis", 3.0}}).series, 30);  // 2 min
+	const auto rep = analyseDiscrepancy({runs[0], shortRun}, {"A", "first_2_min"}, "static:3");
+	ASSERT_FALSE(rep.selection.named.empty()) << rep.verdict();
+	EXPECT_EQ(rep.selection.named.front().id, "hysteresis");
+	EXPECT_FALSE(rep.selection.named.front().confirm_tested);
+	EXPECT_FALSE(rep.selection.named.front().confirm_cannot_tell.empty());
+	EXPECT_TRUE(rep.selection.not_confirmed.empty());
+	const std::string text = discrepancyText(rep);
+	EXPECT_NE(text.find("confirmation run: cannot tell"), std::string::npos) << text;
+	EXPECT_EQ(text.find("nan"), std::string::npos) << text;
+	EXPECT_NE(text.find("stability and range n/a"), std::string::npos) << text;
+	EXPECT_NE(discrepancyJson(rep).dump().find("\"confirm_cannot_tell\""), std::string::npos);
+}
+
+// The same samples given as both runs is no confirmation: refused, naming the second run.
+TEST(DiscrepancyAnalysis, SameRunGivenTwiceIsRefused)
+{
+	const auto runs = twoRuns({});
+	try
+	{
+		analyseDiscrepancy({runs[0], runs[0]}, {"A.csv", "A_again.csv"}, "static:3");
+		FAIL() << "accepted the same run twice";
+	}
+	catch (const std::invalid_argument& e)
+	{
+		EXPECT_EQ(std::string(e.what()).rfind("A_again.csv: ", 0), 0u) << e.what();
+		EXPECT_NE(std::string(e.what()).find("same samples"), std::string::npos) << e.what();
+	}
+}
+
+// An error about the confirmation run names the confirmation run, not the analysed one.
+TEST(DiscrepancyAnalysis, ErrorNamesTheRunItIsAbout)
+{
+	const auto runs = twoRuns({});
+	try
+	{
+		analyseDiscrepancy({runs[0], firstRows(runs[1], 5)}, {"chamber_B.csv", "five_rows.csv"}, "static:3");
+		FAIL() << "accepted a 5-row confirmation run";
+	}
+	catch (const std::invalid_argument& e)
+	{
+		EXPECT_EQ(std::string(e.what()).rfind("five_rows.csv: ", 0), 0u) << e.what();
+		EXPECT_EQ(std::string(e.what()).find("chamber_B"), std::string::npos) << e.what();
+	}
+}

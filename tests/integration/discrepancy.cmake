@@ -29,7 +29,18 @@ if(TARGET fog-discrepancy AND TARGET fog-sim)
     COMMAND ${CMAKE_COMMAND} -DMODE=error -DEXE=$<TARGET_FILE:fog-discrepancy>
       "-DARGS=--measured;${_disc_dir}/does_not_exist.csv;--model;M1"
       -DEXPECT=does_not_exist -P ${_disc_check})
+  # the same file as both runs is no confirmation; a block longer than the model's slope window
+  # serves is refused with the limit (static model: 120 s derivative window / 4 = 30 s)
+  add_test(NAME discrepancy.same_file_twice_refused
+    COMMAND ${CMAKE_COMMAND} -DMODE=error -DEXE=$<TARGET_FILE:fog-discrepancy>
+      "-DARGS=--measured;${_disc_dir}/rich_a.csv;--measured;${_disc_dir}/./rich_a.csv;--model;static:3"
+      -DEXPECT=same file -P ${_disc_check})
+  add_test(NAME discrepancy.block_longer_than_the_model_serves_refused
+    COMMAND ${CMAKE_COMMAND} -DMODE=error -DEXE=$<TARGET_FILE:fog-discrepancy>
+      "-DARGS=--measured;${_disc_dir}/rich_a.csv;--model;static:3;--block-s;100"
+      -DEXPECT=longest block 30 s -P ${_disc_check})
   set_tests_properties(discrepancy.multipoint_named_and_confirmed discrepancy.bad_model_one_line_error
+    discrepancy.same_file_twice_refused discrepancy.block_longer_than_the_model_serves_refused
     discrepancy.sim_missing_config_one_line_error discrepancy.missing_file_one_line_error PROPERTIES
     FIXTURES_REQUIRED disc_runs LABELS "integration;discrepancy")
 endif()

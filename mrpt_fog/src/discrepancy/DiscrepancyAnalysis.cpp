@@ -1,4 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include <mrpt_fog/discrepancy/AnalysisTimescale.h>
 #include <mrpt_fog/discrepancy/DiscrepancyAnalysis.h>
 #include <mrpt_fog/discrepancy/EffectSelector.h>
 #include <mrpt_fog/discrepancy/RunGapFigures.h>
@@ -198,40 +199,227 @@ std::vector<unsigned char> rowsInsideRange(const RunSignals& sig, const std::vec
 }
 }  // namespace
 
-DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const std::vector<std::string>& labels,
-									 const std::string& model, const DiscrepancyOptions& opt)
+namespace
 {
-	if (runs.empty()) throw std::invalid_argument("no measured run given");
-	if (runs.size() > 2)
-		throw std::invalid_argument("at most two measured runs: the first is analysed, the second confirms");
-	if (runs.size() == 2 && !runs[0].sameLayout(runs[1]))
-		throw std::invalid_argument("the confirmation run has a different thermistor/axis layout from the first run");
-	DiscrepancyReport rep;
-	rep.model_source = model;
-	rep.tau_s = opt.tau_s;
-	for (std::size_t i = 0; i < runs.size(); ++i)
-		rep.run_labels.push_back(i < labels.size() ? labels[i] : "run " + std::to_string(i + 1));
+/** True when two runs hold the same samples (times, rates and temperatures). */
+bool sameSamples(const FogSeries& a, const FogSeries& b)
+{
+	auto same = [](const std::vector<double>& x, const std::vector<double>& y) {
+		if (x.size() != y.size()) return false;
+		for (std::size_t k = 0; k < x.size(); ++k)
+			if (!(x[k] == y[k] || (std::isnan(x[k]) && std::isnan(y[k])))) return false;
+		return true;
+	};
+	if (!same(a.time_s, b.time_s) || a.temp_C.size() != b.temp_C.size()) return false;
+	for (int ax = 0; ax < 3; ++ax)
+		if (!same(a.rate_dph[ax], b.rate_dph[ax])) return false;
+	for (std::size_t i = 0; i < a.temp_C.size(); ++i)
+		if (!same(a.temp_C[i], b.temp_C[i])) return false;
+	return true;
+}
 
-	auto sig1 = computeRunSignals(runs[0], opt.signals);
-	BaseModelSpec spec;
+/** Runs f; an std::invalid_argument it throws is re-thrown with the run's label in front. */
+template <class F>
+auto aboutRun(const std::string& label, F&& f)
+{
 	try
 	{
-		spec = resolveBaseModel(model, runs[0], opt.scale_factor);
+		return f();
 	}
 	catch (const std::invalid_argument& e)
 	{
-		// the model cannot even be fitted: when the run holds too little information that is
-		// the answer ("cannot tell"), otherwise the error stands
-		rep.cannot_tell = informationShortfall(sig1, runs[0], opt);
-		if (rep.cannot_tell.empty()) throw;
-		rep.cannot_tell += std::string(" (the model cannot be fitted: ") + e.what() + ")";
-		return rep;
+		throw std::invalid_argument(label + ": " + e.what());
 	}
-	const auto base1 = buildBaseDesign(spec, runs[0], sig1);
+}
+}  // namespace
+
+namespace
+{
+/** Residual structure left after the named effects that reproduces on the confirmation run:
+ * a segment group (type, direction, temperature band) whose RMS is at least flag_rms_ratio x
+ * its run's on BOTH runs, over at least 2 % of each run's time; with the temperature range it
+ * covers and the candidate closest to explaining it (the last round's largest chi-square). */
+std::vector<DiscrepancyReport::Unexplained> unexplainedStructure(const DiscrepancyReport& rep,
+																 const std::vector<Segment>& segs1, const RunSignals& sig1,
+																 const std::vector<Segment>& segs2,
+																 const Eigen::VectorXd& residual2,
+																 const std::vector<unsigned char>& rows2,
+																 const DiscrepancyOptions& opt)
+{
+	std::vector<DiscrepancyReport::Unexplained> out;
+	const auto r1 = rankSegments(segs1, rep.selection.residual_after, rep.selection.fit_rows);
+	const auto r2 = rankSegments(segs2, residual2, rows2);
+	std::string closest;
+	double closestChi2 = 0, closestP = 1;
+	if (!rep.selection.rounds.empty())
+		for (const auto& t : rep.selection.rounds.back())
+			if (t.status == CandidateStatus::Tested && t.dof > 0 && t.chi2 / t.dof > closestChi2)
+			{
+				closestChi2 = t.chi2 / t.dof;
+				closest = t.id;
+				closestP = t.p_adjusted;
+			}
+	for (const auto& g1 : r1.groups)
+	{
+		if (!(g1.rms_dph >= opt.flag_rms_ratio * r1.run_rms_dph) || g1.time_share < 0.02) continue;
+		for (const auto& g2 : r2.groups)
+			if (g2.description == g1.description && g2.rms_dph >= opt.flag_rms_ratio * r2.run_rms_dph &&
+				g2.time_share >= 0.02)
+			{
+				DiscrepancyReport::Unexplained u;
+				u.where = g1.description;
+				u.rms_dph = g1.rms_dph;
+				u.ratio = g1.rms_dph / r1.run_rms_dph;
+				u.rms_confirm_dph = g2.rms_dph;
+				u.ratio_confirm = g2.rms_dph / r2.run_rms_dph;
+				u.time_share = g1.time_share;
+				u.temp_low_C = INFINITY;
+				u.temp_high_C = -INFINITY;
+				// the temperatures the group's segments cover (a segment describes itself in the
+				// singular, "cooling ramp below 0 C"; its group in the plural, "cooling ramps ...")
+				for (const auto& sg : segs1)
+				{
+					const std::string d = sg.describe();
+					if (sg.band.empty() || d.size() <= sg.band.size() || g1.description.size() <= sg.band.size() ||
+						g1.description.compare(g1.description.size() - sg.band.size(), sg.band.size(), sg.band) != 0)
+						continue;
+					const std::string kind = d.substr(0, d.size() - sg.band.size());
+					const std::string groupKind = g1.description.substr(0, g1.description.size() - sg.band.size());
+					if (groupKind.rfind(kind.substr(0, kind.size() - 1), 0) != 0 || groupKind.size() > kind.size() + 2)
+						continue;
+					for (std::size_t k = sg.begin; k < sg.end && k < sig1.size(); ++k)
+						if (rep.selection.fit_rows[k])
+						{
+							u.temp_low_C = std::min(u.temp_low_C, sig1.temp_mean_C[k]);
+							u.temp_high_C = std::max(u.temp_high_C, sig1.temp_mean_C[k]);
+						}
+				}
+				u.closest_candidate = closest;
+				u.closest_chi2_per_dof = closestChi2;
+				u.closest_p_adjusted = closestP;
+				out.push_back(u);
+			}
+	}
+	return out;
+}
+}  // namespace
+
+DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& given_runs, const std::vector<std::string>& labels,
+									 const std::string& model, const DiscrepancyOptions& opt)
+{
+	if (given_runs.empty()) throw std::invalid_argument("no measured run given");
+	if (given_runs.size() > 2)
+		throw std::invalid_argument("at most two measured runs: the first is analysed, the second confirms");
+	DiscrepancyReport rep;
+	rep.model_source = model;
+	rep.tau_s = opt.tau_s;
+	for (std::size_t i = 0; i < given_runs.size(); ++i)
+		rep.run_labels.push_back(i < labels.size() ? labels[i] : "run " + std::to_string(i + 1));
+	if (given_runs.size() == 2 && !given_runs[0].sameLayout(given_runs[1]))
+		throw std::invalid_argument(rep.run_labels[1] + ": the confirmation run has a different thermistor/axis layout "
+									"from the first run");
+	if (given_runs.size() == 2 && sameSamples(given_runs[0], given_runs[1]))
+		throw std::invalid_argument(rep.run_labels[1] + ": the confirmation run holds the same samples as the analysed run " +
+									rep.run_labels[0] + ": a confirmation needs another run");
+
+	if (given_runs.size() == 2)  // a confirmation run that cannot be analysed at all: say so first, naming it
+		aboutRun(rep.run_labels[1], [&] { return computeRunSignals(given_runs[1], opt.signals); });
+	BaseModelSpec spec;
+	{
+		const auto sigGiven = aboutRun(rep.run_labels[0], [&] { return computeRunSignals(given_runs[0], opt.signals); });
+		try
+		{
+			spec = resolveBaseModel(model, given_runs[0], opt.scale_factor);
+		}
+		catch (const std::invalid_argument& e)
+		{
+			// the model cannot even be fitted: when the run holds too little information that is
+			// the answer ("cannot tell"), otherwise the error stands
+			rep.cannot_tell = informationShortfall(sigGiven, given_runs[0], opt);
+			if (rep.cannot_tell.empty()) throw std::invalid_argument(rep.run_labels[0] + ": " + e.what());
+			rep.cannot_tell += std::string(" (the model cannot be fitted: ") + e.what() + ")";
+			return rep;
+		}
+		// the analysis timescale (AnalysisTimescale.h): from the base residual's white corner, or
+		// as requested, within what the model's shortest slope window can serve
+		auto sigG = sigGiven;
+		const auto baseG = aboutRun(rep.run_labels[0], [&] { return buildBaseDesign(spec, given_runs[0], sigG); });
+		restrictToDefinedRows(sigG, baseG);
+		const bool readsRate =
+			std::any_of(baseG.is_nuisance.begin(), baseG.is_nuisance.end(), [](unsigned char c) { return c != 0; });
+		auto& ts = rep.timescale;
+		ts.row_period_s = medianRowPeriod_s(given_runs[0]);
+		const double window_s = readsRate ? spec.rate_estimator.window_s : opt.signals.derivative_window_s;
+		ts.limit_s = window_s / kBlocksPerWindow;
+		{
+			char buf[200];
+			std::snprintf(buf, sizeof buf, "%s of %g s needs at least %g block means",
+						  readsRate ? "the calibration's causal rate window" : "the analysis' derivative window", window_s,
+						  kBlocksPerWindow);
+			ts.limit_reason = buf;
+		}
+		if (opt.analysis_block_s > 0)
+		{
+			if (opt.analysis_block_s > ts.limit_s * (1 + 1e-9))
+			{
+				char buf[400];
+				std::snprintf(buf, sizeof buf,
+							  "a block of %g s is longer than this model can be analysed at: %s (longest block %g s); "
+							  "use a block of at most %g s, or a calibration with a longer rate window",
+							  opt.analysis_block_s, ts.limit_reason.c_str(), ts.limit_s, ts.limit_s);
+				throw std::invalid_argument(buf);
+			}
+			ts.block_s = std::max(opt.analysis_block_s, ts.row_period_s);
+		}
+		else if (opt.analysis_block_s == 0)
+		{
+			const Eigen::VectorXd coef = coefficientsOnRows(baseG.X, sigG, sigG.usable);
+			const Eigen::VectorXd res = residualWithCoefficients(baseG.X, sigG, coef);
+			ts.white_corner_s = whiteNoiseCorner_s(masked(res, sigG.usable), ts.row_period_s);
+			const double wanted = std::isfinite(ts.white_corner_s) ? ts.white_corner_s / 4.0 : ts.limit_s;
+			ts.block_s = std::max(ts.row_period_s, std::min(wanted, ts.limit_s));
+			ts.from_data = true;
+		}
+		else
+			ts.block_s = ts.row_period_s;
+	}
+	// the rows analysed: block means of the chosen length (a confirmation run too short for
+	// them keeps its rows: it is judged with its own noise model either way)
+	std::vector<FogSeries> coarse;
+	const bool merge = rep.timescale.row_period_s > 0 &&
+					   std::floor(rep.timescale.block_s / rep.timescale.row_period_s + 1e-9) >= 2;
+	if (merge)
+		for (const auto& r : given_runs)
+		{
+			coarse.push_back(blockMeansOfRows(r, rep.timescale.block_s));
+			if (coarse.size() == 2 && coarse.back().size() < 64) coarse.back() = r;
+		}
+	const std::vector<FogSeries>& runs = merge ? coarse : given_runs;
+	DiscrepancyOptions optRows = opt;
+	if (merge && optRows.thermistor_quantum_C <= 0)
+	{
+		// the quantum as the given rows show it (block means step by fractions of it)
+		std::vector<double> steps;
+		for (const auto& col : given_runs[0].temp_C)
+			for (std::size_t k = 1; k < col.size(); ++k)
+			{
+				const double d = std::fabs(col[k] - col[k - 1]);
+				if (std::isfinite(d) && d > 0) steps.push_back(d);
+			}
+		if (steps.size() >= 20) optRows.thermistor_quantum_C = percentile(steps, 0.05);
+	}
+
+	auto sig1 = aboutRun(rep.run_labels[0], [&] { return computeRunSignals(runs[0], opt.signals); });
+	const auto base1 = aboutRun(rep.run_labels[0], [&] { return buildBaseDesign(spec, runs[0], sig1); });
 	restrictToDefinedRows(sig1, base1);  // the calibration's rate estimator still filling its window
 	rep.base_terms = base1.names;
-	rep.selection = selectMissingEffects(sig1, base1, opt.selection);
-	rep.cannot_tell = informationShortfall(sig1, runs[0], opt);
+	rep.selection = aboutRun(rep.run_labels[0], [&] { return selectMissingEffects(sig1, base1, opt.selection); });
+	rep.cannot_tell = informationShortfall(sig1, runs[0], optRows);
+	// slow wander: with one run it ends in "cannot tell"; with a confirmation run an effect that
+	// the other run (its own, independent wander) confirms and that passes the held-out rail
+	// there is not a drift of the analysed run: only the effects the other run cannot show are
+	// held back, and the wander is stated as a note
+	std::string wander;
 	if (rep.cannot_tell.empty() && !rep.selection.named.empty() && !rep.selection.ar_after.phi.empty())
 	{
 		// slow bias wander: a run a few correlation times long cannot tell a drift from an effect.
@@ -250,7 +438,8 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 							  "the residual wanders with a correlation time of %.0f min: the run covers only %.1f of them "
 							  "(at least %.0f needed to tell a slow drift from an effect)",
 							  corr_s / 60.0, spans, opt.min_wander_spans);
-				rep.cannot_tell = buf;
+				wander = buf;
+				if (runs.size() < 2) rep.cannot_tell = wander;
 			}
 		}
 	}
@@ -258,10 +447,15 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 	std::optional<BaseDesign> base2;
 	if (runs.size() == 2)
 	{
-		sig2 = computeRunSignals(runs[1], opt.signals);
-		base2 = buildBaseDesign(spec, runs[1], *sig2);
-		restrictToDefinedRows(*sig2, *base2);
-		confirmOnRun(rep.selection, *sig2, *base2, opt.selection);
+		aboutRun(rep.run_labels[1], [&] {
+			sig2 = computeRunSignals(runs[1], opt.signals);
+			base2 = buildBaseDesign(spec, runs[1], *sig2);
+			restrictToDefinedRows(*sig2, *base2);
+			if (sig2->usableCount() == 0)
+				throw std::invalid_argument("no usable row (the model's rate estimator has no estimate on this run)");
+			confirmOnRun(rep.selection, *sig2, *base2, opt.selection);
+			return 0;
+		});
 	}
 	// Guard rails (after confirmation): an effect is not named when the data cannot answer,
 	// when its fitted contribution is larger than the raw bias range, or when its 95 %
@@ -285,6 +479,12 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 			const Eigen::Index q = candidateById(term.id).build(ctx, term.theta).cols();
 			std::string reason;
 			if (!rep.cannot_tell.empty()) reason = "cannot tell: " + rep.cannot_tell;
+			else if (!wander.empty())
+			{
+				for (const auto& ne : sel.named)
+					if (ne.id == term.id && !(ne.confirm_tested && ne.confirmed))
+						reason = "cannot tell: " + wander + ", and the confirmation run cannot show it";
+			}
 			else if (col + q <= X.cols() && col + q <= sel.coef_after.size())
 			{
 				const Eigen::VectorXd part = X.middleCols(col, q) * sel.coef_after.segment(col, q);
@@ -351,7 +551,19 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 		{
 			keepConfirmedEffects(sel, sig1, base1);
 			auto fitOnRun1 = [&](const Eigen::MatrixXd& X1) { return coefficientsOnRows(X1, sig1, sel.fit_rows); };
-			const double nu = static_cast<double>(std::max<std::size_t>(sig2->usableCount(), 1));
+			// what a user reads on the other run: the spread of its tau-s averages (the "100 s
+			// stability"); per-row RMS would be mostly white noise, whatever the rows' length
+			auto spread2 = [&](const Eigen::VectorXd& r) {
+				const double st = gapFigures(sig2->time_s, r, sig2->usable, opt.tau_s).stability_dph;
+				return st * st;
+			};
+			// an effect the other run cannot show (confirmOnRun: confirm_cannot_tell) is not
+			// judged on it either
+			auto heldOutTestable = [&](const std::string& id) {
+				for (const auto& ne : sel.named)
+					if (ne.id == id) return ne.confirm_tested;
+				return true;
+			};
 			const double rmin2 = opt.min_held_out_effect_ratio * opt.min_held_out_effect_ratio;
 			// rank in the forward selection (named is "strongest first"): an effect moved into
 			// another's held-out alias group lends the group its rank, so that a group whose
@@ -361,8 +573,8 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 			while (!sel.model.effects.empty())
 			{
 				const Eigen::VectorXd coefWith = fitOnRun1(sel.model.design(base1, sig1));
-				const double with2 =
-					residualWithCoefficients(sel.model.design(*base2, *sig2), *sig2, coefWith).squaredNorm();
+				const double with2 = spread2(residualWithCoefficients(sel.model.design(*base2, *sig2), *sig2, coefWith));
+				if (!std::isfinite(with2)) break;  // fewer than two tau-s windows: the rail cannot judge
 				std::string worstId, worstWhy;
 				double worstRatio = INFINITY;
 				// held-out residual mean square without the listed effects (coefficients from run 1)
@@ -374,11 +586,12 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 														 }),
 										  without.effects.end());
 					const Eigen::VectorXd coefWithout = fitOnRun1(without.design(base1, sig1));
-					return residualWithCoefficients(without.design(*base2, *sig2), *sig2, coefWithout).squaredNorm();
+					return spread2(residualWithCoefficients(without.design(*base2, *sig2), *sig2, coefWithout));
 				};
 				std::map<std::string, double> ratioOf;
 				for (const auto& term : sel.model.effects)
 				{
+					if (!heldOutTestable(term.id)) continue;
 					const double without2 = heldOutWithout2({term.id});
 					const double ratio2 = with2 > 0 ? (without2 - with2) / with2 : INFINITY;
 					ratioOf[term.id] = ratio2;
@@ -389,13 +602,14 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 					if (without2 <= with2)
 						std::snprintf(buf, sizeof buf,
 									  "held out: with its coefficient from the analysed run it does not shrink the other "
-									  "run's residual (RMS %.4g without, %.4g with, deg/h)",
-									  std::sqrt(without2 / nu), std::sqrt(with2 / nu));
+									  "run's %g s stability (%.4g without, %.4g with, deg/h)",
+									  opt.tau_s, std::sqrt(without2), std::sqrt(with2));
 					else
 						std::snprintf(buf, sizeof buf,
-									  "held out: with its coefficient from the analysed run it explains %.2g x the RMS left "
-									  "on the other run (RMS %.4g without, %.4g with, deg/h), below the %.2g worth naming",
-									  std::sqrt(ratio2), std::sqrt(without2 / nu), std::sqrt(with2 / nu),
+									  "held out: with its coefficient from the analysed run it explains %.2g x the %g s "
+									  "stability left on the other run (%.4g without, %.4g with, deg/h), below the %.2g "
+									  "worth naming",
+									  std::sqrt(ratio2), opt.tau_s, std::sqrt(without2), std::sqrt(with2),
 									  opt.min_held_out_effect_ratio);
 					worstWhy = buf;
 				}
@@ -405,7 +619,7 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 				// two together are worth naming: the rejected one joins B's alias group
 				for (const auto& term : sel.model.effects)
 				{
-					if (term.id == worstId || !(ratioOf[term.id] < rmin2)) continue;
+					if (term.id == worstId || !ratioOf.count(term.id) || !(ratioOf[term.id] < rmin2)) continue;
 					const double pair2 = with2 > 0 ? (heldOutWithout2({term.id, worstId}) - with2) / with2 : 0.0;
 					if (!(pair2 >= rmin2)) continue;
 					for (auto& ne : sel.named)
@@ -446,6 +660,13 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 				return rankOf.at(a.id) < rankOf.at(b.id);
 			});
 		}
+	}
+	if (!wander.empty() && rep.cannot_tell.empty())
+	{
+		if (rep.selection.named.empty()) rep.cannot_tell = wander;
+		else
+			rep.notes.push_back(wander + "; the effects named were confirmed on " + rep.run_labels[1] +
+								" and pass the held-out rail there");
 	}
 	// the compensator's rate estimate as a gap of its own: the base with and without the
 	// "centred minus causal" nuisance columns, fitted on the analysed run, judged on the other
@@ -489,7 +710,10 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& runs, const s
 		std::size_t outside = 0;
 		const auto range = fittedRanges(sig1);
 		const auto rows2 = rowsInsideRange(*sig2, range, outside);
-		rep.gap_confirm = makeRunGap(rep.run_labels[1], *sig2, segmentRun(*sig2, opt.segmentation), rb, ra, rows2, opt);
+		const auto segs2 = segmentRun(*sig2, opt.segmentation);
+		rep.gap_confirm = makeRunGap(rep.run_labels[1], *sig2, segs2, rb, ra, rows2, opt);
+		if (rep.cannot_tell.empty())
+			rep.unexplained = unexplainedStructure(rep, segmentRun(sig1, opt.segmentation), sig1, segs2, ra, rows2, opt);
 		rep.gap_confirm.outside_model_range = outside;
 		if (outside > 0)
 		{

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -751,19 +752,63 @@ void confirmOnRun(SelectionResult& result, const RunSignals& sig2, const BaseDes
 	Vec r;
 	const auto baseFit = olsOnRows(X, y, rows, r);
 	const auto ctx = makeCandidateContext(sig2, base2, baseFit.coef);
+	// each named effect's coefficients on the analysed run (columns after the base, in the
+	// model's order), to judge what the confirmation run could show of it
+	auto analysedCoefficients = [&](const std::string& id, Eigen::Index q) -> Vec {
+		Eigen::Index col = base2.X.cols();
+		for (const auto& term : result.model.effects)
+		{
+			const Eigen::Index w = candidateById(term.id).build(ctx, term.theta).cols();
+			if (term.id == id)
+				return col + w <= result.coef_after.size() && w == q ? Vec(result.coef_after.segment(col, q)) : Vec();
+			col += w;
+		}
+		return Vec();
+	};
 	for (auto& ne : result.named)
 	{
 		const auto& eff = candidateById(ne.id);
 		ne.confirm_tested = true;
-		if (!eff.untestable_reason(sig2).empty())
+		if (const std::string why = eff.untestable_reason(sig2); !why.empty())
 		{
 			ne.confirm_tested = false;
+			ne.confirm_cannot_tell = why;
 			continue;
 		}
 		const auto common = whitenableRows(sig2.block, ok, 0);
 		const Mat C = eff.build(ctx, ne.theta);
 		const Mat K = hcat(X, C);
+		if (common.size() < static_cast<std::size_t>(K.cols()) + 10)
+		{
+			ne.confirm_tested = false;
+			ne.confirm_cannot_tell = "the confirmation run has " + std::to_string(common.size()) +
+									 " usable rows, too few to fit the model and the effect";
+			continue;
+		}
 		const Gls g1 = glsFit(K, y, common, sig2.block, opt);
+		// power: the chi-square the effect would give on this run at the coefficient named on the
+		// analysed run (its contribution beyond the model, whitened by this run's noise model);
+		// below the confirmation threshold a non-confirmation says nothing: cannot tell
+		if (const Vec beta1 = analysedCoefficients(ne.id, C.cols()); beta1.size() == C.cols())
+		{
+			const Vec contribution = C * beta1;
+			const Mat Xw = whiten(X, g1.ar, common, &sig2.block);
+			const Vec cw = whiten(Mat(contribution), g1.ar, common, &sig2.block).col(0);
+			const double expected = leastSquares(Xw, cw).residual.squaredNorm() / (g1.sigma2 * g1.lrv);
+			const double needed = chi2Quantile(opt.alias_alpha, double(C.cols()));
+			if (!(expected >= needed))
+			{
+				char buf[300];
+				std::snprintf(buf, sizeof buf,
+							  "the confirmation run cannot show it: at the coefficient named its expected chi-square "
+							  "there is %.3g, below the %.3g a confirmation needs (too short or too little excitation)",
+							  expected, needed);
+				ne.confirm_tested = false;
+				ne.confirm_cannot_tell = buf;
+				X = K;
+				continue;
+			}
+		}
 		ne.confirm_p = chi2Survival(waldChi2(X, g1, y, common, sig2.block), double(C.cols()));
 		if (C.cols() == 1)
 		{

@@ -97,6 +97,8 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 			e["confirm_p"] = ne.confirm_p;
 			if (ne.confirmed) e["confirmed_by"] = ne.confirmed_by;
 		}
+		else if (!ne.confirm_cannot_tell.empty())
+			e["confirm_cannot_tell"] = ne.confirm_cannot_tell;  // the confirmation run cannot show it
 		named.push_back(e);
 	}
 	j["named_effects"] = named;
@@ -108,6 +110,31 @@ JsonValue discrepancyJson(const DiscrepancyReport& rep)
 	j["not_named"] = JsonValue::arrayOf(
 		rep.rejected, [](const auto& r) { return JsonValue::object({{"id", r.id}, {"reason", r.reason}}); });
 	j["cannot_tell"] = rep.cannot_tell;
+	j["notes"] = JsonValue::arrayOf(rep.notes);
+	j["unexplained"] = JsonValue::arrayOf(rep.unexplained, [](const auto& u) {
+		return JsonValue::object({{"where", u.where},
+								  {"temp_low_C", u.temp_low_C},
+								  {"temp_high_C", u.temp_high_C},
+								  {"rms_dph", u.rms_dph},
+								  {"ratio_to_run", u.ratio},
+								  {"rms_confirm_dph", u.rms_confirm_dph},
+								  {"ratio_to_run_confirm", u.ratio_confirm},
+								  {"time_share", u.time_share},
+								  {"closest_candidate", u.closest_candidate},
+								  {"closest_chi2_per_dof", u.closest_chi2_per_dof},
+								  {"closest_p_adjusted", u.closest_p_adjusted}});
+	});
+	{
+		const auto& t = rep.timescale;
+		JsonValue ts = JsonValue::object();
+		ts["row_period_s"] = t.row_period_s;
+		ts["block_s"] = t.block_s;
+		ts["limit_s"] = t.limit_s;
+		ts["limit_reason"] = t.limit_reason;
+		ts["white_corner_s"] = t.white_corner_s;  // null when not reached / not measured
+		ts["from_data"] = t.from_data;
+		j["analysis_timescale"] = ts;
+	}
 	if (rep.rate_estimator_gap.tested)
 	{
 		const auto& g = rep.rate_estimator_gap;
@@ -189,6 +216,7 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 		   << " % of the energy" << (s.flagged ? "  (flagged)" : "") << "\n";
 	}
 	os << "Verdict: " << rep.verdict() << "\n";
+	for (const auto& note : rep.notes) os << "  note: " << note << "\n";
 	for (const auto& ne : sel.named)
 	{
 		os << "  " << ne.id << ": " << candidateDescription(ne.id) << "\n";
@@ -213,6 +241,8 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 					   ? ", by its alias " + ne.confirmed_by + ": the group is confirmed, not which member"
 					   : std::string())
 			   << ")\n";
+		else if (!ne.confirm_cannot_tell.empty())
+			os << "    confirmation run: cannot tell (" << ne.confirm_cannot_tell << ")\n";
 	}
 	for (const auto& ne : sel.not_confirmed)
 		os << "  not confirmed (named on " << rep.run_labels[0] << ", not added): " << ne.id << ", coefficient "
@@ -220,6 +250,18 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 		   << "; on the confirmation run p " << formatValue("%.2g", ne.confirm_p)
 		   << (ne.confirm_p < 0.01 ? " with the opposite sign" : "") << "\n";
 	for (const auto& r : rep.rejected) os << "  not named: " << r.id << " (" << r.reason << ")\n";
+	for (const auto& u : rep.unexplained)
+		os << "Unexplained (no candidate explains it; it reproduces on the confirmation run): " << u.where << " ("
+		   << formatValue("%.3g", u.temp_low_C) << " .. " << formatValue("%.3g", u.temp_high_C) << " C, "
+		   << formatValue("%.0f", 100 * u.time_share) << " % of the time): residual RMS " << formatValue("%.3g", u.rms_dph)
+		   << " deg/h, " << formatValue("%.2g", u.ratio) << " x the run's; on the confirmation run "
+		   << formatValue("%.3g", u.rms_confirm_dph) << " deg/h, " << formatValue("%.2g", u.ratio_confirm) << " x"
+		   << (u.closest_candidate.empty()
+				   ? std::string()
+				   : "; closest candidate " + u.closest_candidate + " (chi2 per dof " +
+						 formatValue("%.3g", u.closest_chi2_per_dof) + ", Holm p " +
+						 formatValue("%.2g", u.closest_p_adjusted) + ")")
+		   << "\n";
 	if (!sel.rounds.empty())
 	{
 		std::string list;
@@ -251,13 +293,34 @@ std::string discrepancyText(const DiscrepancyReport& rep)
 	auto gapLine = [&](const RunGap& g)
 	{
 		os << "Gap on " << g.label << ": RMS " << formatValue("%.4g", g.before.rms_dph) << " -> " << formatValue("%.4g", g.after.rms_dph)
-		   << " deg/h; " << formatValue("%g", rep.tau_s) << " s stability " << formatValue("%.4g", g.before.stability_dph) << " -> "
-		   << formatValue("%.4g", g.after.stability_dph) << " deg/h; range " << formatValue("%.4g", g.before.range_dph) << " -> "
-		   << formatValue("%.4g", g.after.range_dph) << " deg/h\n";
+		   << " deg/h; ";
+		if (std::isfinite(g.before.stability_dph) && std::isfinite(g.after.stability_dph))
+			os << formatValue("%g", rep.tau_s) << " s stability " << formatValue("%.4g", g.before.stability_dph) << " -> "
+			   << formatValue("%.4g", g.after.stability_dph) << " deg/h; range " << formatValue("%.4g", g.before.range_dph)
+			   << " -> " << formatValue("%.4g", g.after.range_dph) << " deg/h\n";
+		else
+			os << formatValue("%g", rep.tau_s) << " s stability and range n/a (the run holds fewer than two "
+			   << formatValue("%g", rep.tau_s) << " s windows)\n";
 	};
 	gapLine(rep.gap);
 	if (rep.has_confirm) gapLine(rep.gap_confirm);
 	if (rep.has_confirm && !rep.gap_confirm.validity_note.empty()) os << "  (" << rep.gap_confirm.validity_note << ")\n";
+	{
+		const auto& t = rep.timescale;
+		if (t.block_s > 0)
+		{
+			os << "Timescale: block means of " << formatValue("%.3g", t.block_s) << " s (rows given every "
+			   << formatValue("%.3g", t.row_period_s) << " s; ";
+			if (t.from_data)
+				os << (std::isfinite(t.white_corner_s)
+						   ? "the base residual's Allan deviation stops falling as white noise at " +
+								 formatValue("%.3g", t.white_corner_s) + " s; blocks of a quarter of that"
+						   : std::string("white noise to the longest tau measured"))
+				   << ", at most " << formatValue("%.3g", t.limit_s) << " s: " << t.limit_reason << ")\n";
+			else
+				os << "as requested; at most " << formatValue("%.3g", t.limit_s) << " s: " << t.limit_reason << ")\n";
+		}
+	}
 	os << "Noise model: ARMA(" << sel.ar.order() << ",1) theta " << formatValue("%.2f", sel.ar.theta) << ", long-run factor "
 	   << formatValue("%.2f", sel.lrv_factor) << ", " << sel.outliers << " outlier(s) excluded\n";
 	return os.str();

@@ -67,6 +67,14 @@ struct DiscrepancyOptions
 	SegmentationOptions segmentation;
 	RunSignalsOptions signals;
 	double tau_s = 100.0;  //!< averaging time of the stability / range figures [s]
+	/** Length of the block means the runs are analysed at [s]. 0: chosen from the analysed
+	 * run's noise (a quarter of the tau where the Allan deviation of the base model's residual
+	 * stops falling as white noise), within what the model can serve; > 0: at least this long
+	 * (shorter rows are merged into blocks; a block longer than the model can serve is refused
+	 * with the limit stated, std::invalid_argument); < 0: the rows as given. The longest block
+	 * the model can serve: its causal rate window (or, without rate terms, the derivative
+	 * window) / 4. */
+	double analysis_block_s = 0.0;
 	/** A preset's calibration: scale factor versus temperature fitted from table segments (as
 	 * fog-calibrate) or not (--scale-factor off). Ignored for a calibration YAML. */
 	ScaleFactorFitting scale_factor = ScaleFactorFitting::Auto;

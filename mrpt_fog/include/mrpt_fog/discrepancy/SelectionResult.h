@@ -100,7 +100,11 @@ struct NamedEffect
 	std::string theta_meaning;  //!< the value in words when the candidate says more ("play operator, half-width 2 C")
 	double chi2 = 0.0, p_adjusted = 1.0, delta_bic = 0.0;
 	// confirmation run
+	/** false: not tested there; confirm_cannot_tell then says why when the run was given
+	 * (nothing to excite the effect, or too little data to show it at the coefficient named):
+	 * the effect stays named, as with a single run. */
 	bool confirm_tested = false;
+	std::string confirm_cannot_tell;
 	bool confirmed = false;
 	double confirm_p = 1.0;
 	double confirm_coefficient = 0.0;
