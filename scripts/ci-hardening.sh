@@ -6,7 +6,7 @@
 # 2. each libFuzzer target for FUZZ_SECONDS (default 20 s) from the seed corpus in
 #    tests/fuzz_corpus/ (scripts/run-fuzz.sh, clang++, build-fuzz/).
 # Exits non-zero if either part fails (a failing or sanitizer-reported test, a fuzzer finding);
-# both parts always run. Prints the time of each part. Measured cost: docs/hardening.md.
+# both parts always run. Prints the time of each part. Measured cost: docs/validation/hardening.md.
 # Environment: FUZZ_SECONDS (default 20), JOBS (default nproc), and those of the two scripts.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)

@@ -47,13 +47,13 @@ MODEL PRESETS (--model)
   M4[:IN,OUT]           seed eq. 6: poly3(IN - OUT) + poly3(d/dt (IN - OUT))
   points:K              multipoint on the best K-thermistor subset (by held-out error)
   terms:T(Ti1)^1;dT/dt(Ti1)^1;dT(Ti1-To1)^1   an explicit term list; also dTlag/dt(a,tau_s)^k and
-                        hyst(a,play,wC)^1 / hyst(a,branch,wC)^1 (hysteresis, docs/model.md)
+                        hyst(a,play,wC)^1 / hyst(a,branch,wC)^1 (hysteresis, docs/reference/model.md)
   Append @T/R to change the orders, e.g. multipoint@3/1, or @T for the temperature order only
   (M1:imu@3); the orders of auto are upper limits.
 
 OUTSIDE THE CALIBRATED RANGE (--extrapolation)
   linear (default): each signal's polynomial is continued along its tangent at the range edge
-    (on held-out simulated devices 1.2-1.5x better than clamp, see docs/model.md);
+    (on held-out simulated devices 1.2-1.5x better than clamp, see docs/reference/model.md);
   clamp: the signal is held at the edge (the bias stops changing: compensated = raw beyond);
   polynomial: the raw polynomial (studies only).
   With --validate, a warning gives the share of samples outside the range and how far out.
@@ -69,7 +69,7 @@ HOW THE FIT GUARDS AGAINST OVER-FITTING (--selection)
     the run (cooling ramps, soaks, heating ramps) are held out, so the error is that of a
     temperature history the fit did not see; blocks = interleaved time blocks. points:K also
     searches thermistor subsets.
-  Options measured on the generalization bench, not the default (docs/generalization.md,
+  Options measured on the generalization bench, not the default (docs/validation/generalization.md,
   "Scoring what the product is judged on"): --order-search common (one temperature order and
   one rate order for all thermistors, 15 candidates), --selection-bin S (candidates scored on
   S-second bin means, e.g. the --tau of the stability figure, so the white noise of high sample
@@ -84,7 +84,7 @@ HOW THE FIT GUARDS AGAINST OVER-FITTING (--selection)
   or more thermistors nothing changes (the sensors see the radial spread themselves).
   Several -i runs: by default each run is one fold (leave-one-run-out: a model fitted on the
   other runs alone must predict it); --run-folds regimes cuts each run into its thermal regimes
-  and fits every fold on all the rest, the other runs included (docs/generalization.md,
+  and fits every fold on all the rest, the other runs included (docs/validation/generalization.md,
   "Calibration on more than one run"). A second run with another temperature history (a sine,
   other ramp rates) is what pins the rate (Shupe) coefficients that one 1 C/min profile leaves
   open.
@@ -109,7 +109,7 @@ RATES
   time. Without --window the window grows with the thermistors' reading quantum (the smallest
   change between consecutive readings): 60 s x q / 0.02 degC, at least 60 s, at most 1200 s
   (1/16 degC: 188 s), since a quantised reading's slope errs by about q / window (a longer
-  window would delay the rates more than it saves: docs/generalization.md). The
+  window would delay the rates more than it saves: docs/validation/generalization.md). The
   calibration records the window; fog-compensate uses it. Until a rate window covers half its
   length (start of a log, each burst of a burst log, after a gap) the compensator uses the
   calibration's rate-free start-up model (flag rate_free). --estimator savgol uses a
@@ -128,7 +128,7 @@ SCALE FACTOR VS TEMPERATURE (--scale-factor auto|off)
   as bias samples with the nominal scale factor (the behaviour before version 2 files).
 
   The reported 95 % interval of the mean slope also covers the thermistors' disagreement on
-  the coil temperature (the fit repeated against each thermistor; docs/model.md).
+  the coil temperature (the fit repeated against each thermistor; docs/reference/model.md).
   With table segments where the thermistors disagree (turn-ons, ramps: the bundled
   datasets/ratetable_transient.rawlog) a further candidate reads a weighted sum of all
   thermistors (the coil's mean temperature, which no single one reads in a transient; weights
@@ -157,7 +157,7 @@ WARM-UP (--warmup-run RUN, repeatable; --warmup-terms 1|2|auto)
   Without it (0, the default) the whole run joins the bias fit, no term is fitted on it, and a
   note names the run: the transient is then taken for a thermal effect. One `calibration` run
   of the bundled device validated on datasets/chamber_B.rawlog: 11.0x with 3600 against 7.8x
-  without (docs/generalization.md, "One calibration run"). The default stays 0 because runs
+  without (docs/validation/generalization.md, "One calibration run"). The default stays 0 because runs
   with power cycles (the bundled rate-table transient run, the model-gap trials' runs) have
   documented figures fitted that way.
 
@@ -187,11 +187,11 @@ EXAMPLES
   fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable_A.rawlog -i datasets/ratetable_transient.rawlog \
                 -i datasets/warmup.rawlog -o cal_full.yaml        (warm-up run in the bias fit: the recommendation before)
   fog-sim --profile calibration --seed 7 -o cal_run.rawlog && fog-calibrate -i cal_run.rawlog --turn-on-exclusion 3600 -o cal1.yaml
-                (one chamber run calibrates bias, rate terms and warm-up: docs/generalization.md, "One calibration run")
+                (one chamber run calibrates bias, rate terms and warm-up: docs/validation/generalization.md, "One calibration run")
   fog-calibrate -i datasets/chamber_A.rawlog -i datasets/ratetable_A.rawlog -i datasets/ratetable_transient.rawlog \
                 --warmup-run datasets/warmup.rawlog --warmup-run datasets/warmup_B.rawlog --selection none \
                 --model "terms:T(Ti1)^1;dT/dt(Ti1)^1;T(To1)^1;dT/dt(To1)^1;T(Ti2)^1;dT/dt(Ti2)^1;T(To2)^1;dT/dt(To2)^1;T(To1)^2" \
-                -o cal_wu.yaml    (the recommended calibration: docs/nav.md, "Error budget")
+                -o cal_wu.yaml    (the recommended calibration: docs/validation/navigation.md, "Error budget")
   fog-calibrate -i chamber3.rawlog -i rt_x.rawlog -i rt_y.rawlog -i rt_z.rawlog -o cal3.yaml   (triad, fog-sim --triad)
   fog-calibrate -i runA.csv -i runB.csv --model points:2 -o cal2.yaml --json fit.json
   fog-calibrate -i runA.csv --model M3:Ti1,To1 --selection none -o m3.yaml
@@ -231,7 +231,7 @@ JsonValue figuresJson(const FitFigures& f)
 	return j;
 }
 
-/** Why a fit selected no thermal term, from the runs themselves (issue 14: such a calibration
+/** Why a fit selected no thermal term, from the runs themselves (such a calibration
  * used to be written silently as "1 terms (0 thermistors)"). */
 std::string whyNoThermalTerm(const std::vector<FogRun>& runs, const BiasModel& m)
 {
@@ -703,7 +703,7 @@ int main(int argc, char** argv)
 		const bool screen = !arg_no_screen.getValue();
 		std::string screening_text;
 		// Each log is read once into a run spilled to a temporary file (memory independent of the
-		// log's length, issue 14), screened on the way as fog-compensate screens it.
+		// log's length), screened on the way as fog-compensate screens it.
 		// Gyro-off rows and turn-on events of each log read (apps/common/PowerCycles.h, the rule of
 		// fog-evaluate and fog-compensate): those rows give no gyro sample to any fit or figure.
 		struct RunPower
@@ -831,7 +831,7 @@ int main(int argc, char** argv)
 				}
 			}
 			// What the summary needs from the runs, then they are freed before the warm-up and
-			// validation runs are read (memory: one log at a time, issue 14).
+			// validation runs are read (memory: one log at a time).
 			f.run_count = set.runs.size();
 			f.table_rates = hasTableRates(set.runs);
 			if (f.cal.model.features.thermistors().empty()) f.why_empty = whyNoThermalTerm(set.runs, f.cal.model);

@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 
 namespace
 {
-/** The recommended bias model (docs/nav.md, "Error budget"): the linear multipoint terms the
+/** The recommended bias model (docs/validation/navigation.md, "Error budget"): the linear multipoint terms the
  * automatic selection keeps on the bundled runs, plus one curvature term (the static bias curve). */
 const char* const kCurvatureModel =
 	"terms:T(Ti1)^1;dT/dt(Ti1)^1;T(To1)^1;dT/dt(To1)^1;T(Ti2)^1;dT/dt(Ti2)^1;T(To2)^1;dT/dt(To2)^1;T(To1)^2";
@@ -57,7 +57,7 @@ WHAT IT DOES
       thermistors), + warm-up and curvature (the turn-on term fitted apart on the cold-start runs
       warmup.rawlog and warmup_B.rawlog: one or two exponentials by held-out error and the
       start-up model's offset after a turn-on; the bias model with one curvature term
-      T(To1)^2, the recommended calibration of docs/nav.md); the median heading RMS of each over
+      T(To1)^2, the recommended calibration of docs/validation/navigation.md); the median heading RMS of each over
       the drives leads the report. Stages whose runs the datasets folder lacks are skipped,
       said in the report.
   The report folder holds summary.md (key figures, tables, the command behind each), the
@@ -267,7 +267,7 @@ int main(int argc, char** argv)
 		}
 		if (have_warm)
 		{
-			// the recommended calibration (docs/nav.md, "Error budget"): the warm-up fitted apart on the
+			// the recommended calibration (docs/validation/navigation.md, "Error budget"): the warm-up fitted apart on the
 			// cold-start run(s), the default model's linear terms plus one curvature term
 			std::vector<std::string> argv{run.program("fog-calibrate"), "-i", ds.chamber_A, "-i", table_run.string()};
 			if (have_transient) argv.insert(argv.end(), {"-i", transient_run.string()});
@@ -385,7 +385,7 @@ int main(int argc, char** argv)
 		if (!stages_on) md << "\nScale-factor and warm-up stages and the simulated drives skipped (--no-stages).\n";
 		else if (!have_table) md << "\nNo `ratetable_A.rawlog` in the datasets folder: the scale-factor and warm-up stages are skipped.\n";
 		else if (!have_warm) md << "\nNo `warmup.rawlog` in the datasets folder: the warm-up stage is skipped.\n";
-		md << "\nWhere the remaining error comes from (decomposition by simulator effect): docs/nav.md.\n\n";
+		md << "\nWhere the remaining error comes from (decomposition by simulator effect): docs/validation/navigation.md.\n\n";
 		md << "## Bias (chamber runs, tau = 100 s)\n\n"
 		   << "| run | raw stability [deg/h] | compensated stability [deg/h] | raw range [deg/h] | compensated range [deg/h] |\n"
 		   << "|---|---|---|---|---|\n";
@@ -426,7 +426,7 @@ int main(int argc, char** argv)
 			   << "). Can these fields judge the gyro? The ideal gyro gives "
 			   << fmt(loc.number("heading_relevance.ideal_to_raw_position_rms"), "%.2f") << "x the raw position RMS: "
 			   << loc.text("heading_relevance.verdict") << ". Map, rawlogs, "
-			   << "pf-localization .ini files and plots: `localize/`; details: docs/localize.md.\n";
+			   << "pf-localization .ini files and plots: `localize/`; details: docs/guide/localization.md.\n";
 		}
 		if (have_paper)
 		{

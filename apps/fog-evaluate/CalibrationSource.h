@@ -21,7 +21,7 @@ struct CompensationResult
 
 /** Loads the calibration YAML at cal_path and runs the causal compensator (model/Compensator.h)
  * over the run read from log_path, chunk by chunk, passing its outputs to `sink` (memory
- * independent of the log's length, issue 14). Throws (naming the file) when the calibration
+ * independent of the log's length). Throws (naming the file) when the calibration
  * cannot be loaded, and std::invalid_argument on a layout mismatch (from the compensator). */
 CompensationResult compensateWithCalibration(const std::string& cal_path, const std::string& log_path, const FogRun& run,
 											 const CompensationSink& sink);

@@ -35,6 +35,16 @@ using namespace mrpt_fog::evaluate;
 
 namespace
 {
+const char* const kHelp = R"(
+EXAMPLES
+  fog-evaluate -i datasets/chamber_B.rawlog
+  fog-evaluate -i datasets/chamber_B.rawlog --cal cal.yaml --json ev.json --plots plots/
+  fog-evaluate -i run.csv --cal cal.yaml --tau 300
+)";
+}  // namespace
+
+namespace
+{
 std::string num(double v, const char* f = "%.6g") { return std::isfinite(v) ? formatValue(f, v) : "n/a"; }
 
 void printRow(const std::string& name, double raw, const RateEvaluation* comp, double comp_value)
@@ -69,7 +79,7 @@ int main(int argc, char** argv)
 								   "compensating (fog-compensate's screening)",
 								   cmd);
 		TCLAP::SwitchArg quiet("q", "quiet", "No progress line on stderr while the log is read", cmd);
-		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-evaluate")) return *rc;
+		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-evaluate", kHelp)) return *rc;
 
 		const double tau_s = tau.getValue();
 		if (!std::isfinite(tau_s) || tau_s <= 0)
@@ -79,7 +89,7 @@ int main(int argc, char** argv)
 		requireSafeOutputs({{"-i", path}, {"--cal", cal.getValue()}}, {{"--json", json.getValue()}});
 		// The log is read once into a run spilled to a temporary file, screened on the way as
 		// fog-compensate screens it (so that a log gives the same compensated figures here and
-		// there); the figures are computed in passes (memory independent of the log's length, issue 14).
+		// there); the figures are computed in passes (memory independent of the log's length).
 		app::StreamScreening screener(!no_screen.getValue());
 		app::Progress progress("fog-evaluate: reading " + path, quiet.getValue());
 		const FogRun run = readFogRun(path, label.getValue(), screener.hook(),

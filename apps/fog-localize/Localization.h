@@ -39,7 +39,7 @@
 namespace mrpt_fog::localize
 {
 /** A FOG's heading noise and a wheel's distance noise per step (defaults documented in
- * docs/localize.md). */
+ * docs/guide/localization.md). */
 struct FogMotionModel
 {
 	double heading_bias_dph = 0.5;  //!< FOG bias uncertainty the filter allows [deg/h]

@@ -105,7 +105,7 @@ namespace
 const std::vector<double> kRidgeGrid = {0.0, 1e-9, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1};
 
 /** One calibration run prepared for the fit: which samples are usable, the bias and the
- * thermistor rates. Memory does not grow with the log (issue 14; the usable flags are intervals,
+ * thermistor rates. Memory does not grow with the log (the usable flags are intervals,
  * common/IntervalMask.h, at most one bit per sample for a log whose flags flip very often): the
  * run is read in chunks (obs/FogRun.h: in memory, or spilled to a temporary file), the bias is
  * computed from the chunk when asked (y()), and the causal rates are recomputed in each
@@ -131,7 +131,7 @@ struct PreparedRun
 	double y(const FogSeries& c, std::size_t j) const
 	{
 		// gyro off (power 0): no gyro sample, whatever the cell holds (fog-sim's chamber writes 0 deg/h
-		// there), so that the raw figures do not count it either (issue 13 item 1)
+		// there), so that the raw figures do not count it either
 		if (!c.power.empty() && c.power[j] == 0.0) return std::numeric_limits<double>::quiet_NaN();
 		const double table = c.table_rate_dph.empty() ? 0.0 : c.table_rate_dph[j];
 		if (exclude_table && table != 0.0) return std::numeric_limits<double>::quiet_NaN();
@@ -1730,7 +1730,7 @@ FitFigures evaluateCalibration(const Calibration& cal, const FogSeries& series, 
 
 FitFigures evaluateCalibration(const Calibration& cal, const FogRun& run, const std::string& label, double tau_s)
 {
-	// (time, raw, compensated) rows in a RowSpill (memory independent of the run's length, issue 14).
+	// (time, raw, compensated) rows in a RowSpill (memory independent of the run's length).
 	const int axis = static_cast<int>(cal.axis);
 	RowSpill rows(3);
 	const CompensationCounters counters = compensateRun(
