@@ -30,6 +30,7 @@ def md_files():
 def anchors(path):
     """GitHub-style heading anchors of a markdown file."""
     result = set()
+    seen = {}
     in_code = False
     for line in open(path, encoding="utf-8"):
         if line.startswith("```"):
@@ -37,8 +38,10 @@ def anchors(path):
         if in_code or not line.startswith("#"):
             continue
         text = line.lstrip("#").strip().lower()
-        text = re.sub(r"[^\w\- ]", "", text)
-        result.add(text.replace(" ", "-"))
+        text = re.sub(r"[^\w\- ]", "", text).replace(" ", "-")
+        n = seen.get(text, 0)
+        seen[text] = n + 1
+        result.add(text if n == 0 else f"{text}-{n}")  # repeated headings get -1, -2, ...
     return result
 
 

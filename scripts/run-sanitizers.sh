@@ -25,9 +25,10 @@ jobs=${JOBS:-$(nproc)}
 san_opt=${SAN_OPT:--O1 -g1}
 
 t0=$(date +%s)
+source "$here/scripts/ccache-env.sh"  # compiler cache when installed (FOG_CCACHE=0: none)
 # Benchmarks and fuzz targets are not part of the test suite: not built. The long-sweep test
 # programs are (3 small sources): ctest's discovery reports a missing one as a failing test.
-cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMRPT_FOG_SANITIZE=ON \
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMRPT_FOG_SANITIZE=ON "${FOG_LAUNCHER[@]}" \
 	-DMRPT_FOG_BUILD_BENCH=OFF -DMRPT_FOG_BUILD_FUZZ=OFF -DMRPT_FOG_BUILD_TESTS=ON -DMRPT_FOG_BUILD_APPS=ON \
 	"-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$san_opt -DNDEBUG" ${SAN_CMAKE_ARGS:-} >/dev/null
 cmake --build "$build" -j"$jobs"
