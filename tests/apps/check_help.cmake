@@ -11,7 +11,7 @@ if(NOT out MATCHES "USAGE" OR NOT err STREQUAL "")
 endif()
 # The help ends with examples: an "Examples" heading, then lines that run the program.
 string(REGEX MATCH "\n[Ee][Xx][Aa][Mm][Pp][Ll][Ee][Ss]?:?\n(.*)$" examples "${out}")
-if(NOT examples OR NOT CMAKE_MATCH_1 MATCHES "^ +${NAME} ")
+if(NOT examples OR NOT CMAKE_MATCH_1 MATCHES "^ +${NAME}[ \n]")
   message(FATAL_ERROR "${NAME} --help does not end with an Examples section whose first line runs ${NAME}")
 endif()
 file(GLOB made ${work}/*)
