@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "LogInput.h"
 #include "AppMain.h"
 #include "CommandLine.h"
 #include "Progress.h"
@@ -95,6 +96,7 @@ int main(int argc, char** argv)
 			"growing at 16 s (the compensator's rate window is 60 s), so beyond 12 days the rows grow",
 			false, 65536, "N", cmd);
 		TCLAP::SwitchArg quiet("q", "quiet", "No progress line on stderr while the runs are read", cmd);
+		app::LogInput log_input(cmd, "fog-discrepancy");
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-discrepancy", kHelp)) return *rc;
 
 		if (measured.getValue().size() > 2)
@@ -117,7 +119,7 @@ int main(int argc, char** argv)
 										 (ec ? ": " + ec.message() : std::string()));
 		}
 
-		std::vector<FileArg> inputs{{"--model", model.getValue()}, {"--sim", sim.getValue()}};
+		std::vector<FileArg> inputs{{"--model", model.getValue()}, {"--sim", sim.getValue()}, {"--format", log_input.formatPath()}};
 		for (const auto& f : measured.getValue()) inputs.push_back({"--measured", f});
 		requireSafeOutputs(inputs, {{"--json", json.getValue()}});
 
@@ -139,7 +141,8 @@ int main(int argc, char** argv)
 			app::Progress progress("fog-discrepancy: reading " + f, quiet.getValue());
 			runs.push_back(readFogLogBlockMeans(
 				f, label.getValue(), bopt, binfo, screening.hook(),
-				[&](std::uint64_t n, std::uint64_t done, std::uint64_t total) { progress.update(n, done, total); }));
+				[&](std::uint64_t n, std::uint64_t done, std::uint64_t total) { progress.update(n, done, total); },
+				log_input.options()));
 			progress.finish();
 			const ThermistorScreening sc = screening.result(FogRun(runs.back()));
 			if (sc.rejected_readings > 0) std::cout << f << ":\n" << app::screeningText(sc, true);
@@ -228,6 +231,7 @@ int main(int argc, char** argv)
 		}
 		if (json.isSet())
 		{
+			doc["input_notices"] = log_input.json();
 			writeTextFileAtomically(json.getValue(), doc.dump());
 			std::cout << "Wrote " << json.getValue() << "\n";
 		}
