@@ -1,5 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
-/** bench_generalization: the generalization bench of issue 11 (tests/generalization/support).
+/** bench_generalization: the generalization bench (tests/generalization/support).
  * Every device of the ensemble is calibrated on the seed chamber profile and evaluated on
  * profiles it never saw; per preset, the median and 90th percentile of held-out 100 s stability
  * divided by the device's noise floor.
@@ -10,8 +10,8 @@
  *                        [--cal2 PROFILE] [--warmup-cal] [--cal-profile NAME] [--turn-on-exclusion S]
  *
  * Seeds 1..16 are the tuning devices, 17..24 were kept out of every tuning decision, 25..32
- * ("final") out of everything until the end of issue 11 session 5, 33..40 ("fresh") until the
- * end of session 7 (all: 1..24).
+ * ("final") out of everything until the start-up model and quantum window were decided, 33..40
+ * ("fresh") until the selection rules were decided (all: 1..24).
  * --sector-coil N adds sector-coil devices 1..N (the independent generator). --cases prints every
  * device x profile x preset line; --extrapolation overrides every preset's policy; --preset
  * keeps the presets whose label contains TEXT (--exclude TEXT drops them; may be repeated); --extra adds a fixed preset
@@ -26,7 +26,7 @@
  * non-causal, delay-free Savitzky-Golay rate estimator instead (evaluated offline: no
  * compensator can run it), to measure what the causal estimator's delay costs;
  * --causal-order 1|2 sets the causal estimator's order (default 2; 1 = the delayed slope used
- * before issue 11's diagnosis); --also-order1 adds every preset again with the order-1 estimator
+ * before the diagnosis); --also-order1 adds every preset again with the order-1 estimator
  * (label " o1") and --also-window S with a rate window of S seconds (label " wS"), on the same
  * simulated runs.
  * Calibration on more than the seed run: --cal2 PROFILE adds a second calibration run (two runs:
@@ -46,7 +46,7 @@
  * --turn-on-exclusion S seconds (default 3600) out of the bias fit and fits the warm-up term on
  * the same run (0: the turn-on in the bias fit, no term).
  * Seeds 41..56 and 57..72 were each run once as fresh sets, 73..104 once for the one-run
- * calibration and 105..120 once after the quantum-window change (docs/generalization.md); 121 on
+ * calibration and 105..120 once after the quantum-window change (docs/validation/generalization.md); 121 on
  * are unused. */
 #include "DeviceEnsemble.h"
 #include "GeneralizationBench.h"
@@ -72,7 +72,7 @@ int main(int argc, char** argv)
 	int causal_order = 0;
 	std::vector<double> also_windows_s;
 	std::string second_calibration;
-	if (const char* name = std::getenv("FOG_BENCH_CAL2")) second_calibration = name;  // the session-7 spelling of --cal2
+	if (const char* name = std::getenv("FOG_BENCH_CAL2")) second_calibration = name;  // the older spelling of --cal2
 	bool warmup_calibration = false, also_seed_run_only = false, also_no_warmup = false;
 	std::string calibration_profile;  // empty: the seed profile
 	double turn_on_exclusion_s = fogtest::kBenchTurnOnExclusion_s;

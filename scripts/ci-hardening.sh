@@ -2,11 +2,11 @@
 # CI hardening step, one line in .ci/run after the normal build and tests:
 #     ./scripts/ci-hardening.sh
 # 1. the ASan + UBSan build and the whole default test suite under it (scripts/run-sanitizers.sh,
-#    build-asan/, proof trials at FOG_TRIAL_SEEDS seeds per cell, default 3);
+#    build-asan/, proof trials at FOG_TRIAL_SEEDS seeds per cell, default 1);
 # 2. each libFuzzer target for FUZZ_SECONDS (default 20 s) from the seed corpus in
 #    tests/fuzz_corpus/ (scripts/run-fuzz.sh, clang++, build-fuzz/).
 # Exits non-zero if either part fails (a failing or sanitizer-reported test, a fuzzer finding);
-# both parts always run. Prints the time of each part. Measured cost: docs/hardening.md.
+# both parts always run. Prints the time of each part. Measured cost: docs/validation/hardening.md.
 # Environment: FUZZ_SECONDS (default 20), JOBS (default nproc), and those of the two scripts.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)

@@ -9,7 +9,7 @@
 # drive_cabin_mild (8 C start, heater to 21 C) and drive_cabin_hot (sun-soaked 40 C start,
 # air conditioning to 22 C), plus the bundled datasets/drive.rawlog. SEEDS="..." and
 # CABINS="..." override the lists. Seeds 1-3 were used to choose the calibration recipe
-# (docs/nav.md); the figures in docs/nav.md and README come from SEEDS="11 12 13 14 15 16 17 18 19",
+# (docs/validation/navigation.md); the figures in docs/validation/navigation.md and README come from SEEDS="11 12 13 14 15 16 17 18 19",
 # held out of every choice. TRIAD=1: three-axis FOG drives (fog-sim --triad; the bundled
 # single-axis drive is then left out) for a calibration of x, y and z (scripts/triad_calibration.sh).
 set -euo pipefail

@@ -5,7 +5,7 @@ figures, and nothing else:
   coil.midpoint_offset_m            (quadrupole length asymmetry: the default's only Shupe source)
   errors.radial_gradient_dph_per_C  (elasto-optic / thermal-stress coefficient, unsourced)
 
-Every other device value is the default (docs/sim.md gives its source or its reasoning). The
+Every other device value is the default (docs/reference/simulator.md gives its source or its reasoning). The
 targets are three figures of the seed paper on its own run (`seed` profile, simulated at 10 Hz,
 noise seed 20240501, the datasets' seed), as fog-paper computes them (the paper's method):
   - uncompensated 100 s bias stability 0.114857 deg/h and range of 100 s averages 0.5082 deg/h;
@@ -16,7 +16,7 @@ W/K: offset 5 m with coefficient 0 .. 0.05, or offset 2 m with 0.14, all within 
 do not say how the error splits between the Shupe term and the static gradient. M1 does: a large
 Shupe term from a large offset is mostly a function of T on the seed profile and M1 then removes
 half of it (the paper: 9 %). So M1 is FITTED too and is no longer an independent check of the
-simulator (docs/sim.md says so). The objective is the sum of the squared log ratios of the three,
+simulator (docs/reference/simulator.md says so). The objective is the sum of the squared log ratios of the three,
 minimised over a grid. Noise seeds 1-10 are NOT used here: the long test DefaultDeviceSweep
 checks the picked values on them (held out), and run B (profile B) is never used.
 

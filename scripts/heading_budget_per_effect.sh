@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The bias part of the compensated heading error, one simulator effect at a time (issue 12's error
+# The bias part of the compensated heading error, one simulator effect at a time (the error
 # budget): for each thermal bias effect, the lab runs (chamber A, rate table A, warm-up; the
 # bundled recipe's seeds) and the drives are simulated with that effect alone (+ heat_source,
 # earth_rate, thermistor_lag, which every run has), calibrated with the bundled recipe
@@ -11,7 +11,7 @@
 #
 # Drives: SEEDS (default 1..6: the TUNING drives of the budget; the held-out ones are 11..19 +
 # the bundled drive and 41..49, scripts/heading_error_budget.sh).
-# RECIPE=wu: the recommended calibration of session 7 instead (cal_wu: chamber + rate table for the
+# RECIPE=wu: the recommended calibration instead (cal_wu: chamber + rate table for the
 # bias with one curvature term T(To1)^2, the warm-up fitted apart on two warm-up runs, seeds
 # 20240501 and 20240504); where the effect leaves no turn-on transient to fit, the warm-up fit
 # refuses and the calibration is made without it (printed "no warm-up term").

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Splits the compensated heading error of simulated drives into its scale-factor and bias parts
-with the simulator's truth (issue 12's error budget; numpy only).
+with the simulator's truth (the heading error budget; numpy only).
 
     /usr/bin/python3 scripts/heading_budget_truth.py TRUTH.csv...
 

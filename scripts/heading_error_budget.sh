@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Error budget of the compensated heading (issue 12): what the compensated/ideal heading RMS is
+# Error budget of the compensated heading: what the compensated/ideal heading RMS is
 # made of, over held-out drives, by switching simulator effects off in the drives (and the
 # matching parts off in the calibration), and the noise floor of a calibration from finite
 # runs. Writes OUT_DIR/budget_<variant>.json / .txt and prints the median [quartiles] of
@@ -9,15 +9,15 @@
 #
 # Drives: SEEDS (default 11..19, held out of every choice; cabins cycled winter / mild / hot)
 # plus seed 20240501 in the winter cabin (= the bundled drive, bit for bit; BUNDLED= leaves it
-# out). The fresh block run once at the end (docs/nav.md): SEEDS="41 42 43 44 45 46 47 48 49"
-# BUNDLED= scripts/heading_error_budget.sh OUT. Tuning drives (every choice): 1..6. Session 7's
-# choices (full_sq, full_wu) on 1..3; its fresh block, run once: SEEDS="51 52 53 54 55 56 57 58 59"
+# out). The fresh block run once at the end (docs/validation/navigation.md): SEEDS="41 42 43 44 45 46 47 48 49"
+# BUNDLED= scripts/heading_error_budget.sh OUT. Tuning drives (every choice): 1..6. The
+# choices full_sq and full_wu on 1..3; their fresh block, run once: SEEDS="51 52 53 54 55 56 57 58 59"
 # BUNDLED= VARIANTS="full full_wu".
 # Variants (calibration from the bundled lab runs unless said):
 #   full        all effects; cal_full = chamber_A + ratetable_A + ratetable_transient + warmup
 #               (the warm-up run in the bias fit; the scale factor in a weighted sum of the
-#               thermistors, fitted from the transient run's table segments: the recommended
-#               calibration until session 7; now cal_wu, variant full_wu)
+#               thermistors, fitted from the transient run's table segments: formerly the
+#               recommended calibration; now cal_wu, variant full_wu)
 #   soak_sf     all effects; cal_soak = chamber_A + ratetable_A + warmup (scale factor from the
 #               soaks only, in one thermistor: the recommended calibration before)
 #   full_order2 all effects; cal_order2 = cal_full's runs with the bias model's temperature order
@@ -33,7 +33,7 @@
 #               cal_sq terms) and scale factor, the warm-up term fitted apart on the two warm-up runs
 #               (--warmup-run warmup --warmup-run warmup_B: its number of exponentials chosen by
 #               held-out error, each run left out in turn; and the start-up model's offset at a
-#               turn-on): THE RECOMMENDED CALIBRATION (docs/nav.md, "Error budget", session 7);
+#               turn-on): THE RECOMMENDED CALIBRATION (docs/validation/navigation.md, "Error budget");
 #               warm_start_wu the same on the warm-start drives
 #   no_sf       drives without scale_factor_temp; cal_bias = chamber_A + warmup (no scale factor)
 #   no_sf_wu    drives also without the warm-up effect; cal_bias

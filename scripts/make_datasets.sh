@@ -52,7 +52,7 @@ done
 {
 	echo "# datasets/ manifest"
 	echo
-	echo "Simulated with \`fog-sim\` (mrpt_fog simulator, default device; see docs/sim.md). Every file is"
+	echo "Simulated with \`fog-sim\` (mrpt_fog simulator, default device; see docs/reference/simulator.md). Every file is"
 	echo "regenerated bit for bit by \`scripts/make_datasets.sh\` (seed $SEED unless the command says"
 	echo "otherwise, $RATE Hz, all error effects on)."
 	echo "Rawlogs hold CObservationFOG (label FOG: rate_z in deg/h, thermistors Ti1/To1 at 0 deg and"
@@ -64,7 +64,7 @@ done
 	echo "\`fog-calibrate -i chamber_A.rawlog -i ratetable_A.rawlog --model multipoint -o cal.yaml\`."
 	echo "ratetable_transient (no CSV twin either) adds table segments in transients and turn-ons, where"
 	echo "the thermistors disagree, so that fog-calibrate can fit the scale factor in a weighted sum of"
-	echo "them (docs/nav.md): \`fog-calibrate -i chamber_A.rawlog -i ratetable_A.rawlog -i"
+	echo "them (docs/validation/navigation.md): \`fog-calibrate -i chamber_A.rawlog -i ratetable_A.rawlog -i"
 	echo "ratetable_transient.rawlog -i warmup.rawlog -o cal_full.yaml\`."
 	echo
 	echo "Bit-for-bit regeneration holds on the same platform (made on x86-64 Linux, GCC, glibc libm,"

@@ -11,13 +11,16 @@
 #   JOBS        parallel compile jobs and parallel tests (default: nproc)
 #   SAN_EXCLUDE_LABELS  ctest labels not run (regex, default "long|demo"; "long" to run the demo too)
 #   SAN_OPT     optimisation/debug flags (default "-O1 -g1": half the compile time of -O2 -g,
-#               line tables are enough for the sanitizers' stack traces; see docs/hardening.md)
-#   FOG_TRIAL_SEEDS  exported (default 3) for the discrepancy room's proof trials: seeds per
-#               10-seed cell under the sanitizers, where the trials run ~20x slower than in Release.
-#               Only tests that read it are affected (see docs/hardening.md, "Sanitizers": at the
-#               time of writing the trials do not read it yet and run at full count).
+#               line tables are enough for the sanitizers' stack traces; see docs/validation/hardening.md)
+#   FOG_TRIAL_SEEDS  exported (default 1) for the discrepancy room's proof trials: seeds per
+#               10-seed cell under the sanitizers, where the trials run ~20x slower than in Release
+#               (every cell, i.e. every effect, ratio and trial kind, still runs: the memory and UB
+#               checks cover the same code; the success rates are checked at full count by the
+#               Release run). Only tests that read it are affected (tests/discrepancy/TrialSuite.h).
+#               The two heaviest, ProofTrialsConfounders and ProofTrialsNull, take 71 s and 54 s of
+#               CPU in Release at full count (docs/validation/ci-time.md).
 # MRPT's shared libraries are not instrumented (their bugs are out of reach; calls into them are
-# checked at our side only). Options and suppressions used, and why: docs/hardening.md.
+# checked at our side only). Options and suppressions used, and why: docs/validation/hardening.md.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${BUILD_DIR:-$here/build-asan}
@@ -25,9 +28,10 @@ jobs=${JOBS:-$(nproc)}
 san_opt=${SAN_OPT:--O1 -g1}
 
 t0=$(date +%s)
+source "$here/scripts/ccache-env.sh"  # compiler cache when installed (FOG_CCACHE=0: none)
 # Benchmarks and fuzz targets are not part of the test suite: not built. The long-sweep test
 # programs are (3 small sources): ctest's discovery reports a missing one as a failing test.
-cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMRPT_FOG_SANITIZE=ON \
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMRPT_FOG_SANITIZE=ON "${FOG_LAUNCHER[@]}" \
 	-DMRPT_FOG_BUILD_BENCH=OFF -DMRPT_FOG_BUILD_FUZZ=OFF -DMRPT_FOG_BUILD_TESTS=ON -DMRPT_FOG_BUILD_APPS=ON \
 	"-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$san_opt -DNDEBUG" ${SAN_CMAKE_ARGS:-} >/dev/null
 cmake --build "$build" -j"$jobs"
@@ -35,13 +39,13 @@ t1=$(date +%s)
 
 # Every UBSan report is fatal (also -fno-sanitize-recover=undefined at compile time); leaks are
 # checked (LeakSanitizer) with the suppressions of scripts/lsan.supp. All options below cost
-# little (measured: docs/hardening.md), so none of ASan's checks is switched off.
+# little (measured: docs/validation/hardening.md), so none of ASan's checks is switched off.
 export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$here/scripts/lsan.supp:print_suppressions=0}
-export FOG_TRIAL_SEEDS=${FOG_TRIAL_SEEDS:-3}
+export FOG_TRIAL_SEEDS=${FOG_TRIAL_SEEDS:-1}
 # For tests that run an uninstrumented program (MRPT's rawlog-edit) on our instrumented plugin:
-# the ASan runtime must be preloaded there (docs/hardening.md, "Status at the end of the session").
+# the ASan runtime must be preloaded there (docs/validation/hardening.md).
 export FOG_ASAN_PRELOAD=${FOG_ASAN_PRELOAD:-$(${CXX:-g++} -print-file-name=libasan.so)}
 status=0
 san_exclude=${SAN_EXCLUDE_LABELS-long|demo}

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Calibration of a simulated three-axis FOG (fog-sim --triad, docs/sim.md "Three-axis FOG"), as
+# Calibration of a simulated three-axis FOG (fog-sim --triad, docs/reference/simulator.md "Three-axis FOG"), as
 # a lab would run it: a chamber run (the seed profile, z up: x east, y north), one rate-table
 # run per axis (the ratetable profile with that axis up) and one in transients (below), and a
-# cold-start warm-up run in the bias fit (the single-axis recommendation, docs/nav.md), then
+# cold-start warm-up run in the bias fit (the single-axis recommendation, docs/validation/navigation.md), then
 # fog-calibrate on all of them (one model per axis; each rate-table run serves its own axis)
 # with chamber run B as the validation run. Writes OUT_DIR/cal3.yaml and the runs.
 #

@@ -22,7 +22,7 @@ constexpr int kExitUsage = 2;
 
 int runApp(const std::string& program, const std::function<int()>& body);
 
-/** Large blocks (a log's columns) from mmap, given back to the system when freed (issue 14:
+/** Large blocks (a log's columns) from mmap, given back to the system when freed (
  * fog-calibrate and fog-evaluate free columns they no longer need); call first in main(). */
 void returnLargeBlocksToSystem();
 

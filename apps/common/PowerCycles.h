@@ -3,7 +3,7 @@
 
 /** \file PowerCycles.h
  * Gyro-off rows and turn-on events of a log, counted row by row as the programs read it
- * (fog-convert, fog-compensate, fog-evaluate report them; docs/io.md). A row is gyro-off when
+ * (fog-convert, fog-compensate, fog-evaluate report them; docs/reference/logs.md). A row is gyro-off when
  * its power is 0; a turn-on is a row with power 1 right after a row with power 0. A row without
  * a power value (no power column) is neither, and a 0 -> missing -> 1 sequence is no turn-on:
  * the compensator restarts its warm-up only at an explicit 0 -> 1 step. fog-drift's powered

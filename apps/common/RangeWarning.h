@@ -2,7 +2,7 @@
 #pragma once
 
 /** \file RangeWarning.h
- * The out-of-calibrated-range report every program that compensates prints (issue 11): the
+ * The out-of-calibrated-range report every program that compensates prints: the
  * share of samples with a temperature (or inner-outer difference) and with a rate outside the
  * calibrated range, how far beyond, and the extrapolation policy used; and the same as JSON. */
 

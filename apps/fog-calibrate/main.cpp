@@ -56,13 +56,13 @@ MODEL PRESETS (--model)
   M4[:IN,OUT]           seed eq. 6: poly3(IN - OUT) + poly3(d/dt (IN - OUT))
   points:K              multipoint on the best K-thermistor subset (by held-out error)
   terms:T(Ti1)^1;dT/dt(Ti1)^1;dT(Ti1-To1)^1   an explicit term list; also dTlag/dt(a,tau_s)^k and
-                        hyst(a,play,wC)^1 / hyst(a,branch,wC)^1 (hysteresis, docs/model.md)
+                        hyst(a,play,wC)^1 / hyst(a,branch,wC)^1 (hysteresis, docs/reference/model.md)
   Append @T/R to change the orders, e.g. multipoint@3/1, or @T for the temperature order only
   (M1:imu@3); the orders of auto are upper limits.
 
 OUTSIDE THE CALIBRATED RANGE (--extrapolation)
   linear (default): each signal's polynomial is continued along its tangent at the range edge
-    (on held-out simulated devices 1.2-1.5x better than clamp, see docs/model.md);
+    (on held-out simulated devices 1.2-1.5x better than clamp, see docs/reference/model.md);
   clamp: the signal is held at the edge (the bias stops changing: compensated = raw beyond);
   polynomial: the raw polynomial (studies only).
   With --validate, a warning gives the share of samples outside the range and how far out.
@@ -78,7 +78,7 @@ HOW THE FIT GUARDS AGAINST OVER-FITTING (--selection)
     the run (cooling ramps, soaks, heating ramps) are held out, so the error is that of a
     temperature history the fit did not see; blocks = interleaved time blocks. points:K also
     searches thermistor subsets.
-  Options measured on the generalization bench, not the default (docs/generalization.md,
+  Options measured on the generalization bench, not the default (docs/validation/generalization.md,
   "Scoring what the product is judged on"): --order-search common (one temperature order and
   one rate order for all thermistors, 15 candidates), --selection-bin S (candidates scored on
   S-second bin means, e.g. the --tau of the stability figure, so the white noise of high sample
@@ -93,7 +93,7 @@ HOW THE FIT GUARDS AGAINST OVER-FITTING (--selection)
   or more thermistors nothing changes (the sensors see the radial spread themselves).
   Several -i runs: by default each run is one fold (leave-one-run-out: a model fitted on the
   other runs alone must predict it); --run-folds regimes cuts each run into its thermal regimes
-  and fits every fold on all the rest, the other runs included (docs/generalization.md,
+  and fits every fold on all the rest, the other runs included (docs/validation/generalization.md,
   "Calibration on more than one run"). A second run with another temperature history (a sine,
   other ramp rates) is what pins the rate (Shupe) coefficients that one 1 C/min profile leaves
   open.
@@ -118,7 +118,7 @@ RATES
   time. Without --window the window grows with the thermistors' reading quantum (the smallest
   change between consecutive readings): 60 s x q / 0.02 degC, at least 60 s, at most 1200 s
   (1/16 degC: 188 s), since a quantised reading's slope errs by about q / window (a longer
-  window would delay the rates more than it saves: docs/generalization.md). The
+  window would delay the rates more than it saves: docs/validation/generalization.md). The
   calibration records the window; fog-compensate uses it. Until a rate window covers half its
   length (start of a log, each burst of a burst log, after a gap) the compensator uses the
   calibration's rate-free start-up model (flag rate_free). --estimator savgol uses a
@@ -137,7 +137,7 @@ SCALE FACTOR VS TEMPERATURE (--scale-factor auto|off)
   as bias samples with the nominal scale factor (the behaviour before version 2 files).
 
   The reported 95 % interval of the mean slope also covers the thermistors' disagreement on
-  the coil temperature (the fit repeated against each thermistor; docs/model.md).
+  the coil temperature (the fit repeated against each thermistor; docs/reference/model.md).
   With table segments where the thermistors disagree (turn-ons, ramps: the bundled
   datasets/ratetable_transient.rawlog) a further candidate reads a weighted sum of all
   thermistors (the coil's mean temperature, which no single one reads in a transient; weights

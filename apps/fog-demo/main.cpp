@@ -412,7 +412,7 @@ int main(int argc, char** argv)
 			   << "). Can these fields judge the gyro? The ideal gyro gives "
 			   << fmt(loc.number("heading_relevance.ideal_to_raw_position_rms"), "%.2f") << "x the raw position RMS: "
 			   << loc.text("heading_relevance.verdict") << ". Map, rawlogs, "
-			   << "pf-localization .ini files and plots: `localize/`; details: docs/localize.md.\n";
+			   << "pf-localization .ini files and plots: `localize/`; details: docs/guide/localization.md.\n";
 		}
 		if (have_paper)
 		{

@@ -29,6 +29,18 @@
 
 using namespace mrpt_fog;
 
+namespace
+{
+const char* const kHelp = R"(
+EXAMPLES
+  fog-discrepancy --measured datasets/chamber_A.rawlog --measured datasets/chamber_B.rawlog \
+      --model multipoint --json gap.json --plots plots/
+  fog-discrepancy --measured run.rawlog --measured confirm.rawlog --model cal.yaml \
+      --write-cal cal_plus.yaml
+  fog-discrepancy --measured a.csv --measured b.csv --sim SIM.yaml --json sim_gap.json
+)";
+}  // namespace
+
 int main(int argc, char** argv)
 {
 	return app::runApp("fog-discrepancy", [&]() {
@@ -46,7 +58,7 @@ int main(int argc, char** argv)
 										   "extrapolation); coefficients refitted on the measured run. static:P[:NAME]: a "
 										   "polynomial in one thermistor / their mean (synthetic proof trials)",
 										   false, "", "PRESET|CAL.yaml");
-		app::InputArg sim("", "sim", "simulator configuration to test (device, effects, free parameters, optional profile; see docs/discrepancy-sim.md); its free parameters are calibrated to the measured run. Without a profile (in SIM.yaml or the run metadata sim.profile) the simulator is driven from the log alone: power, table rate and field columns, chamber air reconstructed from the thermistors; a thermistor misfit above 0.1 C RMS is reported as the first disagreement and no bias effect is named on top of it; the share of the bias residual that follows air changes faster than the reconstruction resolves is reported ('Unresolved thermal content') and taken out before effects are named: give the profile to attribute it", false, "",
+		app::InputArg sim("", "sim", "simulator configuration to test (device, effects, free parameters, optional profile; see docs/guide/model-gap-simulator.md); its free parameters are calibrated to the measured run. Without a profile (in SIM.yaml or the run metadata sim.profile) the simulator is driven from the log alone: power, table rate and field columns, chamber air reconstructed from the thermistors; a thermistor misfit above 0.1 C RMS is reported as the first disagreement and no bias effect is named on top of it; the share of the bias residual that follows air changes faster than the reconstruction resolves is reported ('Unresolved thermal content') and taken out before effects are named: give the profile to attribute it", false, "",
 										 "SIM.yaml");
 		cmd.xorAdd(model, sim);
 		app::OutputArg json("", "json", "write the figures as JSON", false, "", "FILE", cmd);
@@ -87,7 +99,7 @@ int main(int argc, char** argv)
 			"rows", 1000, 100000000, 65536);
 		TCLAP::SwitchArg quiet("q", "quiet", "No progress line on stderr while the runs are read", cmd);
 		app::LogInput log_input(cmd, "fog-discrepancy");
-		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-discrepancy")) return *rc;
+		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-discrepancy", kHelp)) return *rc;
 
 		if (measured.getValue().size() > 2)
 			throw std::runtime_error("--measured given " + std::to_string(measured.getValue().size()) +

@@ -19,7 +19,7 @@ std::vector<double> compensatedRate_dph(const FogSeries& fog, const Calibration&
 	if (!fog.has_axis[static_cast<std::size_t>(cal.axis)])
 		throw std::runtime_error(cal_path + ": calibration is for axis " + std::string(1, axisLetter(cal.axis)) +
 								 ", which the drive's FOG does not have");
-	// The compensated column alone (compensate() returns five: memory, issue 14).
+	// The compensated column alone (compensate() returns five: memory).
 	std::vector<double> rate;
 	CompensationCounters c;
 	ThermistorScreening screening;

@@ -232,7 +232,7 @@ using SeriesCursor = std::function<bool(double& t, double& heading_deg, double& 
 void writeDriftCsvRows(const std::string& path, const std::vector<std::string>& names, double t0,
 					   const std::function<bool(double& t, double& yaw_rad)>& nextTruth, std::vector<SeriesCursor> series)
 {
-	// Row by row into the file (the whole text in memory was ~100 B per sample, issue 14).
+	// Row by row into the file (the whole text in memory was ~100 B per sample).
 	writeFileAtomically(path, [&](const std::string& tmp) {
 		std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
 		if (!f) throw std::runtime_error("cannot write '" + path + "': cannot open: " + std::strerror(errno));
@@ -401,7 +401,7 @@ void writeOdometryRawlog(const std::string& path, const nav::Trajectory& traj, c
 		if (!f.open(tmp)) throw std::runtime_error(tmp + ": cannot open for writing");
 		auto ar = mrpt::serialization::archiveFrom(f);
 		// A few thousand poses at a time: the MRPT objects of the whole drive were ~1 KB per
-		// pose (issue 14). With the rates given, a chunk's objects are the whole call's.
+		// pose. With the rates given, a chunk's objects are the whole call's.
 		constexpr std::size_t kChunk = 4096;
 		for (std::size_t b = 0; b < traj.size(); b += kChunk)
 		{

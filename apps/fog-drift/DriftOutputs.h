@@ -2,7 +2,7 @@
 #pragma once
 
 /** \file DriftOutputs.h
- * fog-drift's outputs: the JSON report (stable keys, see docs/nav.md), the two PNGs
+ * fog-drift's outputs: the JSON report (stable keys, see docs/guide/heading-drift.md), the two PNGs
  * (trajectories over the truth; heading error vs time) and the odometry rawlog for MRPT's
  * localization apps. Every file is written atomically. */
 

@@ -108,7 +108,7 @@ DriveData readDrive(const std::string& path, const DriveLabels& labels,
 	if (d.fog.size() < 2) throw std::runtime_error(path + ": FOG '" + labels.fog + "' has fewer than 2 samples");
 	d.latitude_deg = driveLatitude(d.fog);
 	if (!ideal.empty()) d.fog_ideal = ideal.take();
-	// Growth by doubling leaves up to half of each vector unused: give it back (issue 14).
+	// Growth by doubling leaves up to half of each vector unused: give it back.
 	shrinkToFit(d.fog);
 	if (d.fog_ideal) shrinkToFit(*d.fog_ideal);
 	for (auto* v : {&d.odometry.t_s, &d.odometry.x_m, &d.odometry.y_m, &d.odometry.phi_rad}) v->shrink_to_fit();

@@ -202,7 +202,7 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 									 "navigate");
 		if (name == "raw") e.powered_spans_navigated = navigated;
 		// The trajectory lives in variants alone (results[i].trajectory is left empty): one copy
-		// of each (~80 B per sample, issue 14).
+		// of each (~80 B per sample).
 		e.results.push_back(std::move(all));
 		e.variants.emplace_back(name, std::move(kept));
 		e.report.variants.push_back(std::move(series));
@@ -262,7 +262,7 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 			refineInMemory(t_fog, comp[2], on, e.drive.odometry, o, e.refinement);
 		}
 		// The temperatures have served (compensation is the last to read them): released, 8 B per
-		// thermistor and sample (issue 14). The drive's FOG keeps its times, rates and power.
+		// thermistor and sample. The drive's FOG keeps its times, rates and power.
 		e.drive.fog.thermistors.clear();
 		e.drive.fog.temp_C.clear();
 		e.drive.fog.temp_C.shrink_to_fit();
@@ -328,7 +328,7 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 
 	// Dead reckoning and the triad figures are done: from here on only the truth and the
 	// trajectories are read (report, segments, CSV, plots). The per-sample FOG, ideal FOG and
-	// odometry are released (~100 B per sample, issue 14); the FOG's label, epoch and metadata stay.
+	// odometry are released (~100 B per sample); the FOG's label, epoch and metadata stay.
 	std::vector<double>().swap(t_fog);
 	for (auto& c : comp) std::vector<double>().swap(c);
 	{

@@ -89,7 +89,7 @@ struct DriveEvaluation
 {
 	std::string input;
 	/** After evaluateDrive: the truth, and the FOG's label, epoch and metadata; the per-sample
-	 * FOG, ideal FOG and odometry are released once dead-reckoned (memory, issue 14). */
+	 * FOG, ideal FOG and odometry are released once dead-reckoned (memory). */
 	DriveData drive;
 	double latitude_deg = 0.0;
 	double calibration_earth_rate_dph = 0.0;  //!< vertical Earth rate the calibration's bias held

@@ -2,7 +2,7 @@
 #pragma once
 
 /** \file StreamingDrive.h
- * evaluateDrive() without holding the drive (issue 14): the figures of a single-axis drive in
+ * evaluateDrive() without holding the drive: the figures of a single-axis drive in
  * memory that does not grow with the drive, from two reads of the file.
  *  - Pass 1: the ends of every series (FOG, FOG_IDEAL, odometry, truth), the truth's path length
  *    and its turns and straights (nav::segmentDrive's rules, with a window of +-smooth_s / 2).

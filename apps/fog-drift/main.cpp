@@ -122,7 +122,7 @@ int main(int argc, char** argv)
 	// Whole-drive vectors (tens of MB each, made and freed per gyro variant) in their own
 	// mappings, returned to the system when freed: glibc's adaptive threshold would otherwise
 	// move them to the heap, whose fragments stay resident (peak RSS 431 -> 323 MB on a 423 k
-	// sample drive, issue 14).
+	// sample drive).
 	mallopt(M_MMAP_THRESHOLD, 256 * 1024);
 #endif
 	return app::runApp("fog-drift", [&] {

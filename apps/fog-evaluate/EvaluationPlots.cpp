@@ -102,7 +102,7 @@ PlotSeries gapBroken(const std::string& label, const RecordPass& pass, const Tim
 	const std::size_t n = ax.n;
 	// A long log is thinned to the lowest and highest sample of each of kBuckets time buckets:
 	// the envelope that a line through every sample draws at this width, in bounded memory
-	// (issue 14: 4 thermistors x 2.4 M samples took 300 MB here).
+	// (4 thermistors x 2.4 M samples took 300 MB here).
 	constexpr std::size_t kBuckets = 4096;
 	std::size_t k = 0;
 	double t_prev = 0;

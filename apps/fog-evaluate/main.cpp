@@ -99,7 +99,7 @@ int main(int argc, char** argv)
 		const std::string path = in.getValue();
 		// The log is read once into a run spilled to a temporary file, screened on the way as
 		// fog-compensate screens it (so that a log gives the same compensated figures here and
-		// there); the figures are computed in passes (memory independent of the log's length, issue 14).
+		// there); the figures are computed in passes (memory independent of the log's length).
 		app::StreamScreening screener(!no_screen.getValue());
 		app::Progress progress("fog-evaluate: reading " + path, quiet.getValue());
 		const FogRun run = readFogRun(path, label.getValue(), screener.hook(),

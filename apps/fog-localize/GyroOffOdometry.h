@@ -3,7 +3,7 @@
 
 /** \file GyroOffOdometry.h
  * The odometry each filter step gets on a drive whose gyro is off in places (power-0 rows:
- * no gyro sample; docs/localize.md, "Gyro off").
+ * no gyro sample; docs/guide/localization.md, "Gyro off").
  *
  * While the gyro is off its heading is not observable from the gyro. A particle filter does not
  * need to stop there: MRPT's pf-localization, given wheel odometry and no gyro, moves the

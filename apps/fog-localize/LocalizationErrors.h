@@ -112,7 +112,7 @@ struct FieldRelevance
 
 struct HeadingRelevance
 {
-	static constexpr double kMaxReachableRatio = 0.5;  //!< the target ratio compensated / raw (docs/localize.md)
+	static constexpr double kMaxReachableRatio = 0.5;  //!< the target ratio compensated / raw (docs/guide/localization.md)
 	double ideal_to_raw_position_rms = NAN;  //!< pooled over the open fields and seeds
 	bool heading_matters = false;  //!< ideal_to_raw_position_rms <= kMaxReachableRatio
 	std::vector<FieldRelevance> fields;

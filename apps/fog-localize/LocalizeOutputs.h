@@ -2,7 +2,7 @@
 #pragma once
 
 /** \file LocalizeOutputs.h
- * fog-localize's outputs: the text summary, the JSON (stable keys, docs/localize.md), the
+ * fog-localize's outputs: the text summary, the JSON (stable keys, docs/guide/localization.md), the
  * plots (map.png: the world and the stretches; errors.png: position and heading error vs
  * time per gyro), and what MRPT's pf-localization app needs to rerun a gyro's case: the map
  * (map.gridmap.gz), an actions-observations rawlog per gyro, an .ini per gyro and the ground

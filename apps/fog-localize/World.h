@@ -15,7 +15,7 @@
  *   FieldPlacement::Straights puts them on the route's longest straight roads, away from turns:
  *   only the gyro's bias acts there, and on the bundled drive its drift over a straight is
  *   below the map-matching's entry heading error, so that even the ideal gyro gives 0.86x the
- *   raw position error (docs/localize.md): there the map makes the gyro nearly irrelevant and
+ *   raw position error (docs/guide/localization.md): there the map makes the gyro nearly irrelevant and
  *   fog-localize says "cannot tell" (HeadingRelevance). Both are chosen by route geometry,
  *   never by any gyro's error.
  * - Tunnel: smooth walls 6 m either side. The laser fixes lateral position and heading but

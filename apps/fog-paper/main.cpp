@@ -34,6 +34,16 @@ using namespace mrpt_fog;
 
 namespace
 {
+const char* const kHelp = R"(
+EXAMPLES
+  fog-paper
+  fog-paper --json paper.json --plots plots/
+  fog-paper --run-a datasets/chamber_A.rawlog --run-b datasets/chamber_B.rawlog
+)";
+}  // namespace
+
+namespace
+{
 struct Entry
 {
 	std::string key;  //!< JSON key: uncompensated, M1..M4, points_1..points_4
@@ -163,7 +173,7 @@ int main(int argc, char** argv)
 			"", "selection", "term selection: none (plain least squares on all terms, the paper's way; default) or auto",
 			false, "none", "none|auto", cmd);
 		app::LogInput log_input(cmd, "fog-paper");
-		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-paper")) return *rc;
+		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-paper", kHelp)) return *rc;
 		const TermSelection term_selection = app::parseChoice(selection, termSelectionFromString);
 		if (plots.isSet() && !std::filesystem::is_directory(plots.getValue()))
 			throw std::invalid_argument(plots.getValue() + ": --plots directory does not exist");

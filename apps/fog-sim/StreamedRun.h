@@ -2,7 +2,7 @@
 #pragma once
 
 /** \file StreamedRun.h
- * A single-axis chamber run or vehicle drive simulated and written sample by sample (issue 14):
+ * A single-axis chamber run or vehicle drive simulated and written sample by sample:
  * nothing of the run is held. The file is the one writeFogRawlog / writeFogCsv write from
  * simulateChamber()'s / simulateDrive()'s series and observations, byte for byte (the same
  * FogLogWriter, layout, values and merge order). The summary's 100 s bias figures come from

@@ -36,6 +36,17 @@ using namespace mrpt_fog::sim;
 
 namespace
 {
+const char* const kHelp = R"(
+EXAMPLES
+  fog-sim --profile seed -o chamber_A.rawlog --seed 20240501
+  fog-sim --profile B -o chamber_B.csv.gz --seed 20240502 --rate-hz 10
+  fog-sim --profile calibration --triad -o triad_cal.rawlog
+  fog-sim --profile drive --cabin drive_cabin_hot -o drive.rawlog --json drive.json
+)";
+}  // namespace
+
+namespace
+{
 bool endsWith(const std::string& s, const std::string& suffix)
 {
 	return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -86,11 +97,11 @@ int main(int argc, char** argv)
 										   "drive_cabin_hot) or a profile YAML file; a {type: power, on: false} "
 										   "segment switches the gyro off until {type: power, on: true}: those rows "
 										   "have power 0 and no rate (an empty cell; fog-drift navigates each "
-										   "powered span alone, docs/nav.md)",
+										   "powered span alone, docs/guide/heading-drift.md)",
 										   false, "drive_cabin", "NAME|FILE.yaml", cmd);
 		TCLAP::SwitchArg triad("", "triad",
 							   "a three-axis FOG (x, y, z coils sharing one thermal network and the thermistors; per-axis "
-							   "error sensitivities and noise: docs/sim.md, Three-axis FOG). The vehicle: z up; the "
+							   "error sensitivities and noise: docs/reference/simulator.md, Three-axis FOG). The vehicle: z up; the "
 							   "chamber: --up-axis up (the table turns about it), the other two horizontal",
 							   cmd);
 		TCLAP::ValueArg<std::string> up_axis("", "up-axis",
@@ -98,7 +109,7 @@ int main(int argc, char** argv)
 											 "turns (a rate-table run calibrates that axis' scale factor)",
 											 false, "z", "x|y|z", cmd);
 		app::OutputArg json("", "json", "write figures as JSON", false, "", "F", cmd);
-		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-sim")) return *rc;
+		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-sim", kHelp)) return *rc;
 
 		const std::string ext = fileExtension(out.getValue());
 		if (ext != ".rawlog" && ext != ".csv" && ext != ".csv.gz")
@@ -127,7 +138,7 @@ int main(int argc, char** argv)
 		double transient_C = NAN;  // vehicle: the coil's thermal transient
 		if (!triad.getValue())
 		{
-			// A single-axis run is simulated and written sample by sample (issue 14).
+			// A single-axis run is simulated and written sample by sample.
 			std::vector<std::pair<std::string, std::string>> extra;
 			if (duration.isSet()) extra.emplace_back("sim.duration_s", std::to_string(duration.getValue()));
 			const double max_s = duration.isSet() ? duration.getValue() : INFINITY;

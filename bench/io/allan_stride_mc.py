@@ -1,4 +1,4 @@
-# Monte Carlo of the linear-time overlapping Allan estimator (AllanOffsets::Linear, docs/metrics.md):
+# Monte Carlo of the linear-time overlapping Allan estimator (AllanOffsets::Linear, docs/reference/metrics.md):
 # full overlap vs offsets at a stride of 256 at m = 2^17, 2^18 on 300 white-noise and 300 random-walk
 # records of 2^20 samples (seed 1). Needs numpy; about 15 s CPU.  python3 bench/io/allan_stride_mc.py
 import numpy as np, sys

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# fog-discrepancy on the 100 Hz seed-profile chamber run (issue 14: peak RSS <= 300 MB at 2.43 M
+# fog-discrepancy on the 100 Hz seed-profile chamber run (peak RSS <= 300 MB at 2.43 M
 # samples): `fog-sim -p seed --rate-hz 100`, its calibration by fog-calibrate, then
 # fog-discrepancy with that calibration and with the multipoint preset, and with the bundled
 # 10 Hz chamber runs A (analysed) and B (confirmation). Per command: wall and CPU time (user +

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# fog-evaluate time against length at one rate (issue 14: time linear in length): the 8 h seed
+# fog-evaluate time against length at one rate (time linear in length): the 8 h seed
 # profile of seed_scaling.sh simulated at 1 kHz, cut to 2.88 M samples (--duration-s 2880) and
 # whole (28.8 M samples). Per length: `gzip -dc` of the rawlog (the reference) and
 # `fog-evaluate -i LOG --cal cal.yaml -q` of each BIN_DIR given (e.g. before and after a change),

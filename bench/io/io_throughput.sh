@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# I/O throughput and memory of the programs on logs of 1, 4 and 16 M samples (issue 14).
+# I/O throughput and memory of the programs on logs of 1, 4 and 16 M samples.
 #   bench/io/io_throughput.sh BIN_DIR WORK [sizes in M samples, default "1 4 16"]
 # For each size: a synthetic 100 Hz chamber log (bench/io/make_log.py, through a FIFO into
 # fog-convert: CSV -> rawlog), then per program wall time, CPU time, peak RSS (/usr/bin/time) and
@@ -8,8 +8,8 @@
 # time is the steadier one on a shared machine). Everything runs under `nice`. Large files go
 # to WORK (never the repository). Prints a markdown table; also WORK/io_throughput.md.
 # Not part of the test suite (minutes at 16 M samples). fog-drift needs a drive log and
-# fog-discrepancy does not finish on millions of samples (docs/io.md): neither is measured.
-# Last run and its table: docs/io.md, "Size and speed".
+# fog-discrepancy does not finish on millions of samples (docs/reference/logs.md): neither is measured.
+# Last run and its table: docs/reference/logs.md, "Size and speed".
 set -euo pipefail
 bin=$(cd "$1" && pwd)
 work=$2

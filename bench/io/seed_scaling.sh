@@ -1,16 +1,16 @@
 #!/usr/bin/env bash
-# Flat memory and linear time at 1 kHz (issue 14, target 2): the seed paper's chamber profile
+# Flat memory and linear time at 1 kHz (target 2): the seed paper's chamber profile
 # held 75 min longer at 60 C (8 h: 25 -> -40 -> 60 C at 1 C/min, 2 h and 3 h 15 min soaks),
 # simulated by fog-sim at 100 Hz (2.88 M samples) and 1 kHz (28.8 M samples). Per rate and program:
 # wall and CPU time (user + sys), peak RSS (/usr/bin/time), and the ratio of the time to
 # `gzip -dc` of the same rawlog in the same run. Programs: fog-convert rawlog -> .csv.gz,
 # fog-compensate rawlog -> rawlog, fog-calibrate (default model), fog-evaluate (the 100 Hz
 # calibration), fog-discrepancy (the same calibration; 1 s block means), fog-drift is not here (a
-# drive: docs/io.md). Everything under `nice`.
+# drive: docs/reference/logs.md). Everything under `nice`.
 #   bench/io/seed_scaling.sh BIN_DIR WORK ["100 1000"]
 # WORK needs about 1 GB at 1 kHz (rawlog 280 MB, .csv.gz, compensated rawlog; $TMPDIR holds
 # fog-calibrate's spill, 2.7 GB at 28.8 M); the large files are deleted after each rate.
-# Prints a markdown table, also WORK/seed_scaling.md. Last run: docs/io.md, "Size and speed".
+# Prints a markdown table, also WORK/seed_scaling.md. Last run: docs/reference/logs.md, "Size and speed".
 set -euo pipefail
 profile_dir=$(cd "$(dirname "$0")" && pwd)
 bin=$(cd "$1" && pwd)

@@ -1,7 +1,7 @@
 /* Files are sacred: attacks on the output path (planted symlinks at the temporary name, outputs
  * that are symlinks, FIFOs or directories, modes, signals, outputs equal to inputs) and what the
- * writers and the programs' pre-checks must do about them. Each test failed before the fix of
- * issue 14 (predictable "<out>.tmp-<pid>" opened through symlinks, rename over anything). */
+ * writers and the programs' pre-checks must do about them. Each test failed before the fix
+ * (predictable "<out>.tmp-<pid>" opened through symlinks, rename over anything). */
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <mrpt_fog/common/AtomicFile.h>

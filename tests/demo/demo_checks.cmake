@@ -63,7 +63,7 @@ endif()
 
 # The two-run calibration (chamber runs A + C, bundled): the printed figure is fog-calibrate's
 # validation on run B, and run B held out is at least 10x better than raw (the requirement on
-# the bundled held-out run; chamber_A alone reaches about 6.5x, docs/generalization.md).
+# the bundled held-out run; chamber_A alone reaches about 6.5x, docs/validation/generalization.md).
 file(READ ${WORK}/report/json/calibrate_two_runs.json tj)
 string(JSON two_comp GET "${tj}" validation compensated stability_dph)
 string(JSON two_raw GET "${tj}" validation raw stability_dph)

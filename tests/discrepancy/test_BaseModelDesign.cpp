@@ -138,7 +138,7 @@ TEST(BaseModelDesign, BadPresetsThrow)
 TEST(BaseModelDesign, WeightedScaleFactorColumnReadsTheWeightedSum)
 {
 	// a calibration whose scale factor reads a weighted sum of thermistors (ScaleFactorModel
-	// `weighted`, issue 12) is tested as the compensator runs it: the column is table rate x 1e-6
+	// `weighted`) is tested as the compensator runs it: the column is table rate x 1e-6
 	// x z, z of sum w_i T_i (clamped to the calibrated range); it used to throw "base model uses
 	// thermistor 'weighted'"
 	Fixture f;

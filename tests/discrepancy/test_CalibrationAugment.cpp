@@ -211,7 +211,7 @@ TEST(CalibrationAugment, ScaleFactorTempBecomesTheCalibrationsScaleFactorModel)
 {
 	// a bias-only calibration under test (fog-calibrate --scale-factor off) and a hidden scale
 	// factor linear in the coil's mean temperature (ratio 3): the named effect is written as the
-	// calibration's scale factor versus temperature, fitted by the scale-factor code (issue 12)
+	// calibration's scale factor versus temperature, fitted by the scale-factor code
 	fogtest::LumpedCoilOptions o1, o2;
 	o2.seed = 2;
 	o1.hidden["scale_factor_temp"] = o2.hidden["scale_factor_temp"] = 3.0;

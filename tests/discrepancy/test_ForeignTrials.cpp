@@ -26,7 +26,7 @@ TEST(ForeignTrials, NullAt5sSamplingNamesNothing)
 {
 	// at 5 s the compensator's causal order-2 rate has 12 samples per 60 s window: its noise
 	// left part of the true rate response in the residual and shupe_rate / radial_gradient were
-	// named on nulls (16/20 tuning seeds, session 5) until the base carried the nuisance column
+	// named on nulls (16/20 tuning seeds) until the base carried the nuisance column
 	// "centred minus causal rate" (BaseModelDesign.h). Tuning seeds 3-4 (seeds 1-10 were clean).
 	const auto t = runCell("", 0.0, 3, 2, "lab", 5.0);
 	EXPECT_EQ(t.false_naming, 0);
@@ -36,7 +36,7 @@ TEST(ForeignTrials, RadialGradientIsNamedWhenTheHousingThermistorCompletesIt)
 {
 	// the generator's I - O is 1.18 ((Ca - Cb) - 0.25 (Cb - Hs)) up to the thermistor lags: with
 	// Tin - Tout alone the candidate could not reproduce it and shupe_rate / gradient_rate were
-	// named (0/5, 0/5 on held-out seeds 9101-9105, session 6). Tuning seed 2 at 5 s.
+	// named (0/5, 0/5 on held-out seeds 9101-9105). Tuning seed 2 at 5 s.
 	const auto t = runCell("radial_gradient", 3.0, 2, 1, "lab", 5.0);
 	EXPECT_EQ(t.named, 1);
 }
@@ -68,7 +68,7 @@ TEST(ForeignTrials, HysteresisAtEffectNoise1IsNamedWithThePlayShapeAndTheWhitene
 {
 	// the generator's hysteresis is a play operator: the exponential branch reproduced it only
 	// in part, and the width chosen on the OLS residual (dominated by the 30 min bias wander) was
-	// the grid's widest, so at effect/noise 1 it was not named (session 7: "nameable from 0.0186
+	// the grid's widest, so at effect/noise 1 it was not named ("nameable from 0.0186
 	// deg/h RMS", hidden part 0.0141, on this seed). Tuning seed 9101 at 5 s.
 	const auto t = runCell("hysteresis", 1.0, 9101, 1, "lab", 5.0);
 	EXPECT_EQ(t.named, 1);

@@ -70,7 +70,7 @@ TEST(SimulatorConfig, BadInputNamesFileAndField)
 	EXPECT_THROW(readSimulatorConfig("/nonexistent/sim.yaml"), std::invalid_argument);
 }
 
-// Issue 17: an empty SIM.yaml gave "not valid YAML: ==== MRPT exception ====". Empty, blank and
+// an empty SIM.yaml gave "not valid YAML: ==== MRPT exception ====". Empty, blank and
 // comment-only files now say what a configuration needs; a parse error keeps the parser's line.
 TEST(SimulatorConfig, EmptyOrMalformedFileGivesUsefulMessage)
 {

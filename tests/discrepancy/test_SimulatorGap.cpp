@@ -196,10 +196,10 @@ TEST(SimulatorGap, WrongProfileIsAClearError)
 	EXPECT_THROW(analyseSimulatorDiscrepancy({runs[1]}, {"B"}, cfg), std::invalid_argument);
 }
 
-// Issue 17 target: a run whose chamber program is not given (metadata cleared, no `profile:`):
+// Target: a run whose chamber program is not given (metadata cleared, no `profile:`):
 // the drive comes from the log alone (power, table, field columns; air reconstructed from the
 // thermistors) and the hidden effect is still named, with the truth inside its 95 % interval
-// (as with the profile given: docs/discrepancy-sim.md). Truth: magnetic 2e-4 deg/h/uT,
+// (as with the profile given: docs/guide/model-gap-simulator.md). Truth: magnetic 2e-4 deg/h/uT,
 // scale factor 20 ppm/C (FogDevice defaults, kTruth). Seed 1 of truthRuns, one run each. The
 // interval judged is the recalibrated simulator parameter's (SimulatorCalibration.h); for the
 // scale factor the named candidate's own coefficient is a proxy (thermistor mean x table rate,
@@ -208,10 +208,10 @@ TEST(SimulatorGap, WrongProfileIsAClearError)
 // needs the reference temperature sf_ref_C free with the slope (SimulatorGap.cpp): with it fixed
 // at 25 C the thermistors' common offset (mean -0.01 C, absorbed by the reconstructed air) biased
 // the slope to 19.94 +- 0.059 (table segments at T - 25 ~ -2.5 C; closed form -d / (T - 25)
-// predicts 19.93; docs/discrepancy-sim.md).
+// predicts 19.93; docs/guide/model-gap-simulator.md).
 // Nothing else may be named: before the candidates were built on the simulated thermistors with
 // the unresolved thermal content taken out (SimulatorGap.cpp), a spurious gradient_rate was
-// named on these seeds (the smoothed air's error; docs/discrepancy-sim.md).
+// named on these seeds (the smoothed air's error; docs/guide/model-gap-simulator.md).
 namespace
 {
 void logDriveCell(const std::string& hidden, const std::string& param, double truth)
@@ -253,7 +253,7 @@ TEST(SimulatorGap, MeasuredLogDriveRecoversHiddenScaleFactor) { logDriveCell("sc
 
 // From the log alone with nothing hidden (every truth effect configured, wrong starting values):
 // nothing is named. Seeds 3/4 (truthRuns(1)) are the ones on which the spurious gradient_rate was
-// diagnosed (chi2 336 with every truth effect on; docs/discrepancy-sim.md), so this is a tuning
+// diagnosed (chi2 336 with every truth effect on; docs/guide/model-gap-simulator.md), so this is a tuning
 // case; held-out seed pairs are in the docs.
 TEST(SimulatorGap, MeasuredLogDriveNothingHiddenNamesNothing)
 {
@@ -272,7 +272,7 @@ TEST(SimulatorGap, MeasuredLogDriveNothingHiddenNamesNothing)
 	EXPECT_NE(simDiscrepancyJson(rep).dump().find("\"unresolved_share\""), std::string::npos);
 }
 
-// Issue 17 target: a run of ANOTHER simulator (tests/support/LumpedCoilGenerator: 3 lumped
+// Target: a run of ANOTHER simulator (tests/support/LumpedCoilGenerator: 3 lumped
 // nodes, a housing thermistor, its own air lag and self-heating) is reported as a thermal misfit,
 // with its size, and no bias effect is named on top of it. The configuration declares the
 // generator's thermistors (Hs, on the housing there, is placed on the outer coil surface: the

@@ -1,4 +1,4 @@
-/* mrpt_fog: hostile calibration and profile YAML (issue 14): deep nesting crashed MRPT's parser
+/* mrpt_fog: hostile calibration and profile YAML: deep nesting crashed MRPT's parser
  * (SIGSEGV, exit 139), huge texts cost ~90 bytes of memory per byte, aliases expand
  * exponentially, and absurd numbers (coef_dph 1e308, window_s 1e9) were accepted. Each case runs
  * in a child process (a crash must not take the test binary with it) and must end in

@@ -9,7 +9,7 @@
 
 using namespace mrpt_fog;
 
-// Bound (issue 7): with one thermistor missing for the middle third of the validation run the
+// Bound: with one thermistor missing for the middle third of the validation run the
 // compensator runs its fallback model there, and the 100 s bias stability of the whole run is no
 // worse than 2x the 4-thermistor result. Checked for each of the 4 thermistors in turn.
 TEST(ThermistorDropout, MidRunDropoutFallbackWithinTwiceFourThermistorStability)

@@ -25,7 +25,7 @@ std::vector<std::string> listing(const std::filesystem::path& dir)
 
 // The temporary file cannot be created (the output's name is so long that "<name>.tmp-XXXXXX"
 // exceeds the file-name limit: ENAMETOOLONG, which even root gets): every writer throws naming
-// the output, the previous file is byte-identical, and no other file appears. (Before issue 14
+// the output, the previous file is byte-identical, and no other file appears. (Formerly
 // this occupied the predictable "<name>.tmp-<pid>"; temporary names are now unpredictable.)
 TEST(UnwritableOutput, TemporaryCannotBeCreatedPreviousFileIntact)
 {

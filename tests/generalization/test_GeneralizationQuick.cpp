@@ -87,12 +87,12 @@ TEST(GeneralizationBench, QuickSubsetMeetsTheIssueTargetsItCan)
 		// the floor is a floor: no model beats the noise of its own device by more than chance
 		if (r.ok) EXPECT_GT(r.ratio, 0.7) << r.seed << " " << r.profile << " " << r.preset;
 	}
-	// Issue 11 target: in median the default is never more than 10 % worse than the best fixed preset.
+	// Target: in median the default is never more than 10 % worse than the best fixed preset.
 	const double best_fixed =
 		std::min(quick().of("multipoint@3/1 none").median_ratio, quick().of("multipoint@1/1 none").median_ratio);
 	EXPECT_LE(quick().of("default (multipoint)").median_ratio, 1.10 * best_fixed);
 	// Outside the calibrated range (-55..75 C after -40..60 C): the default extrapolation is at
-	// least 3x better than raw (issue 11 target) and better than clamping.
+	// least 3x better than raw ( target) and better than clamping.
 	EXPECT_GE(quick().of("default (multipoint)").oor_median_raw_over_comp, 3.0);
 	EXPECT_GT(quick().of("default (multipoint)").oor_median_raw_over_comp,
 			  quick().of("default, clamp").oor_median_raw_over_comp);
@@ -146,7 +146,7 @@ TEST(GeneralizationBench, OneCalibrationRunFitsTheWarmupWhenTheTurnOnStaysOut)
 	// turn-on out of the bias fit (kSuggestedTurnOnExclusion_s) the same run fits the warm-up term
 	// and the held-out cold start is near the noise floor; with the turn-on in the bias fit (0) it
 	// is not. Tuning devices: 1.05 / 3.71 / 1.24 / 1.06 against 2.40 / 3.66 / 5.12 / 1.84
-	// (docs/generalization.md, "One calibration run").
+	// (docs/validation/generalization.md, "One calibration run").
 	BenchPreset def;
 	for (const auto& p : benchPresets())
 		if (p.label == "default (multipoint)") def = p;

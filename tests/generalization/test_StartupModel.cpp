@@ -1,5 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
-// Issue 11, part 4: the start-up before rate estimates exist, against the truth of the
+// the start-up before rate estimates exist, against the truth of the
 // independent sector-coil generator (the thermal bias = the run minus the same run with no
 // thermal error, same noise realisation). A device calibrated at 2 Hz on the seed profile is
 // switched on at the start of a ramp in a 1 kHz log: the first half window (the rate windows cover less than

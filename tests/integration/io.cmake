@@ -34,28 +34,28 @@ add_test(NAME io_find_package_consumer COMMAND ${CMAKE_COMMAND} -DBUILD_DIR=${PR
   -DCMAKE_GENERATOR=${CMAKE_GENERATOR} -P ${io_scripts}/find_package_consumer.cmake)
 set_tests_properties(io_find_package_consumer PROPERTIES LABELS "io;integration" TIMEOUT 600)
 
-# Files are sacred: outputs equal to inputs, FIFOs, symlinks, modes, signals (issue 14).
+# Files are sacred: outputs equal to inputs, FIFOs, symlinks, modes, signals.
 if(TARGET fog-convert AND TARGET fog-calibrate AND TARGET fog-compensate AND TARGET fog-evaluate)
   add_test(NAME io_files_sacred COMMAND bash ${io_scripts}/files_sacred.sh $<TARGET_FILE_DIR:fog-convert>
     ${FOG_SOURCE_DIR} ${io_work}/files_sacred)
   set_tests_properties(io_files_sacred PROPERTIES LABELS "io;integration" TIMEOUT 300)
 endif()
 
-# The same thermistor screening in every program (issue 14).
+# The same thermistor screening in every program.
 if(TARGET fog-calibrate AND TARGET fog-evaluate)
   add_test(NAME io_screening_everywhere COMMAND bash ${io_scripts}/screening_everywhere.sh
     $<TARGET_FILE_DIR:fog-calibrate> ${FOG_SOURCE_DIR} ${io_work}/screening_everywhere)
   set_tests_properties(io_screening_everywhere PROPERTIES LABELS "io;integration" TIMEOUT 300)
 endif()
 
-# No silent empty model (issue 14).
+# No silent empty model.
 if(TARGET fog-calibrate)
   add_test(NAME io_calibrate_empty_model COMMAND bash ${io_scripts}/empty_model.sh
     $<TARGET_FILE_DIR:fog-calibrate> ${FOG_SOURCE_DIR} ${io_work}/empty_model)
   set_tests_properties(io_calibrate_empty_model PROPERTIES LABELS "io;integration" TIMEOUT 300)
 endif()
 
-# fog-drift streams a single-axis drive; the figures must be those of --in-memory (issue 14).
+# fog-drift streams a single-axis drive; the figures must be those of --in-memory.
 if(TARGET fog-sim AND TARGET fog-calibrate AND TARGET fog-drift)
   add_test(NAME io_drift_streaming_equals_in_memory COMMAND bash ${io_scripts}/drift_streaming.sh
     $<TARGET_FILE:fog-sim> $<TARGET_FILE:fog-calibrate> $<TARGET_FILE:fog-drift> ${FOG_SOURCE_DIR} ${io_work}/drift_streaming)

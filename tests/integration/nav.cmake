@@ -2,7 +2,7 @@
 # written by mrpt_fog_nav, and its odometry estimate (odo_est.txt) must equal our trajectory.
 # Three ctest tests chained by a fixture: write -> pf-localization -> compare.
 # The heading error budget's truth split (drive-truth + scripts/heading_budget_truth.py) reproduces
-# fog-drift's compensated/ideal heading RMS on the same short drive (docs/nav.md, "Error budget").
+# fog-drift's compensated/ideal heading RMS on the same short drive (docs/validation/navigation.md, "Error budget").
 find_program(NAV_PYTHON3 python3 PATHS /usr/bin NO_DEFAULT_PATH)
 if(TARGET fog-drift AND TARGET fog-sim AND TARGET drive-truth AND NAV_PYTHON3)
   add_test(NAME nav.truth_split.matches_fog_drift
@@ -58,7 +58,7 @@ if(TARGET fog-drift)
   set_tests_properties(nav.fog_drift.run PROPERTIES FIXTURES_REQUIRED nav_drive FIXTURES_SETUP nav_drift_json
     LABELS "nav;integration")
   # fog-drift keeps a variant's trajectory only when --plots or --odometry-out needs it (memory,
-  # issue 14): the figures and the odometry rawlog must not depend on which outputs were asked for.
+  #): the figures and the odometry rawlog must not depend on which outputs were asked for.
   add_test(NAME nav.fog_drift.figures_do_not_depend_on_outputs
     COMMAND sh -c "d='${NAV_DRIVE_DIR}'; \"$0\" -q -i $d/drive.rawlog --cal $d/cal.yaml --json $d/drift_lean.json >/dev/null && \"$0\" -q -i $d/drive.rawlog --cal $d/cal.yaml --json $d/drift_odo.json --odometry-out $d/odometry_alone.rawlog >/dev/null && cmp $d/drift.json $d/drift_lean.json && cmp $d/drift.json $d/drift_odo.json && cmp $d/odometry.rawlog $d/odometry_alone.rawlog"
       $<TARGET_FILE:fog-drift>)

@@ -1,7 +1,7 @@
-# Three-axis FOG end to end (issue 12 part 3): fog-sim --triad makes a short chamber run and a
+# Three-axis FOG end to end: fog-sim --triad makes a short chamber run and a
 # short drive, fog-calibrate fits one model per axis into one file, fog-compensate writes all
 # three compensated axes into CObservationIMU, fog-drift runs the 3-D strapdown. Short runs at
-# 1-2 Hz (a few seconds); the figures with full runs: docs/nav.md, "Three-axis FOG".
+# 1-2 Hz (a few seconds); the figures with full runs: docs/validation/navigation.md, "Three-axis FOG".
 if(NOT TARGET fog-sim OR NOT TARGET fog-calibrate OR NOT TARGET fog-compensate OR NOT TARGET fog-drift)
   return()
 endif()

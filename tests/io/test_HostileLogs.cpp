@@ -1,4 +1,4 @@
-/* mrpt_fog: hostile and unusual log files (issue 14): multi-member gzip, decompression bombs,
+/* mrpt_fog: hostile and unusual log files: multi-member gzip, decompression bombs,
  * long lines, tens of thousands of columns, absurd rates, binary cells, times closer than a
  * rawlog's 100 ns tick, a full disk, a thermistor count a CObservationRawDAQ cannot hold. Each
  * of these failed (crash, bad_alloc, silent garbage, lost reason) before the fix. */

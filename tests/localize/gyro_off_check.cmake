@@ -1,11 +1,11 @@
 # fog-localize on a drive with the gyro off for 5 min (tests/localize/cabin_off.yaml: off from
 # 1830 to 2130 s by the profile's own times; fog-sim at 2 Hz, 1 filter seed, 100 particles).
-# Before: refused ("gyro rate is not finite ... while the gyro is off"). Now (docs/localize.md,
+# Before: refused ("gyro rate is not finite ... while the gyro is off"). Now (docs/guide/localization.md,
 # "Gyro off"): one stretch of 300-301 s reported; every step that touches it moves the particles
 # on the wheel odometry alone: scans every 1 s at t0 + 0.5 s, so the steps into the scans
 # 1830.5 .. 2130.5 s, 301 of them; with the default recovery (a re-fix at the turn-on) no gyro's
 # filter diverges and the urban and tunnel errors against the truth stay below 1 m (with
-# --gyro-off-recovery none the stretch's open-field part loses the filter: docs/localize.md).
+# --gyro-off-recovery none the stretch's open-field part loses the filter: docs/guide/localization.md).
 # -D SIM=fog-sim -D LOC=fog-localize -D CABIN=cabin_off.yaml -D WORK=<scratch dir>
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})

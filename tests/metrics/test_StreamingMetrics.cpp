@@ -1,5 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
-/* The figures of records read in passes from a RowSpill (issue 14: logs longer than memory) equal
+/* The figures of records read in passes from a RowSpill (logs longer than memory) equal
  * those of the same records in vectors, bit for bit. */
 #include <gtest/gtest.h>
 #include <mrpt_fog/metrics/AllanDeviation.h>
@@ -140,7 +140,7 @@ TEST(StreamingMetrics, ResampleAndOverlappingAllanEqualTheVectorForms)
 	}
 	// the linear-time estimator (the default): the same numbers up to the ring, then the strided
 	// sum (stride 256: 512 offsets per cluster length at m = 2^17). A Monte Carlo of 300 white
-	// and 300 random-walk records of 2^20 samples (docs/metrics.md) put |strided / full - 1| at
+	// and 300 random-walk records of 2^20 samples (docs/reference/metrics.md) put |strided / full - 1| at
 	// a median of 1e-4..3.4e-4 and a maximum of 2.8e-3, with the same spread over the records
 	// (21-43 %, 4-8 clusters): 1 % is 3.5x the largest seen.
 	const auto c = allanDeviationOverlapping(ys, 0.01, m);

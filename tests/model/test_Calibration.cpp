@@ -346,7 +346,7 @@ TEST(Calibration, GapsLongerThanTheRateWindowAreCounted)
 }
 
 // Burst logs whose bursts are shorter than half the rate window (5 s every 305 s, the MEMS log of
-// issue 11): no rate can be estimated from them, so the fit has no dT/dt term (said by
+//): no rate can be estimated from them, so the fit has no dT/dt term (said by
 // rates_unavailable) and the compensator runs that model on every burst sample without the
 // RateFree flag, instead of a rate model it could never use.
 TEST(Calibration, ShortBurstsGiveARateFreeModelUsedWithoutFlags)
@@ -379,7 +379,7 @@ TEST(Calibration, ShortBurstsGiveARateFreeModelUsedWithoutFlags)
 // 100 s bins and white noise of 1 deg/h per sample (the generator's static term is quadratic)
 // the binned selection still finds a T^2 term. (On this generator the per-sample selection
 // finds it too; the case where it does not, bench seed 18 at 41.6 Hz, is in
-// docs/generalization.md.)
+// docs/validation/generalization.md.)
 TEST(Calibration, SelectionOnBinMeans)
 {
 	const FogSeries A = fogtest::makeCoilRun("A", 7);  // 1 s samples, 0.003 deg/h noise
@@ -413,10 +413,10 @@ TEST(Calibration, SelectionOnBinMeans)
 	EXPECT_TRUE(hasSquare(s));
 }
 
-// OrderSearch::Common (issue 11, session 7): every thermistor's temperature enters at one common
+// OrderSearch::Common: every thermistor's temperature enters at one common
 // order and every rate at one common order, never one thermistor's powers alone (the calibration
 // profile's temperature-rate correlation lets a single sensor's T^2, T^3 stand in for rate
-// effects that do not transfer: bench seed 4, docs/generalization.md). Truth from the generator:
+// effects that do not transfer: bench seed 4, docs/validation/generalization.md). Truth from the generator:
 // its static term is quadratic in the mean coil temperature, so under 1 deg/h per-sample noise
 // the search on 100 s bin means keeps a temperature order >= 2 for all four thermistors.
 TEST(Calibration, CommonOrdersTreatEveryThermistorAlike)

@@ -1,5 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
-/* The fit and the figures over runs read in chunks from a temporary file (obs/FogRun.h, issue 14)
+/* The fit and the figures over runs read in chunks from a temporary file (obs/FogRun.h)
  * give the same numbers, bit for bit, as over the same runs in memory. */
 #include <gtest/gtest.h>
 #include <mrpt_fog/model/AxisRuns.h>

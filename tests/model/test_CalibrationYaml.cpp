@@ -88,7 +88,7 @@ TEST(CalibrationYaml, RoundTripIsExact)
 	std::remove(path.c_str());
 }
 
-// The extrapolation policy round-trips; a file without it (written before issue 11) reads as the
+// The extrapolation policy round-trips; a file without it (written before) reads as the
 // default (linear); an unknown policy is a field error.
 TEST(CalibrationYaml, ExtrapolationPolicyIsStored)
 {
@@ -106,7 +106,7 @@ TEST(CalibrationYaml, ExtrapolationPolicyIsStored)
 	EXPECT_NE(e.find("cal.yaml: axes[0].bias.extrapolation:"), std::string::npos) << e;
 }
 
-// The stability of the term choice (issue 11) is stored in the bias section and read back.
+// The stability of the term choice is stored in the bias section and read back.
 TEST(CalibrationYaml, SelectionStabilityRoundTrips)
 {
 	Calibration c = cal();
@@ -124,7 +124,7 @@ TEST(CalibrationYaml, SelectionStabilityRoundTrips)
 	EXPECT_EQ(back.selection_stability.alternatives[0].held_out_rms_dph, 0.0123);
 }
 
-// The rate-free start-up model (issue 11) is stored in the bias section and read back exactly;
+// The rate-free start-up model is stored in the bias section and read back exactly;
 // a calibration without one writes none and reads back without one; a start-up model that reads
 // a rate is refused with its field named.
 TEST(CalibrationYaml, StartupModelRoundTripsAndIsChecked)

@@ -35,7 +35,7 @@ TEST(ModelPreset, DefaultsPickInnerAndNearestOuter)
 	EXPECT_EQ(parseModelPreset("M1", kLayout).thermistors, (std::vector<std::string>{"Ti1"}));
 }
 
-// Orders written @T set the temperature order only (issue 11: "M1:imu@3" was refused); M1 has
+// Orders written @T set the temperature order only ("M1:imu@3" was refused); M1 has
 // no rate terms, so a rate order other than 0 is refused with the reason, not silently ignored.
 TEST(ModelPreset, TemperatureOrderAloneAndM1WithoutRates)
 {

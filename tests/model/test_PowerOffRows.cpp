@@ -1,9 +1,9 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
-/** Rows with the gyro off (power 0) have no gyro sample whatever their rate cell holds (issue 13
+/** Rows with the gyro off (power 0) have no gyro sample whatever their rate cell holds (
  * item 1): an empty cell (NaN) or a number (fog-sim's chamber writes 0 deg/h there). The raw
  * figures of a calibration (in-sample) and of its validation must be those of the powered
  * samples alone, computed here with metrics::biasStats on the powered rows (not by the
- * calibration code). Before session 8 a 0 in the cell entered fog-calibrate's raw stability
+ * calibration code). Formerly a 0 in the cell entered fog-calibrate's raw stability
  * (0.41 -> 2.68 deg/h on fog-sim's `rich` chamber profile). */
 #include <gtest/gtest.h>
 #include <mrpt_fog/metrics/BiasMetrics.h>

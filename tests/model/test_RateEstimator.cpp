@@ -46,7 +46,7 @@ TEST(RateEstimator, CausalQuadraticGivesDerivativeAtWindowCentre)
 	for (int k = 100; k < 400; k++) EXPECT_NEAR(r[k], 2 * a * (k - 29.5), 1e-10) << k;
 }
 
-// Order 2 (delay-compensated, issue 11): the whole-window and last-half slopes of x = a t^2 + b t
+// Order 2 (delay-compensated): the whole-window and last-half slopes of x = a t^2 + b t
 // are 2 a c + b at their centroids c (1 s samples: t - 29.5 and t - 14.5); the line through them
 // at t is the derivative at t itself, exactly (closed form, no delay), from one full window on.
 TEST(RateEstimator, CausalOrderTwoHasNoDelayOnAQuadratic)

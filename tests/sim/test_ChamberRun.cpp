@@ -16,7 +16,7 @@ TEST(ChamberRun, DefaultDeviceSeedProfileUncompensatedNearSeedFigures)
 {
 	// Seed Table 1, uncompensated: 0.114857 deg/h stability (std of 100 s averages) and
 	// 0.5082 deg/h range (max - min of the averages); the default device must land within
-	// +-30 % of both (issue 4). This is the only place the default device was matched.
+	// +-30 % of both. This is the only place the default device was matched.
 	const auto profile = ChamberProfile::preset("seed");
 	SimSettings s;
 	const auto t0 = std::chrono::steady_clock::now();
@@ -76,7 +76,7 @@ TEST(ChamberRun, GyroOffRowsHaveNoGyroSampleWhereTheProfileSaysOff)
 {
 	// The profile's own times (not stateAt): on for 600 s, off for 300 s, on for 300 s, at 1 Hz.
 	// Rows strictly inside the off stretch: power 0 and no rate (as the drive writes, and as the
-	// CSV reader takes a lab log: docs/io.md); rows outside it: power 1 and a finite rate; the
+	// CSV reader takes a lab log: docs/reference/logs.md); rows outside it: power 1 and a finite rate; the
 	// thermistors log throughout. The same for every axis of the three-axis chamber.
 	const ChamberProfile p = ChamberProfile::fromYaml(
 		mrpt::containers::yaml::FromText("name: off\ninitial_temp_C: 20\npower_initially: true\ninitial_state: steady\n"

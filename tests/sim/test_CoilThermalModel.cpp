@@ -109,7 +109,7 @@ TEST(CoilThermalModel, TimeConstantsInPhysicsRange)
 // layers; hand computation of the face fluxes over log conductances; measured 4.3861 against 4.3849 C),
 // so 0.1 % is the bound.
 // This is the one-sided limit; the default device's hub path brings the inner surface along and
-// gives 0.6-1.1 C cooling at the seed profile's 1 C/min (docs/sim.md).
+// gives 0.6-1.1 C cooling at the seed profile's 1 C/min (docs/reference/simulator.md).
 TEST(CoilThermalModel, OneSidedRampGradientMatchesCylindricalClosedForm)
 {
 	for (int layers : {8, 32})

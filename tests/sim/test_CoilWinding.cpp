@@ -110,7 +110,7 @@ TEST(CoilWinding, RejectsBadParameters)
 	EXPECT_THROW(windingPatternFromString("spiral"), std::invalid_argument);
 }
 
-// Layer-length mismatch e (issue 17: residual Shupe from winding imperfections other than the
+// Layer-length mismatch e (residual Shupe from winding imperfections other than the
 // midpoint offset). Hand-derived weights for a quadrupolar (ABBA) coil of 4 fibre layers, one per
 // node layer, one sector, midpoint at L/2, layer length l = L/4: with w = integral of (2z - L)
 // dz and s the distance from the midpoint along a half (A: z = L/2 - s, B: z = L/2 + s),

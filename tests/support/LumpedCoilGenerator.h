@@ -46,14 +46,14 @@
  *    turn-on, no table, no field); "short" (20 min at 25 C, a 0.4 C wiggle: too little
  *    information for any naming).
  *
- * Seeds: development and tuning used seeds 1..20. 9001..9100 were held out in session 3 and
+ * Seeds: development and tuning used seeds 1..20. 9001..9100 were held out first and
  * run once; after that their null failures were examined and the held-out guard rail was
  * built on them, so they count as tuning seeds now. kHeldOutSeedFirst.. (9101..9200) are the
- * fresh held-out block (issue 13, session 5): untouched while tuning, run once at the end.
- * Session 7 tuned on 9101..9105 (effects) and kept 9401..9410 fresh for its final run
- * (FOG_FOREIGN_FIRST_SEED=9401); 9101..9300 serve as the null block. Session 8 tuned on
+ * fresh held-out block: untouched while tuning, run once at the end.
+ * A later round tuned on 9101..9105 (effects) and kept 9401..9410 fresh for its final run
+ * (FOG_FOREIGN_FIRST_SEED=9401); 9101..9300 serve as the null block. The next round tuned on
  * 9101..9105 again and kept 9501..9510 (5 s) and 9511.. (1 s) fresh for its final runs.
- * 2026-12-02 evening: tuned on 9001..9020, 9072, 9101..9105 and nulls 9001..9100 (9501, 9508
+ * The latest round: tuned on 9001..9020, 9072, 9101..9105 and nulls 9001..9100 (9501, 9508
  * re-run); 9601..9605 used by the --write-cal per-sample check; run once: 9611..9620 (5 s
  * effects), 9621..9820 (5 s nulls), 9821..9920 (1 s nulls), 9921..9923 (1 s effects).
  */

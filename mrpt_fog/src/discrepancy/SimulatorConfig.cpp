@@ -80,7 +80,7 @@ SimulatorConfig simulatorConfigFromYaml(const yaml& doc, const std::string& sour
 		throw std::invalid_argument(source +
 									": empty: a simulator configuration needs at least the device, e.g. `device_file: gyro.yaml` "
 									"or `device: {}` for fog-sim's default gyro (keys: device, device_file, effects, free, "
-									"profile; docs/discrepancy-sim.md)");
+									"profile; docs/guide/model-gap-simulator.md)");
 	if (!doc.isMap())
 		throw std::invalid_argument(source + ": expected a map of key: value (keys: device, device_file, effects, free, profile)");
 	checkKeys(doc, {"device", "device_file", "effects", "free", "profile"}, top);

@@ -57,7 +57,7 @@ BaseDesign simulatorBaseDesign(const SimCalibration& c, const RunSignals& sig)
 	// static temperature of the temp_poly_order candidate: the thermistor mean. The simulator's
 	// own (the electronics temperature, SimTrace::electronics_C) was tried: hysteresis was still
 	// named first with temp_poly_order hidden, since the candidate adds powers 2 and 3 only while
-	// the hidden polynomial is mostly linear (docs/discrepancy-sim.md)
+	// the hidden polynomial is mostly linear (docs/guide/model-gap-simulator.md)
 	b.static_temp_C = sig.temp_mean_C;
 	if (sig.has_table)
 	{
@@ -164,7 +164,7 @@ TemperatureGap temperatureGap(const std::string& label, const FogSeries& run, co
  * housing leaves them near the thermistors' noise). The gyro's response to that fast part stays
  * in the residual, and a candidate built from the MEASURED thermistors (d(Tin - Tout)/dt above
  * all) tracks it: on fog-sim `rich` with nothing missing a gradient_rate was named (chi2 336,
- * docs/discrepancy-sim.md). Built from the simulated thermistors the candidates see the thermal
+ * docs/guide/model-gap-simulator.md). Built from the simulated thermistors the candidates see the thermal
  * state the residual is relative to; a missing effect then has to show on the thermal history the
  * simulator reproduces. With a profile the simulated and measured thermistors agree to their noise
  * and the measured signals are kept. */
@@ -231,7 +231,7 @@ SimDiscrepancyReport analyseSimulatorDiscrepancy(const std::vector<FogSeries>& r
 		// factor's reference temperature is free with its slope: k (T - T_ref) then depends on
 		// temperature differences only. With T_ref fixed, a common offset d biases the slope by
 		// -d / (T - T_ref) over the table segments: on fog-sim `rich` (T - 25 ~ -2.5 C there) the
-		// default device's offsets (mean -0.01 C) gave 19.94 for 20 ppm/C (docs/discrepancy-sim.md).
+		// default device's offsets (mean -0.01 C) gave 19.94 for 20 ppm/C (docs/guide/model-gap-simulator.md).
 		// Active only when scale_factor_temp is on (expandSlots).
 		addUnique(free0, "sf_ref_C");
 	const bool logDrive = drive1.source == DriveSource::MeasuredLog;

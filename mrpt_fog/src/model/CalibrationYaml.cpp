@@ -56,7 +56,7 @@ bool readsHysteresis(const Calibration& cal)
 {
 	return readsSignal(cal, [](const ThermalSignal& s) { return s.isHysteresis(); });
 }
-// Plausibility limits of loaded values (issue 14: a coef_dph of 1e308 compensated to -2e307
+// Plausibility limits of loaded values (a coef_dph of 1e308 compensated to -2e307
 // deg/h). Every term is z^k with |z| <= 1 after clamping, so a coefficient bounds its term's
 // contribution to the bias: 1e6 deg/h (278 deg/s) is beyond any gyro's bias.
 constexpr double kMaxCoef_dph = 1e6;
@@ -631,12 +631,12 @@ void writeAxis(std::ostringstream& o, const Calibration& cal)
 		s.replace(ind.size() + 2, 2, "- ");
 		o << s;
 	}
-	if (cal.startup)  // optional (issue 11): used until the rates the main model reads are estimable
+	if (cal.startup)  // optional: used until the rates the main model reads are estimable
 	{
 		o << ind << "  startup_model:  # rate-free: used while the main model's rate windows cover < half their length\n";
 		writeModel(o, *cal.startup, ind + "    ");
 	}
-	if (cal.selection_stability.resamples > 0)  // optional (issue 11): how stable the term choice is
+	if (cal.selection_stability.resamples > 0)  // optional: how stable the term choice is
 	{
 		const auto& st = cal.selection_stability;
 		o << ind << "  selection_stability:  # refits on wild-bootstrap resamples of the calibration data\n";
@@ -668,7 +668,7 @@ std::string calibrationSetToYaml(const CalibrationSet& set)
 	bool extended = false;
 	for (const auto& c : set.axes) extended |= readsLags(c) || readsHysteresis(c) || c.magnetic.has_value();
 	const int version = extended ? kVersionExtended : kVersion;
-	o << "# bias deg/h, scale factor ppm. Layout: docs/model.md (calibration file, version " << version << ").\n";
+	o << "# bias deg/h, scale factor ppm. Layout: docs/reference/model.md (calibration file, version " << version << ").\n";
 	o << "format: " << str(kFormat) << "\n";
 	o << "version: " << version << "\n";
 	o << "sensor:\n";
@@ -758,7 +758,7 @@ void readAxisFields(const Reader& rd, const yaml& n, const std::string& p, const
 		rd.fail(ep, e.what());
 	}
 	cal.mean_bias_dph = rd.bounded(bias, "mean_bias_dph", bp, -kMaxCoef_dph, kMaxCoef_dph, kCoefWhy);
-	// Extrapolation policy (issue 11): in the bias section (version 2) or at the top (version 1
+	// Extrapolation policy: in the bias section (version 2) or at the top (version 1
 	// files written after it was added); a version 1 file without it was made for clamping.
 	if (bias.has("extrapolation"))
 	{
@@ -797,7 +797,7 @@ void readAxisFields(const Reader& rd, const yaml& n, const std::string& p, const
 		if (m.features.references(m.dropped)) rd.fail(fp, "uses its own dropped thermistor '" + m.dropped + "'");
 		cal.fallbacks.push_back(std::move(m));
 	}
-	if (bias.has("startup_model"))  // optional (issue 11): the rate-free start-up model
+	if (bias.has("startup_model"))  // optional: the rate-free start-up model
 	{
 		const std::string up = at(bp, "startup_model");
 		BiasModel m = readModel(rd, rd.child(bias, "startup_model", bp), up);
@@ -811,7 +811,7 @@ void readAxisFields(const Reader& rd, const yaml& n, const std::string& p, const
 				rd.fail(up, "uses thermistor '" + name + "', which the main model does not read");
 		cal.startup = std::move(m);
 	}
-	if (bias.has("selection_stability"))  // optional (issue 11)
+	if (bias.has("selection_stability"))  // optional
 	{
 		const std::string ssp = at(bp, "selection_stability");
 		const yaml ss = rd.child(bias, "selection_stability", bp);

@@ -63,7 +63,7 @@ void RateEstimatorSettings::validate() const
 {
 	if (!std::isfinite(window_s) || window_s <= 0)
 		throw std::invalid_argument("rate estimator window_s must be a positive number of seconds");
-	if (window_s > kMaxWindow_s)  // issue 14: window_s 1e9 was accepted (worse than raw)
+	if (window_s > kMaxWindow_s)  // window_s 1e9 was accepted (worse than raw)
 		throw std::invalid_argument("rate estimator window_s " + std::to_string(window_s) +
 									" s exceeds the limit of 3600 s (the causal estimate lags by half the window)");
 	if (kind == RateEstimatorKind::Causal && poly_order != 1 && poly_order != 2)

@@ -269,7 +269,7 @@ mrpt::obs::CObservationRawDAQ::Ptr CObservationFOG::toRawDAQ() const
 	auto daq = mrpt::obs::CObservationRawDAQ::Create();
 	daq->timestamp = timestamp;
 	daq->sensorLabel = sensorLabel + "_THERMISTORS";
-	if (temp_C.size() > 65535)  // CObservationRawDAQ counts channels in 16 bits (issue 14: 66 000 wrapped to 464)
+	if (temp_C.size() > 65535)  // CObservationRawDAQ counts channels in 16 bits (66 000 wrapped to 464)
 		throw std::invalid_argument("sensor '" + sensorLabel + "': " + std::to_string(temp_C.size()) +
 									" thermistors exceed the 65535 channels of a CObservationRawDAQ");
 	daq->AIN_channel_count = static_cast<uint16_t>(temp_C.size());

@@ -67,7 +67,7 @@ const std::map<std::string, std::string>& presetTable()
 		 // turn-on from unpowered equilibrium at 25 C (2 h: the warm-up; fog-calibrate keeps the
 		 // first hour out of the bias fit), the seed's ramps and soaks, then a +-20 C sine of
 		 // 30 min period and 2 and 3 C/min ramps, which the seed's 1 C/min ramps leave out
-		 // (docs/generalization.md, "One calibration run"); 12.8 h.
+		 // (docs/validation/generalization.md, "One calibration run"); 12.8 h.
 		 "name: calibration\n"
 		 "initial_temp_C: 25\n"
 		 "power_initially: true\n"

@@ -118,7 +118,7 @@ FogDevice FogDevice::defaultDevice()
 	FogDevice d;
 	// Length asymmetry of the quadrupole halves (1.5 m of 1500 m, a loosely trimmed coil): with
 	// errors.radial_gradient_dph_per_C, one of the two knobs FITTED to the seed's figures by
-	// scripts/fit_seed_knobs.py (docs/sim.md, "default device"); weakly determined (0.5-2.5 m fit
+	// scripts/fit_seed_knobs.py (docs/reference/simulator.md, "default device"); weakly determined (0.5-2.5 m fit
 	// about as well).
 	d.winding.midpoint_offset_m = 1.5;
 	// The seed's four thermistors: inner/outer pairs at 0 and 180 deg (seed Fig. 1).

@@ -90,7 +90,7 @@ void recordTriadMetadata(FogSeries& s, const FogDevice& device, const SimSetting
 	s.setMetadata("table_axis", letter(up));
 	s.setMetadata("triad.model",
 				  "one thermal network and one thermistor set for the three coils; per-axis error sensitivities and "
-				  "noise seeds (docs/sim.md, Three-axis FOG)");
+				  "noise seeds (docs/reference/simulator.md, Three-axis FOG)");
 	const bool earth = settings.effects.count("earth_rate") > 0;
 	const double lat = device.latitude_deg * units::kDegToRad;
 	const double up_dph = earth ? units::kEarthRate_dph * std::sin(lat) : 0.0;

@@ -1,7 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 /* The success table on the lumped-coil second generator, on seeds kept out of tuning
  * (fogtest::kHeldOutSeedFirst.. = 9101..; FOG_FOREIGN_FIRST_SEED=1 runs the tuning seeds), label "long". Per effect: FOG_FOREIGN_SEEDS trials
- * (default 20) at effect/noise 3 and 1; nulls: 5 x that many. Targets (issue 13): named in
+ * (default 20) at effect/noise 3 and 1; nulls: 5 x that many. Targets: named in
  * >= 95 % at 3 and >= 80 % at 1; false naming on nulls <= 2 % (Clopper-Pearson upper bound
  * printed); gap share >= 0.5. Regenerate: test_discrepancy_long --gtest_filter='ForeignTrialsLong*' | grep -A3 FOREIGN
  * Other knobs (ForeignTrials.h): FOG_FOREIGN_DT_S (sample period), FOG_FOREIGN_EFFECTS=a,b,

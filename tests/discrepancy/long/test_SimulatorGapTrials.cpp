@@ -1,7 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 /** Long proof of `fog-discrepancy --sim` (label long): every effect the simulator can hide from
  * the configuration, at effect-to-noise ratios 1 and 3, FOG_SIMGAP_LONG_SEEDS seeds per cell
- * (default 10, seeds 1000..), and 100 null trials (seeds 5000..). Targets (issue 6): the right
+ * (default 10, seeds 1000..), and 100 null trials (seeds 5000..). Targets: the right
  * effect (or its alias group) named in >= 95 % of trials, the gap target met in >= 95 %, false
  * naming with nothing hidden <= 2 %. Setup and scoring: ../SimulatorGapTrialSuite.h.
  * Regenerate the table: build-disc/tests/test_discrepancy_long --gtest_filter='SimulatorGapTrials*' | grep SIMGAP */

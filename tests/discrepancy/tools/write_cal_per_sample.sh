@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # fog-discrepancy --write-cal (refit on 1 s block means) against a per-sample fog-calibrate fit
-# with the same terms and rate window, on lumped-coil runs at 10 Hz (docs/discrepancy.md,
+# with the same terms and rate window, on lumped-coil runs at 10 Hz (docs/guide/model-gap.md,
 # "--write-cal refits on the block means"). Per seed s: runs 2s and 2s + 1 with EFFECT=3,
 # --model M2:Ca@3/1; then both calibrations through fog-evaluate on the confirmation run.
 #   write_cal_per_sample.sh BUILD_DIR OUT_DIR EFFECT SEED...

@@ -1,5 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
-// Issue 11, part 4 ("lab data as it comes"), on the independent sector-coil generator (never
+// Lab data as it comes, on the independent sector-coil generator (never
 // used to tune anything): the same device logged at 0.1 Hz .. 100 Hz, and its thermistors
 // quantised to 0.01, 1/256, 1/16 and 1 degC. Each run is calibrated on the seed profile and
 // evaluated on profile B; the figure is the held-out 100 s stability over the device's noise
@@ -44,7 +44,7 @@ Outcome calibrateAndEvaluate(const SectorCoilParams& p, const FitOptions& o)
 // T^2 (0.1 Hz) and T^2, T^3 (1 Hz) added at the low rates: the same figure, not the same
 // terms. Asserted: what the requirement says (the same terms at 1, 10 and 100 Hz; every held-out
 // ratio within 25 % of the 10 Hz one), so this test FAILS today on the 1 Hz terms: a known miss
-// (docs/generalization.md), kept red rather than relaxed to what held.
+// (docs/validation/generalization.md), kept red rather than relaxed to what held.
 TEST(LabData, SectorCoilSampleRatesGiveTheSameModel)
 {
 	SectorCoilParams p = drawSectorCoil(1);

@@ -1,7 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
-// Issue 11: the same physics logged at another sample rate gives the same model. The default
+// the same physics logged at another sample rate gives the same model. The default
 // device on the seed profile at 1, 10 and 50 Hz (same device and seeds; the noise realisations
-// differ with the rate). Measured (docs/generalization.md): 10 and 50 Hz choose the same 9-term
+// differ with the rate). Measured (docs/validation/generalization.md): 10 and 50 Hz choose the same 9-term
 // linear multipoint model, asserted here; 1 Hz adds T(To1)^2 and ^3 (printed, a documented miss);
 // held-out stability on B 0.030 / 0.041 / 0.049 deg/h at 1 / 10 / 50 Hz (printed: whether the
 // rise is the rate or the realisation is not settled by one seed, so it is not asserted).

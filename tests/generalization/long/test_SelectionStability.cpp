@@ -1,5 +1,5 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
-// Issue 11 target: two calibrations that differ only in the noise seed choose the same model, or
+// Target: two calibrations that differ only in the noise seed choose the same model, or
 // the calibration says it is unstable and lists the alternatives with their held-out figures.
 // The default device on the seed profile at 2 Hz, noise seeds 101..106 (pairs 101/102, 103/104,
 // 105/106). With "stable" at 60 % of refits, pair 101/102 failed (two different models, each

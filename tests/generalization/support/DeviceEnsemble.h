@@ -3,10 +3,10 @@
 
 /** \file DeviceEnsemble.h
  * Test support (not library code): an ensemble of simulated FOGs whose physical parameters are
- * drawn from documented ranges, for the generalization bench (issue 11). Device `seed` is drawn
+ * drawn from documented ranges, for the generalization bench. Device `seed` is drawn
  * with its own std::mt19937_64, so device k is the same whatever else the ensemble holds.
  *
- * Ranges (uniform unless said; sources: ../shared/design/PHYSICS.md and docs/sim.md):
+ * Ranges (uniform unless said; sources: ../shared/design/PHYSICS.md and docs/reference/simulator.md):
  *   coil + housing heat capacities x f, f log-uniform 0.5..2   (all time constants x f)
  *   housing_to_air_W_K        0.3..1.0   (housing-to-air time constant ~15..50 min)
  *   radial_conductivity_W_mK  0.15..0.4  (radial diffusion through the winding ~40..110 s)
@@ -45,11 +45,11 @@ DrawnDevice drawDevice(std::uint64_t seed);
 /** Seeds usable for tuning and seeds kept out of all tuning. */
 std::vector<std::uint64_t> tuningSeeds();  // 1..16
 std::vector<std::uint64_t> heldOutSeeds();  // 17..24
-/** Seeds 25..32: kept out of everything in issue 11 session 5 (the quantum window and the
+/** Seeds 25..32: kept out of everything until the quantum window and the
  * start-up model were decided on seeds 1..16; seeds 17..24 had been seen once, to explain the
- * regression), run once at the end of that session. */
+ * regression) were decided, then run once. */
 std::vector<std::uint64_t> finalSeeds();
-/** Seeds 33..40: never used before issue 11 session 7, run once at its end (after the decision
+/** Seeds 33..40: never used before the selection rules were decided, then run once (after the decision
  * on seeds 1..16 and the check on 17..24). */
 std::vector<std::uint64_t> freshSeeds();
 

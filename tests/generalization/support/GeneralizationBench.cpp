@@ -95,13 +95,13 @@ std::vector<BenchPreset> benchPresets()
 	mrpt_fog::FitOptions def;
 	def.stability_resamples = 0;  // reports only, never changes the chosen model: skipped for speed
 	out.push_back({"default (multipoint)", "multipoint", def, false});
-	mrpt_fog::FitOptions previous;  // the selection before issue 11: blocked folds, whole groups, no parsimony
+	mrpt_fog::FitOptions previous;  // the selection before blocked folds, whole groups, no parsimony
 	previous.fold_scheme = mrpt_fog::FoldScheme::Blocks;
 	previous.select_orders = false;
 	previous.parsimony = false;
 	previous.physics_candidates = false;
 	previous.linear_base = false;
-	out.push_back({"auto before issue 11", "multipoint", previous, false});
+	out.push_back({"auto (blocked folds, no parsimony)", "multipoint", previous, false});
 	if (std::getenv("FOG_BENCH_VARIANTS"))
 	{
 		for (int v = 0; v < 8; v++)
@@ -116,7 +116,7 @@ std::vector<BenchPreset> benchPresets()
 						   "multipoint", o, false});
 		}
 	}
-	if (std::getenv("FOG_BENCH_PARSIMONY"))  // the parsimony rule and the order ceiling (issue 11, session 6)
+	if (std::getenv("FOG_BENCH_PARSIMONY"))  // the parsimony rule and the order ceiling
 	{
 		mrpt_fog::FitOptions o;
 		o.stability_resamples = 0;
@@ -128,7 +128,7 @@ std::vector<BenchPreset> benchPresets()
 		o.parsimony = true;
 		out.push_back({"auto@3/1", "multipoint@3/1", o, false});
 	}
-	if (std::getenv("FOG_BENCH_BINS"))  // selection scored on time-bin means (issue 11, session 6)
+	if (std::getenv("FOG_BENCH_BINS"))  // selection scored on time-bin means
 	{
 		mrpt_fog::FitOptions o;
 		o.stability_resamples = 0;
@@ -142,7 +142,7 @@ std::vector<BenchPreset> benchPresets()
 		o.paired_se = true;
 		out.push_back({"auto bin 100s paired", "multipoint", o, false});
 	}
-	if (std::getenv("FOG_BENCH_SCORING"))  // what the selection scores (issue 11, session 7)
+	if (std::getenv("FOG_BENCH_SCORING"))  // what the selection scores
 	{
 		mrpt_fog::FitOptions o;
 		o.stability_resamples = 0;
@@ -162,7 +162,7 @@ std::vector<BenchPreset> benchPresets()
 		o.selection_bin_s = 0.0;
 		out.push_back({"auto sig", "multipoint", o, false});
 	}
-	if (std::getenv("FOG_BENCH_GAIN"))  // tau-binned scoring with a larger step threshold (issue 11, session 7)
+	if (std::getenv("FOG_BENCH_GAIN"))  // tau-binned scoring with a larger step threshold
 	{
 		mrpt_fog::FitOptions o;
 		o.stability_resamples = 0;
@@ -177,7 +177,7 @@ std::vector<BenchPreset> benchPresets()
 			out.push_back({label, "multipoint@3/1", o, false});
 		}
 	}
-	if (std::getenv("FOG_BENCH_COMMON"))  // common orders for all thermistors (issue 11, session 7)
+	if (std::getenv("FOG_BENCH_COMMON"))  // common orders for all thermistors
 	{
 		mrpt_fog::FitOptions o;
 		o.stability_resamples = 0;
@@ -192,7 +192,7 @@ std::vector<BenchPreset> benchPresets()
 			out.push_back({"auto common" + bin + " 1se", "multipoint", o, false});
 		}
 	}
-	// several calibration runs: regime folds within each run (session 8); =all: also with common orders
+	// several calibration runs: regime folds within each run; =all: also with common orders
 	if (std::getenv("FOG_BENCH_RUNFOLDS"))
 	{
 		mrpt_fog::FitOptions o;

@@ -2,7 +2,7 @@
 #pragma once
 
 /** \file GeneralizationBench.h
- * Test support: the generalization bench of issue 11. Each device of an ensemble (drawn with
+ * Test support: the generalization bench. Each device of an ensemble (drawn with
  * DeviceEnsemble.h from fog-sim's physics, or with the independent SectorCoilGenerator.h) is
  * calibrated on the seed's chamber profile and evaluated on other profiles it never saw
  * (evaluationProfiles()); the figure is the held-out 100 s bias stability divided by that

@@ -2,7 +2,7 @@
 #pragma once
 
 /** \file SectorCoilGenerator.h
- * Test support: a second chamber-run generator written apart from fog-sim (issue 11), so the
+ * Test support: a second chamber-run generator written apart from fog-sim, so the
  * bench does not only judge the fit on the physics it was developed with. Structure: 8 nodes
  * (housing, hub, 3 outer + 3 inner coil sectors at 0/120/240 deg), explicit Euler at 0.5 s
  * sub-steps, the electronics heating the housing and the outer sector at 0 deg; the bias is a

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# No silent empty model (issue 14). A run whose gyro output does not follow the thermistors
+# No silent empty model. A run whose gyro output does not follow the thermistors
 # (chamber run A's temperatures at 1 Hz with the rate replaced by an alternating +-0.05 deg/h
 # pattern): M4 keeps no thermal term -> fog-calibrate says so and why, exits 1 and writes
 # nothing, unless --allow-empty-model (then a warning and exit 0). multipoint keeps its linear

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Files are sacred (issue 14): the programs never destroy a file the user had.
+# Files are sacred: the programs never destroy a file the user had.
 #   files_sacred.sh BIN_DIR SOURCE_DIR WORK
 # - an output equal to an input (any spelling, hard link) or to another output is refused,
 #   exit 1, the file byte-identical;

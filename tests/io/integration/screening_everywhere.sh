@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The same thermistor screening in every program that reads thermistors (issue 14): a log with
+# The same thermistor screening in every program that reads thermistors: a log with
 # one absurd temperature reading (1e308) gives exactly the figures of the same log with that
 # reading missing (a dropout), through fog-calibrate and fog-evaluate, and fog-discrepancy
 # reports it (fog-drift screens through the same screenThermistors; before: one reading

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Scale-factor interval trial on the simulator (issue 12): fits bias + scale factor with
+# Scale-factor interval trial on the simulator: fits bias + scale factor with
 # fog-calibrate on held-out runs and checks the reported mean slope against the simulator's truth
 # (errors.sf_ppm_per_C: within 5 %, inside the 95 % interval). The seeds and the held-out profile
 # and device were fixed before the interval estimator was tried on them; seeds 1-5 of the

@@ -1,6 +1,5 @@
 #!/usr/bin/env bash
-# fog-drift on drives with the gyro off in places (power 0 rows; issue 13 item 1, issue 14's
-# session-7 note: a 5 min power-off gave a heading RMS of tens of degrees, the turn made while
+# fog-drift on drives with the gyro off in places (power 0 rows; a 5 min power-off gave a heading RMS of tens of degrees, the turn made while
 # the gyro was off, integrated as "no turn").
 #  1. The closed-form circle drive of tests/nav/drive/TestDrive.cpp with the gyro off for
 #     400 < t < 650 s (FOG: empty rate; FOG_IDEAL: 0 deg/h with power 0): the stretch and the

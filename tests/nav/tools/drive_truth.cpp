@@ -1,7 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 /** drive-truth: the simulator's internal truth of a vehicle drive, sample by sample, next to what
- * a calibration's compensator makes of it (a diagnostic harness for the heading error budget,
- * issue 12; lives in tests/ because it reads the simulator's state, which no real log has).
+ * a calibration's compensator makes of it (a diagnostic harness for the heading error budget;
+ * it lives in tests/ because it reads the simulator's state, which no real log has).
  *
  *   drive-truth --seed N [--cabin NAME|FILE.yaml] [--effect ID]... [--cal CAL.yaml] -o OUT.csv
  *

@@ -3,7 +3,7 @@
 
 /** \file Segments.h
  * Where a model fails: the labelled segments of a run and their ranking by residual energy
- * (what analyseDiscrepancy reports; how runs are segmented: docs/discrepancy.md). Public API.
+ * (what analyseDiscrepancy reports; how runs are segmented: docs/guide/model-gap.md). Public API.
  */
 
 #include <cstddef>

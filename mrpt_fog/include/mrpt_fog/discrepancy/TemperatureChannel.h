@@ -5,7 +5,7 @@
  * What the simulator workflow (analyseSimulatorDiscrepancy, SimulatorGap.h) reports on the
  * temperature channel: the heat-source test and its confirmation, and the thermal fit (how
  * well the calibrated thermal network reproduces the thermistors, and what would fix it).
- * How they are computed: docs/discrepancy-sim.md. Public API.
+ * How they are computed: docs/guide/model-gap-simulator.md. Public API.
  */
 
 #include <mrpt_fog/obs/FogSeries.h>

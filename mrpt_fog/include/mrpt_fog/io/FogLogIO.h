@@ -60,10 +60,10 @@ void writeFogRawlog(const std::string& path, const FogSeries& fog,
 					const std::vector<mrpt::obs::CObservation::Ptr>& others = {});
 
 /** Reads a lab CSV file (.csv, or gz-compressed .csv.gz; CRLF accepted). Format in
- * docs/io.md. `# sensor:` and `# epoch_s:` fill sensor_label and epoch_s; `# thermistor` lines
+ * docs/reference/logs.md. `# sensor:` and `# epoch_s:` fill sensor_label and epoch_s; `# thermistor` lines
  * the thermistor metadata; every other `# key: value` line (latitude_deg, unknown keys) is kept
  * in FogSeries::metadata. Empty temperature/table_rate/field cells are NaN (dropouts). Any
- * defect throws FogIoError naming file, line and column (see docs/io.md for the list). */
+ * defect throws FogIoError naming file, line and column (see docs/reference/logs.md for the list). */
 FogSeries readFogCsv(const std::string& path);
 
 /** Writes a lab CSV file (gz-compressed when the name ends in .gz). Numbers are printed in the

@@ -93,7 +93,7 @@ enum class AllanOffsets : unsigned char
 	 * per cluster length, N / s + 1 terms), from phases kept during the one pass: O(N) in all,
 	 * memory at most 2^18 + 1 phases (4 MB). The estimate sums the same second differences at
 	 * fewer offsets: at m >= 512 s neighbouring offsets are nearly the same difference, so its
-	 * spread is that of full overlap within a few percent (docs/metrics.md, "Allan deviation of
+	 * spread is that of full overlap within a few percent (docs/reference/metrics.md, "Allan deviation of
 	 * long records"). */
 	Linear = 1
 };

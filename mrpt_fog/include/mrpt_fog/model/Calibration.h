@@ -63,7 +63,7 @@ namespace mrpt_fog
  *    slope continuous). Physically the leading bias terms are linear (Shupe: linear in dT/dt;
  *    thermal stress: linear in Tin - Tout), so a tangent keeps their trend where a clamp drops
  *    it, and unlike the raw polynomial it cannot blow up with the 5th power. The default, chosen
- *    on held-out data outside the range (docs/model.md, "Extrapolation").
+ *    on held-out data outside the range (docs/reference/model.md, "Extrapolation").
  *  - Polynomial: the raw polynomial (for studies only; a 5th order diverges quickly). */
 enum class ExtrapolationPolicy : unsigned char
 {
@@ -151,7 +151,7 @@ constexpr double kSuggestedTurnOnExclusion_s = 3600.0;
 
 /** Lag time constants from the coil's thermal time constants [s] (shared/design/PHYSICS.md
  * "Thermal time constants": radial diffusion through the winding ~70 s, housing to air ~30 min;
- * docs/sim.md: the simulated network's modes at 1-3 min, ~6 min and 29.4 min): a geometric grid,
+ * docs/reference/simulator.md: the simulated network's modes at 1-3 min, ~6 min and 29.4 min): a geometric grid,
  * factor 4, from radial diffusion to the housing. */
 inline const std::vector<double> kPhysicsLagTaus_s = {100.0, 400.0, 1600.0};
 
@@ -204,7 +204,7 @@ struct FitOptions
 	 * in the interior's rates). "auto" adds them by held-out error like any other signal (never
 	 * in the linear base unless lag_in_base); "none" never uses them (every preset term only: name
 	 * them in a terms: preset). Empty: none. Default kPhysicsLagTaus_s, the grid from the coil's
-	 * time constants (chosen on the generalization bench's tuning devices: docs/generalization.md,
+	 * time constants (chosen on the generalization bench's tuning devices: docs/validation/generalization.md,
 	 * "One thermistor: lags of its history"). */
 	std::vector<double> lag_taus_s = kPhysicsLagTaus_s;
 	/** The lag candidates are offered only when the preset reads at most this many thermistors:
@@ -240,7 +240,7 @@ struct FitOptions
 	 * power_on_time_s at or before the first sample) stay out of the bias fit [s]; 0: none left
 	 * out. Their transient is the warm-up term's (fitWarmup on the same runs), not a thermal
 	 * effect the bias model should take; this lets one chamber run that starts with a turn-on
-	 * calibrate both (docs/generalization.md, "One calibration run"). */
+	 * calibrate both (docs/validation/generalization.md, "One calibration run"). */
 	double turn_on_exclusion_s = 0.0;
 	/** Fit the rate-free start-up model (Calibration::startup) when the main model reads rates. */
 	bool startup_model = true;

@@ -2,7 +2,7 @@
 #pragma once
 
 /** \file CalibrationYaml.h
- * Calibration files (YAML, read with mrpt::containers::yaml), version 2 (layout: docs/model.md;
+ * Calibration files (YAML, read with mrpt::containers::yaml), version 2 (layout: docs/reference/model.md;
  * version 1 files, single axis and bias only, are still read). Version 3 is version 2 plus what a
  * version-2 reader cannot apply: lag signals (dTlag/dt) in a bias model, or an axis' magnetic
  * section; it is written only when a calibration holds one of them (else version 2), and a

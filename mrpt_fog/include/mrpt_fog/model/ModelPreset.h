@@ -27,7 +27,7 @@
 
 namespace mrpt_fog
 {
-/** The preset grammar's kinds (docs/model.md): all or chosen thermistors at full order, the
+/** The preset grammar's kinds (docs/reference/model.md): all or chosen thermistors at full order, the
  * seed's equations M1..M4, the best K of all thermistors, or an explicit term list. */
 enum class PresetKind : unsigned char
 {

@@ -16,7 +16,7 @@
  *    them is evaluated at t (CausalRateTracker::extrapolatedRate): exact for a quadratic,
  *    still causal, about 5x the rate noise of order 1. The 30 s delay of order 1 was the
  *    largest part of the held-out error above the noise floor on profiles with steps and
- *    sines (docs/generalization.md, "Why the default lost").
+ *    sines (docs/validation/generalization.md, "Why the default lost").
  *  - "savgol" (SavitzkyGolayRateEstimator): derivative at t of a local polynomial (order 1..4)
  *    fitted by least squares over the centred window [t - window_s/2, t + window_s/2] (a
  *    Savitzky-Golay filter generalised to irregular timestamps). Non-causal, no delay; for
@@ -113,7 +113,7 @@ constexpr double kReferenceQuantum_C = 0.01;
 /** Quanta up to this keep the base window; above it the window grows in proportion to the
  * quantum (windowForQuantum_s). Twice kReferenceQuantum_C: chosen on the generalization bench's
  * tuning devices, where 0.01 degC (the window keeping the reference's quantisation bound: 375 s
- * at 1/16 degC) delayed the rates more than the quantisation error it saved (docs/generalization.md,
+ * at 1/16 degC) delayed the rates more than the quantisation error it saved (docs/validation/generalization.md,
  * "One calibration run"). */
 constexpr double kQuantumWindowStart_C = 0.02;
 /** Longest window windowForQuantum_s() gives [s]: the coil-housing time constants are 15-50 min,

@@ -64,7 +64,7 @@ struct ScaleFactorFitOptions
 	 * candidate; orders chosen as above) instead of the best single thermistor. At soaks every
 	 * thermistor reads the same, so the held-out error cannot choose between them; in a transient
 	 * the mean of inner and outer readings is nearer the coil's mean temperature, which the
-	 * scale factor follows (docs/nav.md, error budget). */
+	 * scale factor follows (docs/validation/navigation.md, error budget). */
 	bool thermistor_mean = false;
 };
 

@@ -44,7 +44,7 @@ struct ScaleFactorModel
 	 * (slope_noise_ci95_*) widened by the errors in the temperature variable, i.e. from the lowest
 	 * to the highest noise bound over the slopes measured against each thermistor of the layout
 	 * (the coil's effective temperature taken as an unknown weighted mean of the thermistors;
-	 * ScaleFactorFit.h, docs/model.md). */
+	 * ScaleFactorFit.h, docs/reference/model.md). */
 	double slope_ci95_lo_ppm_per_C = 0.0, slope_ci95_hi_ppm_per_C = 0.0;
 	/** Measurement-noise-only 95 % interval of slope_ppm_per_C (coefficient covariance, Student t). */
 	double slope_noise_ci95_lo_ppm_per_C = 0.0, slope_noise_ci95_hi_ppm_per_C = 0.0;

@@ -54,11 +54,11 @@ struct CoilThermalParams
 	// which gives the marked inner/outer differences of the seed's Fig. 2.
 	double hub_capacity_J_K = 30.0;  //!< light central post + cavity air (estimate)
 	/** Inner surface to the central post across the ~5 mm inner cavity (physical estimate,
-	 * arithmetic in docs/sim.md): conduction through air k A / d = 0.026 W/(m K) x 5.4e-3 m2 /
+	 * arithmetic in docs/reference/simulator.md): conduction through air k A / d = 0.026 W/(m K) x 5.4e-3 m2 /
 	 * 5e-3 m = 0.028 W/K, plus radiation 4 eps_eff sigma T^3 A = 4 x 0.82 x 5.67e-8 x 298^3 x
 	 * 5.4e-3 = 0.027 W/K (eps_eff 0.82 for two emissivity-0.9 surfaces), together 0.055 W/K
-	 * (A = pi x 0.09 m x 0.019 m, the inner winding surface). Was 0.01 W/K (below the physics)
-	 * until 2026-12-01. */
+	 * (A = pi x 0.09 m x 0.019 m, the inner winding surface): conduction and radiation
+	 * together, not a fitted value. */
 	double hub_to_inner_W_K = 0.055;
 
 	double housing_capacity_J_K = 900.0;  //!< 1 kg aluminium housing (PHYSICS.md)

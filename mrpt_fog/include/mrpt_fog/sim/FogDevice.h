@@ -4,7 +4,7 @@
 /** \file FogDevice.h
  * Everything that describes one simulated FOG: coil thermal network, winding, the
  * coefficients of each error source (see ErrorEffects.h), thermistors and gyro noise.
- * Defaults are the project's default device (docs/sim.md explains every choice; values marked
+ * Defaults are the project's default device (docs/reference/simulator.md explains every choice; values marked
  * "estimate" are engineering estimates within the ranges of PHYSICS.md, not measurements).
  *
  * YAML overlay (every key optional; unknown keys are errors):
@@ -117,7 +117,7 @@ struct FogDevice
 	double thermistor_noise_C = 0.003;  //!< white reading noise (estimate)
 	double thermistor_quantum_C = 0.01;  //!< reading resolution (PHYSICS.md)
 
-	/** The project's default device (see docs/sim.md). */
+	/** The project's default device (see docs/reference/simulator.md). */
 	static FogDevice defaultDevice();
 	/** Default device overlaid with a YAML document (see file comment); `source` names it in
 	 * errors. Throws std::invalid_argument "<source>: <field>: <reason>". */

@@ -13,7 +13,7 @@
 
 namespace mrpt_fog::sim
 {
-/** The run seed used when none is given (documented in docs/sim.md). */
+/** The run seed used when none is given (documented in docs/reference/simulator.md). */
 constexpr std::uint64_t kDefaultSeed = 20240501;
 
 /** Stream ids (never renumber: they fix the datasets). */

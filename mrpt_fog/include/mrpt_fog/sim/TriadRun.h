@@ -4,7 +4,7 @@
 /** \file TriadRun.h
  * A three-axis FOG (a triad: x, y, z coils in one housing) in the chamber or on the vehicle.
  *
- * Model (a simplification, said in docs/sim.md): the three coils share one thermal network
+ * Model (a simplification, said in docs/reference/simulator.md): the three coils share one thermal network
  * (same housing, same temperatures) and one set of thermistors (the device's, read by the up
  * axis' simulation); they differ in their error sensitivities (triadAxisDevice: estimates) and
  * in their noise (each axis its own seed, triadAxisSeed). Each axis is a FogSimulator of its
@@ -35,7 +35,7 @@
 namespace mrpt_fog::sim
 {
 /** The triad's coil on `axis`: z = `device` itself; x and y = the same coil and thermal
- * network with other error sensitivities (engineering estimates, docs/sim.md "Three-axis FOG"):
+ * network with other error sensitivities (engineering estimates, docs/reference/simulator.md "Three-axis FOG"):
  *   x: midpoint_offset x -0.6, radial_gradient x 0.7, sf_ppm_per_C 14, constant_bias -0.2 deg/h
  *   y: midpoint_offset x 1.3,  radial_gradient x 1.3, sf_ppm_per_C 27, constant_bias 0.45 deg/h */
 FogDevice triadAxisDevice(const FogDevice& device, GyroAxis axis);

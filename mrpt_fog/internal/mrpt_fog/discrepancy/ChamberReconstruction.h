@@ -42,7 +42,7 @@ struct AirReconstructionOptions
 {
 	/** Air knots every this [s] (rounded to whole simulator steps). On fog-sim's `rich` run at
 	 * 0.05 Hz: 60 s fits the thermistors to 0.0056 C RMS (the true profile: 0.0042 C), 120 s to
-	 * 0.0078 C, 600 s to 0.11 C (docs/discrepancy-sim.md). */
+	 * 0.0078 C, 600 s to 0.11 C (docs/guide/model-gap-simulator.md). */
 	double knot_spacing_s = 60.0;
 	std::size_t max_knots = 800;  //!< the spacing grows for long runs to keep at most this many
 	std::size_t max_rows_per_thermistor = 3000;  //!< rows are thinned to at most this many

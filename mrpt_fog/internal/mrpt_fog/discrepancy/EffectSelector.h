@@ -67,7 +67,7 @@ void confirmOnRun(SelectionResult& result, const RunSignals& sig2, const BaseDes
  * and the augmented model is refitted on the analysed run (sig1/base1) with the confirmed
  * effects only (coef_after, residual_after). Effects that could not be tested on the second run
  * (e.g. it has no rate-table segment) stay named. A one-run analysis has nothing to confirm.
- * Why: on null trials every false naming seen was unconfirmed (docs/discrepancy.md). */
+ * Why: on null trials every false naming seen was unconfirmed (docs/guide/model-gap.md). */
 void keepConfirmedEffects(SelectionResult& result, const RunSignals& sig1, const BaseDesign& base1);
 
 /** Least-squares coefficients of the run's bias on the design X, fitted on the rows where

@@ -13,7 +13,7 @@
  * the size of the seed's compensated 100 s stability (0.0069 deg/h), so above it the
  * temperature error alone can produce bias errors the workflow would misname; the thermistors'
  * own errors (0.01 C quantum, 0.003 C noise) and a correctly modelled run (0.004 C on fog-sim's
- * `rich` run, docs/discrepancy-sim.md) stay well below.
+ * `rich` run, docs/guide/model-gap-simulator.md) stay well below.
  * What would fix it (ThermalFix), from the residual's shape, pooled over the thermistors, each
  * thermistor's residual regressed on [1, x] by least squares:
  *  - Lag: x = dT_meas/dt (central difference): r = -tau dT/dt is an unmodelled first-order lag

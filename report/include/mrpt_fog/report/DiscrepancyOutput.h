@@ -14,7 +14,7 @@
 namespace mrpt_fog::discrepancy
 {
 /** JSON document (stable keys: named_effects, segments, gap.before.rms_dph, gap.after.rms_dph,
- * gap_confirm..., see docs/discrepancy.md). */
+ * gap_confirm..., see docs/guide/model-gap.md). */
 JsonValue discrepancyJson(const DiscrepancyReport& report);
 
 /** Readable report (several lines). */

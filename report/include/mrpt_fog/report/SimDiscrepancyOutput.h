@@ -13,7 +13,7 @@
 
 namespace mrpt_fog::discrepancy
 {
-/** discrepancyJson plus the simulator keys (docs/discrepancy-sim.md). */
+/** discrepancyJson plus the simulator keys (docs/guide/model-gap-simulator.md). */
 JsonValue simDiscrepancyJson(const SimDiscrepancyReport& r);
 
 /** Readable report. */
