@@ -371,7 +371,7 @@ int main(int argc, char** argv)
 		if (!stages_on) md << "\nScale-factor and warm-up stages and the simulated drives skipped (--no-stages).\n";
 		else if (!have_table) md << "\nNo `ratetable_A.rawlog` in the datasets folder: the scale-factor and warm-up stages are skipped.\n";
 		else if (!fs::exists(warm_run)) md << "\nNo `warmup.rawlog` in the datasets folder: no warm-up term in the default calibration.\n";
-		md << "\nWhere the remaining error comes from (decomposition by simulator effect): docs/nav.md.\n\n";
+		md << "\nWhere the remaining error comes from (decomposition by simulator effect): docs/guide/heading-drift.md.\n\n";
 		md << "## Bias (chamber runs, tau = 100 s)\n\n"
 		   << "| run | raw stability [deg/h] | compensated stability [deg/h] | raw range [deg/h] | compensated range [deg/h] |\n"
 		   << "|---|---|---|---|---|\n";

@@ -40,7 +40,7 @@
 namespace mrpt_fog::localize
 {
 /** A FOG's heading noise and a wheel's distance noise per step (heading/FogMotionModel.h; defaults
- * documented in docs/localize.md). */
+ * documented in docs/guide/localization.md). */
 using FogMotionModel = heading::FogMotionModel;
 
 /** The motion model of a step without the gyro (GyroOffOdometry.h): MRPT's default Gaussian model,

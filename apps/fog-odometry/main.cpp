@@ -35,7 +35,7 @@ WHAT IT DOES
     actions-observations  each CActionRobotMovement2D holds the increment between two such
                           poses and a FOG motion model (Gaussian: a3 = 0, a4 = --fog-scale-factor-ppm,
                           minStdPHI = --fog-bias-dph x sqrt(dt x --fog-horizon-s), a1 =
-                          --distance-frac, minStdXY = --min-std-xy-m; docs/localize.md). A step
+                          --distance-frac, minStdXY = --min-std-xy-m; docs/guide/localization.md). A step
                           with the gyro off keeps MRPT's default wheel model.
   The FOG: CObservationFOG '--fog-label', compensated sample by sample with the calibration's
   z axis (thermistor screening first), the calibration's Earth rate added back once, integrated

@@ -3,7 +3,7 @@
 
 /** \file FogMotionModel.h
  * The motion model of an odometry step whose heading is a FOG's, for MRPT's particle filters
- * (CActionRobotMovement2D, Gaussian model; docs/localize.md "The filter"):
+ * (CActionRobotMovement2D, Gaussian model; docs/guide/localization.md "The filter"):
  *  - heading std per step = minStdPHI + a4 |turn|, a3 = 0 (no heading noise per metre: the
  *    heading is not the wheels'). minStdPHI = b sqrt(dt T): a random walk whose spread after T
  *    equals the drift of a constant bias b; a4 = the scale-factor uncertainty [rad/rad];

@@ -238,7 +238,7 @@ class RawlogObjects
 			if (!isPlainAllocating(h.cls) && !io::detail::AllocationGuard::active())
 				throw FogIoError(where + (nesting == Nesting::Top ? " is a " : " holds a ") + h.cls->className +
 								 ": in this program MRPT's allocator cannot be bounded, and only " + plainClassList() +
-								 " are read safely (docs/hardening.md); keep the FOG's observations and those sensors' "
+								 " are read safely (docs/validation/hardening.md); keep the FOG's observations and those sensors' "
 								 "first, e.g. with `rawlog-edit --keep-label FOG,ODOMETRY` (refused unread)");
 		}
 		if (h.cls) reading_class_ = h.cls->className;

@@ -48,7 +48,7 @@ struct ReadLimits
 	 * magnetic term's contribution with it). */
 	double max_abs_field_uT = units::kMaxAbsField_uT;
 	/** One allocation by MRPT's reader of another sensor's object (a scan, an image, a point
-	 * cloud) [bytes]: beyond it the object is taken as corrupt (docs/hardening.md). */
+	 * cloud) [bytes]: beyond it the object is taken as corrupt (docs/validation/hardening.md). */
 	std::size_t max_object_allocation_bytes = std::size_t(256) << 20;
 };
 

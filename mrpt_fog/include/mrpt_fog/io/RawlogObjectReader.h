@@ -9,7 +9,7 @@
  * action collection with its actions), so that a program can pass every object it does not
  * change on unchanged, in order and in the input's format (RawlogObjectWriter).
  *
- * The hostile-input guarantees of FogLogReader hold (docs/hardening.md): each object's header is
+ * The hostile-input guarantees of FogLogReader hold (docs/validation/hardening.md): each object's header is
  * checked before MRPT reads it (only an observation, a sensory frame or an action collection at
  * the top level; observations in a frame; actions in a collection), frames and collections are
  * read here with their counts bounded, and everything else is read by MRPT under a bounded-

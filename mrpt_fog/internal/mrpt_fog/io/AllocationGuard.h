@@ -15,7 +15,7 @@
  *
  * Whether the binding took effect depends on the program's library order; active() checks it
  * (through mrpt::aligned_calloc, which calls aligned_malloc from inside libmrpt-core). When it
- * did not, the reader refuses the classes that allocate that way (docs/hardening.md). */
+ * did not, the reader refuses the classes that allocate that way (docs/validation/hardening.md). */
 
 #include <cstddef>
 
