@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (clang++, ASan + UBSan, build-fuzz/) and runs each for a fixed time.
 #   scripts/run-fuzz.sh [seconds per target, default 30] [target ...]
-# Targets: fuzz_csv fuzz_rawlog fuzz_calibration_yaml fuzz_options (default: all). Seeds come from
+# Targets: fuzz_csv fuzz_rawlog fuzz_calibration_yaml fuzz_options fuzz_log_format (default: all). Seeds come from
 # tests/fuzz_corpus/<target>/; new interesting inputs go to build-fuzz/corpus/<target>/ (not in git).
 # A crash leaves build-fuzz/artifacts/<target>/crash-* and makes the script exit non-zero;
 # reproduce with: build-fuzz/fuzz/<target> <crash file>.
@@ -11,7 +11,7 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 secs=${1:-30}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_csv fuzz_rawlog fuzz_calibration_yaml fuzz_options)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_csv fuzz_rawlog fuzz_calibration_yaml fuzz_options fuzz_log_format)
 build=${BUILD_DIR:-$here/build-fuzz}
 jobs=${JOBS:-2}
 

@@ -20,6 +20,7 @@
 #include <iostream>
 
 #include "AppMain.h"
+#include "LogInput.h"
 #include "CommandLine.h"
 #include "Options.h"
 #include "PowerCycles.h"
@@ -657,6 +658,7 @@ int main(int argc, char** argv)
 										 "bias only); without it that is an error saying why",
 										 cmd);
 		TCLAP::SwitchArg arg_quiet("q", "quiet", "No progress line on stderr while the runs are read", cmd);
+		app::LogInput log_input(cmd, "fog-calibrate");
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-calibrate", kHelp)) return *rc;
 
 		FitOptions opt;
@@ -708,7 +710,8 @@ int main(int argc, char** argv)
 			app::StreamScreening sc(screen);
 			app::Progress progress("fog-calibrate: reading " + path, arg_quiet.getValue());
 			FogRun run = readFogRun(path, arg_label.getValue(), sc.hook(),
-									[&](std::uint64_t n, std::uint64_t done, std::uint64_t total) { progress.update(n, done, total); });
+									[&](std::uint64_t n, std::uint64_t done, std::uint64_t total) { progress.update(n, done, total); },
+									log_input.options());
 			progress.finish();
 			const ThermistorScreening counts = sc.result(run);
 			if (!screen || counts.rejected_readings > 0) screening_text += "  " + path + ":\n" + app::screeningText(counts, screen);
@@ -973,6 +976,7 @@ int main(int argc, char** argv)
 			else
 				j = axisJson(fits.front(), opt.tau_s, fits.front().validated);
 			j["calibration"] = arg_out.getValue();
+			j["input_notices"] = log_input.json();
 			// every log read (-i, --warmup-run, --validate), summed and per log
 			j["gyro_off_rows"] = static_cast<unsigned long>(off_rows);
 			j["turn_on_events"] = static_cast<unsigned long>(turn_ons);

@@ -19,6 +19,7 @@
 #include <sstream>
 
 #include "AppMain.h"
+#include "LogInput.h"
 #include "FieldWarning.h"
 #include "RangeWarning.h"
 #include "CommandLine.h"
@@ -159,6 +160,7 @@ int main(int argc, char** argv)
 									   "Do not screen thermistor readings (stuck / spike / out of range) before "
 									   "compensating",
 									   cmd);
+		app::LogInput log_input(cmd, "fog-compensate");
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-compensate", kHelp)) return *rc;
 
 		const std::string out = arg_out.getValue(), ext = fileExtension(out);
@@ -167,7 +169,7 @@ int main(int argc, char** argv)
 		const CalibrationSet cals = loadCalibrationSet(arg_cal.getValue());
 
 		// Sample by sample: read, screen, compensate, write. Memory does not grow with the log.
-		FogLogReader reader(arg_in.getValue(), arg_label.getValue());
+		FogLogReader reader(arg_in.getValue(), arg_label.getValue(), ReadLimits{}, nullptr, log_input.options());
 		const FogSeries& layout = reader.header();
 		const auto withInput = [&](const std::exception& e) {
 			return std::runtime_error(arg_in.getValue() + " with " + arg_cal.getValue() + ": " + e.what());
@@ -286,6 +288,7 @@ int main(int argc, char** argv)
 		{
 			JsonValue j = JsonValue::object();
 			j["input"] = arg_in.getValue();
+			j["input_notices"] = log_input.json();
 			j["calibration"] = arg_cal.getValue();
 			j["output"] = out;
 			const auto& k = comps.front()->counters();

@@ -8,6 +8,7 @@
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/io/FogLogReader.h>
 #include <mrpt_fog/io/FogLogWriter.h>
+#include <mrpt_fog/io/LogFormat.h>
 #include <mrpt_fog/io/NumberText.h>
 #include <mrpt_fog/obs/CObservationFOG.h>
 
@@ -19,6 +20,7 @@
 #include <map>
 
 #include "AppMain.h"
+#include "LogInput.h"
 #include "CommandLine.h"
 #include "Options.h"
 #include "Progress.h"
@@ -59,7 +61,14 @@ RAWLOG
   and a CObservationRawDAQ '<label>_THERMISTORS' (AIN_double, one channel per thermistor,
   NaN = dropout).
 
+LOGGER FILES
+  A logger's own CSV (other column names, units, delimiter) is read through a format file
+  (docs/reference/format-files.md): --guess-format LOG prints a draft from the file's header,
+  to check; --format F.yaml then converts once. The values are converted to s, deg/h and degC.
+
 EXAMPLES
+  fog-convert --guess-format vendor.csv > vendor.yaml
+  fog-convert --format vendor.yaml -i vendor.csv -o run.rawlog
   fog-convert -i chamber.csv -o chamber.rawlog --json summary.json
   fog-convert -i drive.rawlog --label FOG_IDEAL -o ideal.csv
   fog-convert -i chamber.rawlog -o chamber_stock.rawlog --to-stock
@@ -84,8 +93,11 @@ int main(int argc, char** argv)
 			"fog-convert: FOG logs between lab CSV (.csv, .csv.gz) and MRPT rawlog (.rawlog), by file "
 			"extension. Format summary and examples below.",
 			' ', "0.1");
-		app::InputArg arg_in("i", "input", "Input log (.csv, .csv.gz or .rawlog)", true, "", "IN", cmd);
-		app::OutputArg arg_out("o", "output", "Output log (.csv, .csv.gz or .rawlog)", true, "", "OUT", cmd);
+		app::InputArg arg_in("i", "input", "Input log (.csv, .csv.gz or .rawlog; any logger file with --format)", false, "", "IN", cmd);
+		app::OutputArg arg_out("o", "output", "Output log (.csv, .csv.gz or .rawlog)", false, "", "OUT", cmd);
+		app::InputArg arg_guess("", "guess-format",
+			"Print a draft format file for this logger CSV (from its header: names and bracketed units such as "
+			"\"Gyro Z [deg/s]\"), to check and then use with --format; nothing else is done", false, "", "LOG", cmd);
 		TCLAP::ValueArg<std::string> arg_label("", "label",
 			"FOG sensor label to take from a rawlog holding several (e.g. FOG_IDEAL)", false, "", "L", cmd);
 		app::OutputArg arg_json("", "json", "Write a JSON summary (counts, time span, sensors, "
@@ -93,10 +105,17 @@ int main(int argc, char** argv)
 		TCLAP::SwitchArg arg_quiet("q", "quiet", "No progress line on stderr", cmd);
 		TCLAP::SwitchArg arg_stock("", "to-stock", "Write stock MRPT CObservationIMU + CObservationRawDAQ instead "
 			"of CObservationFOG (output must be .rawlog)", cmd);
+		app::LogInput log_input(cmd, "fog-convert");
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-convert", kFormatHelp)) return *rc;
 
+		if (arg_guess.isSet())
+		{
+			std::cout << guessLogFormat(arg_guess.getValue());
+			return app::kExitOk;
+		}
 		const std::string in = arg_in.getValue(), out = arg_out.getValue();
-		requireKnownExtension(in, "input");
+		if (in.empty() || out.empty()) throw std::invalid_argument("-i IN and -o OUT are required (or --guess-format LOG)");
+		if (log_input.formatPath().empty() || isRawlog(in)) requireKnownExtension(in, "input");
 		requireKnownExtension(out, "output");
 		if (arg_stock.getValue() && !isRawlog(out))
 			throw std::runtime_error("--to-stock writes a rawlog: the output '" + out + "' must end in .rawlog");
@@ -106,12 +125,15 @@ int main(int argc, char** argv)
 		std::vector<mrpt::obs::CObservation::Ptr> pending;  // other observations met while reading
 		std::map<std::string, std::size_t> fog_labels, other_classes;
 		std::size_t others_seen = 0;
-		FogLogReader reader(in, arg_label.getValue(), ReadLimits{}, [&](const mrpt::obs::CObservation::Ptr& o) {
-			others_seen++;
-			if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o)) fog_labels[f->sensorLabel]++;
-			other_classes[o->GetRuntimeClass()->className]++;
-			if (to_rawlog) pending.push_back(o);
-		});
+		FogLogReader reader(
+			in, arg_label.getValue(), ReadLimits{},
+			[&](const mrpt::obs::CObservation::Ptr& o) {
+				others_seen++;
+				if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o)) fog_labels[f->sensorLabel]++;
+				other_classes[o->GetRuntimeClass()->className]++;
+				if (to_rawlog) pending.push_back(o);
+			},
+			log_input.options());
 		const FogSeries& s = reader.header();
 		FogLogWriter writer(out, s, stock ? RawlogForm::Stock : RawlogForm::Fog);
 		std::size_t others_written = 0;
@@ -176,6 +198,7 @@ int main(int argc, char** argv)
 		{
 			JsonValue j = JsonValue::object();
 			j["input"] = in;
+			j["input_notices"] = log_input.json();
 			j["output"] = out;
 			j["output_kind"] = to_rawlog ? (stock ? "rawlog-stock" : "rawlog") : "csv";
 			j["sensor"] = s.sensor_label;

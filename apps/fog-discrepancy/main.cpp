@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "LogInput.h"
 #include "AppMain.h"
 #include "CommandLine.h"
 #include "Options.h"
@@ -84,6 +85,7 @@ int main(int argc, char** argv)
 			"growing at 16 s (the compensator's rate window is 60 s), so beyond 12 days the rows grow",
 			"rows", 1000, 100000000, 65536);
 		TCLAP::SwitchArg quiet("q", "quiet", "No progress line on stderr while the runs are read", cmd);
+		app::LogInput log_input(cmd, "fog-discrepancy");
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-discrepancy")) return *rc;
 
 		if (measured.getValue().size() > 2)
@@ -119,7 +121,8 @@ int main(int argc, char** argv)
 			app::Progress progress("fog-discrepancy: reading " + f, quiet.getValue());
 			runs.push_back(readFogLogBlockMeans(
 				f, label.getValue(), bopt, binfo, screening.hook(),
-				[&](std::uint64_t n, std::uint64_t done, std::uint64_t total) { progress.update(n, done, total); }));
+				[&](std::uint64_t n, std::uint64_t done, std::uint64_t total) { progress.update(n, done, total); },
+				log_input.options()));
 			progress.finish();
 			const ThermistorScreening sc = screening.result(FogRun(runs.back()));
 			if (sc.rejected_readings > 0) std::cout << f << ":\n" << app::screeningText(sc, true);
@@ -208,6 +211,7 @@ int main(int argc, char** argv)
 		}
 		if (json.isSet())
 		{
+			doc["input_notices"] = log_input.json();
 			writeTextFileAtomically(json.getValue(), doc.dump());
 			std::cout << "Wrote " << json.getValue() << "\n";
 		}

@@ -118,6 +118,7 @@ JsonValue driveJson(const DriveEvaluation& e, const DriftContext& ctx)
 	j["transport_rate"] = ctx.transport_rate;
 	j["rate_sampling"] = ctx.rate_sampling;
 	j["input"] = ctx.input;
+	j["input_notices"] = ctx.input_notices;
 	j["calibration"] = ctx.calibration.empty() ? JsonValue() : JsonValue(ctx.calibration);
 	j["calibration_earth_rate_dph"] = ctx.calibration_earth_rate_dph;
 	j["calibration_latitude_source"] =

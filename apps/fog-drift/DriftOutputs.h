@@ -8,6 +8,7 @@
 
 #include "DriveEvaluation.h"
 
+#include <mrpt_fog/common/JsonWriter.h>
 #include <mrpt_fog_nav/DriftReport.h>
 
 #include <map>
@@ -27,6 +28,7 @@ struct DriftContext
 	std::string rate_sampling;
 	double calibration_earth_rate_dph = 0.0;  //!< vertical Earth rate the calibration's bias held
 	std::string calibration_latitude_source;  //!< "option", "calibration", "drive" ("" without calibration)
+	JsonValue input_notices;  //!< the reading's notes and unit warnings (LogInput::json)
 };
 
 /** The text lines on the drive's gyro-off stretches ("" without any; GyroOff.h). */

@@ -54,7 +54,8 @@ void shrinkToFit(FogSeries& s)
 }  // namespace
 
 DriveData readDrive(const std::string& path, const DriveLabels& labels,
-					const std::function<void(std::uint64_t, std::uint64_t, std::uint64_t)>& progress)
+					const std::function<void(std::uint64_t, std::uint64_t, std::uint64_t)>& progress,
+					const LogReadOptions& options)
 {
 	const FogLogReader* reading = nullptr;  // for the progress line
 	// Read as readFogRawlog() reads, but the other observations are taken in as they come: the
@@ -92,7 +93,7 @@ DriveData readDrive(const std::string& path, const DriveLabels& labels,
 		}
 	};
 	{
-		FogLogReader reader(path, labels.fog, ReadLimits{}, take);
+		FogLogReader reader(path, labels.fog, ReadLimits{}, take, options);
 		reading = &reader;
 		d.fog = readAllSamples(reader);
 	}

@@ -8,6 +8,7 @@
  * (metadata latitude_deg or device.latitude_deg). Missing required parts throw
  * std::runtime_error naming the file and what is missing. */
 
+#include <mrpt_fog/io/FogLogReader.h>
 #include <mrpt_fog/obs/FogSeries.h>
 #include <mrpt_fog_nav/Trajectory.h>
 
@@ -45,7 +46,8 @@ struct DriveData
  * and the file's size (0 when unknown). */
 DriveData readDrive(const std::string& path, const DriveLabels& labels = {},
 					const std::function<void(std::uint64_t samples, std::uint64_t bytes_done, std::uint64_t bytes_total)>&
-						progress = {});
+						progress = {},
+					const LogReadOptions& options = {});
 
 /** The latitude [deg] in a series' metadata (latitude_deg, else device.latitude_deg), if any;
  * throws std::runtime_error when the value is not a latitude. */

@@ -109,9 +109,9 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 	e.input = path;
 	{
 		app::Progress progress("fog-drift: reading " + path, st.quiet);
-		e.drive = readDrive(path, {}, [&](std::uint64_t n, std::uint64_t done, std::uint64_t total) {
-			progress.update(n, done, total);
-		});
+		e.drive = readDrive(
+			path, {}, [&](std::uint64_t n, std::uint64_t done, std::uint64_t total) { progress.update(n, done, total); },
+			st.read_options);
 	}
 	const HeadingOptions hopt = headingOptionsFor(e, path, st);
 

@@ -40,6 +40,7 @@ struct DriveSettings
 {
 	KeptTrajectories keep_trajectories = KeptTrajectories::All;
 	std::string cal_path;  //!< "" = no compensated variant
+	LogReadOptions read_options;  //!< how the drive log is read (its unit notices)
 	std::optional<double> latitude_deg;  //!< override of the drive's metadata
 	std::optional<double> cal_latitude_deg;  //!< override of the calibration's latitude
 	bool cal_no_earth_rate = false;  //!< the calibration's bias holds no Earth rate

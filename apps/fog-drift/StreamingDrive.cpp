@@ -583,10 +583,13 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 		};
 		app::Progress progress("fog-drift: reading " + path + " (1/2)", st.quiet);
 		const FogLogReader* reading = nullptr;
-		FogLogReader reader(path, labels.fog, ReadLimits{}, [&](const mrpt::obs::CObservation::Ptr& o) {
-			if (reading) progress.update(reading->samplesRead(), reading->fileBytesRead(), reading->fileBytes());
-			others(o);
-		});
+		FogLogReader reader(
+			path, labels.fog, ReadLimits{},
+			[&](const mrpt::obs::CObservation::Ptr& o) {
+				if (reading) progress.update(reading->samplesRead(), reading->fileBytesRead(), reading->fileBytes());
+				others(o);
+			},
+			st.read_options);
 		reading = &reader;
 		const FogSeries& h = reader.header();
 		if (h.has_axis[0] && h.has_axis[1] && h.has_axis[2]) return std::nullopt;  // a triad: evaluateDrive()
@@ -760,11 +763,14 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 		app::Progress progress("fog-drift: dead reckoning " + path + " (2/2)", st.quiet);
 		const FogLogReader* reading = nullptr;
 		std::size_t since_pump = 0;
-		FogLogReader reader(path, labels.fog, ReadLimits{}, [&](const mrpt::obs::CObservation::Ptr& o) {
-			if (reading) progress.update(reading->samplesRead(), reading->fileBytesRead(), reading->fileBytes());
-			others(o);
-			if (++since_pump >= 64) pumpAll(), since_pump = 0;
-		});
+		FogLogReader reader(
+			path, labels.fog, ReadLimits{},
+			[&](const mrpt::obs::CObservation::Ptr& o) {
+				if (reading) progress.update(reading->samplesRead(), reading->fileBytesRead(), reading->fileBytes());
+				others(o);
+				if (++since_pump >= 64) pumpAll(), since_pump = 0;
+			},
+			st.read_options);
 		reading = &reader;
 		const bool has_power = reader.hasPower();
 		FogSample x;

@@ -7,6 +7,7 @@
  * heading of each gyro (Earth rate at the drive's latitude removed) with the odometry, and
  * compares the three dead-reckoned trajectories with the truth. */
 #include "AppMain.h"
+#include "LogInput.h"
 #include "CommandLine.h"
 #include "Options.h"
 #include "Compensation.h"
@@ -157,6 +158,7 @@ int main(int argc, char** argv)
 								   "--transport-rate and a triad FOG do (otherwise a single-axis drive is read twice "
 								   "and streamed: memory does not grow with the drive; the same figures)",
 								   cmd);
+		app::LogInput log_input(cmd, "fog-drift");
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-drift", kHelp)) return *rc;
 
 		drift::DriveSettings st;
@@ -165,6 +167,7 @@ int main(int argc, char** argv)
 		else throw std::runtime_error("--rate-sampling: '" + sampling.getValue() + "' is not instantaneous|average");
 		st.heading.transport_rate = transport.getValue();
 		st.cal_path = cal.getValue();
+		st.read_options = log_input.options();
 		if (std::isfinite(lat.getValue())) st.latitude_deg = lat.getValue();
 		if (std::isfinite(cal_lat.getValue())) st.cal_latitude_deg = cal_lat.getValue();
 		st.cal_no_earth_rate = cal_no_earth.getValue();
@@ -268,6 +271,7 @@ int main(int argc, char** argv)
 				ctx.rate_sampling = sampling.getValue();
 				ctx.calibration_earth_rate_dph = e.calibration_earth_rate_dph;
 				ctx.calibration_latitude_source = e.calibration_latitude_source;
+				ctx.input_notices = log_input.json(e.input);
 				ctxs.push_back(ctx);
 			}
 			drift::writeDriftJson(json.getValue(), evals, ctxs, over);

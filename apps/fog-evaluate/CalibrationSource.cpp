@@ -18,10 +18,9 @@ bool sameFile(const std::string& a, const std::string& b)
 }
 }  // namespace
 
-CompensationResult compensateWithCalibration(const std::string& cal_path, const std::string& log_path, const FogRun& run,
-											 const CompensationSink& sink)
+CompensationResult compensateWithCalibration(const Calibration& cal, const std::string& cal_path,
+											 const std::string& log_path, const FogRun& run, const CompensationSink& sink)
 {
-	const Calibration cal = loadCalibrationYaml(cal_path);
 	CompensationResult r;
 	r.axis = cal.axis;
 	r.extrapolation = cal.extrapolation;

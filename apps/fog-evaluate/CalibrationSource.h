@@ -19,11 +19,11 @@ struct CompensationResult
 	bool log_has_field = false;  //!< the run has a field column (fed to the magnetic term)
 };
 
-/** Loads the calibration YAML at cal_path and runs the causal compensator (model/Compensator.h)
- * over the run read from log_path, chunk by chunk, passing its outputs to `sink` (memory
- * independent of the log's length, issue 14). Throws (naming the file) when the calibration
- * cannot be loaded, and std::invalid_argument on a layout mismatch (from the compensator). */
-CompensationResult compensateWithCalibration(const std::string& cal_path, const std::string& log_path, const FogRun& run,
-											 const CompensationSink& sink);
+/** Runs the causal compensator (model/Compensator.h) of one axis' calibration (read from
+ * cal_path) over the run read from log_path, chunk by chunk, passing its outputs to `sink`
+ * (memory independent of the log's length). Throws std::invalid_argument naming cal_path on a
+ * layout mismatch (from the compensator). */
+CompensationResult compensateWithCalibration(const Calibration& cal, const std::string& cal_path,
+											 const std::string& log_path, const FogRun& run, const CompensationSink& sink);
 
 }  // namespace mrpt_fog::evaluate

@@ -40,11 +40,11 @@ CalibrationChoice chooseCalibration(const CalibrationRequest& request)
 			std::printf("  %s:\n%s", path.c_str(), app::screeningText(sc, true).c_str());
 		return s;
 	};
-	std::vector<FogSeries> runs{screened(readFogLog(request.chamber_path), request.chamber_path)};
+	std::vector<FogSeries> runs{screened(readFogLog(request.chamber_path, "", request.read_options), request.chamber_path)};
 	c.fitted_on = {request.chamber_path};
 	if (request.ratetable_path)
 	{
-		runs.push_back(screened(readFogLog(*request.ratetable_path), *request.ratetable_path));
+		runs.push_back(screened(readFogLog(*request.ratetable_path, "", request.read_options), *request.ratetable_path));
 		c.fitted_on.push_back(*request.ratetable_path);
 		if (!hasTableRates({runs.back()}))
 			throw std::runtime_error(*request.ratetable_path +

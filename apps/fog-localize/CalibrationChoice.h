@@ -13,6 +13,7 @@
  * chamber run when no rate-table run is available, saying so. A given calibration is used as
  * it is. What was used goes into the text output and the JSON (`calibration`). */
 
+#include <mrpt_fog/io/FogLogReader.h>
 #include <mrpt_fog/model/Calibration.h>
 
 #include <optional>
@@ -46,6 +47,7 @@ struct CalibrationRequest
 	std::optional<std::string> ratetable_path;  //!< rate-table run for the fit (none: bias only)
 	std::string write_path;  //!< where a fitted calibration is written
 	std::string preset = "multipoint";
+	LogReadOptions read_options;  //!< how the runs are read (format file, notices)
 };
 
 /** Loads the given calibration, or fits one (see the file comment) and writes it. Throws

@@ -204,6 +204,7 @@ void writeOutputs(const std::string& dir, const std::string& json_path, const Lo
 	// ---- JSON
 	JsonValue j = JsonValue::object();
 	j["drive"] = r.drive;
+	j["input_notices"] = r.input_notices;
 	{
 		// always present: total_s 0 on a powered drive
 		JsonValue& go = j["gyro_off"];

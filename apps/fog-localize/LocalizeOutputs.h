@@ -9,6 +9,7 @@
  * truth as text. Every file is written atomically. */
 
 #include "CalibrationChoice.h"
+#include <mrpt_fog/common/JsonWriter.h>
 #include "GyroOff.h"
 #include "Localization.h"
 #include "LocalizationErrors.h"
@@ -38,6 +39,7 @@ struct GyroResult
 struct LocalizeResults
 {
 	std::string drive;
+	JsonValue input_notices;  //!< the reading's notes and unit warnings (LogInput::json)
 	CalibrationChoice calibration;  //!< what compensated the FOG
 	double t0_s = 0, runtime_s = 0;
 	std::vector<GyroResult> gyros;  //!< raw, compensated, ideal

@@ -12,6 +12,7 @@
 #include "CommandLine.h"
 #include "Compensation.h"
 #include "DriveData.h"
+#include "LogInput.h"
 #include "GyroOff.h"
 #include "GyroOffOdometry.h"
 #include "HeadingDeadReckoning.h"
@@ -167,6 +168,7 @@ int main(int argc, char** argv)
 												  cmd);
 		TCLAP::SwitchArg arg_noscale("", "no-scale-calibration",
 									 "do not calibrate the wheel odometry's distance scale on urban stretches", cmd);
+		app::LogInput log_input(cmd, "fog-localize");
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-localize", kHelp)) return *rc;
 		const GyroOffRecovery recovery = gyroOffRecoveryFromString(arg_recovery.getValue());
 		WorldOptions wopt;
@@ -179,6 +181,7 @@ int main(int argc, char** argv)
 			arg_drive.getValue().empty() ? (defaultDatasetsDir() / "drive.rawlog").string() : arg_drive.getValue();
 		CalibrationRequest creq;
 		creq.given_path = arg_cal.getValue();
+		creq.read_options = log_input.options();
 		if (creq.given_path.empty())
 		{
 			creq.chamber_path = arg_chamber.getValue().empty() ? (defaultDatasetsDir() / "chamber_A.rawlog").string()
@@ -200,7 +203,7 @@ int main(int argc, char** argv)
 		std::printf("fog-localize: calibration %s\n", describeCalibration(calib).c_str());
 
 		// Drive, gyro variants (as fog-drift), truth.
-		const drift::DriveData drive = drift::readDrive(drive_path);
+		const drift::DriveData drive = drift::readDrive(drive_path, {}, {}, log_input.options());
 		if (!drive.fog_ideal) throw std::runtime_error(drive_path + ": no FOG_IDEAL stream (the ideal gyro is needed)");
 		if (!drive.latitude_deg) throw std::runtime_error(drive_path + ": no latitude_deg in the FOG metadata");
 		drift::HeadingOptions hopt;
@@ -303,6 +306,7 @@ int main(int argc, char** argv)
 
 		LocalizeResults results;
 		results.drive = drive_path;
+		results.input_notices = log_input.json();
 		results.calibration = calib;
 		results.t0_s = t0;
 		results.gyro_off = fog_power.stretches();

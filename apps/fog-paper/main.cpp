@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "AppMain.h"
+#include "LogInput.h"
 #include "CommandLine.h"
 #include "Options.h"
 
@@ -161,6 +162,7 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<std::string> selection(
 			"", "selection", "term selection: none (plain least squares on all terms, the paper's way; default) or auto",
 			false, "none", "none|auto", cmd);
+		app::LogInput log_input(cmd, "fog-paper");
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-paper")) return *rc;
 		const TermSelection term_selection = app::parseChoice(selection, termSelectionFromString);
 		if (plots.isSet() && !std::filesystem::is_directory(plots.getValue()))
@@ -173,14 +175,14 @@ int main(int argc, char** argv)
 		const auto dev = sim::FogDevice::defaultDevice();
 		FogSeries A, B;
 		if (run_a.isSet())
-			A = readFogLog(run_a.getValue(), "FOG");
+			A = readFogLog(run_a.getValue(), "FOG", log_input.options());
 		else
 		{
 			ss.profile_source = "seed";
 			A = sim::simulateChamber(sim::ChamberProfile::preset("seed"), dev, ss);
 		}
 		if (run_b.isSet())
-			B = readFogLog(run_b.getValue(), "FOG");
+			B = readFogLog(run_b.getValue(), "FOG", log_input.options());
 		else
 		{
 			ss.profile_source = "B";

@@ -61,3 +61,38 @@ if(TARGET fog-sim AND TARGET fog-calibrate AND TARGET fog-drift)
     $<TARGET_FILE:fog-sim> $<TARGET_FILE:fog-calibrate> $<TARGET_FILE:fog-drift> ${FOG_SOURCE_DIR} ${io_work}/drift_streaming)
   set_tests_properties(io_drift_streaming_equals_in_memory PROPERTIES LABELS "io;integration;nav" TIMEOUT 300)
 endif()
+
+# Logger CSVs read through a format file (docs/reference/format-files.md): the same calibration
+# and held-out figures as the native CSV of the same samples, to 1e-6 relative (the vendor files
+# written by scripts/vendor_layout.py, independent of the C++ readers). Default suite: the first
+# 2400 rows of every 10th (1 Hz, 40 min) of chamber A (fit) and B (held out); long: both runs whole.
+find_program(FOG_PYTHON3_IO python3 PATHS /usr/bin NO_DEFAULT_PATH)
+if(FOG_PYTHON3_IO AND TARGET fog-calibrate AND TARGET fog-evaluate)
+  add_test(NAME io.format_equivalence COMMAND sh ${io_scripts}/format_equivalence.sh
+    $<TARGET_FILE:fog-calibrate> $<TARGET_FILE:fog-evaluate> ${FOG_SOURCE_DIR} ${io_work}/format_equivalence 10 2400)
+  set_tests_properties(io.format_equivalence PROPERTIES LABELS "io;integration"
+    PASS_REGULAR_EXPRESSION "format_equivalence: same calibration and figures")
+  add_test(NAME io.format_equivalence_full COMMAND sh ${io_scripts}/format_equivalence.sh
+    $<TARGET_FILE:fog-calibrate> $<TARGET_FILE:fog-evaluate> ${FOG_SOURCE_DIR} ${io_work}/format_equivalence_full 1 0)
+  set_tests_properties(io.format_equivalence_full PROPERTIES LABELS "io;integration;long"
+    PASS_REGULAR_EXPRESSION "format_equivalence: same calibration and figures")
+endif()
+
+# The quickstart of docs/guide/calibrate-your-gyro.md on examples/your_gyro/, as written.
+if(TARGET fog-convert AND TARGET fog-calibrate AND TARGET fog-evaluate AND TARGET fog-compensate)
+  add_test(NAME guide.calibrate_your_gyro COMMAND sh ${io_scripts}/guide_quickstart.sh ${FOG_SOURCE_DIR}
+    $<TARGET_FILE_DIR:fog-convert> ${io_work}/guide_quickstart)
+  set_tests_properties(guide.calibrate_your_gyro PROPERTIES LABELS "io;integration"
+    PASS_REGULAR_EXPRESSION "guide_quickstart: the quickstart runs")
+endif()
+if(TARGET fog-convert AND TARGET fog-calibrate AND TARGET fog-evaluate AND TARGET fog-compensate)
+  add_test(NAME io.format_errors COMMAND sh ${io_scripts}/format_errors.sh $<TARGET_FILE_DIR:fog-convert>
+    ${FOG_SOURCE_DIR} ${io_work}/format_errors)
+  set_tests_properties(io.format_errors PROPERTIES LABELS "io;integration"
+    PASS_REGULAR_EXPRESSION "format_errors: every bad format stopped with its key named and no output")
+endif()
+if(FOG_PYTHON3_IO AND TARGET fog-calibrate AND TARGET fog-evaluate)
+  add_test(NAME io.unit_slip_warned COMMAND sh ${io_scripts}/unit_slip.sh $<TARGET_FILE_DIR:fog-calibrate>
+    ${FOG_SOURCE_DIR} ${io_work}/unit_slip)
+  set_tests_properties(io.unit_slip_warned PROPERTIES LABELS "io;integration" PASS_REGULAR_EXPRESSION "unit_slip: named")
+endif()

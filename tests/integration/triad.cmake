@@ -38,3 +38,9 @@ add_test(NAME triad.drift_refuses_in_bias
   COMMAND sh -c "sed 's/in_table_rate/in_bias/' '${_t3}/cal3.yaml' > '${_t3}/cal3_inbias.yaml'; out=$(\"$0\" -i '${_t3}/drive3.rawlog' --cal '${_t3}/cal3_inbias.yaml' --json '${_t3}/bad.json' 2>&1); rc=$?; echo \"$out\"; [ $rc -ne 0 ] && echo \"$out\" | grep -q 'unknown for the horizontal axes' && [ ! -e '${_t3}/bad.json' ]"
           $<TARGET_FILE:fog-drift>)
 set_tests_properties(triad.drift_refuses_in_bias PROPERTIES LABELS "integration;nav;triad" DEPENDS triad.drift_3d FIXTURES_REQUIRED triad_cal)
+# every axis through every program: per-axis evaluation, fog-compensate's CSV read back
+add_test(NAME triad.evaluate_every_axis COMMAND sh ${FOG_SOURCE_DIR}/tests/io/integration/triad_axes.sh
+  $<TARGET_FILE:fog-evaluate> $<TARGET_FILE:fog-compensate> $<TARGET_FILE:fog-convert>
+  ${_t3}/chamber3.rawlog ${_t3}/cal3.yaml ${_t3}/axes)
+set_tests_properties(triad.evaluate_every_axis PROPERTIES LABELS "integration;io;triad" FIXTURES_REQUIRED triad_cal
+  PASS_REGULAR_EXPRESSION "triad_axes: every axis evaluated and read back")

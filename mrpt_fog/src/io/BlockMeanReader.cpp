@@ -293,12 +293,11 @@ FogSeries BlockMeanAccumulator::finish(BlockMeanInfo& info)
 FogSeries readFogLogBlockMeans(const std::string& path, const std::string& fog_label, const BlockMeanOptions& opt,
 							   BlockMeanInfo& info,
 							   const std::function<void(double, double*, std::size_t)>& each,
-							   const std::function<void(std::uint64_t, std::uint64_t, std::uint64_t)>& progress)
+							   const std::function<void(std::uint64_t, std::uint64_t, std::uint64_t)>& progress,
+							   const LogReadOptions& options)
 {
-	FogLogReader reader(path, fog_label);
+	FogLogReader reader(path, fog_label, ReadLimits{}, nullptr, options);
 	const FogSeries& h = reader.header();
-	if (fileExtension(path) != ".rawlog" && !fog_label.empty() && h.sensor_label != fog_label)
-		throw FogIoError(path + ": the CSV holds sensor '" + h.sensor_label + "', not '" + fog_label + "'");
 	BlockMeanAccumulator acc(h, opt);
 	FogSample x;
 	try

@@ -6,10 +6,12 @@
 #include <mrpt_fog/io/GzFile.h>
 #include <mrpt_fog/io/FogLogWriter.h>
 #include <mrpt_fog/io/GzStream.h>
+#include <mrpt_fog/io/LogFormat.h>
 #include <mrpt_fog/io/NumberText.h>
 
 #include "FogLogReaderImpl.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string_view>
@@ -40,18 +42,98 @@ std::string_view trimView(std::string_view s)
 	return s.substr(b, e - b);
 }
 
-std::vector<std::string> splitCells(const std::string& line)
+/** Cells of a line split at `delim`; a cell in double quotes may hold the delimiter, and ""
+ * inside quotes is one quote. Blanks around a cell are trimmed, the quotes removed. Returns
+ * false on an unterminated quote. */
+bool splitQuotedCells(std::string_view line, char delim, std::vector<std::string>& cells)
 {
-	std::vector<std::string> cells;
-	std::string::size_type start = 0;
-	for (;;)
+	cells.clear();
+	std::string cell;
+	bool quoted = false, was_quoted = false;
+	for (std::size_t i = 0; i <= line.size(); i++)
 	{
-		const auto comma = line.find(',', start);
-		cells.push_back(trim(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
-		if (comma == std::string::npos) break;
-		start = comma + 1;
+		const bool end = i == line.size();
+		const char c = end ? delim : line[i];
+		if (quoted)
+		{
+			if (end) return false;
+			if (c == '"')
+			{
+				if (i + 1 < line.size() && line[i + 1] == '"')
+				{
+					cell += '"';
+					i++;
+				}
+				else
+					quoted = false;
+			}
+			else
+				cell += c;
+			continue;
+		}
+		if (c == delim)
+		{
+			cells.push_back(was_quoted ? cell : trim(cell));
+			cell.clear();
+			was_quoted = false;
+			continue;
+		}
+		if (c == '"' && trimView(cell).empty())
+		{
+			quoted = was_quoted = true;
+			cell.clear();
+			continue;
+		}
+		if (was_quoted && c != ' ' && c != '\t')
+		{
+			cell += c;  // text after the closing quote: kept, so that the cell fails to parse
+			continue;
+		}
+		if (!was_quoted) cell += c;
 	}
-	return cells;
+	return true;
+}
+
+/** The delimiter of a header line: the most frequent of ',', ';', tab and '|' outside quotes
+ * (',' when none occurs). */
+char detectDelimiter(std::string_view line)
+{
+	const char candidates[] = {',', ';', '\t', '|'};
+	std::size_t best_n = 0;
+	char best = ',';
+	for (char d : candidates)
+	{
+		std::size_t n = 0;
+		bool quoted = false;
+		for (char c : line)
+		{
+			if (c == '"') quoted = !quoted;
+			else if (!quoted && c == d) n++;
+		}
+		if (n > best_n)
+		{
+			best_n = n;
+			best = d;
+		}
+	}
+	return best;
+}
+
+/** compensated_rate_<a>_dph, a column of fog-compensate's CSV. */
+bool isCompensatedRate(const std::string& n)
+{
+	return n.size() == 22 && n.rfind("compensated_rate_", 0) == 0 && n[17] >= 'x' && n[17] <= 'z' &&
+		   n.compare(18, 4, "_dph") == 0;
+}
+
+/** raw_rate_<a>_dph, bias_<a>_dph, flags, flags_<a>: fog-compensate's other columns. */
+bool isCompensationDetail(const std::string& n)
+{
+	const auto axisCol = [&](const char* prefix, std::size_t p) {
+		return n.size() == p + 5 && n.rfind(prefix, 0) == 0 && n[p] >= 'x' && n[p] <= 'z' && n.compare(p + 1, 4, "_dph") == 0;
+	};
+	return axisCol("raw_rate_", 9) || axisCol("bias_", 5) || n == "flags" ||
+		   (n.size() == 7 && n.rfind("flags_", 0) == 0 && n[6] >= 'x' && n[6] <= 'z');
 }
 
 /** A cell for an error message: cut to 40 bytes, binary bytes escaped. */
@@ -67,39 +149,59 @@ struct Column
 		Temp,
 		TableRate,
 		Field,
-		Power
+		Power,
+		Ignored  //!< a column the format file does not map
 	} kind;
 	int index = 0;  //!< axis (Rate) or thermistor index (Temp)
 	std::string name;
+	double scale = 1;  //!< value in the native unit = cell x scale / divisor + offset
+	double divisor = 1;
+	double offset = 0;
+	double toNative(double v) const { return v * scale / divisor + offset; }
 };
 
 /** Streaming CSV reader: metadata and header at construction, then one row per next(). */
 class CsvReaderImpl : public FogLogReader::Impl
 {
    public:
-	CsvReaderImpl(const std::string& path, const ReadLimits& limits) : path_(path), limits_(limits), in_(path)
+	CsvReaderImpl(const std::string& path, const ReadLimits& limits, const LogFormat* format)
+		: path_(path), limits_(limits), format_(format), in_(path)
 	{
 		std::string l;
 		bool any_content = false, first = true;
+		std::size_t skipped = 0;
 		for (;;)
 		{
 			if (!readLine(l))
 			{
 				if (!any_content) throw FogIoError(path_ + ": empty file (no metadata, header or data)");
+				if (format_)
+					throw FogIoError(path_ + ": no header line after the " + std::to_string(format_->skip_lines) +
+									 " lines skipped (format " + format_->source + ", skip_lines)");
 				throw FogIoError(path_ +
 								 ": no header row after the '#' metadata lines (expected e.g. 'time_s,rate_z_dph,temp_Ti1_C')");
 			}
 			if (first && l.rfind("\xEF\xBB\xBF", 0) == 0) l.erase(0, 3);  // UTF-8 BOM
 			first = false;
+			if (format_ && skipped < format_->skip_lines)
+			{
+				skipped++;
+				any_content = true;
+				continue;
+			}
 			const std::string t = trim(l);
 			if (t.empty()) continue;
 			any_content = true;
+			if (format_) break;
 			if (t[0] != '#') break;
 			parseMetadataLine(t, in_.lineNumber());
 		}
-		parseHeader(l, in_.lineNumber());
+		if (format_) parseFormattedHeader(l, in_.lineNumber());
+		else parseHeader(l, in_.lineNumber());
 		header = layoutHeaderOf(s_, has_table_, has_field_, has_power_);
 	}
+
+	std::vector<std::string> notes() const override { return notes_; }
 
 	bool next(FogSample& x) override
 	{
@@ -220,7 +322,8 @@ class CsvReaderImpl : public FogLogReader::Impl
 	void parseHeader(const std::string& l, std::size_t line)
 	{
 		header_line_ = line;
-		const auto cells = splitCells(l);
+		std::vector<std::string> cells;
+		if (!splitQuotedCells(l, ',', cells)) fail(line, "header row: a quote is not closed");
 		if (!cells.empty() && io::parseNumber(cells[0]))
 			fail(line, "header row missing: the first non-'#' line starts with a number ('" + shown(cells[0]) +
 						   "'); expected column names such as time_s,rate_z_dph,temp_Ti1_C");
@@ -234,12 +337,32 @@ class CsvReaderImpl : public FogLogReader::Impl
 				fail(line, "column " + std::to_string(c + 1) + " '" + shown(n) + "' repeats column " + std::to_string(seen[n] + 1));
 			seen[n] = c;
 			Column col{Column::Kind::Time, 0, n};
-			if (n == "time_s") col.kind = Column::Kind::Time;
+			if (n == "time_s")
+			{
+				col.kind = Column::Kind::Time;
+				time_col_ = c;
+			}
 			else if (n == "rate_x_dph" || n == "rate_y_dph" || n == "rate_z_dph")
 			{
 				col.kind = Column::Kind::Rate;
 				col.index = n[5] - 'x';
 				s_.has_axis[col.index] = true;
+			}
+			else if (isCompensatedRate(n))
+			{
+				// fog-compensate's CSV: its compensated rate is the log's rate
+				col.kind = Column::Kind::Rate;
+				col.index = n[17] - 'x';
+				if (s_.has_axis[col.index])
+					fail(line, "column " + std::to_string(c + 1) + " '" + shown(n) + "': a second rate column for axis " +
+								   std::string(1, n[17]));
+				s_.has_axis[col.index] = true;
+				compensated_ = true;
+			}
+			else if (isCompensationDetail(n))
+			{
+				col.kind = Column::Kind::Ignored;
+				compensation_details_ += (compensation_details_.empty() ? "" : ", ") + n;
 			}
 			else if (n == "table_rate_dph") col.kind = Column::Kind::TableRate;
 			else if (n == "field_uT") col.kind = Column::Kind::Field;
@@ -274,6 +397,114 @@ class CsvReaderImpl : public FogLogReader::Impl
 		if (seen.count("table_rate_dph")) has_table_ = true;
 		if (seen.count("field_uT")) has_field_ = true;
 		if (seen.count("power")) has_power_ = true;
+		if (compensated_)
+		{
+			// fog-compensate leaves the compensated cells empty where the gyro was off: such a row
+			// is a power-off row (power 0) of the log read back.
+			power_from_empty_rate_ = !has_power_;
+			has_power_ = true;
+			notes_.push_back("fog-compensate's output: its compensated rates are read as the rates" +
+							 (compensation_details_.empty() ? std::string() : " (" + compensation_details_ + " ignored)"));
+		}
+		cells_.resize(columns_.size());
+	}
+
+	/** The header of a logger CSV read through a format file: every mapped column must be in
+	 * it once; other columns are ignored (one note names them). */
+	void parseFormattedHeader(const std::string& l, std::size_t line)
+	{
+		const LogFormat& f = *format_;
+		header_line_ = line;
+		delim_ = f.delimiter ? *f.delimiter : detectDelimiter(l);
+		std::vector<std::string> cells;
+		if (!splitQuotedCells(l, delim_, cells)) fail(line, "header line: a quote is not closed");
+		std::string listed;
+		for (const auto& c : cells) listed += (listed.empty() ? "" : ", ") + ("\"" + shown(c) + "\"");
+		const auto failFormat = [&](const std::string& key, const std::string& what) {
+			throw FogIoError(f.source + ": " + key + ": " + what + " in " + path_ + ":" + std::to_string(line) +
+							 " (delimiter '" + (delim_ == '\t' ? std::string("tab") : std::string(1, delim_)) +
+							 "'; its columns: " + listed + ")");
+		};
+		std::map<std::string, std::size_t> where;
+		for (std::size_t c = 0; c < cells.size(); c++)
+		{
+			if (auto [it, fresh] = where.emplace(cells[c], c); !fresh)
+				for (const FormatColumn* m : f.columns())
+					if (m->column == cells[c])
+						failFormat(m->key + ".column", "column '" + shown(cells[c]) + "' appears twice (columns " +
+															 std::to_string(it->second + 1) + " and " + std::to_string(c + 1) + ")");
+		}
+		const auto find = [&](const FormatColumn& m) {
+			auto it = where.find(m.column);
+			if (it == where.end()) failFormat(m.key + ".column", "no column '" + shown(m.column) + "'");
+			return it->second;
+		};
+		columns_.assign(cells.size(), Column{Column::Kind::Ignored, 0, ""});
+		for (std::size_t c = 0; c < cells.size(); c++) columns_[c].name = cells[c];
+		const auto place = [&](const FormatColumn& m, Column::Kind kind, int index) -> Column& {
+			Column& col = columns_[find(m)];
+			col.kind = kind;
+			col.index = index;
+			return col;
+		};
+		place(f.time, Column::Kind::Time, 0).divisor = std::round(1 / secondsPer(f.time_unit));
+		time_col_ = find(f.time);
+		s_.has_axis = {false, false, false};
+		for (int a = 0; a < 3; a++)
+			if (f.rates[a])
+			{
+				place(*f.rates[a], Column::Kind::Rate, a).scale = degPerHourPer(f.rates[a]->unit);
+				s_.has_axis[a] = true;
+			}
+		// Thermistors in the order of their columns, as the native CSV orders them (the fit's
+		// term order follows it).
+		std::vector<const ThermistorColumn*> th;
+		for (const auto& t : f.thermistors) th.push_back(&t);
+		std::sort(th.begin(), th.end(), [&](auto* a, auto* b) { return find(*a) < find(*b); });
+		if (th.size() > limits_.max_thermistors)
+			failFormat("thermistors", "more than the limit of " + std::to_string(limits_.max_thermistors) + " thermistors");
+		for (const ThermistorColumn* t : th)
+		{
+			Column& col = place(*t, Column::Kind::Temp, static_cast<int>(s_.thermistors.size()));
+			if (t->unit == TemperatureUnit::K) col.offset = -273.15;
+			ThermistorInfo info;
+			info.name = t->name;
+			info.side = coilSideFromString(t->side);
+			info.angle_deg = t->angle_deg;
+			s_.thermistors.push_back(info);
+		}
+		if (f.table_rate)
+		{
+			place(*f.table_rate, Column::Kind::TableRate, 0).scale = degPerHourPer(f.table_rate->unit);
+			has_table_ = true;
+		}
+		if (f.field)
+		{
+			place(*f.field, Column::Kind::Field, 0);
+			has_field_ = true;
+		}
+		if (f.power)
+		{
+			place(*f.power, Column::Kind::Power, 0);
+			has_power_ = true;
+		}
+		std::string ignored;
+		std::size_t n_ignored = 0;
+		for (const auto& col : columns_)
+			if (col.kind == Column::Kind::Ignored)
+			{
+				ignored += (ignored.empty() ? "" : ", ") + ("\"" + shown(col.name) + "\"");
+				n_ignored++;
+			}
+		if (n_ignored)
+			notes_.push_back(std::to_string(n_ignored) + " column" + (n_ignored > 1 ? "s" : "") +
+							 " not in the format " + f.source + ", ignored: " + ignored);
+		for (const auto& [key, value] : f.metadata)
+		{
+			if (key == "sensor") s_.sensor_label = value;
+			else if (key == "epoch_s") s_.epoch_s = *io::parseNumber(value);
+			else s_.metadata.emplace_back(key, value);
+		}
 		cells_.resize(columns_.size());
 	}
 
@@ -286,21 +517,32 @@ class CsvReaderImpl : public FogLogReader::Impl
 
 	void parseRow(const std::string& l, std::size_t line, FogSample& x)
 	{
-		// Split in place (no allocation per cell).
+		// Split in place (no allocation per cell); a line with quotes is split cell by cell.
+		const char delim = delim_;
 		std::size_t ncells = 1;
-		for (const char* p = l.data(); (p = static_cast<const char*>(std::memchr(p, ',', l.data() + l.size() - p)));)
+		if (l.find('"') != std::string::npos)
 		{
-			ncells++;
-			p++;
+			if (!splitQuotedCells(l, delim, quoted_cells_)) fail(line, "a quote is not closed");
+			ncells = quoted_cells_.size();
+			if (ncells != columns_.size())
+				fail(line, std::to_string(ncells) + " cells, but the header (line " + std::to_string(header_line_) +
+							   ") has " + std::to_string(columns_.size()) + " columns");
+			for (std::size_t c = 0; c < ncells; c++) cells_[c] = quoted_cells_[c];
 		}
-		if (ncells != columns_.size())
-			fail(line, std::to_string(ncells) + " cells, but the header (line " + std::to_string(header_line_) +
-						   ") has " + std::to_string(columns_.size()) + " columns");
+		else
 		{
+			for (const char* p = l.data(); (p = static_cast<const char*>(std::memchr(p, delim, l.data() + l.size() - p)));)
+			{
+				ncells++;
+				p++;
+			}
+			if (ncells != columns_.size())
+				fail(line, std::to_string(ncells) + " cells, but the header (line " + std::to_string(header_line_) +
+							   ") has " + std::to_string(columns_.size()) + " columns");
 			std::size_t start = 0;
 			for (std::size_t c = 0; c < ncells; c++)
 			{
-				std::size_t comma = l.find(',', start);
+				std::size_t comma = l.find(delim, start);
 				if (comma == std::string::npos) comma = l.size();
 				cells_[c] = trimView(std::string_view(l).substr(start, comma - start));
 				start = comma + 1;
@@ -326,7 +568,7 @@ class CsvReaderImpl : public FogLogReader::Impl
 						break;
 					}
 					if (cell.empty()) failCell(line, c, "empty cell (only temperatures may be missing)");
-					const double v = number(cell, line, c);
+					const double v = col.toNative(number(cell, line, c));
 					if (!std::isfinite(v)) failCell(line, c, "value '" + shown(cell) + "' is not finite");
 					if (col.kind == Column::Kind::Rate && std::abs(v) > limits_.max_abs_rate_dph)
 						failCell(line, c, "rate " + shown(cell) + " deg/h is beyond the limit of " +
@@ -341,7 +583,7 @@ class CsvReaderImpl : public FogLogReader::Impl
 					double v = kNaN;  // empty = missing reading (dropout)
 					if (!cell.empty())
 					{
-						v = number(cell, line, c);
+						v = col.toNative(number(cell, line, c));
 						if (std::isinf(v)) failCell(line, c, "value '" + shown(cell) + "' is infinite");
 						if (col.kind == Column::Kind::TableRate && std::abs(v) > limits_.max_abs_rate_dph)
 							failCell(line, c, "table rate " + shown(cell) + " deg/h is beyond the limit of " +
@@ -363,8 +605,10 @@ class CsvReaderImpl : public FogLogReader::Impl
 					x.power = v;
 					break;
 				}
+				case Column::Kind::Ignored: break;
 			}
 		}
+		if (power_from_empty_rate_) x.power = empty_rate_col >= 0 ? 0.0 : 1.0;
 		if (empty_rate_col >= 0 && x.power != 0.0)
 			failCell(line, static_cast<std::size_t>(empty_rate_col),
 					 has_power_ ? "empty cell with the gyro powered (a rate may be empty only where power is 0)"
@@ -373,7 +617,7 @@ class CsvReaderImpl : public FogLogReader::Impl
 		if (samples > 0 && !(t > last_t_))
 		{
 			const std::string prev = io::formatNumber(last_t_);
-			fail(line, "column 1 (time_s): time " + io::formatNumber(t) + " s " +
+			fail(line, "column " + std::to_string(time_col_ + 1) + " (" + columns_[time_col_].name + "): time " + io::formatNumber(t) + " s " +
 						   (t == last_t_ ? "duplicates the previous sample's time" : "goes backwards from the previous sample's") +
 						   " (" + prev + " s); time_s must be strictly increasing");
 		}
@@ -383,22 +627,31 @@ class CsvReaderImpl : public FogLogReader::Impl
 
 	std::string path_;
 	ReadLimits limits_;
+	const LogFormat* format_ = nullptr;  // nullptr: the native CSV format
 	io::GzReader in_;
+	char delim_ = ',';
+	std::vector<std::string> quoted_cells_;
+	std::vector<std::string> notes_;
+	std::size_t time_col_ = 0;
 	std::string line_;
 	std::map<std::string, std::pair<ThermistorInfo, std::size_t>> declared_;
 	std::vector<Column> columns_;
 	std::vector<std::string_view> cells_;
 	std::size_t header_line_ = 0;
 	bool has_table_ = false, has_field_ = false, has_power_ = false;
+	bool compensated_ = false;  // fog-compensate's CSV
+	bool power_from_empty_rate_ = false;  // its power column: 0 where the compensated rate is empty
+	std::string compensation_details_;  // its raw, bias and flags columns (ignored)
 	double last_t_ = 0;
 	FogSeries s_;  // layout being built from the header
 };
 
 }  // namespace
 
-std::unique_ptr<FogLogReader::Impl> makeCsvReaderImpl(const std::string& path, const ReadLimits& limits)
+std::unique_ptr<FogLogReader::Impl> makeCsvReaderImpl(const std::string& path, const ReadLimits& limits,
+														const LogFormat* format)
 {
-	return std::make_unique<CsvReaderImpl>(path, limits);
+	return std::make_unique<CsvReaderImpl>(path, limits, format);
 }
 
 FogSeries readFogCsv(const std::string& path)

@@ -2,6 +2,7 @@
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/io/FogLogReader.h>
+#include <mrpt_fog/io/UnitPlausibility.h>
 #include <mrpt_fog/obs/FogSeriesConversion.h>
 
 namespace mrpt_fog
@@ -23,13 +24,18 @@ LogKind kindOf(const std::string& path)
 }
 }  // namespace
 
-FogSeries readFogLog(const std::string& path, const std::string& fog_label)
+FogSeries readFogLog(const std::string& path, const std::string& fog_label, const LogReadOptions& options)
 {
-	if (kindOf(path) == LogKind::Rawlog) return readFogRawlog(path, fog_label).fog;
-	FogSeries s = readFogCsv(path);
-	if (!fog_label.empty() && s.sensor_label != fog_label)
-		throw FogIoError(path + ": the CSV holds sensor '" + s.sensor_label + "', not '" + fog_label + "'");
-	return s;
+	if (fileExtension(path) == ".rawlog")
+	{
+		FogSeries s = readFogRawlog(path, fog_label).fog;
+		if (options.notice)
+			for (const auto& f : judgeUnits(s)) options.notice({LogNotice::Kind::UnitWarning, path, f.message()});
+		return s;
+	}
+	if (!options.format) kindOf(path);  // the extension must be known
+	FogLogReader reader(path, fog_label, ReadLimits{}, nullptr, options);
+	return readAllSamples(reader);
 }
 
 void writeFogLog(const std::string& path, const FogSeries& series)
@@ -58,12 +64,11 @@ namespace mrpt_fog
 {
 FogRun readFogRun(const std::string& path, const std::string& fog_label,
 				  const std::function<void(double, double*, std::size_t)>& each,
-				  const std::function<void(std::uint64_t, std::uint64_t, std::uint64_t)>& progress)
+				  const std::function<void(std::uint64_t, std::uint64_t, std::uint64_t)>& progress,
+				  const LogReadOptions& options)
 {
-	FogLogReader reader(path, fog_label);
+	FogLogReader reader(path, fog_label, ReadLimits{}, nullptr, options);
 	const FogSeries& h = reader.header();
-	if (kindOf(path) != LogKind::Rawlog && !fog_label.empty() && h.sensor_label != fog_label)
-		throw FogIoError(path + ": the CSV holds sensor '" + h.sensor_label + "', not '" + fog_label + "'");
 	FogRun run(h, reader.hasTableRate(), reader.hasField(), reader.hasPower());
 	FogSeries chunk = emptySeriesLike(h);
 	std::size_t k0 = 0;

@@ -1,6 +1,7 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/io/FogLogIO.h>
+#include <mrpt_fog/io/UnitPlausibility.h>
 
 #include <algorithm>
 #include <array>
@@ -34,28 +35,56 @@ std::string quoteForError(const char* data, std::size_t size)
 }
 }  // namespace io::detail
 
+struct FogLogReader::Judge
+{
+	explicit Judge(DeclaredUnits d) : plausibility(std::move(d)) {}
+	UnitPlausibility plausibility;
+};
+
 FogLogReader::FogLogReader(const std::string& path, const std::string& fog_label, const ReadLimits& limits,
-						   ObservationSink others)
+						   ObservationSink others, const LogReadOptions& options)
+	: path_(path), options_(options)
 {
 	const std::string ext = fileExtension(path);
 	if (ext == ".rawlog") impl_ = makeRawlogReaderImpl(path, fog_label, limits, std::move(others));
-	else if (ext == ".csv" || ext == ".csv.gz")
+	else if (ext == ".csv" || ext == ".csv.gz" || options.format)
 	{
-		impl_ = makeCsvReaderImpl(path, limits);
+		impl_ = makeCsvReaderImpl(path, limits, options.format.get());
 		if (!fog_label.empty() && impl_->header.sensor_label != fog_label)
 			throw FogIoError(path + ": the CSV holds sensor '" + impl_->header.sensor_label + "', not '" + fog_label + "'");
 	}
 	else
-		throw FogIoError(path + ": unknown file type '" + ext + "' (expected .rawlog, .csv or .csv.gz)");
+		throw FogIoError(path + ": unknown file type '" + ext +
+						 "' (expected .rawlog, .csv or .csv.gz, or a logger file read with a format file, --format)");
+	const bool formatted = ext != ".rawlog" && options.format;
+	judge_ = std::make_unique<Judge>(formatted ? DeclaredUnits::of(*options.format) : DeclaredUnits::native());
+	if (options_.notice)
+		for (const auto& n : impl_->notes()) options_.notice({LogNotice::Kind::Note, path_, n});
 }
 
 FogLogReader::~FogLogReader() = default;
+
+bool FogLogReader::next(FogSample& s)
+{
+	if (impl_->next(s))
+	{
+		judge_->plausibility.add(s, s.power != 0.0);
+		return true;
+	}
+	if (!ended_ && options_.notice)
+		for (const auto& f : judge_->plausibility.findings())
+			options_.notice({LogNotice::Kind::UnitWarning, path_, f.message()});
+	ended_ = true;
+	return false;
+}
+
+std::vector<std::string> FogLogReader::notes() const { return impl_->notes(); }
+std::vector<UnitFinding> FogLogReader::unitFindings() const { return judge_->plausibility.findings(); }
 
 const FogSeries& FogLogReader::header() const { return impl_->header; }
 bool FogLogReader::hasTableRate() const { return !impl_->header.table_rate_dph.empty(); }
 bool FogLogReader::hasField() const { return !impl_->header.field_uT.empty(); }
 bool FogLogReader::hasPower() const { return !impl_->header.power.empty(); }
-bool FogLogReader::next(FogSample& s) { return impl_->next(s); }
 std::size_t FogLogReader::samplesRead() const { return impl_->samples; }
 std::size_t FogLogReader::objectsRead() const { return impl_->objectsRead(); }
 bool FogLogReader::isRawlog() const { return impl_->isRawlog(); }

@@ -3,6 +3,7 @@
 /* Internal to the io room: the two streaming readers behind FogLogReader. */
 
 #include <mrpt_fog/io/FogLogReader.h>
+#include <mrpt_fog/io/LogFormat.h>
 
 #include <memory>
 
@@ -17,11 +18,13 @@ class FogLogReader::Impl
 	virtual bool isRawlog() const = 0;
 	virtual std::uint64_t fileBytesRead() const = 0;
 	virtual std::uint64_t fileBytes() const = 0;
+	virtual std::vector<std::string> notes() const { return {}; }
 	FogSeries header;  // layout; optional columns present hold one NaN
 	std::size_t samples = 0;
 };
 
-std::unique_ptr<FogLogReader::Impl> makeCsvReaderImpl(const std::string& path, const ReadLimits& limits);
+std::unique_ptr<FogLogReader::Impl> makeCsvReaderImpl(const std::string& path, const ReadLimits& limits,
+														const LogFormat* format = nullptr);
 std::unique_ptr<FogLogReader::Impl> makeRawlogReaderImpl(const std::string& path, const std::string& fog_label,
 														 const ReadLimits& limits, FogLogReader::ObservationSink others);
 

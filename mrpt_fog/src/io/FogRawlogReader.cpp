@@ -11,10 +11,12 @@
 #include <mrpt_fog/io/FogRawlogMetadata.h>
 #include <mrpt_fog/io/GzStream.h>
 #include <mrpt_fog/io/NumberText.h>
+#include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog/obs/FogSeriesConversion.h>
 #include <mrpt_fog/common/ErrorText.h>
 #include <mrpt_fog/obs/registerAllClasses.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <deque>
@@ -350,8 +352,10 @@ class RawlogReaderImpl : public FogLogReader::Impl
 
 	void take(const mrpt::obs::CObservation::Ptr& o, std::size_t index)
 	{
+		if (takeStock(o, index)) return;
 		if (auto f = std::dynamic_pointer_cast<CObservationFOG>(o))
 		{
+			fog_class_ = true;
 			if (!pose_ || !(f->sensorPose == pose_->pose))  // the pose the fast path expects
 				pose_ = detail::SerializedPose{f->sensorPose, detail::serializedPoseBytes(f->sensorPose)};
 			takeFog(f, index);
@@ -371,6 +375,73 @@ class RawlogReaderImpl : public FogLogReader::Impl
 			}
 		}
 		if (sink_) sink_(o);
+	}
+
+	/** The stock form of a FOG stream (fog-compensate's rawlog, fog-convert --to-stock): a
+	 * CObservationIMU followed by the CObservationRawDAQ '<label>_THERMISTORS' of the same time
+	 * is one sample of sensor <label>. Used while no CObservationFOG has been chosen. Returns true
+	 * when the object was taken (an IMU waits for its DAQ; an IMU without one goes to the sink). */
+	bool takeStock(const mrpt::obs::CObservation::Ptr& o, std::size_t index)
+	{
+		if (auto imu = std::dynamic_pointer_cast<mrpt::obs::CObservationIMU>(o))
+		{
+			flushStock();
+			const bool ours = label_.empty() ? (chosen_.empty() || chosen_ == imu->sensorLabel) : imu->sensorLabel == label_;
+			if (fog_class_ || !ours) return false;
+			pending_imu_ = imu;
+			pending_index_ = index;
+			return true;
+		}
+		auto daq = std::dynamic_pointer_cast<mrpt::obs::CObservationRawDAQ>(o);
+		if (daq && pending_imu_ && daq->sensorLabel == pending_imu_->sensorLabel + "_THERMISTORS" &&
+			daq->timestamp == pending_imu_->timestamp)
+		{
+			auto f = fogFromStock(*pending_imu_, *daq);
+			pending_imu_.reset();
+			stock_ = true;
+			takeFog(f, pending_index_);
+			return true;
+		}
+		flushStock();
+		return false;
+	}
+
+	void flushStock()
+	{
+		if (!pending_imu_) return;
+		auto imu = std::move(pending_imu_);
+		pending_imu_.reset();
+		if (sink_) sink_(imu);
+	}
+
+	/** One stock sample as a FOG observation: rates from IMU_WX/WY/WZ [rad/s] (absent: gyro off),
+	 * temperatures from the DAQ's channels (NaN: dropout), named T1..Tn (the stock form carries no
+	 * names). The axes are those of the first sample with a rate. */
+	CObservationFOG::Ptr fogFromStock(const mrpt::obs::CObservationIMU& imu, const mrpt::obs::CObservationRawDAQ& daq)
+	{
+		auto f = CObservationFOG::Create();
+		f->sensorLabel = imu.sensorLabel;
+		f->timestamp = imu.timestamp;
+		const mrpt::obs::TIMUDataIndex idx[3] = {mrpt::obs::IMU_WX, mrpt::obs::IMU_WY, mrpt::obs::IMU_WZ};
+		bool any = false;
+		for (int a = 0; a < 3; a++) any |= imu.has(idx[a]);
+		if (any && !stock_axes_)
+		{
+			stock_axes_.emplace();
+			for (int a = 0; a < 3; a++) (*stock_axes_)[a] = imu.has(idx[a]);
+		}
+		f->hasAxis = stock_axes_ ? *stock_axes_ : std::array<bool, 3>{{false, false, true}};
+		for (int a = 0; a < 3; a++)
+			f->rate_dph[a] = imu.has(idx[a]) ? imu.get(idx[a]) / units::kDegPerHourToRadPerSec : NAN;
+		f->hasPower = true;
+		f->powerOn = any;
+		for (std::size_t i = 0; i < daq.AIN_double.size(); i++)
+		{
+			ThermistorInfo info;
+			info.name = "T" + std::to_string(i + 1);
+			f->addThermistor(info, daq.AIN_double[i], std::isfinite(daq.AIN_double[i]));
+		}
+		return f;
 	}
 
 	/** A FOG observation: queued when of the chosen sensor, else counted and passed to the sink. */
@@ -429,7 +500,15 @@ class RawlogReaderImpl : public FogLogReader::Impl
 											 : " (present: " + labelList(other_fog_) + ")"));
 	}
 
-	void finish() {}
+	void finish() { flushStock(); }
+
+	std::vector<std::string> notes() const override
+	{
+		if (!stock_) return {};
+		return {"sensor '" + chosen_ + "' read from stock MRPT observations (CObservationIMU + CObservationRawDAQ '" +
+				chosen_ + "_THERMISTORS'): thermistors named T1..T" + std::to_string(header.thermistors.size()) +
+				" (the stock form has no names), no table rate or field"};
+	}
 
 	std::string path_, label_;
 	ReadLimits limits_;
@@ -446,6 +525,11 @@ class RawlogReaderImpl : public FogLogReader::Impl
 	int64_t epoch_ticks_ = 0, last_ticks_ = 0;
 	std::optional<detail::SerializedPose> pose_;  // of the last FOG observation read by CArchive
 	std::vector<CObservationFOG::Ptr> spare_;  // consumed observations, reused by the fast path
+	bool fog_class_ = false;  // a CObservationFOG was met: the stock form is not read
+	bool stock_ = false;  // the chosen sensor is read from its stock form
+	mrpt::obs::CObservationIMU::Ptr pending_imu_;  // a stock IMU waiting for its DAQ
+	std::size_t pending_index_ = 0;
+	std::optional<std::array<bool, 3>> stock_axes_;
 	static constexpr uint32_t kMaxFrameObservations = 1u << 20;  // observations in one sensory frame
 	static constexpr std::size_t kFastPeekBytes = 64 * 1024;  // a FOG object of 255 named thermistors fits
 };

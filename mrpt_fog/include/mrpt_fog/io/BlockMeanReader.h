@@ -77,12 +77,13 @@ struct BlockMeanInfo
 };
 
 /** Reads `path` (.rawlog, .csv, .csv.gz; the FOG sensor `fog_label`, or the only one) into block
- * means (see the file comment). `progress` is readFogRun()'s. */
+ * means (see the file comment). `progress` and `options` (format file, notices) are readFogRun()'s. */
 FogSeries readFogLogBlockMeans(
 	const std::string& path, const std::string& fog_label, const BlockMeanOptions& opt, BlockMeanInfo& info,
 	const std::function<void(double time_s, double* temp_C, std::size_t thermistor_count)>& each = {},
 	const std::function<void(std::uint64_t samples, std::uint64_t bytes_done, std::uint64_t bytes_total)>& progress =
-		{});
+		{},
+	const LogReadOptions& options = {});
 
 /** The same reduction of samples given one by one (what readFogLogBlockMeans runs; tests feed it
  * directly). `layout` is the reader's header (FogLogReader::header(): present optional columns

@@ -11,6 +11,7 @@
  * intact. */
 
 #include <mrpt/obs/CObservation.h>
+#include <mrpt_fog/io/FogLogReader.h>
 #include <mrpt_fog/obs/FogRun.h>
 #include <mrpt_fog/obs/FogSeries.h>
 
@@ -70,8 +71,10 @@ FogSeries readFogCsv(const std::string& path);
  * series throws FogIoError. */
 void writeFogCsv(const std::string& path, const FogSeries& series);
 
-/** Reads by extension: .rawlog -> readFogRawlog(path, fog_label).fog; .csv/.csv.gz -> CSV. */
-FogSeries readFogLog(const std::string& path, const std::string& fog_label = "");
+/** Reads by extension: .rawlog -> readFogRawlog(path, fog_label).fog; .csv/.csv.gz -> CSV; with
+ * options.format every other file is read through the format file. options.notice gets the
+ * notes and the unit findings (FogLogReader.h). */
+FogSeries readFogLog(const std::string& path, const std::string& fog_label = "", const LogReadOptions& options = {});
 
 /** Reads a log by extension into a FogRun spilled to an unlinked temporary file (obs/FogRun.h,
  * common/RowSpill.h): the same samples and checks as readFogLog() (the series' invariants are
@@ -79,11 +82,13 @@ FogSeries readFogLog(const std::string& path, const std::string& fog_label = "")
  * sensors are dropped. `each` (optional) sees, and may change, every sample before it is stored
  * (e.g. the thermistor screening); it receives the sample's time and its thermistor_count
  * temperatures. `progress` (optional) is called after every sample with the samples read, the
- * file bytes consumed and the file's size (0 when unknown), for a progress line. */
+ * file bytes consumed and the file's size (0 when unknown), for a progress line. `options`: the
+ * format file and the notices (FogLogReader.h). */
 FogRun readFogRun(const std::string& path, const std::string& fog_label = "",
 				  const std::function<void(double time_s, double* temp_C, std::size_t thermistor_count)>& each = {},
 				  const std::function<void(std::uint64_t samples, std::uint64_t bytes_done, std::uint64_t bytes_total)>&
-					  progress = {});
+					  progress = {},
+				  const LogReadOptions& options = {});
 
 /** Writes by extension (.rawlog or .csv/.csv.gz). */
 void writeFogLog(const std::string& path, const FogSeries& series);

@@ -59,6 +59,33 @@ struct FogSample
 	double power = std::numeric_limits<double>::quiet_NaN();  //!< 1 / 0; NaN when absent
 };
 
+struct LogFormat;
+struct UnitFinding;
+
+/** What a reader reports besides samples: a note (columns a format file leaves unmapped) or a
+ * unit finding (io/UnitPlausibility.h), with the log's path. */
+struct LogNotice
+{
+	enum class Kind
+	{
+		Note,
+		UnitWarning
+	} kind = Kind::Note;
+	std::string path;
+	std::string message;  //!< one line, without the path
+};
+
+/** How logs are read. */
+struct LogReadOptions
+{
+	/** Logs that are not rawlogs are read through this format file (io/LogFormat.h), whatever
+	 * their extension; nullptr: the native CSV format (.csv, .csv.gz). */
+	std::shared_ptr<const LogFormat> format;
+	/** Gets every notice: notes when the header is read, unit findings when the log has been
+	 * read to its end (at the first next() that returns false). Unset: notices are dropped. */
+	std::function<void(const LogNotice&)> notice;
+};
+
 class FogLogReader
 {
    public:
@@ -66,7 +93,7 @@ class FogLogReader
 
 	/** Opens the log and reads up to its first sample (metadata, header). Throws FogIoError. */
 	explicit FogLogReader(const std::string& path, const std::string& fog_label = "", const ReadLimits& limits = {},
-						  ObservationSink others = nullptr);
+						  ObservationSink others = nullptr, const LogReadOptions& options = {});
 	~FogLogReader();
 	FogLogReader(const FogLogReader&) = delete;
 	FogLogReader& operator=(const FogLogReader&) = delete;
@@ -82,6 +109,11 @@ class FogLogReader
 	/** The next sample; false at the (checked) end of the log. */
 	bool next(FogSample& sample);
 
+	/** Notes on the header (columns a format file does not map). */
+	std::vector<std::string> notes() const;
+	/** Findings on the units of the samples read so far (io/UnitPlausibility.h). */
+	std::vector<UnitFinding> unitFindings() const;
+
 	std::size_t samplesRead() const;
 	std::size_t objectsRead() const;  //!< rawlog objects so far (0 for CSV)
 	bool isRawlog() const;
@@ -93,6 +125,11 @@ class FogLogReader
 
    private:
 	std::unique_ptr<Impl> impl_;
+	std::string path_;
+	LogReadOptions options_;
+	struct Judge;
+	std::unique_ptr<Judge> judge_;
+	bool ended_ = false;
 };
 
 /** Appends a sample read by `reader` to a series of the reader's layout (emptySeriesLike). */
