@@ -25,12 +25,13 @@ namespace
 /** Latitudes further apart than this differ (metadata are written to 1e-6 deg or so). */
 constexpr double kLatitudeConflict_deg = 1e-3;
 
-std::string latitudeConflict(const char* option, double option_deg, const char* source, double meta_deg)
+std::string latitudeConflict(const char* option, double option_deg, const char* source, double meta_deg,
+							 const char* aside = "")
 {
 	char b[400];
 	std::snprintf(b, sizeof b,
-				  "%s %.6g overrides %s %.6g: the vertical Earth rate used differs by %.4g deg/h", option, option_deg,
-				  source, meta_deg,
+				  "%s %.6g overrides %s %.6g%s: the vertical Earth rate used differs by %.4g deg/h", option,
+				  option_deg, source, meta_deg, aside,
 				  units::kEarthRate_dph *
 					  std::abs(std::sin(option_deg * units::kDegToRad) - std::sin(meta_deg * units::kDegToRad)));
 	return b;
@@ -48,10 +49,10 @@ bool noteCalibrationEarthRate(DriveEvaluation& e, const DriveSettings& st, const
 		const bool in_file = std::isfinite(zcal.latitude_deg);
 		const double meta_deg = in_file ? zcal.latitude_deg : e.drive.latitude_deg.value_or(NAN);
 		if (std::isfinite(meta_deg) && std::abs(meta_deg - cal_lat_deg) > kLatitudeConflict_deg)
-			e.option_conflicts.push_back(latitudeConflict("--cal-latitude-deg", cal_lat_deg,
-														  in_file ? "the calibration file's latitude_deg"
-																  : "the drive's metadata latitude_deg (the calibration file has none)",
-														  meta_deg));
+			e.option_conflicts.push_back(latitudeConflict(
+				"--cal-latitude-deg", cal_lat_deg,
+				in_file ? "the calibration file's latitude_deg" : "the drive's metadata latitude_deg", meta_deg,
+				in_file ? "" : " (the calibration file has none)"));
 	}
 	else if (std::isfinite(zcal.latitude_deg))
 	{

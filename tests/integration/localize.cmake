@@ -55,10 +55,10 @@ if(TARGET fog-localize)
     PASS_REGULAR_EXPRESSION "gyro-off recovery 'maybe' is not refix\\|none" LABELS "localize;integration")
   add_test(NAME localize.fog_localize.bad_wheel_model COMMAND fog-localize --wheel-heading-deg-per-m -1 --out ${LOC_DIR}_bad)
   set_tests_properties(localize.fog_localize.bad_wheel_model PROPERTIES
-    PASS_REGULAR_EXPRESSION "--wheel-heading-deg-per-m: must be within" LABELS "localize;integration")
+    PASS_REGULAR_EXPRESSION "--wheel-heading-deg-per-m '-1': out of range" LABELS "localize;integration")
   add_test(NAME localize.fog_localize.bad_roughening COMMAND fog-localize --roughening-k -1 --out ${LOC_DIR}_bad)
   set_tests_properties(localize.fog_localize.bad_roughening PROPERTIES
-    PASS_REGULAR_EXPRESSION "--roughening-k: must be >= 0" LABELS "localize;integration")
+    PASS_REGULAR_EXPRESSION "--roughening-k '-1': out of range" LABELS "localize;integration")
   add_test(NAME localize.fog_localize.not_a_ratetable COMMAND fog-localize --ratetable ${FOG_SOURCE_DIR}/datasets/warmup.rawlog
     --out ${LOC_DIR}_bad)
   set_tests_properties(localize.fog_localize.not_a_ratetable PROPERTIES

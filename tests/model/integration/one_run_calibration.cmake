@@ -53,7 +53,7 @@ expect_in("${y1}" "warmup")
 
 execute_process(COMMAND ${BIN}/fog-calibrate -i ${WORK}/cal_run.rawlog --turn-on-exclusion -5 -o ${WORK}/bad.yaml
   RESULT_VARIABLE rc ERROR_VARIABLE se OUTPUT_VARIABLE so)
-if(NOT rc EQUAL 1 OR EXISTS ${WORK}/bad.yaml)
-  message(FATAL_ERROR "--turn-on-exclusion -5: exit ${rc}, expected 1 and no file")
+if(NOT rc EQUAL 2 OR EXISTS ${WORK}/bad.yaml)
+  message(FATAL_ERROR "--turn-on-exclusion -5: exit ${rc}, expected 2 (a usage error) and no file")
 endif()
-expect_in("${se}${so}" "--turn-on-exclusion must be a number of seconds >= 0")
+expect_in("${se}${so}" "--turn-on-exclusion '-5': out of range")

@@ -2,6 +2,7 @@
 # calibration file is named in a note on stdout and in --json ("option_conflicts"); the same
 # value as the metadata, or no option, gives none.
 # -D DRIFT=<fog-drift> -D DIR=<the nav_drive directory: drive.rawlog, cal.yaml, drift.json>
+cmake_policy(SET CMP0007 NEW)
 file(READ ${DIR}/drift.json plain)
 string(JSON drive_lat GET "${plain}" latitude_deg)
 string(JSON n_plain LENGTH "${plain}" option_conflicts)
