@@ -6,6 +6,7 @@
  * heading (heading/FogOdometryRawlog.h). The program parses, calls the library and prints. */
 #include "AppMain.h"
 #include "CommandLine.h"
+#include "Options.h"
 #include "Progress.h"
 #include "ThermistorScreeningReport.h"
 
@@ -82,43 +83,35 @@ int main(int argc, char** argv)
 		TCLAP::CmdLine cmd("fog-odometry: a vehicle rawlog with the odometry's heading from the compensated FOG "
 						   "(every other object kept, in order and format). Details and examples below.",
 						   ' ', "0.1");
-		TCLAP::ValueArg<std::string> arg_in("i", "input", "Vehicle rawlog (either MRPT format)", true, "", "IN.rawlog", cmd);
-		TCLAP::ValueArg<std::string> arg_cal("", "cal", "Calibration YAML (fog-calibrate); its z axis is used", true, "",
-											 "CAL.yaml", cmd);
-		TCLAP::ValueArg<std::string> arg_out("o", "output", "Output rawlog", true, "", "OUT.rawlog", cmd);
+		app::InputArg arg_in("i", "input", "Vehicle rawlog (either MRPT format)", true, "", "IN.rawlog", cmd);
+		app::InputArg arg_cal("", "cal", "Calibration YAML (fog-calibrate); its z axis is used", true, "", "CAL.yaml", cmd);
+		app::OutputArg arg_out("o", "output", "Output rawlog", true, "", "OUT.rawlog", cmd);
 		TCLAP::ValueArg<std::string> arg_fog("", "fog-label", "Label of the CObservationFOG", false, "FOG", "L", cmd);
 		TCLAP::ValueArg<std::string> arg_odo("", "odometry-label", "Label of the CObservationOdometry", false, "ODOMETRY",
 											 "L", cmd);
 		TCLAP::ValueArg<std::string> arg_truth_label("", "truth-label", "Label of the CObservationRobotPose truth", false,
 													 "GROUND_TRUTH", "L", cmd);
-		TCLAP::ValueArg<std::string> arg_truth("", "truth", "Held-back truth rawlog to compare with", false, "", "T.rawlog",
-											   cmd);
-		TCLAP::ValueArg<double> arg_compare("", "compare-s", "Compare with the truth over this span [s] (default: all)",
-											false, INFINITY, "S", cmd);
-		TCLAP::ValueArg<double> arg_lat("", "latitude-deg", "Drive latitude [deg] (default: the FOG's metadata)", false,
-										NAN, "DEG", cmd);
-		TCLAP::ValueArg<double> arg_bias("", "fog-bias-dph", "Motion model: FOG bias uncertainty [deg/h]", false, 0.5, "DPH", cmd);
-		TCLAP::ValueArg<double> arg_horizon("", "fog-horizon-s", "Motion model: random-walk horizon [s]", false, 60.0, "S", cmd);
-		TCLAP::ValueArg<double> arg_sf("", "fog-scale-factor-ppm", "Motion model: heading error per turned angle [ppm]",
-									   false, 2000.0, "PPM", cmd);
-		TCLAP::ValueArg<double> arg_dist("", "distance-frac", "Motion model: distance std per metre [-]", false, 0.003, "F", cmd);
-		TCLAP::ValueArg<double> arg_minxy("", "min-std-xy-m", "Motion model: position std per step [m]", false, 0.05, "M", cmd);
-		TCLAP::ValueArg<std::string> arg_json("", "json", "Write the summary as JSON", false, "", "FILE", cmd);
+		app::InputArg arg_truth("", "truth", "Held-back truth rawlog to compare with", false, "", "T.rawlog", cmd);
+		app::RealArg arg_compare(cmd, "compare-s", "Compare with the truth over this span (default: all)", "s",
+								 app::Range::aboveUpTo(0, INFINITY), INFINITY, "S");
+		app::RealArg arg_lat(cmd, "latitude-deg", "Drive latitude (default: the FOG's metadata)", "deg",
+							 app::Range::closed(-90, 90), NAN, "DEG");
+		app::RealArg arg_bias(cmd, "fog-bias-dph", "Motion model: FOG bias uncertainty", "deg/h", app::Range::closed(0, 1e4),
+							  0.5, "DPH");
+		app::RealArg arg_horizon(cmd, "fog-horizon-s", "Motion model: random-walk horizon", "s", app::Range::closed(0, 1e6),
+								 60.0, "S");
+		app::RealArg arg_sf(cmd, "fog-scale-factor-ppm", "Motion model: heading error per turned angle", "ppm",
+							app::Range::closed(0, 1e6), 2000.0, "PPM");
+		app::RealArg arg_dist(cmd, "distance-frac", "Motion model: distance std per metre", "-", app::Range::closed(0, 10),
+							  0.003, "F");
+		app::RealArg arg_minxy(cmd, "min-std-xy-m", "Motion model: position std per step", "m", app::Range::closed(0, 1e3),
+							   0.05, "M");
+		app::OutputArg arg_json("", "json", "Write the summary as JSON", false, "", "FILE", cmd);
 		TCLAP::SwitchArg arg_no_screen("", "no-screening", "Do not screen thermistor readings before compensating", cmd);
 		TCLAP::SwitchArg arg_quiet("q", "quiet", "No progress line on stderr", cmd);
 		TCLAP::SwitchArg arg_no_refine("", "no-field-refinement",
 									   "No standstill updates of the compensated gyro's turn-on bias offset", cmd);
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-odometry", kHelp)) return *rc;
-
-		for (auto* a : {&arg_bias, &arg_horizon, &arg_sf, &arg_dist, &arg_minxy})
-			if (!(a->getValue() >= 0 && std::isfinite(a->getValue())))
-				throw std::invalid_argument("--" + a->getName() + ": must be a finite value >= 0");
-		if (!std::isnan(arg_lat.getValue()) && !(std::abs(arg_lat.getValue()) <= 90))
-			throw std::invalid_argument("--latitude-deg: must be within [-90, 90]");
-		if (!(arg_compare.getValue() > 0)) throw std::invalid_argument("--compare-s: must be > 0");
-		std::vector<FileArg> inputs{{"-i", arg_in.getValue()}, {"--cal", arg_cal.getValue()}};
-		if (!arg_truth.getValue().empty()) inputs.push_back({"--truth", arg_truth.getValue()});
-		requireSafeOutputs(inputs, {{"-o", arg_out.getValue()}, {"--json", arg_json.getValue()}});
 
 		const CalibrationSet cals = loadCalibrationSet(arg_cal.getValue());
 		const Calibration* zcal = cals.forAxis(GyroAxis::Z);

@@ -10,6 +10,7 @@
 #include "AppMain.h"
 #include "CommandLine.h"
 #include "FieldLog.h"
+#include "Options.h"
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt_fog/common/AtomicFile.h>
@@ -68,35 +69,24 @@ int main(int argc, char** argv)
 {
 	return app::runApp("fog-refine", [&] {
 		TCLAP::CmdLine cmd("fog-refine: a calibration that learns its bias offset and aging from field logs", ' ', "0.1");
-		TCLAP::ValueArg<std::string> cal("", "cal", "the calibration to refine (kept unchanged)", true, "", "CAL.yaml", cmd);
-		TCLAP::MultiArg<std::string> in("i", "input", "field log with standstills (FOG + wheel odometry); repeat", true,
-										"FIELD.rawlog", cmd);
-		TCLAP::ValueArg<std::string> out("o", "output", "the refined calibration (a new file; never overwritten)", true, "",
-										 "REFINED.yaml", cmd);
-		TCLAP::ValueArg<std::string> json("", "json", "write each log's measurement and the new offset as JSON", false, "",
-										  "F.json", cmd);
-		TCLAP::ValueArg<double> rep("", "turn-on-repeatability-dph",
-									"1-sigma turn-on to turn-on repeatability of the offset [deg/h] (prior of each log, "
-									"scatter between logs)",
-									false, 1.0, "DPH", cmd);
-		TCLAP::ValueArg<double> arw("", "gyro-arw-deg-rt-h", "angle random walk of the gyro [deg/sqrt(h)]", false, 0.001,
-									"N", cmd);
-		TCLAP::ValueArg<double> bi("", "gyro-bias-instability-dph", "bias instability of the gyro [deg/h]", false, 0.005,
-								   "B", cmd);
-		TCLAP::ValueArg<double> min_still("", "min-standstill-s", "shortest standstill used [s]", false, 10.0, "S", cmd);
-		TCLAP::ValueArg<double> lat("", "latitude-deg", "latitude [deg] (default: each log's metadata)", false, NAN, "DEG",
-									cmd);
+		app::InputArg cal("", "cal", "the calibration to refine (kept unchanged)", true, "", "CAL.yaml", cmd);
+		app::InputMultiArg in("i", "input", "field log with standstills (FOG + wheel odometry); repeat", true,
+							  "FIELD.rawlog", cmd);
+		app::OutputArg out("o", "output", "the refined calibration (a new file; never overwritten)", true, "",
+						   "REFINED.yaml", cmd);
+		app::OutputArg json("", "json", "write each log's measurement and the new offset as JSON", false, "", "F.json", cmd);
+		app::RealArg rep(cmd, "turn-on-repeatability-dph",
+						 "1-sigma turn-on to turn-on repeatability of the offset (prior of each log, scatter between logs)",
+						 "deg/h", app::Range::aboveUpTo(0, 1e4), 1.0, "DPH");
+		app::RealArg arw(cmd, "gyro-arw-deg-rt-h", "angle random walk of the gyro", "deg/sqrt(h)",
+						 app::Range::aboveUpTo(0, 100), 0.001, "N");
+		app::RealArg bi(cmd, "gyro-bias-instability-dph", "bias instability of the gyro", "deg/h",
+						app::Range::closed(0, 1e4), 0.005, "B");
+		app::RealArg min_still(cmd, "min-standstill-s", "shortest standstill used", "s", app::Range::closed(0, 86400), 10.0,
+							   "S");
+		app::RealArg lat(cmd, "latitude-deg", "latitude (default: each log's metadata)", "deg", app::Range::closed(-90, 90),
+						 NAN, "DEG");
 		if (const auto rc = app::parseCommandLine(cmd, argc, argv, "fog-refine", kHelp)) return *rc;
-		for (const auto& [name, v] : {std::pair<const char*, double>{"--turn-on-repeatability-dph", rep.getValue()},
-									  {"--gyro-arw-deg-rt-h", arw.getValue()},
-									  {"--gyro-bias-instability-dph", bi.getValue()},
-									  {"--min-standstill-s", min_still.getValue()}})
-			if (!(v >= 0) || !std::isfinite(v)) throw std::runtime_error(std::string(name) + ": must be a finite value >= 0");
-		{
-			std::vector<FileArg> ins{{"--cal", cal.getValue()}};
-			for (const auto& p : in.getValue()) ins.push_back({"-i", p});
-			requireSafeOutputs(ins, {{"-o", out.getValue()}, {"--json", json.getValue()}});
-		}
 		if (exists(out.getValue()))
 			throw std::runtime_error("-o " + out.getValue() + ": exists; fog-refine writes a new file and keeps every earlier one");
 
@@ -111,7 +101,7 @@ int main(int argc, char** argv)
 		st.noise.arw_deg_rt_h = arw.getValue();
 		st.noise.bias_instability_dph = bi.getValue();
 		st.min_still_s = min_still.getValue();
-		if (std::isfinite(lat.getValue())) st.latitude_deg = lat.getValue();
+		if (lat.isSet()) st.latitude_deg = lat.getValue();
 
 		std::vector<refine::FieldLogOffset> logs;
 		for (const auto& p : in.getValue())

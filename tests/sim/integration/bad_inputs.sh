@@ -25,6 +25,6 @@ expect_error "no_such.yaml" --profile no_such.yaml -o out.rawlog
 expect_error "unknown profile preset 'nope'" --profile nope -o out.rawlog
 expect_error "bad_device.yaml: errors.typo_key" --profile seed --device bad_device.yaml -o out.rawlog
 expect_error "unknown effect 'shupe'" --profile seed --effect shupe -o out.rawlog
-expect_error "rate_hz" --profile seed --rate-hz 0 -o out.rawlog
+expect_error "--rate-hz .0.: out of range" --profile seed --rate-hz 0 -o out.rawlog
 expect_error "must end in" --profile seed -o out.txt
 exit $fail
