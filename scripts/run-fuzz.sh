@@ -15,8 +15,8 @@ targets=("$@")
 build=${BUILD_DIR:-$here/build-fuzz}
 jobs=${JOBS:-2}
 
-source "$here/scripts/ccache-env.sh"  # compiler cache when installed (FOG_CCACHE=0: none)
-CXX=clang++ cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMRPT_FOG_BUILD_FUZZ=ON "${FOG_LAUNCHER[@]}" \
+source "$here/scripts/build-env.sh"  # unity build, ccache when installed
+CXX=clang++ cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMRPT_FOG_BUILD_FUZZ=ON "${FOG_BUILD_ARGS[@]}" \
 	-DMRPT_FOG_BUILD_TESTS=OFF -DMRPT_FOG_BUILD_APPS=OFF -DMRPT_FOG_BUILD_BENCH=OFF >/dev/null
 cmake --build "$build" -j"$jobs" --target "${targets[@]}"
 

@@ -10,6 +10,9 @@
 #   BUILD_DIR   build directory (default <repo>/build-asan)
 #   JOBS        parallel compile jobs and parallel tests (default: nproc)
 #   SAN_EXCLUDE_LABELS  ctest labels not run (regex, default "long|demo"; "long" to run the demo too)
+#   SAN_TESTS_PER_SUITE  ON (default): each GoogleTest suite runs its cases in one process, one
+#               ctest test per suite (an instrumented process costs ~0.3 s of CPU to start, and
+#               leak checking runs at each exit); OFF: one process per case, as in the normal run.
 #   SAN_OPT     optimisation/debug flags (default "-O1 -g1": half the compile time of -O2 -g,
 #               line tables are enough for the sanitizers' stack traces; see docs/validation/hardening.md)
 #   FOG_TRIAL_SEEDS  exported (default 1) for the discrepancy room's proof trials: seeds per
@@ -28,11 +31,12 @@ jobs=${JOBS:-$(nproc)}
 san_opt=${SAN_OPT:--O1 -g1}
 
 t0=$(date +%s)
-source "$here/scripts/ccache-env.sh"  # compiler cache when installed (FOG_CCACHE=0: none)
+source "$here/scripts/build-env.sh"  # unity build, ccache when installed, test ordering
 # Benchmarks and fuzz targets are not part of the test suite: not built. The long-sweep test
 # programs are (3 small sources): ctest's discovery reports a missing one as a failing test.
-cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMRPT_FOG_SANITIZE=ON "${FOG_LAUNCHER[@]}" \
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMRPT_FOG_SANITIZE=ON "${FOG_BUILD_ARGS[@]}" \
 	-DMRPT_FOG_BUILD_BENCH=OFF -DMRPT_FOG_BUILD_FUZZ=OFF -DMRPT_FOG_BUILD_TESTS=ON -DMRPT_FOG_BUILD_APPS=ON \
+	-DMRPT_FOG_TESTS_PER_SUITE=${SAN_TESTS_PER_SUITE:-ON} \
 	"-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$san_opt -DNDEBUG" ${SAN_CMAKE_ARGS:-} >/dev/null
 cmake --build "$build" -j"$jobs"
 t1=$(date +%s)
@@ -49,6 +53,7 @@ export FOG_TRIAL_SEEDS=${FOG_TRIAL_SEEDS:-1}
 export FOG_ASAN_PRELOAD=${FOG_ASAN_PRELOAD:-$(${CXX:-g++} -print-file-name=libasan.so)}
 status=0
 san_exclude=${SAN_EXCLUDE_LABELS-long|demo}
+fog_seed_test_costs "$build" "$here/tests/ctest_costs/sanitizers.txt"
 ctest --test-dir "$build" -LE "$san_exclude" -j"$jobs" --output-on-failure --timeout 1200 "$@" || status=$?
 t2=$(date +%s)
 echo "run-sanitizers: build $((t1 - t0)) s, tests $((t2 - t1)) s (FOG_TRIAL_SEEDS=$FOG_TRIAL_SEEDS, load: $(cut -d' ' -f1-3 /proc/loadavg))"

@@ -2,13 +2,14 @@
 # Installs what is needed, builds everything and runs the default test suite (label "long"
 # excluded; run those with: ctest --test-dir build -L long).
 # Usage: scripts/run-tests.sh [build-dir]     (default: build)
-# Compiles through ccache when it is installed (scripts/ccache-env.sh; FOG_CCACHE=0 turns it off).
+# Build settings (unity build, ccache when installed, test ordering): scripts/build-env.sh.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${1:-$here/build}"
 "$here/scripts/setup.sh"
 jobs="$(nproc)"
-source "$here/scripts/ccache-env.sh"  # compiler cache when installed (FOG_CCACHE=0: none)
-cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release "${FOG_LAUNCHER[@]}"
+source "$here/scripts/build-env.sh"
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release "${FOG_BUILD_ARGS[@]}"
 cmake --build "$build" -j"$jobs"
+fog_seed_test_costs "$build" "$here/tests/ctest_costs/release.txt"
 ctest --test-dir "$build" -LE long --output-on-failure -j"$jobs" --timeout 900

@@ -39,7 +39,7 @@ namespace mrpt_fog::drift
 {
 namespace
 {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mrpt_fog::units::kNaN;
 
 /** First and last value of a stream and its length. */
 struct Ends

@@ -8,6 +8,7 @@
  * Same arithmetic and summation order as the nav functions on whole series. */
 
 #include <mrpt_fog_nav/DriftReport.h>
+#include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog_nav/HeadingFigures.h>
 
 #include <algorithm>
@@ -23,7 +24,7 @@ namespace mrpt_fog::drift
 {
 namespace streaming_detail
 {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mrpt_fog::units::kNaN;
 constexpr double kRadToDeg = 180.0 / M_PI;  // as nav/HeadingFigures.cpp
 }  // namespace streaming_detail
 

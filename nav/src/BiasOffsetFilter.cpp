@@ -1,5 +1,6 @@
 /* mrpt_fog_nav: strapdown attitude, dead reckoning and drift evaluation. */
 #include <mrpt_fog_nav/BiasOffsetFilter.h>
+#include "NavUnits.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,8 +11,7 @@ namespace mrpt_fog::nav
 {
 namespace
 {
-constexpr double kSecondsPerHour = 3600.0;
-constexpr double kArcminPerDeg = 60.0;  // N [deg/sqrt h] -> white rate sigma 60 N / sqrt(dt [s]) [deg/h]
+using units::kSecondsPerHour;
 
 void requireNonNegative(double v, const char* name)
 {
@@ -51,7 +51,7 @@ bool BiasOffsetFilter::update(double t_s, double z_dph, double dt_s)
 {
 	if (!std::isfinite(z_dph) || !(dt_s > 0) || !std::isfinite(dt_s) || !std::isfinite(t_s)) return false;
 	predictTo(t_s);
-	const double sigma_w = kArcminPerDeg * noise_.arw_deg_rt_h / std::sqrt(dt_s);
+	const double sigma_w = units::kSqrtSecondsPerHour * noise_.arw_deg_rt_h / std::sqrt(dt_s);
 	const Eigen::RowVector2d H(1.0, 1.0);
 	const double S = (H * P_ * H.transpose())(0, 0) + sigma_w * sigma_w;
 	if (!(S > 0)) return false;  // no noise and no uncertainty: nothing to learn

@@ -1,5 +1,6 @@
 /* mrpt_fog_nav: strapdown attitude, dead reckoning and drift evaluation. */
 #include <mrpt_fog_nav/FieldBiasRefiner.h>
+#include "NavUnits.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -8,7 +9,6 @@ namespace mrpt_fog::nav
 {
 namespace
 {
-constexpr double kArcminPerDeg = 60.0;  // N [deg/sqrt h] -> white rate sigma 60 N / sqrt(T [s]) [deg/h]
 }
 
 FieldBiasRefiner::FieldBiasRefiner(const FieldRefinementOptions& options, double t0_s)
@@ -25,7 +25,7 @@ FieldBiasRefiner::FieldBiasRefiner(const FieldRefinementOptions& options, double
 bool FieldBiasRefiner::beatsPrior(double length_s) const
 {
 	if (!(length_s > 0)) return false;
-	const double white = kArcminPerDeg * opt_.noise.arw_deg_rt_h;
+	const double white = units::kSqrtSecondsPerHour * opt_.noise.arw_deg_rt_h;
 	const double B = opt_.noise.bias_instability_dph;
 	const double P = opt_.prior_sigma_dph;  // the prior, not what earlier standstills learned
 	return white * white / length_s + B * B < P * P;

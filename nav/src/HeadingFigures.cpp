@@ -1,5 +1,6 @@
 /* mrpt_fog_nav: strapdown attitude, dead reckoning and drift evaluation. */
 #include <mrpt_fog_nav/HeadingFigures.h>
+#include "NavUnits.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,7 @@ namespace mrpt_fog::nav
 namespace
 {
 constexpr double kRadToDeg = 180.0 / M_PI;
-constexpr double kSecondsPerHour = 3600.0;
+using units::kSecondsPerHour;
 
 /** Unwrapped truth yaw [deg] at the truth times. */
 std::vector<double> unwrappedYaw_deg(const Trajectory& truth)

@@ -42,7 +42,7 @@ if(TARGET fog-localize)
   target_include_directories(test_localize_odometry PRIVATE ${FOG_SOURCE_DIR}/apps/fog-localize
     ${FOG_SOURCE_DIR}/apps/fog-drift)
   target_link_libraries(test_localize_odometry PRIVATE mrpt_fog_nav fog_obs GTest::gtest GTest::gtest_main)
-  gtest_discover_tests(test_localize_odometry PROPERTIES LABELS localize DISCOVERY_MODE PRE_TEST DISCOVERY_TIMEOUT 60)
+  fog_add_gtests(test_localize_odometry localize)
   add_test(NAME localize.fog_localize.bad_seeds COMMAND fog-localize --seeds 0 --out ${LOC_DIR}_bad)
   add_test(NAME localize.fog_localize.missing_drive COMMAND fog-localize --drive ${LOC_DIR}/no_such.rawlog --cal x.yaml --out ${LOC_DIR}_bad)
   add_test(NAME localize.fog_localize.bad_fields COMMAND fog-localize --fields curvy --out ${LOC_DIR}_bad)

@@ -26,6 +26,13 @@ inline std::string slurp(const std::string& path)
 	return std::string(std::istreambuf_iterator<char>(f), {});
 }
 
+/** Writes text to a file (replacing it). */
+inline void spit(const std::string& path, const std::string& text)
+{
+	std::ofstream f(path, std::ios::binary);
+	f << text;
+}
+
 /** A fresh scratch directory per test (removed at the end). */
 class ScratchDir
 {

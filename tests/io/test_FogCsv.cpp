@@ -13,16 +13,9 @@
 using namespace mrpt_fog;
 using iotest::dataFile;
 using iotest::ioErrorOf;
+using iotest::spit;
 using iotest::slurp;
 
-namespace
-{
-void spit(const std::string& path, const std::string& text)
-{
-	std::ofstream f(path, std::ios::binary);
-	f << text;
-}
-}  // namespace
 
 // Values checked against the literal text of tests/data/io/sample.csv.
 TEST(FogCsv, ReadsEveryFieldOfTheSample)

@@ -36,14 +36,14 @@ void writeGz(const std::string& path, const std::string& text, bool append = fal
 	std::filesystem::remove(tmp);
 }
 void writeText(const std::string& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
-std::string slurp(const std::string& path) { return io::readWholeFile(path); }
+std::string decompressedBytes(const std::string& path) { return io::readWholeFile(path); }
 }  // namespace
 
 // pigz / bgzip / `cat a.gz b.gz` write several gzip members: all are read (was: "corrupt").
 TEST(HostileLogs, MultiMemberGzipIsReadWhole)
 {
 	iotest::ScratchDir d;
-	const std::string text = slurp(dataFile("sample.csv"));
+	const std::string text = decompressedBytes(dataFile("sample.csv"));
 	const std::size_t half = text.find('\n', text.size() / 2) + 1;
 	writeGz(d.path("multi.csv.gz"), text.substr(0, half));
 	writeGz(d.path("multi.csv.gz"), text.substr(half), true);
@@ -52,7 +52,7 @@ TEST(HostileLogs, MultiMemberGzipIsReadWhole)
 	EXPECT_EQ(a.time_s, b.time_s);
 	EXPECT_EQ(io::readWholeFile(d.path("multi.csv.gz")), text);
 	// A corrupt second member is still caught.
-	std::string bytes = slurp(d.path("multi.csv.gz"));  // decompressed; corrupt the file itself:
+	std::string bytes = decompressedBytes(d.path("multi.csv.gz"));  // decompressed; corrupt the file itself:
 	std::ifstream in(d.path("multi.csv.gz"), std::ios::binary);
 	std::string raw((std::istreambuf_iterator<char>(in)), {});
 	raw[raw.size() - 6] ^= 0x55;  // inside the last member's CRC/length trailer

@@ -12,14 +12,10 @@
 
 using namespace mrpt_fog;
 using iotest::ioErrorOf;
+using iotest::spit;
 
 namespace
 {
-void spit(const std::string& path, const std::string& text)
-{
-	std::ofstream f(path, std::ios::binary);
-	f << text;
-}
 
 std::string invalidArgumentOf(const std::function<void()>& f) { return fogtest::messageOf<std::invalid_argument>(f); }
 

@@ -57,8 +57,8 @@ FogSeries lagRun(const std::vector<std::pair<double, double>>& knots)
 
 // A: 25 -> -10 C at 1 C/min, 1 h soak, -> 40 C at 1 C/min, 1 h soak. B: 2 C/min and 0.5 C/min
 // ramps and a 20 min triangle wave of +-5 C: another history, held out.
-FogSeries runA() { return lagRun({{0, 25}, {2100, -10}, {5700, -10}, {8700, 40}, {12300, 40}}); }
-FogSeries runB()
+FogSeries lagRunA() { return lagRun({{0, 25}, {2100, -10}, {5700, -10}, {8700, 40}, {12300, 40}}); }
+FogSeries lagRunB()
 {
 	return lagRun({{0, 10}, {900, 40}, {2700, 40}, {5100, 20}, {5700, 25}, {6300, 15}, {6900, 25}, {7500, 15}, {9000, 15}});
 }
@@ -68,46 +68,46 @@ TEST(LagCalibration, FixedTermsRecoverTheLagCoefficientAndCompensateAnotherHisto
 {
 	FitOptions o;
 	o.selection = TermSelection::None;
-	const Calibration cal = fitCalibration({runA()}, "terms:T(Ti1)^1;dTlag/dt(Ti1,400)^1", o);
+	const Calibration cal = fitCalibration({lagRunA()}, "terms:T(Ti1)^1;dTlag/dt(Ti1,400)^1", o);
 	const auto& fs = cal.model.features;
 	ASSERT_EQ(cal.model.features.termNames(), (std::vector<std::string>{"1", "T(Ti1)^1", "dTlag/dt(Ti1,400)^1"}));
 	// physical slopes: coefficient of z = (v - centre) / scale over scale
 	EXPECT_NEAR(cal.model.coef_dph[1] / fs.normalisation()[0].scale, 0.004, 1e-9);
 	EXPECT_NEAR(cal.model.coef_dph[2] / fs.normalisation()[1].scale, kLagCoef, 1e-6);
 	// the compensator's lag (carried sample to sample) on a history the fit never saw
-	const FitFigures b = evaluateCalibration(cal, runB(), "B", 100.0);
+	const FitFigures b = evaluateCalibration(cal, lagRunB(), "B", 100.0);
 	EXPECT_GT(b.raw_stability_dph, 0.05);
 	EXPECT_LT(b.rms_dph, 1e-7);
 	// a model without the lag leaves the Shupe-like term on B
 	FitOptions plain;
 	plain.selection = TermSelection::None;
-	EXPECT_GT(evaluateCalibration(fitCalibration({runA()}, "multipoint@1/1", plain), runB(), "B", 100.0).rms_dph, 1e-3);
+	EXPECT_GT(evaluateCalibration(fitCalibration({lagRunA()}, "multipoint@1/1", plain), lagRunB(), "B", 100.0).rms_dph, 1e-3);
 }
 
 TEST(LagCalibration, SelectionUsesTheLagsOnlyWithOneThermistor)
 {
 	// the default: with one thermistor the three lags (100, 400, 1600 s) start in the linear base
-	const Calibration cal = fitCalibration({runA()}, "multipoint", FitOptions{});
+	const Calibration cal = fitCalibration({lagRunA()}, "multipoint", FitOptions{});
 	const auto names = cal.model.features.termNames();
 	for (const char* n : {"dTlag/dt(Ti1,100)^1", "dTlag/dt(Ti1,400)^1", "dTlag/dt(Ti1,1600)^1"})
 		EXPECT_NE(std::find(names.begin(), names.end(), n), names.end()) << n;
 	FitOptions no_lags;
 	no_lags.lag_taus_s.clear();
-	const double b_lags = evaluateCalibration(cal, runB(), "B", 100.0).rms_dph;
-	const double b_plain = evaluateCalibration(fitCalibration({runA()}, "multipoint", no_lags), runB(), "B", 100.0).rms_dph;
+	const double b_lags = evaluateCalibration(cal, lagRunB(), "B", 100.0).rms_dph;
+	const double b_plain = evaluateCalibration(fitCalibration({lagRunA()}, "multipoint", no_lags), lagRunB(), "B", 100.0).rms_dph;
 	std::printf("  B compensated RMS: with the lags %.3g, without %.3g deg/h\n", b_lags, b_plain);
 	EXPECT_LT(b_lags, 1e-6);  // the true term is in the lags' span (start-up model included)
 	EXPECT_GT(b_plain, 0.1);  // without them no term holds it
 	// as forward steps: the true time constant is the one taken
 	FitOptions steps;
 	steps.lag_in_base = false;
-	const Calibration st = fitCalibration({runA()}, "multipoint", steps);
+	const Calibration st = fitCalibration({lagRunA()}, "multipoint", steps);
 	const auto sn = st.model.features.termNames();
 	EXPECT_NE(std::find(sn.begin(), sn.end(), "dTlag/dt(Ti1,400)^1"), sn.end());
 	EXPECT_LT(st.held_out.rms_dph, 1e-3);
-	EXPECT_LT(evaluateCalibration(st, runB(), "B", 100.0).rms_dph, 1e-3);
+	EXPECT_LT(evaluateCalibration(st, lagRunB(), "B", 100.0).rms_dph, 1e-3);
 	// with two thermistors the candidates are not offered (FitOptions::lag_max_thermistors)
-	FogSeries two = runA();
+	FogSeries two = lagRunA();
 	two.thermistors.push_back({"To1", CoilSide::Outer, 0});
 	two.temp_C.push_back(two.temp_C[0]);
 	for (double& v : two.temp_C[1]) v += 0.5;
@@ -116,23 +116,23 @@ TEST(LagCalibration, SelectionUsesTheLagsOnlyWithOneThermistor)
 	// "none": every preset term and nothing else (the seed's method)
 	FitOptions none;
 	none.selection = TermSelection::None;
-	const Calibration seed_method = fitCalibration({runA()}, "multipoint", none);
+	const Calibration seed_method = fitCalibration({lagRunA()}, "multipoint", none);
 	for (const auto& sig : seed_method.model.features.signals()) EXPECT_FALSE(sig.isLag());
 	FitOptions bad;
 	bad.lag_taus_s = {0.0};
-	EXPECT_THROW(fitCalibration({runA()}, "multipoint", bad), std::invalid_argument);
+	EXPECT_THROW(fitCalibration({lagRunA()}, "multipoint", bad), std::invalid_argument);
 }
 
 TEST(LagCalibration, FileVersion3RoundTripsAndOlderVersionsRefuseLags)
 {
 	FitOptions o;
 	o.selection = TermSelection::None;
-	const Calibration cal = fitCalibration({runA()}, "terms:T(Ti1)^1;dT/dt(Ti1)^1;dTlag/dt(Ti1,400)^1", o);
+	const Calibration cal = fitCalibration({lagRunA()}, "terms:T(Ti1)^1;dT/dt(Ti1)^1;dTlag/dt(Ti1,400)^1", o);
 	const std::string text = calibrationToYaml(cal);
 	EXPECT_NE(text.find("\nversion: 3\n"), std::string::npos);
 	EXPECT_NE(text.find("lag_filter: \"first_order_hold, warm_start_first_reading\""), std::string::npos);
 	const Calibration back = calibrationFromYaml(text, "cal.yaml");
-	const FogSeries b = runB();
+	const FogSeries b = lagRunB();
 	const auto c1 = compensate(cal, b), c2 = compensate(back, b);
 	for (std::size_t k = 0; k < b.size(); k++) ASSERT_EQ(c1.bias_dph[k], c2.bias_dph[k]) << k;
 	// a version 2 file cannot hold a lag (a build that reads only version 2 says so instead)
@@ -153,15 +153,15 @@ TEST(LagCalibration, FileVersion3RoundTripsAndOlderVersionsRefuseLags)
 	// without lags the file stays version 2
 	FitOptions none;
 	none.selection = TermSelection::None;
-	EXPECT_NE(calibrationToYaml(fitCalibration({runA()}, "multipoint@1/1", none)).find("\nversion: 2\n"), std::string::npos);
+	EXPECT_NE(calibrationToYaml(fitCalibration({lagRunA()}, "multipoint@1/1", none)).find("\nversion: 2\n"), std::string::npos);
 }
 
 TEST(LagCalibration, DropoutFallsBackAndTheLagResumesFromTheBridgedState)
 {
 	FitOptions o;
 	o.selection = TermSelection::None;
-	const Calibration cal = fitCalibration({runA()}, "terms:T(Ti1)^1;dTlag/dt(Ti1,400)^1", o);
-	FogSeries b = runB();
+	const Calibration cal = fitCalibration({lagRunA()}, "terms:T(Ti1)^1;dTlag/dt(Ti1,400)^1", o);
+	FogSeries b = lagRunB();
 	for (std::size_t k = 1000; k < 1010; k++) b.temp_C[0][k] = std::nan("");  // on the 2 C/min ramp: bridged exactly
 	const auto c = compensate(cal, b);
 	for (std::size_t k = 1000; k < 1010; k++) EXPECT_TRUE(c.flags[k] & (CompensationFlag::Fallback | CompensationFlag::NoModel)) << k;

@@ -20,7 +20,7 @@ using namespace mrpt_fog;
 
 namespace
 {
-const Calibration& biasOnly()
+const Calibration& magneticBiasOnly()
 {
 	static const Calibration cal = fitCalibration({fogtest::makeCoilRun("A", 81)}, "multipoint");
 	return cal;
@@ -37,7 +37,7 @@ MagneticModel magneticTerm(double dph_per_uT)
 }
 Calibration withMagnetic(double dph_per_uT)
 {
-	Calibration c = biasOnly();
+	Calibration c = magneticBiasOnly();
 	c.magnetic = magneticTerm(dph_per_uT);
 	return c;
 }
@@ -52,14 +52,14 @@ std::vector<double> fieldSteps(const FogSeries& s)
 	}
 	return f;
 }
-std::string replaced(std::string s, const std::string& from, const std::string& to)
+std::string magneticReplaced(std::string s, const std::string& from, const std::string& to)
 {
 	const auto p = s.find(from);
 	EXPECT_NE(p, std::string::npos) << from;
 	if (p != std::string::npos) s.replace(p, from.size(), to);
 	return s;
 }
-std::string errorOf(const std::string& text)
+std::string magneticErrorOf(const std::string& text)
 {
 	try
 	{
@@ -88,7 +88,7 @@ TEST(MagneticCalibration, YamlRoundTripIsExactAndVersion3)
 	EXPECT_EQ(back.magnetic->field_max_uT, 100.0);
 	EXPECT_EQ(back.magnetic->samples, 4321u);
 	EXPECT_EQ(calibrationToYaml(back), text);
-	const std::string plain = calibrationToYaml(biasOnly());
+	const std::string plain = calibrationToYaml(magneticBiasOnly());
 	EXPECT_NE(plain.find("\nversion: 2\n"), std::string::npos);
 	EXPECT_FALSE(calibrationFromYaml(plain, "p.yaml").magnetic.has_value());
 }
@@ -98,26 +98,26 @@ TEST(MagneticCalibration, YamlRoundTripIsExactAndVersion3)
 TEST(MagneticCalibration, Version2FileWithTheSectionIsRefused)
 {
 	const std::string text = calibrationToYaml(withMagnetic(3e-4));
-	const std::string v2 = replaced(text, "\nversion: 3\n", "\nversion: 2\n");
-	const std::string e = errorOf(v2);
+	const std::string v2 = magneticReplaced(text, "\nversion: 3\n", "\nversion: 2\n");
+	const std::string e = magneticErrorOf(v2);
 	EXPECT_NE(e.find("cal.yaml: axes[0].magnetic: a magnetic-sensitivity section needs file version 3 (the file says 2)"),
 			  std::string::npos)
 		<< e;
 	// version 1 (single axis at the top level): the same refusal
 	std::ifstream f(std::string(FOG_TEST_DATA_DIR) + "/model/cal_v1_coil_A.yaml");
 	std::string v1((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-	ASSERT_EQ(errorOf(v1), "");
+	ASSERT_EQ(magneticErrorOf(v1), "");
 	v1 += "magnetic:\n  dph_per_uT: 0.0003\n";
-	EXPECT_NE(errorOf(v1).find("cal.yaml: magnetic: a magnetic-sensitivity section needs file version 3 (the file says 1)"),
+	EXPECT_NE(magneticErrorOf(v1).find("cal.yaml: magnetic: a magnetic-sensitivity section needs file version 3 (the file says 1)"),
 			  std::string::npos)
-		<< errorOf(v1);
+		<< magneticErrorOf(v1);
 }
 
 // Bad numbers in the section are field errors naming the key.
 TEST(MagneticCalibration, BadSectionGivesFieldErrors)
 {
 	const std::string good = calibrationToYaml(withMagnetic(0.000244140625));  // 2^-12
-	ASSERT_EQ(errorOf(good), "");
+	ASSERT_EQ(magneticErrorOf(good), "");
 	const struct
 	{
 		std::string from, to, field;
@@ -131,7 +131,7 @@ TEST(MagneticCalibration, BadSectionGivesFieldErrors)
 	};
 	for (const auto& c : cases)
 	{
-		const std::string e = errorOf(replaced(good, c.from, c.to));
+		const std::string e = magneticErrorOf(magneticReplaced(good, c.from, c.to));
 		EXPECT_NE(e.find(c.field), std::string::npos) << c.to << " -> " << e;
 	}
 	Calibration bad = withMagnetic(0.000244140625);
@@ -145,7 +145,7 @@ TEST(MagneticCalibration, CompensatorFollowsTheClosedForm)
 {
 	const double k = 4e-4;
 	FogSeries b = fogtest::makeCoilRun("B", 82);
-	const CompensatedSeries plain = compensate(biasOnly(), b);
+	const CompensatedSeries plain = compensate(magneticBiasOnly(), b);
 	b.field_uT = fieldSteps(b);
 	const CompensatedSeries out = compensate(withMagnetic(k), b);
 	ASSERT_EQ(out.counters.field_unknown_samples, 0u);
@@ -156,21 +156,21 @@ TEST(MagneticCalibration, CompensatorFollowsTheClosedForm)
 		ASSERT_EQ(out.compensated_dph[i], b.rate_dph[2][i] - bias) << i;
 	}
 	// the plain calibration ignores the field column
-	EXPECT_EQ(compensate(biasOnly(), b).compensated_dph, plain.compensated_dph);
+	EXPECT_EQ(compensate(magneticBiasOnly(), b).compensated_dph, plain.compensated_dph);
 }
 
 // Field unknown (no column, NaN samples, or never noted): no term, and the samples are counted.
 TEST(MagneticCalibration, UnknownFieldIsCountedAndAddsNothing)
 {
 	FogSeries b = fogtest::makeCoilRun("B", 83);
-	const CompensatedSeries plain = compensate(biasOnly(), b);
+	const CompensatedSeries plain = compensate(magneticBiasOnly(), b);
 	const Calibration cal = withMagnetic(4e-4);
 	const CompensatedSeries none = compensate(cal, b);  // no field column
 	EXPECT_EQ(none.compensated_dph, plain.compensated_dph);
 	EXPECT_EQ(none.counters.field_unknown_samples, b.size());
 	EXPECT_NE(fieldMissingWarning(cal, b).find("no field column"), std::string::npos);
-	EXPECT_EQ(fieldMissingWarning(biasOnly(), b), "");
-	EXPECT_EQ(compensate(biasOnly(), b).counters.field_unknown_samples, 0u);
+	EXPECT_EQ(fieldMissingWarning(magneticBiasOnly(), b), "");
+	EXPECT_EQ(compensate(magneticBiasOnly(), b).counters.field_unknown_samples, 0u);
 	b.field_uT = fieldSteps(b);
 	for (std::size_t i = 0; i < 100; i++) b.field_uT[i] = std::numeric_limits<double>::quiet_NaN();
 	const CompensatedSeries some = compensate(cal, b);
@@ -194,7 +194,7 @@ TEST(MagneticCalibration, UnknownFieldIsCountedAndAddsNothing)
 	comp.step(b.time_s[0], b.rate_dph[2][0], rowAt(0));
 	EXPECT_EQ(comp.counters().field_unknown_samples, 1u);
 	EXPECT_TRUE(comp.readsField());
-	EXPECT_FALSE(Compensator(biasOnly(), b.thermistors).readsField());
+	EXPECT_FALSE(Compensator(magneticBiasOnly(), b.thermistors).readsField());
 }
 
 // Batch (compensate) == streaming (noteField + step per sample) with the field, bit for bit,
@@ -230,16 +230,16 @@ TEST(MagneticCalibration, TermContributionIsBounded)
 {
 	const std::string good = calibrationToYaml(withMagnetic(0.000244140625));
 	const auto withCoef = [&](const std::string& v) {
-		return replaced(good, "dph_per_uT: 0.000244140625 ", "dph_per_uT: " + v + " ");
+		return magneticReplaced(good, "dph_per_uT: 0.000244140625 ", "dph_per_uT: " + v + " ");
 	};
-	EXPECT_EQ(errorOf(withCoef("100")), "");  // 1e6 deg/h at 1e4 uT: the bound itself
+	EXPECT_EQ(magneticErrorOf(withCoef("100")), "");  // 1e6 deg/h at 1e4 uT: the bound itself
 	for (const char* v : {"100.5", "1000000", "-1000000"})
 	{
-		const std::string e = errorOf(withCoef(v));
+		const std::string e = magneticErrorOf(withCoef(v));
 		EXPECT_NE(e.find("axes[0].magnetic.dph_per_uT"), std::string::npos) << v << " -> " << e;
 		EXPECT_NE(e.find("at 10000 uT"), std::string::npos) << v << " -> " << e;
 	}
-	const std::string e = errorOf(replaced(good, "field_range_uT: [-50, 100]", "field_range_uT: [-50, 20000]"));
+	const std::string e = magneticErrorOf(magneticReplaced(good, "field_range_uT: [-50, 100]", "field_range_uT: [-50, 20000]"));
 	EXPECT_NE(e.find("axes[0].magnetic.field_range_uT: beyond the plausible field of 10000 uT"), std::string::npos) << e;
 }
 
@@ -258,6 +258,6 @@ TEST(MagneticCalibration, FieldOutsideTheRecordedRangeIsCounted)
 	const CompensatedSeries out = compensate(cal, b);
 	EXPECT_EQ(out.counters.field_outside_samples, 13u);
 	EXPECT_EQ(out.counters.max_field_excursion_uT, 50.0);
-	const CompensatedSeries plain = compensate(biasOnly(), b);
+	const CompensatedSeries plain = compensate(magneticBiasOnly(), b);
 	EXPECT_EQ(out.bias_dph[0], plain.bias_dph[0] + 4e-4 * 150.0);
 }

@@ -12,8 +12,8 @@ using namespace mrpt_fog::sim;
 
 namespace
 {
-FogDevice parse(const std::string& text) { return fogtest::fromYamlText<FogDevice>(text, "dev.yaml"); }
-std::string errorOf(const std::string& text) { return fogtest::fromYamlTextError<FogDevice>(text, "dev.yaml"); }
+FogDevice parseDevice(const std::string& text) { return fogtest::fromYamlText<FogDevice>(text, "dev.yaml"); }
+std::string deviceErrorOf(const std::string& text) { return fogtest::fromYamlTextError<FogDevice>(text, "dev.yaml"); }
 }  // namespace
 
 TEST(FogDevice, DefaultHasTheSeedsFourThermistors)
@@ -33,7 +33,7 @@ TEST(FogDevice, DefaultHasTheSeedsFourThermistors)
 
 TEST(FogDevice, YamlOverlaysOnlyGivenKeys)
 {
-	const FogDevice d = parse(
+	const FogDevice d = parseDevice(
 		"latitude_deg: 30\n"
 		"coil: {pattern: octupolar, midpoint_offset_m: 0.5, fiber_layers: 64}\n"
 		"thermal: {layers: 10, housing_to_air_W_K: 0.8}\n"
@@ -58,14 +58,14 @@ TEST(FogDevice, YamlOverlaysOnlyGivenKeys)
 
 TEST(FogDevice, BadInputNamesFileAndField)
 {
-	EXPECT_NE(errorOf("coil: {pattern: spiral}\n").find("dev.yaml: coil.pattern"), std::string::npos);
-	EXPECT_NE(errorOf("thermal: {layers: 1}\n").find("thermal.layers"), std::string::npos);
-	EXPECT_NE(errorOf("noise: {arw: 1}\n").find("dev.yaml: noise.arw"), std::string::npos);
-	EXPECT_NE(errorOf("latitude_deg: 95\n").find("latitude_deg"), std::string::npos);
-	EXPECT_NE(errorOf("thermistors:\n  - {name: 'a b', side: inner}\n").find("thermistors[0].name"), std::string::npos);
-	EXPECT_NE(errorOf("thermistors:\n  - {name: A}\n  - {name: A}\n").find("duplicate"), std::string::npos);
-	EXPECT_NE(errorOf("errors: {temp_poly_dph: 3}\n").find("temp_poly_dph"), std::string::npos);
-	EXPECT_NE(errorOf("colour: red\n").find("dev.yaml: colour"), std::string::npos);
+	EXPECT_NE(deviceErrorOf("coil: {pattern: spiral}\n").find("dev.yaml: coil.pattern"), std::string::npos);
+	EXPECT_NE(deviceErrorOf("thermal: {layers: 1}\n").find("thermal.layers"), std::string::npos);
+	EXPECT_NE(deviceErrorOf("noise: {arw: 1}\n").find("dev.yaml: noise.arw"), std::string::npos);
+	EXPECT_NE(deviceErrorOf("latitude_deg: 95\n").find("latitude_deg"), std::string::npos);
+	EXPECT_NE(deviceErrorOf("thermistors:\n  - {name: 'a b', side: inner}\n").find("thermistors[0].name"), std::string::npos);
+	EXPECT_NE(deviceErrorOf("thermistors:\n  - {name: A}\n  - {name: A}\n").find("duplicate"), std::string::npos);
+	EXPECT_NE(deviceErrorOf("errors: {temp_poly_dph: 3}\n").find("temp_poly_dph"), std::string::npos);
+	EXPECT_NE(deviceErrorOf("colour: red\n").find("dev.yaml: colour"), std::string::npos);
 }
 
 TEST(FogDevice, WithoutNoiseSilencesEveryNoiseSourceAndKeepsThePhysics)

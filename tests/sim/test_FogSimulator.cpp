@@ -36,7 +36,7 @@ TEST(FogSimulator, EarthRateAloneIsVerticalComponent)
 {
 	FogSimulator sim(quietDevice(), {"earth_rate"}, 1);
 	sim.start(air(25), InitialThermalState::Steady);
-	const FogSample s = sim.advance(0.1, air(25));
+	const sim::FogSample s = sim.advance(0.1, air(25));
 	EXPECT_NEAR(s.rate_dph, 15.041 * std::sin(40 * units::kDegToRad), 1e-3);  // PHYSICS.md, 40 deg
 	EXPECT_DOUBLE_EQ(s.rate_dph, s.ideal_rate_dph);
 }
@@ -47,7 +47,7 @@ TEST(FogSimulator, NoEffectsAndNoNoiseGiveZero)
 	sim.start(air(25), InitialThermalState::Steady);
 	for (int k = 0; k < 100; k++)
 	{
-		const FogSample s = sim.advance(1.0, air(25 - 0.1 * k));
+		const sim::FogSample s = sim.advance(1.0, air(25 - 0.1 * k));
 		EXPECT_DOUBLE_EQ(s.rate_dph, 0.0);
 	}
 }
@@ -56,7 +56,7 @@ TEST(FogSimulator, ShupeTermFollowsNodeRatesAndVanishesAtSteadyState)
 {
 	FogSimulator sim(quietDevice(), {"shupe_rate"}, 1);
 	sim.start(air(25), InitialThermalState::Steady);
-	FogSample s;
+	sim::FogSample s;
 	double peak = 0;
 	for (int k = 0; k < 3600; k++)
 	{
@@ -74,7 +74,7 @@ TEST(FogSimulator, ScaleFactorActsOnAppliedRate)
 	FogDevice d = quietDevice();
 	FogSimulator sim(d, {"scale_factor_temp"}, 1);
 	sim.start(air(-15, true, 36000), InitialThermalState::Steady);
-	const FogSample s = sim.advance(0.1, air(-15, true, 36000));
+	const sim::FogSample s = sim.advance(0.1, air(-15, true, 36000));
 	const double expected = 36000 * (1 + d.errors.sf_ppm_per_C() * 1e-6 * (s.coil_mean_C - d.errors.sf_ref_C));
 	EXPECT_NEAR(s.rate_dph, expected, 1e-9 * 36000);
 	EXPECT_DOUBLE_EQ(s.ideal_rate_dph, 36000.0);
@@ -88,7 +88,7 @@ TEST(FogSimulator, MagneticAndRadialGradientAreLinear)
 	EXPECT_NEAR(mag.advance(0.1, air(25, true, 0, 500)).rate_dph, 500 * d.errors.magnetic_dph_per_uT(), 1e-12);
 	FogSimulator rg(d, {"radial_gradient"}, 1);
 	rg.start(air(25), InitialThermalState::Steady);
-	const FogSample s = rg.advance(10.0, air(20));
+	const sim::FogSample s = rg.advance(10.0, air(20));
 	EXPECT_NEAR(s.rate_dph, d.errors.radial_gradient_dph_per_C() * (s.inner_C - s.outer_C), 1e-12);
 }
 
@@ -96,9 +96,9 @@ TEST(FogSimulator, WarmupDecaysAfterPowerOn)
 {
 	FogDevice d = quietDevice();
 	FogSimulator sim(d, {"warmup"}, 1);
-	const FogSample s0 = sim.start(air(23), InitialThermalState::Cold);
+	const sim::FogSample s0 = sim.start(air(23), InitialThermalState::Cold);
 	EXPECT_NEAR(s0.rate_dph, d.errors.warmup_dph(), 1e-12);
-	FogSample s;
+	sim::FogSample s;
 	for (int k = 0; k < 600; k++) s = sim.advance(1.0, air(23));
 	EXPECT_NEAR(s.rate_dph, d.errors.warmup_dph() * std::exp(-1.0), 1e-9);
 	// Power cycle restarts it; while off the output is 0.
@@ -111,7 +111,7 @@ TEST(FogSimulator, HysteresisDependsOnDirection)
 	FogDevice d = quietDevice();
 	FogSimulator sim(d, {"hysteresis"}, 1);
 	sim.start(air(25), InitialThermalState::Steady);
-	FogSample s;
+	sim::FogSample s;
 	// Cool by 60 C (12 spans) and soak: the cooling branch, -H/2 (to exp(-12) ~ 6e-6 of H).
 	for (int k = 0; k < 3600; k++) s = sim.advance(1.0, air(25 - k / 60.0));
 	for (int k = 0; k < 4 * 3600; k++) s = sim.advance(1.0, air(-35));
@@ -126,8 +126,8 @@ TEST(FogSimulator, HeatSourceWarmsTheCoil)
 {
 	FogDevice d = quietDevice();
 	FogSimulator on(d, {"heat_source"}, 1), off(d, {}, 1);
-	const FogSample a = on.start(air(20), InitialThermalState::Steady);
-	const FogSample b = off.start(air(20), InitialThermalState::Steady);
+	const sim::FogSample a = on.start(air(20), InitialThermalState::Steady);
+	const sim::FogSample b = off.start(air(20), InitialThermalState::Steady);
 	EXPECT_GT(a.coil_mean_C, b.coil_mean_C + 0.5);
 	EXPECT_NEAR(b.coil_mean_C, 20.0, 1e-9);
 }
@@ -141,7 +141,7 @@ TEST(FogSimulator, ThermistorLagIsFirstOrder)
 	FogSimulator lag(d, {"thermistor_lag"}, 1), nolag(d, {}, 1);
 	lag.start(air(25), InitialThermalState::Steady);
 	nolag.start(air(25), InitialThermalState::Steady);
-	FogSample a, b;
+	sim::FogSample a, b;
 	for (int k = 0; k < 600; k++)
 	{
 		a = lag.advance(1.0, air(25 - k / 60.0));
@@ -163,7 +163,7 @@ TEST(FogSimulator, IdealTwinSharesNoiseAndQuantisesAngle)
 	const double q = d.noise.angle_quantum_arcsec;
 	for (int k = 0; k < 1000; k++)
 	{
-		const FogSample s = sim.advance(0.1, air(25));
+		const sim::FogSample s = sim.advance(0.1, air(25));
 		sum_diff += std::abs(s.rate_dph - s.ideal_rate_dph);
 		// Each output is a whole number of angle quanta per sample: rate x dt / q is an integer.
 		const double counts = s.rate_dph * 0.1 / q;

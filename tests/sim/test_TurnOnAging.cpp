@@ -15,7 +15,7 @@ using namespace mrpt_fog::sim;
 
 namespace
 {
-FogDevice quietDevice()
+FogDevice quietTurnOnDevice()
 {
 	FogDevice d = FogDevice::defaultDevice();
 	d.noise = GyroNoiseParams{0, 0, 300, 0, 0};
@@ -25,7 +25,7 @@ FogDevice quietDevice()
 	return d;
 }
 
-ChamberState air(double T, bool on = true, double table = 0)
+ChamberState chamberAir(double T, bool on = true, double table = 0)
 {
 	ChamberState s;
 	s.air_C = T;
@@ -68,18 +68,18 @@ TEST(TurnOnAging, OffByDefaultAndNotDescribed)
 // their mean is 0 (within 4 sd of the mean, 4 x 0.3 / sqrt(2000)).
 TEST(TurnOnAging, OffsetIsDrawnAtEachTurnOnWithTheStatedRepeatability)
 {
-	FogDevice d = quietDevice();
+	FogDevice d = quietTurnOnDevice();
 	d.turn_on.bias_repeatability_dph = 0.3;
 	FogSimulator sim(d, {}, 17);
-	FogSample s = sim.start(air(25), InitialThermalState::Steady);
+	sim::FogSample s = sim.start(chamberAir(25), InitialThermalState::Steady);
 	std::vector<double> offsets;
 	for (int cycle = 0; cycle < 2000; cycle++)
 	{
-		const double first = sim.advance(1.0, air(25)).rate_dph;
-		EXPECT_EQ(sim.advance(1.0, air(25)).rate_dph, first);  // constant within a turn-on
+		const double first = sim.advance(1.0, chamberAir(25)).rate_dph;
+		EXPECT_EQ(sim.advance(1.0, chamberAir(25)).rate_dph, first);  // constant within a turn-on
 		offsets.push_back(first);
-		EXPECT_EQ(sim.advance(1.0, air(25, false)).rate_dph, 0.0);  // off
-		s = sim.advance(1.0, air(25, true));  // the next turn-on
+		EXPECT_EQ(sim.advance(1.0, chamberAir(25, false)).rate_dph, 0.0);  // off
+		s = sim.advance(1.0, chamberAir(25, true));  // the next turn-on
 		EXPECT_NE(s.rate_dph, first);
 	}
 	EXPECT_NEAR(stddev(offsets), 0.3, 0.05 * 0.3);
@@ -95,11 +95,11 @@ TEST(TurnOnAging, OtherRandomStreamsDoNotChange)
 	FogDevice on = d;
 	on.turn_on.bias_repeatability_dph = 0.3;
 	FogSimulator a(d, defaultEffects(), 5), b(on, defaultEffects(), 5);
-	a.start(air(10), InitialThermalState::Cold);
-	b.start(air(10), InitialThermalState::Cold);
+	a.start(chamberAir(10), InitialThermalState::Cold);
+	b.start(chamberAir(10), InitialThermalState::Cold);
 	for (int k = 0; k < 200; k++)
 	{
-		const FogSample x = a.advance(0.1, air(10)), y = b.advance(0.1, air(10));
+		const sim::FogSample x = a.advance(0.1, chamberAir(10)), y = b.advance(0.1, chamberAir(10));
 		EXPECT_EQ(x.ideal_rate_dph, y.ideal_rate_dph);
 		EXPECT_EQ(x.temp_C, y.temp_C);
 		EXPECT_NEAR(y.rate_dph - x.rate_dph, y.turn_on_bias_dph, 1e-12);
@@ -110,31 +110,31 @@ TEST(TurnOnAging, OtherRandomStreamsDoNotChange)
 // Aging: bias = aging rate x (age at t = 0 + t) / 365.25 days.
 TEST(TurnOnAging, AgingDriftsWithTheDevicesAge)
 {
-	FogDevice d = quietDevice();
+	FogDevice d = quietTurnOnDevice();
 	d.turn_on.aging_dph_per_year = 0.5;
 	d.turn_on.age_days = 365.25;
 	FogSimulator sim(d, {}, 1);
-	EXPECT_NEAR(sim.start(air(25), InitialThermalState::Steady).rate_dph, 0.5, 1e-12);
-	FogSample s;
-	for (int k = 0; k < 10; k++) s = sim.advance(86400.0, air(25));  // ten days on
+	EXPECT_NEAR(sim.start(chamberAir(25), InitialThermalState::Steady).rate_dph, 0.5, 1e-12);
+	sim::FogSample s;
+	for (int k = 0; k < 10; k++) s = sim.advance(86400.0, chamberAir(25));  // ten days on
 	EXPECT_NEAR(s.rate_dph, 0.5 * (365.25 + 10) / 365.25, 1e-12);
 }
 
 // Scale-factor turn-on repeatability: the drawn error acts on the applied rate (table + Earth).
 TEST(TurnOnAging, ScaleFactorDrawActsOnTheAppliedRate)
 {
-	FogDevice d = quietDevice();
+	FogDevice d = quietTurnOnDevice();
 	d.turn_on.sf_repeatability_ppm = 50;
 	FogSimulator sim(d, {}, 3);
-	sim.start(air(25, true, 36000), InitialThermalState::Steady);
+	sim.start(chamberAir(25, true, 36000), InitialThermalState::Steady);
 	std::vector<double> ppm;
 	for (int cycle = 0; cycle < 1000; cycle++)
 	{
-		const FogSample s = sim.advance(1.0, air(25, true, 36000));
+		const sim::FogSample s = sim.advance(1.0, chamberAir(25, true, 36000));
 		EXPECT_NEAR(s.rate_dph, 36000 * (1 + s.turn_on_sf_ppm * 1e-6), 1e-9);
 		EXPECT_EQ(s.ideal_rate_dph, 36000.0);
 		ppm.push_back(s.turn_on_sf_ppm);
-		sim.advance(1.0, air(25, false, 36000));
+		sim.advance(1.0, chamberAir(25, false, 36000));
 	}
 	EXPECT_NEAR(stddev(ppm), 50, 0.07 * 50);  // sampling sd 2.2 %
 }

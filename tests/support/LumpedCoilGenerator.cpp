@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include "LumpedCoilGenerator.h"
+#include <mrpt_fog/obs/Units.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -11,8 +12,8 @@ namespace fogtest
 {
 namespace
 {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kTwoPi = 6.283185307179586;
+using mrpt_fog::units::kNaN;
+using mrpt_fog::units::kTwoPi;
 
 /** One piece of the set-point programme. */
 struct Piece

@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include "ShellCoilGenerator.h"
+#include <mrpt_fog/obs/Units.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -13,8 +14,8 @@ namespace fogtest
 {
 namespace
 {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kTwoPi = 6.283185307179586;
+using mrpt_fog::units::kNaN;
+using mrpt_fog::units::kTwoPi;
 constexpr double kTable_dph = 36000.0;  // 10 deg/s
 
 struct Step

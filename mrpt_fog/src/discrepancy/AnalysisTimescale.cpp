@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/AnalysisTimescale.h>
+#include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog/metrics/AllanDeviation.h>
 
 #include <algorithm>
@@ -10,7 +11,7 @@ namespace mrpt_fog::discrepancy
 {
 namespace
 {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mrpt_fog::units::kNaN;
 
 bool sameValue(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
 double at(const std::vector<double>& v, std::size_t k) { return v.empty() ? kNaN : v[k]; }

@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/AnalysisTimescale.h>
+#include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog/discrepancy/DiscrepancyAnalysis.h>
 #include <mrpt_fog/discrepancy/EffectSelector.h>
 #include <mrpt_fog/discrepancy/RunGapFigures.h>
@@ -17,7 +18,7 @@ namespace mrpt_fog::discrepancy
 {
 namespace
 {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mrpt_fog::units::kNaN;
 
 std::vector<double> masked(const Eigen::VectorXd& r, const std::vector<unsigned char>& rows)
 {

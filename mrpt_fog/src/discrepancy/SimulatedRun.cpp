@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/discrepancy/SimulatedRun.h>
+#include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog/sim/EffectRegistry.h>
 #include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/sim/ChamberRun.h>
@@ -15,7 +16,7 @@ namespace mrpt_fog::discrepancy
 {
 namespace
 {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mrpt_fog::units::kNaN;
 
 sim::ChamberProfile loadProfile(const std::string& name)
 {

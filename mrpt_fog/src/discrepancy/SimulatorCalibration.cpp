@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/common/GoldenSection.h>
+#include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog/discrepancy/SimulatorCalibration.h>
 #include <mrpt_fog/discrepancy/WhitenedRegression.h>
 #include <mrpt_fog/metrics/LongRunVariance.h>
@@ -14,7 +15,7 @@ namespace mrpt_fog::discrepancy
 {
 namespace
 {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mrpt_fog::units::kNaN;
 
 /** A parameter of the thermal network (fitted on the temperature residual). */
 bool isTempSlot(const ParamSlot& s)

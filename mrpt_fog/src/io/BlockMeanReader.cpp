@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog/io/BlockMeanReader.h>
 #include <mrpt_fog/io/FogLogIO.h>
 
@@ -13,7 +14,7 @@ namespace mrpt_fog
 {
 namespace
 {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mrpt_fog::units::kNaN;
 constexpr std::size_t kPeriodSteps = 64;  // time steps used for the native period
 constexpr std::size_t kStepReservoir = 65536;  // thermistor steps kept for the quantum
 

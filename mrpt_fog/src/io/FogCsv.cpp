@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/common/AtomicFile.h>
+#include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog/obs/FogSeriesLayout.h>
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/io/FogRawlogMetadata.h>
@@ -24,7 +25,7 @@ namespace mrpt_fog
 {
 namespace
 {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mrpt_fog::units::kNaN;
 
 std::string trim(const std::string& s)
 {

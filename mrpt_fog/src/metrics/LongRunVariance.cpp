@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/metrics/LongRunVariance.h>
+#include <mrpt_fog/obs/Units.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +10,7 @@ namespace mrpt_fog
 {
 namespace
 {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mrpt_fog::units::kNaN;
 
 double pooledBlocks(const std::vector<std::vector<double>>& series)
 {

@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/model/HysteresisFilter.h>
+#include <mrpt_fog/obs/Units.h>
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,7 @@ namespace mrpt_fog
 {
 namespace
 {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mrpt_fog::units::kNaN;
 }  // namespace
 
 HysteresisFilterBank::HysteresisFilterBank(std::vector<HysteresisChannel> channels) : ch_(std::move(channels))

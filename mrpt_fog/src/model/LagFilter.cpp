@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/model/LagFilter.h>
+#include <mrpt_fog/obs/Units.h>
 
 #include <cmath>
 #include <limits>
@@ -10,7 +11,7 @@ namespace mrpt_fog
 {
 namespace
 {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mrpt_fog::units::kNaN;
 
 /** 1 - (1 - exp(-h)) / h, without cancellation for small h (series below 1e-3). */
 double holdWeight(double h)

@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/common/EnumNames.h>
+#include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/model/CausalRateTrackerInline.h>
 #include <mrpt_fog/model/RateEstimator.h>
@@ -15,7 +16,7 @@ namespace mrpt_fog
 {
 namespace
 {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mrpt_fog::units::kNaN;
 
 void checkColumns(const std::vector<double>& t, const std::vector<double>& x)
 {

@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/model/Compensator.h>
+#include <mrpt_fog/model/CalibrationFitStages.h>
 #include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/model/ScaleFactorFit.h>
 
@@ -13,10 +14,7 @@ namespace mrpt_fog
 {
 namespace
 {
-std::string runName(const std::vector<std::string>& labels, std::size_t i)
-{
-	return i < labels.size() ? labels[i] : "run " + std::to_string(i + 1);
-}
+using calibration_fit::runName;
 
 /** Two-sided 95 % quantile of Student's t with dof degrees of freedom (table to 30, then the
  * Cornish-Fisher expansion, error < 1e-4 there). */

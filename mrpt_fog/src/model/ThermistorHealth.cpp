@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/model/ThermistorHealth.h>
+#include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog/common/NumberFormat.h>
 
 #include <algorithm>
@@ -11,7 +12,7 @@ namespace mrpt_fog
 {
 namespace
 {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mrpt_fog::units::kNaN;
 
 void requireField(bool ok, const char* field, const char* reason)
 {

@@ -1,5 +1,6 @@
 /* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #include <mrpt_fog/common/NumberFormat.h>
+#include <mrpt_fog/model/CalibrationFitStages.h>
 #include <mrpt_fog/model/Compensator.h>
 #include <mrpt_fog/model/WarmupFit.h>
 
@@ -13,10 +14,7 @@ namespace mrpt_fog
 {
 namespace
 {
-std::string runName(const std::vector<std::string>& labels, std::size_t i)
-{
-	return i < labels.size() ? labels[i] : "run " + std::to_string(i + 1);
-}
+using calibration_fit::runName;
 
 /** 4 significant digits, as an ostream at precision 4 (the messages' format). */
 std::string fmt(double v) { return formatValue("%.4g", v); }
@@ -29,7 +27,7 @@ struct Bin
 	double mean_dph = 0;
 };
 
-struct LinearFit
+struct WarmupLinearFit
 {
 	Eigen::VectorXd coef;  // offsets per span, then A
 	double rss = std::numeric_limits<double>::infinity();
@@ -57,9 +55,9 @@ Eigen::MatrixXd designAt(const std::vector<Bin>& bins, std::size_t nspans, const
 	return X;
 }
 
-LinearFit solve(const Eigen::MatrixXd& X, const Eigen::VectorXd& y)
+WarmupLinearFit solve(const Eigen::MatrixXd& X, const Eigen::VectorXd& y)
 {
-	LinearFit f;
+	WarmupLinearFit f;
 	Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(X);
 	f.coef = qr.solve(y);
 	f.rss = (X * f.coef - y).squaredNorm();
@@ -230,8 +228,8 @@ WarmupModel fitWarmup(const std::vector<FogSeries>& runs, const Calibration& cal
 	std::vector<double> taus;
 	for (double l : lt) taus.push_back(std::exp(l));
 	const Eigen::MatrixXd X = designAt(bins, nspans, taus);
-	const LinearFit fit = solve(X, y);
-	const LinearFit base = solve(designAt(bins, nspans, {}), y);
+	const WarmupLinearFit fit = solve(X, y);
+	const WarmupLinearFit base = solve(designAt(bins, nspans, {}), y);
 	std::vector<double> amps;
 	for (std::size_t m = 0; m < m_terms; m++) amps.push_back(fit.coef(static_cast<Eigen::Index>(nspans + m)));
 

@@ -18,7 +18,7 @@ using namespace detail;
 
 namespace
 {
-constexpr double kSecondsPerMinute = 60.0;
+using mrpt_fog::units::kSecondsPerMinute;
 
 /** IEEE Std 952 style scale-factor-vs-temperature run: soaks at -40, -15, 10, 35 and 60 C
  * (2 C/min between them, 90 min soak each: about 2 coil time constants), then at each soak the

@@ -10,7 +10,7 @@ namespace mrpt_fog::sim
 namespace
 {
 constexpr double kArcsecPerDeg = 3600.0;
-constexpr double kSecondsPerMinute = 60.0;
+using mrpt_fog::units::kSecondsPerMinute;
 constexpr double kSecondsPerDay = 86400.0;
 
 // Rounds to a multiple of q; when 1/q is an integer (0.01 C) divides by it, so that the result

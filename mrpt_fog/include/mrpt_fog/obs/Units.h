@@ -5,13 +5,21 @@
  * Named unit conversions (never bare literals in formulas) and physical constants. */
 
 #include <cmath>
+#include <limits>
 
 namespace mrpt_fog::units
 {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegToRad = kPi / 180.0;
 constexpr double kRadToDeg = 180.0 / kPi;
+constexpr double kTwoPi = 2.0 * kPi;
+constexpr double kSecondsPerMinute = 60.0;
 constexpr double kSecondsPerHour = 3600.0;
+/** sqrt(3600 s/h): an angle random walk N [deg/sqrt(h)] is a white rate of density 60 N
+ * [deg/h/sqrt(Hz)], i.e. a rate sigma of 60 N / sqrt(T [s]) [deg/h] over an average of T s. */
+constexpr double kSqrtSecondsPerHour = 60.0;
+/** A missing value (no sample, undefined figure). */
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /** deg/h -> rad/s */
 constexpr double kDegPerHourToRadPerSec = kDegToRad / kSecondsPerHour;
 /** rad/s -> deg/h */
