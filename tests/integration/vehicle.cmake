@@ -14,3 +14,17 @@ if(TARGET fog-odometry AND TARGET vehicle-rawlog-gen)
     -DWORK=${CMAKE_CURRENT_BINARY_DIR}/vehicle_600 -DDURATION=600 -DTARGETS=ON -P ${FOG_SOURCE_DIR}/tests/heading/vehicle_check.cmake)
   set_tests_properties(heading.vehicle_rawlog_600s PROPERTIES LABELS "heading;integration;long" TIMEOUT 900)
 endif()
+# MRPT's stock pf-localization on fog-odometry's output, on fog-localize's map (the localize
+# fixture writes it), against the held-back truth: the compensated FOG's position RMS below the
+# wheels' (tests/heading/pf_localization_check.cmake). Whole drive, two filter runs: about a
+# minute in Release, under "long".
+find_program(VEH_PF_LOCALIZATION pf-localization)
+if(TARGET fog-odometry AND TARGET vehicle-rawlog-gen AND TARGET fog-localize AND VEH_PF_LOCALIZATION)
+  add_test(NAME heading.pf_localization_vehicle COMMAND ${CMAKE_COMMAND} -DGEN=$<TARGET_FILE:vehicle-rawlog-gen>
+    -DODO=$<TARGET_FILE:fog-odometry> -DPF=${VEH_PF_LOCALIZATION} -DPLUGIN=$<TARGET_FILE:mrpt_fog>
+    -DDRIVE=${FOG_SOURCE_DIR}/datasets/drive.rawlog -DCAL=${FOG_SOURCE_DIR}/tests/data/heading/cal_full.yaml
+    -DMAP=${CMAKE_CURRENT_BINARY_DIR}/localize/map.gridmap.gz -DPARTICLES=100
+    -DWORK=${CMAKE_CURRENT_BINARY_DIR}/vehicle_pf -P ${FOG_SOURCE_DIR}/tests/heading/pf_localization_check.cmake)
+  set_tests_properties(heading.pf_localization_vehicle PROPERTIES FIXTURES_REQUIRED loc_run
+    LABELS "heading;integration;long" TIMEOUT 1200)
+endif()
