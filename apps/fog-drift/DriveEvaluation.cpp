@@ -1,7 +1,7 @@
 /* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
 #include "DriveEvaluation.h"
 
-#include "Compensation.h"
+#include "DriveCompensation.h"
 #include "StreamingDrive.h"
 #include "Progress.h"
 
@@ -234,7 +234,7 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 			const std::size_t i = static_cast<std::size_t>(a);
 			if (c && (e.three_axis || a == GyroAxis::Z))
 			{
-				comp[i] = compensatedRate_dph(fog, *c, st.cal_path, st.screen_thermistors, &e.field_warning);
+				comp[i] = app::compensatedDriveRate_dph(fog, *c, st.cal_path, st.screen_thermistors, &e.field_warning);
 				e.magnetic_term |= c->magnetic.has_value();
 			}
 			else

@@ -10,11 +10,10 @@
 #include "LogInput.h"
 #include "CommandLine.h"
 #include "Options.h"
-#include "Compensation.h"
+#include "DriveCompensation.h"
 #include "DriftOutputs.h"
 #include "DriveData.h"
 #include "DriveEvaluation.h"
-#include "HeadingDeadReckoning.h"
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt_fog/common/OutputSafety.h>
