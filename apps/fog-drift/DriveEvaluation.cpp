@@ -1,12 +1,13 @@
 /* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
 #include "DriveEvaluation.h"
 
-#include "Compensation.h"
+#include "DriveCompensation.h"
 #include "StreamingDrive.h"
 #include "Progress.h"
 
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/obs/Units.h>
+#include <mrpt_fog_heading/CalibrationEarthRate.h>
 #include <mrpt_fog_nav/Rotation.h>
 
 #include <algorithm>
@@ -40,29 +41,32 @@ std::string latitudeConflict(const char* option, double option_deg, const char* 
 
 bool noteCalibrationEarthRate(DriveEvaluation& e, const DriveSettings& st, const Calibration& zcal)
 {
-	double cal_lat_deg = e.latitude_deg;
-	e.calibration_latitude_source = "drive";
 	if (st.cal_latitude_deg)
 	{
-		cal_lat_deg = *st.cal_latitude_deg;
-		e.calibration_latitude_source = "option";
 		const bool in_file = std::isfinite(zcal.latitude_deg);
 		const double meta_deg = in_file ? zcal.latitude_deg : e.drive.latitude_deg.value_or(NAN);
-		if (std::isfinite(meta_deg) && std::abs(meta_deg - cal_lat_deg) > kLatitudeConflict_deg)
+		if (std::isfinite(meta_deg) && std::abs(meta_deg - *st.cal_latitude_deg) > kLatitudeConflict_deg)
 			e.option_conflicts.push_back(latitudeConflict(
-				"--cal-latitude-deg", cal_lat_deg,
+				"--cal-latitude-deg", *st.cal_latitude_deg,
 				in_file ? "the calibration file's latitude_deg" : "the drive's metadata latitude_deg", meta_deg,
 				in_file ? "" : " (the calibration file has none)"));
 	}
-	else if (std::isfinite(zcal.latitude_deg))
+	// The Earth-rate rule (heading/CalibrationEarthRate.h).
+	heading::CalibrationEarthRateOptions o;
+	o.calibration_latitude_deg = st.cal_latitude_deg;
+	o.bias_without_earth_rate = st.cal_no_earth_rate;
+	heading::CalibrationEarthRate r;
+	try
 	{
-		cal_lat_deg = zcal.latitude_deg;
-		e.calibration_latitude_source = "calibration";
+		r = heading::calibrationEarthRate(zcal, e.latitude_deg, o);
 	}
-	if (!(std::abs(cal_lat_deg) <= 90)) throw std::runtime_error("--cal-latitude-deg: must be within [-90, 90]");
-	const bool bias_holds_earth = !st.cal_no_earth_rate && zcal.earth_rate == EarthRateHandling::InBias;
-	if (bias_holds_earth) e.calibration_earth_rate_dph = units::kEarthRate_dph * std::sin(cal_lat_deg * units::kDegToRad);
-	return bias_holds_earth;
+	catch (const std::invalid_argument&)
+	{
+		throw std::runtime_error("--cal-latitude-deg: must be within [-90, 90]");
+	}
+	e.calibration_latitude_source = heading::latitudeSourceName(r.source);
+	if (r.bias_holds_earth_rate) e.calibration_earth_rate_dph = r.add_back_dph;
+	return r.bias_holds_earth_rate;
 }
 
 HeadingOptions headingOptionsFor(DriveEvaluation& e, const std::string& path, const DriveSettings& st)
@@ -234,7 +238,7 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 			const std::size_t i = static_cast<std::size_t>(a);
 			if (c && (e.three_axis || a == GyroAxis::Z))
 			{
-				comp[i] = compensatedRate_dph(fog, *c, st.cal_path, st.screen_thermistors, &e.field_warning);
+				comp[i] = app::compensatedDriveRate_dph(fog, *c, st.cal_path, st.screen_thermistors, &e.field_warning);
 				e.magnetic_term |= c->magnetic.has_value();
 			}
 			else

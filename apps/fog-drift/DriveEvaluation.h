@@ -11,7 +11,6 @@
 #include "DriveData.h"
 #include "FieldRefinement.h"
 #include "GyroOff.h"
-#include "HeadingDeadReckoning.h"
 
 #include <mrpt_fog/common/RowSpill.h>
 #include <mrpt_fog/model/Calibration.h>

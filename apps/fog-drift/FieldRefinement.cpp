@@ -3,6 +3,7 @@
 
 #include <mrpt_fog/common/NumberFormat.h>
 #include <mrpt_fog/obs/Units.h>
+#include <mrpt_fog_heading/CalibrationEarthRate.h>
 
 #include <cmath>
 #include <limits>
@@ -20,7 +21,7 @@ nav::FieldRefinementOptions refinementOptionsFor(const FieldRefinementSettings& 
 	o.guard_s = st.guard_s;
 	o.significance_sigma = st.significance_sigma;
 	r.significance_sigma = st.significance_sigma;
-	o.expected_rate_dph = units::kEarthRate_dph * std::sin(latitude_deg * units::kDegToRad);
+	o.expected_rate_dph = heading::verticalEarthRate_dph(latitude_deg);
 	// the thermal model's uncertainty: its held-out 100 s stability (else the in-sample one)
 	const double held = zcal.held_out.stability_dph, in = zcal.in_sample.stability_dph;
 	r.thermal_sigma_dph = std::isfinite(held) && held > 0 ? held : (std::isfinite(in) && in > 0 ? in : 0.0);

@@ -10,11 +10,9 @@
 #include "LogInput.h"
 #include "CommandLine.h"
 #include "Options.h"
-#include "Compensation.h"
 #include "DriftOutputs.h"
 #include "DriveData.h"
 #include "DriveEvaluation.h"
-#include "HeadingDeadReckoning.h"
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt_fog/common/OutputSafety.h>
@@ -22,6 +20,7 @@
 #include <mrpt_fog_nav/DriftReport.h>
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
+#include <mrpt_fog_heading/CalibrationEarthRate.h>
 #include <mrpt_fog_heading/HeadingWithoutTruth.h>
 #include <mrpt_fog_nav/StandstillDetector.h>
 
@@ -279,7 +278,7 @@ int main(int argc, char** argv)
 			const nav::DriftReport& rep = e.report;
 			std::printf("fog-drift: %s: %.0f s, %.1f m driven, latitude %.4f deg (Earth rate %.4f deg/h removed)\n",
 						path.c_str(), rep.duration_s, rep.distance_m, e.latitude_deg,
-						units::kEarthRate_dph * std::sin(e.latitude_deg * units::kDegToRad));
+						heading::verticalEarthRate_dph(e.latitude_deg));
 			for (const auto& note : e.option_conflicts) std::printf("  note: %s\n", note.c_str());
 			std::printf("  %zu turns (%.0f deg turned), %zu straights (%.0f s) found on the truth\n", e.segments.turns.size(),
 						e.figures.begin()->second.turned_deg, e.segments.straights.size(),
@@ -358,7 +357,7 @@ int main(int argc, char** argv)
 				ctx.input = e.input;
 				ctx.calibration = cal.getValue();
 				ctx.latitude_deg = e.latitude_deg;
-				ctx.earth_rate_removed_dph = units::kEarthRate_dph * std::sin(e.latitude_deg * units::kDegToRad);
+				ctx.earth_rate_removed_dph = heading::verticalEarthRate_dph(e.latitude_deg);
 				ctx.transport_rate = st.heading.transport_rate;
 				ctx.rate_sampling = sampling.getValue();
 				ctx.calibration_earth_rate_dph = e.calibration_earth_rate_dph;

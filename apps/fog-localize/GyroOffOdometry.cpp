@@ -9,7 +9,7 @@
 
 namespace mrpt_fog::localize
 {
-mrpt::poses::CPose2D wheelPoseAt(const drift::OdometryPoses& w, double t)
+mrpt::poses::CPose2D wheelPoseAt(const heading::OdometryPoses& w, double t)
 {
 	if (w.t_s.empty()) throw std::invalid_argument("no wheel odometry");
 	if (t <= w.t_s.front()) return {w.x_m.front(), w.y_m.front(), w.phi_rad.front()};
@@ -21,7 +21,7 @@ mrpt::poses::CPose2D wheelPoseAt(const drift::OdometryPoses& w, double t)
 			mrpt::math::wrapToPi(w.phi_rad[i - 1] + a * dphi)};
 }
 
-ScanOdometry odometryAtScans(const std::vector<nav::Trajectory>& spans, const drift::OdometryPoses& wheel,
+ScanOdometry odometryAtScans(const std::vector<nav::Trajectory>& spans, const heading::OdometryPoses& wheel,
 							 const std::vector<double>& t, const mrpt::poses::CPose2D& start)
 {
 	if (t.size() < 2) throw std::invalid_argument("odometryAtScans: fewer than 2 scans");

@@ -15,16 +15,15 @@
  * turn-on: nothing but the truth could re-initialise it on a simulated drive, and the truth is
  * no sensor.
  *
- * Each powered span is dead-reckoned alone (fog-drift's HeadingDeadReckoning, aligned from the
+ * Each powered span is dead-reckoned alone (heading/TruthAlignedDeadReckoning.h, aligned from the
  * truth at the span's start: only the increments reach the filter, and they do not depend on
  * that alignment). The poses at the scan times are chained: the first span's as dead-reckoned,
  * every later span rigidly moved onto the chain at its first scan, and the wheel increments in
  * between. A drive powered throughout gives exactly the poses of the one dead-reckoned
  * trajectory. */
 
-#include "DriveData.h"
-
 #include <mrpt/poses/CPose2D.h>
+#include <mrpt_fog_heading/DriveLog.h>
 #include <mrpt_fog_nav/Trajectory.h>
 
 #include <cstddef>
@@ -48,13 +47,13 @@ struct ScanOdometry
 
 /** The wheel odometry's pose at t (linear in x and y, shortest arc in heading; clamped to its
  * first and last pose). */
-mrpt::poses::CPose2D wheelPoseAt(const drift::OdometryPoses& wheel, double t_s);
+mrpt::poses::CPose2D wheelPoseAt(const heading::OdometryPoses& wheel, double t_s);
 
 /** spans: the dead-reckoned trajectory of each navigated powered span, in time order and
  * disjoint (one span on a drive powered throughout). A step is Gyro when both its scans lie in
  * the same span's trajectory, else WheelOnly. `start`: the pose at scan_t_s[0] when no span
  * covers it. Throws std::invalid_argument on fewer than 2 scans or no wheel odometry. */
-ScanOdometry odometryAtScans(const std::vector<nav::Trajectory>& spans, const drift::OdometryPoses& wheel,
+ScanOdometry odometryAtScans(const std::vector<nav::Trajectory>& spans, const heading::OdometryPoses& wheel,
 							 const std::vector<double>& scan_t_s, const mrpt::poses::CPose2D& start);
 
 }  // namespace mrpt_fog::localize

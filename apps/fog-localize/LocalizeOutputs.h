@@ -10,7 +10,7 @@
 
 #include "CalibrationChoice.h"
 #include <mrpt_fog/common/JsonWriter.h>
-#include "GyroOff.h"
+#include <mrpt_fog_heading/PowerSpans.h>
 #include "Localization.h"
 #include "LocalizationErrors.h"
 #include "Sensors.h"
@@ -44,7 +44,7 @@ struct LocalizeResults
 	double t0_s = 0, runtime_s = 0;
 	std::vector<GyroResult> gyros;  //!< raw, compensated, ideal
 	HeadingRelevance relevance;  //!< whether the open fields can judge a gyro's heading
-	std::vector<drift::GyroOffStretch> gyro_off;  //!< the FOG's gyro-off stretches (absolute s)
+	std::vector<heading::GyroOffStretch> gyro_off;  //!< the FOG's gyro-off stretches (absolute s)
 	GyroOffRecovery gyro_off_recovery = GyroOffRecovery::Refix;
 	std::vector<std::map<StretchKind, double>> gyro_off_overlap_s;  //!< per stretch: seconds in each stretch kind
 };

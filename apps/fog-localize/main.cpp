@@ -10,12 +10,9 @@
 #include "AppMain.h"
 #include "CalibrationChoice.h"
 #include "CommandLine.h"
-#include "Compensation.h"
-#include "DriveData.h"
+#include "DriveCompensation.h"
 #include "LogInput.h"
-#include "GyroOff.h"
 #include "GyroOffOdometry.h"
-#include "HeadingDeadReckoning.h"
 #include "Localization.h"
 #include "LocalizationErrors.h"
 #include "LocalizeOutputs.h"
@@ -29,6 +26,10 @@
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/obs/Units.h>
+#include <mrpt_fog_heading/CalibrationEarthRate.h>
+#include <mrpt_fog_heading/DriveLog.h>
+#include <mrpt_fog_heading/PowerSpans.h>
+#include <mrpt_fog_heading/TruthAlignedDeadReckoning.h>
 #include <mrpt_fog_nav/Rotation.h>
 
 #include <chrono>
@@ -203,55 +204,51 @@ int main(int argc, char** argv)
 		std::printf("fog-localize: calibration %s\n", describeCalibration(calib).c_str());
 
 		// Drive, gyro variants (as fog-drift), truth.
-		const drift::DriveData drive = drift::readDrive(drive_path, {}, {}, log_input.options());
+		const heading::DriveData drive = heading::readDrive(drive_path, {}, {}, log_input.options());
 		if (!drive.fog_ideal) throw std::runtime_error(drive_path + ": no FOG_IDEAL stream (the ideal gyro is needed)");
 		if (!drive.latitude_deg) throw std::runtime_error(drive_path + ": no latitude_deg in the FOG metadata");
-		drift::HeadingOptions hopt;
+		heading::HeadingOptions hopt;
 		hopt.latitude_deg = *drive.latitude_deg;
 		// The Earth rate the calibration's bias absorbed, at the latitude the file records (a file
 		// without one is taken as made at the drive's latitude).
-		const Calibration& cal_file = calib.cal;
-		double cal_earth_dph = 0.0;
-		if (cal_file.earth_rate == EarthRateHandling::InBias)
-		{
-			const double cal_lat_deg = std::isfinite(cal_file.latitude_deg) ? cal_file.latitude_deg : hopt.latitude_deg;
-			if (!std::isfinite(cal_file.latitude_deg))
-				std::printf("fog-localize: %s records no latitude: assuming the drive's %.4f deg\n", cal_path.c_str(),
-							hopt.latitude_deg);
-			cal_earth_dph = units::kEarthRate_dph * std::sin(cal_lat_deg * units::kDegToRad);
-		}
-		std::vector<double> comp = drift::compensatedRate_dph(drive.fog, calib.cal, cal_path, true);
+		// (The Earth-rate rule: heading/CalibrationEarthRate.h.)
+		const heading::CalibrationEarthRate earth = heading::calibrationEarthRate(calib.cal, hopt.latitude_deg);
+		if (earth.bias_holds_earth_rate && earth.source == heading::LatitudeSource::Drive)
+			std::printf("fog-localize: %s records no latitude: assuming the drive's %.4f deg\n", cal_path.c_str(),
+						hopt.latitude_deg);
+		const double cal_earth_dph = earth.add_back_dph;
+		std::vector<double> comp = app::compensatedDriveRate_dph(drive.fog, calib.cal, cal_path, true);
 		for (double& r : comp) r += cal_earth_dph;  // the static calibration absorbed it: removed once, by the strapdown
-		const std::vector<double> t_fog = drift::absoluteTimes(drive.fog);
+		const std::vector<double> t_fog = heading::absoluteTimes(drive.fog);
 		// Gyro-off stretches (power 0: no gyro sample; GyroOffOdometry.h): each powered span is
 		// dead-reckoned alone, and the filter steps on the wheel odometry where the gyro is off.
 		const auto powerOf = [&](const FogSeries& s) {
-			drift::PowerSpanBuilder b;
+			heading::PowerSpanBuilder b;
 			for (std::size_t k = 0; k < s.size(); k++) b.add(s.epoch_s + s.time_s[k], s.power.empty() ? NAN : s.power[k]);
 			b.finish();
 			if (b.powered().empty())
 				throw std::runtime_error(drive_path + ": " + s.sensor_label + ": the gyro is off throughout");
 			return b;
 		};
-		const drift::PowerSpanBuilder fog_power = powerOf(drive.fog);
+		const heading::PowerSpanBuilder fog_power = powerOf(drive.fog);
 		const auto deadReckonSpans = [&](const std::vector<double>& t, const std::vector<double>& rate,
-										 const drift::PowerSpanBuilder& power) {
+										 const heading::PowerSpanBuilder& power) {
 			std::vector<nav::Trajectory> out;
 			if (power.stretches().empty())  // powered throughout: the drive as one
 			{
-				out.push_back(drift::deadReckonVariant(t, rate, drive, hopt).trajectory);
+				out.push_back(heading::deadReckonVariant(t, rate, drive, hopt).trajectory);
 				return out;
 			}
-			drift::HeadingOptions o = hopt;
+			heading::HeadingOptions o = hopt;
 			o.empty_if_no_odometry = true;
-			for (const drift::PoweredSpan& span : power.powered())
+			for (const heading::PoweredSpan& span : power.powered())
 			{
-				const auto w = drift::navigationWindow(span, t.front(), t.back(), drive.odometry.t_s.front(),
+				const auto w = heading::navigationWindow(span, t.front(), t.back(), drive.odometry.t_s.front(),
 													   drive.odometry.t_s.back(), drive.truth.front().t_s,
 													   drive.truth.back().t_s);
 				if (!w) continue;
 				o.window_t0_s = w->first, o.window_t1_s = w->second;
-				nav::Trajectory part = drift::deadReckonVariant(t, rate, drive, o).trajectory;
+				nav::Trajectory part = heading::deadReckonVariant(t, rate, drive, o).trajectory;
 				if (part.size() >= 2) out.push_back(std::move(part));
 			}
 			if (out.empty())
@@ -262,7 +259,7 @@ int main(int argc, char** argv)
 		const std::vector<std::pair<std::string, std::vector<nav::Trajectory>>> gyros = {
 			{"raw", deadReckonSpans(t_fog, drive.fog.rate_dph[2], fog_power)},
 			{"compensated", deadReckonSpans(t_fog, comp, fog_power)},
-			{"ideal", deadReckonSpans(drift::absoluteTimes(*drive.fog_ideal), drive.fog_ideal->rate_dph[2],
+			{"ideal", deadReckonSpans(heading::absoluteTimes(*drive.fog_ideal), drive.fog_ideal->rate_dph[2],
 									  powerOf(*drive.fog_ideal))}};
 
 		// World and scans.

@@ -39,9 +39,8 @@ if(TARGET fog-localize)
   # The odometry of the filter steps across a gyro-off stretch, in closed form.
   add_executable(test_localize_odometry ${FOG_SOURCE_DIR}/tests/localize/test_GyroOffOdometry.cpp
     ${FOG_SOURCE_DIR}/apps/fog-localize/GyroOffOdometry.cpp)
-  target_include_directories(test_localize_odometry PRIVATE ${FOG_SOURCE_DIR}/apps/fog-localize
-    ${FOG_SOURCE_DIR}/apps/fog-drift)
-  target_link_libraries(test_localize_odometry PRIVATE mrpt_fog_nav fog_obs GTest::gtest GTest::gtest_main)
+  target_include_directories(test_localize_odometry PRIVATE ${FOG_SOURCE_DIR}/apps/fog-localize)
+  target_link_libraries(test_localize_odometry PRIVATE mrpt_fog_heading GTest::gtest GTest::gtest_main)
   fog_add_gtests(test_localize_odometry localize)
   add_test(NAME localize.fog_localize.bad_seeds COMMAND fog-localize --seeds 0 --out ${LOC_DIR}_bad)
   add_test(NAME localize.fog_localize.missing_drive COMMAND fog-localize --drive ${LOC_DIR}/no_such.rawlog --cal x.yaml --out ${LOC_DIR}_bad)

@@ -50,9 +50,9 @@ nav::Trajectory sampled(P (*f)(double), double t0, double t1)
 	}
 	return tr;
 }
-drift::OdometryPoses wheelPoses()
+heading::OdometryPoses wheelPoses()
 {
-	drift::OdometryPoses w;
+	heading::OdometryPoses w;
 	for (double t = 0; t <= 30 + 1e-9; t += 0.5)
 	{
 		const P q = wheel(t);
@@ -112,7 +112,7 @@ TEST(GyroOffOdometry, PoweredThroughoutIsTheTrajectoryItself)
 
 TEST(GyroOffOdometry, WheelPoseInterpolatesHeadingOnTheShortArcAndRefusesBadInput)
 {
-	drift::OdometryPoses w;
+	heading::OdometryPoses w;
 	w.t_s = {0, 1};
 	w.x_m = {0, 2};
 	w.y_m = {0, 4};
@@ -122,5 +122,5 @@ TEST(GyroOffOdometry, WheelPoseInterpolatesHeadingOnTheShortArcAndRefusesBadInpu
 	EXPECT_NEAR(m.y(), 2.0, 1e-12);
 	EXPECT_NEAR(std::abs(m.phi()), M_PI, 1e-12);
 	EXPECT_THROW(odometryAtScans({}, w, {0.5}, mrpt::poses::CPose2D()), std::invalid_argument);
-	EXPECT_THROW(odometryAtScans({}, drift::OdometryPoses{}, {0.1, 0.5}, mrpt::poses::CPose2D()), std::invalid_argument);
+	EXPECT_THROW(odometryAtScans({}, heading::OdometryPoses{}, {0.1, 0.5}, mrpt::poses::CPose2D()), std::invalid_argument);
 }

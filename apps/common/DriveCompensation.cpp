@@ -1,5 +1,5 @@
-/* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
-#include "Compensation.h"
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
+#include "DriveCompensation.h"
 
 #include "FieldWarning.h"
 #include "RangeWarning.h"
@@ -11,9 +11,9 @@
 #include <cstdio>
 #include <stdexcept>
 
-namespace mrpt_fog::drift
+namespace mrpt_fog::app
 {
-std::vector<double> compensatedRate_dph(const FogSeries& fog, const Calibration& cal, const std::string& cal_path,
+std::vector<double> compensatedDriveRate_dph(const FogSeries& fog, const Calibration& cal, const std::string& cal_path,
 										bool screen_thermistors, std::string* field_warning)
 {
 	if (!fog.has_axis[static_cast<std::size_t>(cal.axis)])
@@ -25,7 +25,7 @@ std::vector<double> compensatedRate_dph(const FogSeries& fog, const Calibration&
 	ThermistorScreening screening;
 	try
 	{
-		rate = mrpt_fog::compensatedRate_dph(cal, app::screenedForCompensation(fog, screen_thermistors, screening), &c);
+		rate = mrpt_fog::compensatedRate_dph(cal, screenedForCompensation(fog, screen_thermistors, screening), &c);
 	}
 	catch (const std::exception& e)
 	{
@@ -45,11 +45,11 @@ std::vector<double> compensatedRate_dph(const FogSeries& fog, const Calibration&
 	return rate;
 }
 
-std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string& cal_path, bool screen_thermistors,
+std::vector<double> compensatedDriveRate_dph(const FogSeries& fog, const std::string& cal_path, bool screen_thermistors,
 										std::string* field_warning)
 {
-	return compensatedRate_dph(fog, loadCalibrationYaml(cal_path, GyroAxis::Z), cal_path, screen_thermistors,
+	return compensatedDriveRate_dph(fog, loadCalibrationYaml(cal_path, GyroAxis::Z), cal_path, screen_thermistors,
 							   field_warning);
 }
 
-}  // namespace mrpt_fog::drift
+}  // namespace mrpt_fog::app

@@ -1,8 +1,9 @@
-/* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
+/* mrpt_fog: temperature-error compensation of fiber-optic gyroscopes for MRPT. */
 #pragma once
 
-/** \file Compensation.h
- * The compensated FOG rate of a drive: the calibration file loaded and run through the causal
+/** \file DriveCompensation.h
+ * The compensated FOG rate of a drive held in memory (fog-drift, fog-localize), with the
+ * programs' reports printed: the calibration file loaded and run through the causal
  * Compensator (mrpt_fog/model/Compensator.h), sample by sample as in real time, after the
  * thermistor screening that a real-time implementation would run. */
 
@@ -12,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace mrpt_fog::drift
+namespace mrpt_fog::app
 {
 /** Compensated rate of the calibration's axis [deg/h], one value per sample of fog, with the
  * calibration `cal` read from `cal_path` (named in messages). With `screen_thermistors` the
@@ -20,10 +21,10 @@ namespace mrpt_fog::drift
  * ThermistorHealth.h; a summary is printed). The log's field column feeds a magnetic term; when
  * it is unknown a warning goes to stderr and is appended to `field_warning`. Throws on a log
  * without that axis or a layout mismatch (message names the file). */
-std::vector<double> compensatedRate_dph(const FogSeries& fog, const Calibration& cal, const std::string& cal_path,
+std::vector<double> compensatedDriveRate_dph(const FogSeries& fog, const Calibration& cal, const std::string& cal_path,
 										bool screen_thermistors, std::string* field_warning = nullptr);
 /** The same with the file's z-axis calibration loaded from cal_path. */
-std::vector<double> compensatedRate_dph(const FogSeries& fog, const std::string& cal_path, bool screen_thermistors,
+std::vector<double> compensatedDriveRate_dph(const FogSeries& fog, const std::string& cal_path, bool screen_thermistors,
 										std::string* field_warning = nullptr);
 
-}  // namespace mrpt_fog::drift
+}  // namespace mrpt_fog::app

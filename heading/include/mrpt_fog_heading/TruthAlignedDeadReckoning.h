@@ -1,8 +1,10 @@
-/* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
+/* mrpt_fog_heading: the heading pipeline of a vehicle with a FOG. */
 #pragma once
 
-/** \file HeadingDeadReckoning.h
- * One gyro variant through the navigation chain: vertical FOG rate [deg/h] ->
+/** \file TruthAlignedDeadReckoning.h
+ * A whole drive in memory (DriveLog.h) dead-reckoned against its truth, for the evaluations
+ * (fog-drift's in-memory path, fog-localize); HeadingPipeline.h is the streaming form without a
+ * truth. One gyro variant through the navigation chain: vertical FOG rate [deg/h] ->
  * StrapdownAttitude (VerticalOnly, Earth rate at the drive's latitude removed) -> heading ->
  * DeadReckoning2D with the wheel odometry distances. Starts from the truth pose (position and
  * heading) at the first common time, as an aligned vehicle would.
@@ -10,7 +12,7 @@
  * started from the truth attitude; the heading for dead reckoning is the 3-D attitude's yaw,
  * and roll and pitch are kept for the attitude figures. */
 
-#include "DriveData.h"
+#include <mrpt_fog_heading/DriveLog.h>
 
 #include <mrpt_fog_nav/StrapdownAttitude.h>
 #include <mrpt_fog_nav/Trajectory.h>
@@ -18,7 +20,7 @@
 #include <limits>
 #include <vector>
 
-namespace mrpt_fog::drift
+namespace mrpt_fog::heading
 {
 struct HeadingOptions
 {
@@ -38,7 +40,7 @@ struct HeadingOptions
 
 struct VariantResult
 {
-	nav::Trajectory trajectory;  //!< dead-reckoned, at odometry times (evaluateDrive moves it to DriveEvaluation::variants)
+	nav::Trajectory trajectory;  //!< dead-reckoned, at odometry times (fog-drift's evaluation moves it on)
 	std::vector<double> t_s;  //!< gyro sample times used
 	std::vector<double> yaw_rate_rad_s;  //!< gyro rate with the Earth rate removed (for the rawlog)
 	std::vector<double> roll_rad, pitch_rad;  //!< triad only: the attitude at t_s
@@ -58,4 +60,4 @@ VariantResult deadReckonVariant(const std::vector<double>& t_s, const std::vecto
 double rollOf(const Eigen::Quaterniond& q_nb);
 double pitchOf(const Eigen::Quaterniond& q_nb);
 
-}  // namespace mrpt_fog::drift
+}  // namespace mrpt_fog::heading

@@ -1,5 +1,5 @@
-/* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
-#include "HeadingDeadReckoning.h"
+/* mrpt_fog_heading: the heading pipeline of a vehicle with a FOG. */
+#include <mrpt_fog_heading/TruthAlignedDeadReckoning.h>
 
 #include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog_nav/DeadReckoning.h>
@@ -11,7 +11,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace mrpt_fog::drift
+namespace mrpt_fog::heading
 {
 double rollOf(const Eigen::Quaterniond& q_nb)
 {
@@ -124,4 +124,4 @@ VariantResult deadReckonVariant(const std::vector<double>& t_s, const std::vecto
 	return deadReckonImpl(t_s, &rate_x_dph, &rate_y_dph, rate_z_dph, drive, options);
 }
 
-}  // namespace mrpt_fog::drift
+}  // namespace mrpt_fog::heading

@@ -1,5 +1,5 @@
-/* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
-#include "DriveData.h"
+/* mrpt_fog_heading: the heading pipeline of a vehicle with a FOG. */
+#include <mrpt_fog_heading/DriveLog.h>
 
 #include <mrpt/core/Clock.h>
 #include <mrpt/obs/CObservationOdometry.h>
@@ -13,7 +13,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-namespace mrpt_fog::drift
+namespace mrpt_fog::heading
 {
 std::vector<double> absoluteTimes(const FogSeries& s)
 {
@@ -120,4 +120,4 @@ DriveData readDrive(const std::string& path, const DriveLabels& labels,
 	return d;
 }
 
-}  // namespace mrpt_fog::drift
+}  // namespace mrpt_fog::heading
