@@ -5,6 +5,7 @@
 #include "support/SyntheticChamberRun.h"
 
 #include <algorithm>
+#include <cmath>
 
 using namespace mrpt_fog;
 using namespace mrpt_fog::discrepancy;
@@ -161,4 +162,26 @@ TEST(EffectSelector, HysteresisWidthOffTheGridIsRefined)
 	EXPECT_EQ(s.named.front().id, "hysteresis");
 	EXPECT_LT(s.named.front().theta, 0.0);  // the play shape
 	EXPECT_NEAR(-s.named.front().theta, 3.2, 0.05 * 3.2);
+}
+
+// The rate shapes of the hysteresis family are refined the same way, within their own family: a
+// saturation tanh(dT/dt / 0.3 C/min) of the coil rate (off the grid: 0.2 and 0.5 C/min are its
+// neighbours) added to a clean synthetic run is named as a rate saturation, not as a branch or
+// play, and at a refined width nearer (on a log scale) to 0.3 C/min than to either grid neighbour
+// (the rate width is less well determined than a play's: the ramps hold few distinct rates; 0.317
+// C/min on this seed). The column is checked against its closed form in test_CandidateEffect.
+TEST(EffectSelector, HysteresisRateSaturationOffTheGridIsRefinedWithinItsShape)
+{
+	const auto r = makeSyntheticChamberRun(20, 5);
+	auto sig = computeRunSignals(r.series);
+	const auto base = buildBaseDesign(resolveBaseModel("static:3", r.series), r.series, sig);
+	const auto sat = hysteresisRateSaturation(sig, 0.3);
+	for (std::size_t k = 0; k < sig.size(); ++k) sig.bias_dph[k] += 4.0 * r.noise_rms_dph * sat[k];
+	const auto s = selectMissingEffects(sig, base);
+	ASSERT_FALSE(s.named.empty());
+	EXPECT_EQ(s.named.front().id, "hysteresis");
+	const auto shape = hysteresisShapeOf(s.named.front().theta);
+	EXPECT_EQ(shape.kind, HysteresisShape::Kind::RateSaturation) << s.named.front().theta_meaning;
+	EXPECT_GT(shape.width, std::sqrt(0.2 * 0.3));
+	EXPECT_LT(shape.width, std::sqrt(0.3 * 0.5));
 }
