@@ -97,4 +97,10 @@ const std::vector<std::string>& shellCoilAcceptedIds(const std::string& effect);
  * dt_s outside [0.01, 10] s. */
 ShellCoilRun makeShellCoilRun(const ShellCoilOptions& opt);
 
+/** Rows of avg_s seconds, each the mean of its round(avg_s / dt_s) samples (what a logger
+ * averaging the gyro's increments writes): time, rate, thermistors; power, table rate and field of
+ * the block's first sample (the generator never changes them inside a block of whole seconds). A
+ * trailing partial block is dropped; avg_s <= dt_s returns the run. Throws for dt_s or avg_s <= 0. */
+mrpt_fog::FogSeries averagedShellCoilSeries(const mrpt_fog::FogSeries& run, double dt_s, double avg_s);
+
 }  // namespace fogtest
