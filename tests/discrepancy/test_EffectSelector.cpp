@@ -54,6 +54,7 @@ TEST(EffectSelector, NamesRadialGradientAndResidualFallsToNoiseLevel)
 	EXPECT_EQ(s.named.front().id, "radial_gradient");
 	const auto& ne = s.named.front();
 	EXPECT_LT(ne.ci_low, ne.ci_high);
+	EXPECT_LT(ne.zero_p, 0.05);  // the joint test of its terms (one or two columns) excludes zero
 	// on this two-node coil dTm/dt = -(Tin - Tout)/tau_in - 0.5 d(Tin - Tout)/dt, so the two
 	// columns of shupe_rate reproduce the gradient: a collinear alias sharing the confidence
 	EXPECT_GT(ne.group_confidence, 0.9);
@@ -161,6 +162,9 @@ TEST(EffectSelector, HysteresisWidthOffTheGridIsRefined)
 	ASSERT_FALSE(s.named.empty());
 	EXPECT_EQ(s.named.front().id, "hysteresis");
 	EXPECT_LT(s.named.front().theta, 0.0);  // the play shape
+	// one column: the Wald test of zero and the 95 % interval agree
+	EXPECT_LT(s.named.front().zero_p, 0.05);
+	EXPECT_TRUE(s.named.front().ci_low > 0 || s.named.front().ci_high < 0);
 	EXPECT_NEAR(-s.named.front().theta, 3.2, 0.05 * 3.2);
 }
 

@@ -668,6 +668,11 @@ void setCoefficient(NamedEffect& ne, const CandState& B, const Gls& gB, Eigen::I
 	const Eigen::Index q = B.C.cols();
 	const Vec beta = f.coef.segment(q0, q);
 	const Mat cov = sigma2 * f.cov_unscaled.block(q0, q0, q, q);
+	{
+		const Eigen::LDLT<Mat> ldlt(cov);
+		const double wald = ldlt.info() == Eigen::Success ? double(beta.transpose() * ldlt.solve(beta)) : 0.0;
+		ne.zero_p = std::isfinite(wald) && wald > 0 ? chi2Survival(wald, double(q)) : 1.0;
+	}
 	if (q == 1)
 	{
 		ne.coefficient = B.eff->coefficient_scale * beta(0);
