@@ -2,7 +2,8 @@
 /* The success table on the third generator (tests/support/ShellCoilGenerator.h), label "long",
  * analysed at fog-discrepancy's defaults (ShellCoilTrials.h). Knobs: SHELL_DT_S (sample period,
  * default 1 s), SHELL_SEEDS (trials per cell, default 10; nulls 5x), SHELL_FIRST_SEED (default the
- * held-out block fogtest::kShellCoilHeldOutSeedFirst = 5001; tuning used 1..10), SHELL_EFFECTS=a,b.
+ * held-out block fogtest::kShellCoilHeldOutSeedFirst = 9001; tuning and diagnosis used 1..10,
+ * 5001..5005 and 7001..: ShellCoilGenerator.h), SHELL_EFFECTS=a,b.
  * Targets: named in >= 95 % at effect/noise 3 and >= 80 % at 1; false naming on nulls <= 2 %.
  * Regenerate: test_discrepancy_long --gtest_filter='ShellCoilTrialsLong*' | grep -A3 SHELL */
 #include <gtest/gtest.h>
