@@ -139,15 +139,69 @@ TEST(CandidateEffect, HysteresisPlayOperatorIsLinearAfterAReversalUntilItSaturat
 	EXPECT_EQ(hysteresisColumn(s, -2.0), h);
 	EXPECT_EQ(hysteresisColumn(s, 5.0), hysteresisBranch(s, 5.0));
 	EXPECT_EQ(c.theta_grid, hysteresisThetaGrid());
-	int play = 0, branch = 0;
-	for (double th : c.theta_grid) (hysteresisShapeOf(th).kind == HysteresisShape::Kind::Play ? play : branch)++;
-	EXPECT_EQ(play, 6);
-	EXPECT_EQ(branch, 6);
+	int count[4] = {0, 0, 0, 0};
+	for (double th : c.theta_grid) count[static_cast<int>(hysteresisShapeOf(th).kind)]++;
+	EXPECT_EQ(count[static_cast<int>(HysteresisShape::Kind::Play)], 6);
+	EXPECT_EQ(count[static_cast<int>(HysteresisShape::Kind::ExponentialBranch)], 6);
+	EXPECT_EQ(count[static_cast<int>(HysteresisShape::Kind::RateSaturation)], 6);
+	EXPECT_EQ(count[static_cast<int>(HysteresisShape::Kind::RateSign)], 1);
 	ASSERT_TRUE(static_cast<bool>(c.describe_theta));
 	EXPECT_EQ(c.describe_theta(-2.0), "play operator, half-width 2 C");
 	EXPECT_EQ(c.describe_theta(5.0), "exponential branch, span 5 C");
 	EXPECT_THROW(hysteresisShapeOf(0.0), std::invalid_argument);
 	EXPECT_THROW(hysteresisTheta({HysteresisShape::Kind::Play, -1.0}), std::invalid_argument);
+}
+
+TEST(CandidateEffect, HysteresisRateShapesSaturateWithTheRateAndVanishAtSoaks)
+{
+	// coil rate: a ramp of the rate from -1 to +1 C/min over 201 samples, then a soak (rate 0):
+	// the rate saturation is tanh(r / w) there by definition, the sign +-1 outside the dead band
+	// and 0 inside it, and both return to 0 at the soak (no memory, unlike branch and play)
+	RunSignals s;
+	for (int k = 0; k <= 260; ++k)
+	{
+		const double r = k <= 200 ? -1.0 + 0.01 * k : 0.0;
+		s.time_s.push_back(10.0 * k);
+		s.dtemp_dt_Cpm.push_back(0.5 * r);  // the mean's rate: not the one the shapes read
+		s.dtemp_coil_dt_Cpm.push_back(r);
+		s.temp_mean_C.push_back(20.0);
+		s.temp_coil_C.push_back(20.0);
+		s.block.push_back(0);
+	}
+	s.dtemp_coil_dt_Cpm[5] = NAN;  // a rate not known counts as 0
+	const auto t = hysteresisRateSaturation(s, 0.3);
+	const auto g = hysteresisRateSign(s, 0.05);
+	for (int k = 0; k <= 260; ++k)
+	{
+		const double r = k == 5 ? 0.0 : (k <= 200 ? -1.0 + 0.01 * k : 0.0);
+		EXPECT_NEAR(t[k], std::tanh(r / 0.3), 1e-12) << k;
+		EXPECT_EQ(g[k], r >= 0.05 ? 1.0 : (r <= -0.05 ? -1.0 : 0.0)) << k;
+	}
+	EXPECT_NEAR(t[200], std::tanh(1.0 / 0.3), 1e-12);
+	EXPECT_EQ(t[230], 0.0);
+	EXPECT_EQ(g[230], 0.0);
+	EXPECT_THROW(hysteresisRateSaturation(s, 0.0), std::invalid_argument);
+	EXPECT_THROW(hysteresisRateSign(s, -1.0), std::invalid_argument);
+
+	// theta carries shape and width both ways, each kind in its own range and family
+	using K = HysteresisShape::Kind;
+	for (const HysteresisShape sh : {HysteresisShape{K::ExponentialBranch, 0.5}, HysteresisShape{K::Play, 20.0},
+									 HysteresisShape{K::RateSaturation, 0.15}, HysteresisShape{K::RateSign, 0.05}})
+	{
+		const double th = hysteresisTheta(sh);
+		EXPECT_EQ(hysteresisShapeOf(th).kind, sh.kind);
+		EXPECT_NEAR(hysteresisShapeOf(th).width, sh.width, 1e-12 * sh.width);
+		EXPECT_EQ(hysteresisFamily(th), static_cast<int>(sh.kind));
+		EXPECT_EQ(hysteresisShapeOf(th).ratesOnly(), sh.kind == K::RateSaturation || sh.kind == K::RateSign);
+	}
+	EXPECT_EQ(hysteresisColumn(s, hysteresisTheta({K::RateSaturation, 0.3})), t);
+	EXPECT_EQ(hysteresisColumn(s, hysteresisTheta({K::RateSign, 0.05})), g);
+	EXPECT_EQ(describeHysteresisTheta(hysteresisTheta({K::RateSaturation, 0.2})), "rate saturation, tanh(dT/dt / 0.2 C/min)");
+	EXPECT_EQ(describeHysteresisTheta(hysteresisTheta({K::RateSign, 0.05})), "sign of the rate (dead band 0.05 C/min)");
+	EXPECT_THROW(hysteresisTheta({K::RateSaturation, 0.001}), std::invalid_argument);  // below 0.01 C/min
+	EXPECT_THROW(hysteresisTheta({K::Play, 150.0}), std::invalid_argument);  // not below 100 C
+	EXPECT_EQ(candidateById("hysteresis").theta_family(hysteresisTheta({K::RateSign, 0.05})),
+			  static_cast<int>(K::RateSign));
 }
 
 TEST(CandidateEffect, ShupeRateHoldsTheMeanRateAndTheRadialRateDifference)

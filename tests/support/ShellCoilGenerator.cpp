@@ -347,4 +347,30 @@ ShellCoilRun makeShellCoilRun(const ShellCoilOptions& opt)
 	return run;
 }
 
+mrpt_fog::FogSeries averagedShellCoilSeries(const mrpt_fog::FogSeries& run, double dt_s, double avg_s)
+{
+	if (!(dt_s > 0) || !(avg_s > 0)) throw std::invalid_argument("averaged run: dt_s and avg_s must be > 0");
+	const std::size_t K = static_cast<std::size_t>(std::llround(avg_s / dt_s));
+	if (K <= 1) return run;
+	mrpt_fog::FogSeries out = run;
+	out.resize(0);
+	for (std::size_t b = 0; (b + 1) * K <= run.size(); ++b)
+	{
+		const std::size_t k0 = b * K;
+		out.appendSampleFrom(run, k0);
+		double t = 0, r = 0;
+		std::vector<double> T(run.thermistorCount(), 0.0);
+		for (std::size_t k = k0; k < k0 + K; ++k)
+		{
+			t += run.time_s[k];
+			r += run.rate_dph[2][k];
+			for (std::size_t i = 0; i < T.size(); ++i) T[i] += run.temp_C[i][k];
+		}
+		out.time_s.back() = t / double(K);
+		out.rate_dph[2].back() = r / double(K);  // NaN on gyro-off rows, as in the samples
+		for (std::size_t i = 0; i < T.size(); ++i) out.temp_C[i].back() = T[i] / double(K);
+	}
+	return out;
+}
+
 }  // namespace fogtest

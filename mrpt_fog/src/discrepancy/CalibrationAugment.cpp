@@ -131,6 +131,11 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 			for (int k = p + 1; k <= std::min(p + 2, 5); ++k) add("T(" + S + ")^" + std::to_string(k));
 		else if (effect == sim::Effect::Magnetic)
 			refit_magnetic = true;  // after the thermal refit: the field term is fitted on its residual
+		else if (effect == sim::Effect::Hysteresis && std::isfinite(ne.theta) && ne.theta != 0.0 &&
+				 hysteresisShapeOf(ne.theta).ratesOnly())
+			out.not_written.emplace_back(ne.id, "the compensator has no operator for a rate-dependent saturation (" +
+													describeHysteresisTheta(ne.theta) +
+													"): only play and exponential-branch hysteresis are written");
 		else if (effect == sim::Effect::Hysteresis && std::isfinite(ne.theta) && ne.theta != 0.0)
 		{
 			// the named shape and width on S (HysteresisFilter.h: the same operators, run on S's
@@ -139,7 +144,7 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 			add(ThermalTerm::hysteresis(S,
 										shape.kind == HysteresisShape::Kind::Play ? HysteresisOperator::Play
 																				  : HysteresisOperator::Branch,
-										shape.width_C)
+										shape.width)
 					.name());
 		}
 		else if (effect == sim::Effect::ScaleFactorTemp && hasTableRates({run}))

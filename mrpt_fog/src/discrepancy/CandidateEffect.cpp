@@ -64,42 +64,108 @@ std::vector<double> hysteresisPlay(const RunSignals& s, double half_width_C)
 	return h;
 }
 
+namespace
+{
+/** The smoothed coil temperature rate [C/min] of a sample (the mean's when the coil's is absent,
+ * 0 when not finite). */
+double coilRateAt(const RunSignals& s, std::size_t k)
+{
+	const bool coil = s.dtemp_coil_dt_Cpm.size() == s.size();
+	const double r = coil ? s.dtemp_coil_dt_Cpm[k] : s.dtemp_dt_Cpm[k];
+	return std::isfinite(r) ? r : 0.0;
+}
+}  // namespace
+
+std::vector<double> hysteresisRateSaturation(const RunSignals& s, double width_Cpm)
+{
+	if (!(width_Cpm > 0)) throw std::invalid_argument("hysteresisRateSaturation: width_Cpm must be > 0");
+	std::vector<double> h(s.size(), 0.0);
+	for (std::size_t k = 0; k < s.size(); ++k) h[k] = std::tanh(coilRateAt(s, k) / width_Cpm);
+	return h;
+}
+
+std::vector<double> hysteresisRateSign(const RunSignals& s, double dead_band_Cpm)
+{
+	if (!(dead_band_Cpm > 0)) throw std::invalid_argument("hysteresisRateSign: dead_band_Cpm must be > 0");
+	std::vector<double> h(s.size(), 0.0);
+	for (std::size_t k = 0; k < s.size(); ++k)
+	{
+		const double r = coilRateAt(s, k);
+		h[k] = r >= dead_band_Cpm ? 1.0 : (r <= -dead_band_Cpm ? -1.0 : 0.0);
+	}
+	return h;
+}
+
 HysteresisShape hysteresisShapeOf(double theta)
 {
 	if (!(theta != 0.0) || !std::isfinite(theta)) throw std::invalid_argument("hysteresis theta must be finite and non-zero");
-	return {theta > 0 ? HysteresisShape::Kind::ExponentialBranch : HysteresisShape::Kind::Play, std::fabs(theta)};
+	using K = HysteresisShape::Kind;
+	const double a = std::fabs(theta);
+	if (a < kHysteresisMaxWidth_C) return {theta > 0 ? K::ExponentialBranch : K::Play, a};
+	return {theta > 0 ? K::RateSaturation : K::RateSign, a / kHysteresisRateThetaPerCpm};
 }
 
 double hysteresisTheta(HysteresisShape shape)
 {
-	if (!(shape.width_C > 0) || !std::isfinite(shape.width_C))
-		throw std::invalid_argument("hysteresis width_C must be finite and > 0");
-	return shape.kind == HysteresisShape::Kind::ExponentialBranch ? shape.width_C : -shape.width_C;
+	if (!(shape.width > 0) || !std::isfinite(shape.width))
+		throw std::invalid_argument("hysteresis width must be finite and > 0");
+	using K = HysteresisShape::Kind;
+	if (!shape.ratesOnly())
+	{
+		if (!(shape.width < kHysteresisMaxWidth_C))
+			throw std::invalid_argument("hysteresis branch span / play half-width must be below 100 C");
+		return shape.kind == K::ExponentialBranch ? shape.width : -shape.width;
+	}
+	if (!(shape.width >= kHysteresisMinRateWidth_Cpm))
+		throw std::invalid_argument("hysteresis rate width must be at least 0.01 C/min");
+	return (shape.kind == K::RateSaturation ? 1.0 : -1.0) * kHysteresisRateThetaPerCpm * shape.width;
 }
 
 std::vector<double> hysteresisColumn(const RunSignals& s, double theta)
 {
 	const auto shape = hysteresisShapeOf(theta);
-	return shape.kind == HysteresisShape::Kind::ExponentialBranch ? hysteresisBranch(s, shape.width_C)
-																  : hysteresisPlay(s, shape.width_C);
+	switch (shape.kind)
+	{
+		case HysteresisShape::Kind::ExponentialBranch: return hysteresisBranch(s, shape.width);
+		case HysteresisShape::Kind::Play: return hysteresisPlay(s, shape.width);
+		case HysteresisShape::Kind::RateSaturation: return hysteresisRateSaturation(s, shape.width);
+		case HysteresisShape::Kind::RateSign: return hysteresisRateSign(s, shape.width);
+	}
+	throw std::logic_error("hysteresisColumn: unknown shape");
 }
 
 std::vector<double> hysteresisThetaGrid()
 {
+	using K = HysteresisShape::Kind;
 	std::vector<double> g;
-	for (auto kind : {HysteresisShape::Kind::ExponentialBranch, HysteresisShape::Kind::Play})
+	for (auto kind : {K::ExponentialBranch, K::Play})
 		for (double w : {0.5, 1.0, 2.0, 5.0, 10.0, 20.0}) g.push_back(hysteresisTheta({kind, w}));
+	for (double r : {0.02, 0.05, 0.1, 0.2, 0.5, 1.0}) g.push_back(hysteresisTheta({K::RateSaturation, r}));
+	g.push_back(hysteresisTheta({K::RateSign, kMovingRate_Cpm}));
 	return g;
 }
+
+int hysteresisFamily(double theta) { return static_cast<int>(hysteresisShapeOf(theta).kind); }
 
 std::string describeHysteresisTheta(double theta)
 {
 	const auto shape = hysteresisShapeOf(theta);
 	char buf[96];
-	if (shape.kind == HysteresisShape::Kind::ExponentialBranch)
-		std::snprintf(buf, sizeof buf, "exponential branch, span %.3g C", shape.width_C);
-	else
-		std::snprintf(buf, sizeof buf, "play operator, half-width %.3g C", shape.width_C);
+	switch (shape.kind)
+	{
+		case HysteresisShape::Kind::ExponentialBranch:
+			std::snprintf(buf, sizeof buf, "exponential branch, span %.3g C", shape.width);
+			break;
+		case HysteresisShape::Kind::Play:
+			std::snprintf(buf, sizeof buf, "play operator, half-width %.3g C", shape.width);
+			break;
+		case HysteresisShape::Kind::RateSaturation:
+			std::snprintf(buf, sizeof buf, "rate saturation, tanh(dT/dt / %.3g C/min)", shape.width);
+			break;
+		case HysteresisShape::Kind::RateSign:
+			std::snprintf(buf, sizeof buf, "sign of the rate (dead band %.3g C/min)", shape.width);
+			break;
+	}
 	return buf;
 }
 
@@ -389,7 +455,8 @@ std::vector<CandidateEffect> handWrittenCandidates()
 		candidateOf(Effect::Hysteresis,
 					"heating vs cooling hysteresis: a bias offset of opposite sign on the heating and the cooling "
 					"branch, kept through soaks, swapping over a temperature span (an exponential branch, or a "
-					"play (backlash) operator: adhesive and jacket stress in a wound coil)",
+					"play (backlash) operator: adhesive and jacket stress in a wound coil), or an offset that "
+					"saturates with the temperature rate and returns to 0 at soaks (tanh or sign of the rate)",
 					"ramps at several rates (the offset does not scale with the rate) and soaks after heating "
 					"and after cooling",
 					"deg/h (half heating-cooling difference)",
@@ -397,7 +464,8 @@ std::vector<CandidateEffect> handWrittenCandidates()
 					hysteresisUntestableReason),
 		"width_C", hysteresisThetaGrid()));
 	lib.back().describe_theta = describeHysteresisTheta;
-	lib.back().theta_continuous = true;  // a width, not a choice among shapes
+	lib.back().theta_continuous = true;  // a width within each shape
+	lib.back().theta_family = hysteresisFamily;
 	lib.push_back(withTheta(
 		candidateOf(Effect::Warmup,
 					"turn-on warm-up: a bias decaying as exp(-(t - t_on)/tau) after each power-on (a run that starts "

@@ -507,10 +507,20 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& given_runs, c
 				}
 			}
 			col += q;
+			// zero not excluded at 95 %: one column, its interval; several, their joint test (an
+			// interval on the RMS of the terms is bounded by zero and is no test of it)
 			if (reason.empty())
 				for (const auto& ne : sel.named)
-					if (ne.id == term.id && ne.ci_low <= 0 && ne.ci_high >= 0)
+					if (ne.id == term.id && q == 1 && ne.ci_low <= 0 && ne.ci_high >= 0)
 						reason = "its 95 % interval includes zero";
+					else if (ne.id == term.id && q > 1 && !(ne.zero_p < 0.05))
+					{
+						char buf[160];
+						std::snprintf(buf, sizeof buf,
+									  "its %d terms are not jointly different from zero at 95 %% (Wald p %.2g)",
+									  static_cast<int>(q), ne.zero_p);
+						reason = buf;
+					}
 			if (!reason.empty()) reasons.emplace_back(term.id, reason);
 		}
 		if (!reasons.empty())

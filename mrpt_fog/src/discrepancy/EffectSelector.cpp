@@ -393,15 +393,25 @@ void testCandidate(CandState& cs, const CandidateContext& ctx, const Mat& X, con
 			cs.C = C;
 		}
 	}
+	// the shape family of a grid value (the candidate's own, else the sign of theta)
+	const auto familyOf = [&](double th) { return cs.eff->theta_family ? cs.eff->theta_family(th) : (th > 0 ? 1 : -1); };
+	std::vector<int> families;
+	for (double th : cs.thetas)
+		if (std::find(families.begin(), families.end(), familyOf(th)) == families.end()) families.push_back(familyOf(th));
 	if (cs.eff->theta_continuous && cs.thetas.size() > 1)
-		for (const double sgn : {1.0, -1.0})
+		for (const int family : families)
 		{
-			// each sign is one shape family: from its best grid value, golden section on
-			// log |theta| between that value's neighbours of the same sign (a 1-2-5 grid: a
-			// bracket spans a factor 4-5), to 2 % in |theta|
+			// from a family's best grid value, golden section on log |theta| between that value's
+			// neighbours of the same family (a 1-2-5 grid: a bracket spans a factor 4-5), to 2 %
+			// in |theta| (one family has one sign)
 			std::vector<std::pair<double, double>> same;  // |theta|, whitened RSS
+			double sgn = 1.0;
 			for (std::size_t i = 0; i < cs.thetas.size(); ++i)
-				if ((cs.thetas[i] > 0) == (sgn > 0)) same.emplace_back(std::fabs(cs.thetas[i]), gridRss[i]);
+				if (familyOf(cs.thetas[i]) == family)
+				{
+					same.emplace_back(std::fabs(cs.thetas[i]), gridRss[i]);
+					sgn = cs.thetas[i] > 0 ? 1.0 : -1.0;
+				}
 			if (same.size() < 2) continue;
 			std::sort(same.begin(), same.end());
 			std::size_t at = 0;
@@ -658,6 +668,11 @@ void setCoefficient(NamedEffect& ne, const CandState& B, const Gls& gB, Eigen::I
 	const Eigen::Index q = B.C.cols();
 	const Vec beta = f.coef.segment(q0, q);
 	const Mat cov = sigma2 * f.cov_unscaled.block(q0, q0, q, q);
+	{
+		const Eigen::LDLT<Mat> ldlt(cov);
+		const double wald = ldlt.info() == Eigen::Success ? double(beta.transpose() * ldlt.solve(beta)) : 0.0;
+		ne.zero_p = std::isfinite(wald) && wald > 0 ? chi2Survival(wald, double(q)) : 1.0;
+	}
 	if (q == 1)
 	{
 		ne.coefficient = B.eff->coefficient_scale * beta(0);

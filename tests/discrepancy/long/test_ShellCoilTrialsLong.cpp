@@ -2,7 +2,8 @@
 /* The success table on the third generator (tests/support/ShellCoilGenerator.h), label "long",
  * analysed at fog-discrepancy's defaults (ShellCoilTrials.h). Knobs: SHELL_DT_S (sample period,
  * default 1 s), SHELL_SEEDS (trials per cell, default 10; nulls 5x), SHELL_FIRST_SEED (default the
- * held-out block fogtest::kShellCoilHeldOutSeedFirst = 5001; tuning used 1..10), SHELL_EFFECTS=a,b.
+ * held-out block fogtest::kShellCoilHeldOutSeedFirst = 9001; tuning and diagnosis used 1..10,
+ * 5001..5005 and 7001..: ShellCoilGenerator.h), SHELL_EFFECTS=a,b.
  * Targets: named in >= 95 % at effect/noise 3 and >= 80 % at 1; false naming on nulls <= 2 %.
  * Regenerate: test_discrepancy_long --gtest_filter='ShellCoilTrialsLong*' | grep -A3 SHELL */
 #include <gtest/gtest.h>
@@ -84,4 +85,40 @@ TEST(ShellCoilTrialsLong, NullFalseNamingOnHeldOutSeeds)
 	std::printf("SHELL dt %gs null false naming %d/%d, Clopper-Pearson 95 %% upper bound %.1f %%\n", dt, t.false_naming,
 				t.trials, 100 * clopperPearson(t.false_naming, t.trials, true));
 	EXPECT_LE(t.false_naming, static_cast<int>(std::floor(0.02 * n)));
+}
+
+/* The same physics at 10 Hz and averaged to 1 Hz gets the same verdict: one 10 Hz run pair per
+ * hidden effect (x3, trial seeds kShellCoilResampleSeedFirst.., one per effect, outside every
+ * tuning block), analysed as fog-discrepancy reads the 10 Hz files (the reader's 1 s block means)
+ * and as it reads the same runs written as 1 s averages by a logger (averagedShellCoilSeries).
+ * The named ids (strongest first) must be equal; the rows differ only where power and table rate
+ * change inside a second. Printed with "RESAMPLE". */
+TEST(ShellCoilTrialsLong, ResampledFrom10HzTo1HzNamesTheSameEffects)
+{
+	const std::uint64_t first = static_cast<std::uint64_t>(envDouble("SHELL_RESAMPLE_FIRST_SEED", 8101));
+	std::uint64_t seed = first;
+	for (const auto& id : fogtest::shellCoilEffects())
+	{
+		if (!effectSelected(id)) continue;
+		fogtest::ShellCoilOptions o1, o2;
+		o1.dt_s = o2.dt_s = 0.1;
+		o1.seed = 2 * seed;
+		o2.seed = 2 * seed + 1;
+		o1.hidden[id] = o2.hidden[id] = 3.0;
+		const auto s1 = fogtest::makeShellCoilRun(o1).series, s2 = fogtest::makeShellCoilRun(o2).series;
+		const auto at10 = analyseDiscrepancy({asRead(s1), asRead(s2)}, {"run1", "run2"}, kBaseModel, trialOptions());
+		const auto at1 = analyseDiscrepancy({asRead(fogtest::averagedShellCoilSeries(s1, 0.1, 1.0)),
+											 asRead(fogtest::averagedShellCoilSeries(s2, 0.1, 1.0))},
+											{"run1", "run2"}, kBaseModel, trialOptions());
+		std::vector<std::string> n10, n1;
+		for (const auto& ne : at10.selection.named) n10.push_back(ne.id);
+		for (const auto& ne : at1.selection.named) n1.push_back(ne.id);
+		std::printf("RESAMPLE seed %llu %s x3: 10 Hz (1 s means) \"%s\", block %.3g s | 1 Hz averages \"%s\", block %.3g s\n",
+					static_cast<unsigned long long>(seed), id.c_str(), at10.verdict().c_str(), at10.timescale.block_s,
+					at1.verdict().c_str(), at1.timescale.block_s);
+		std::fflush(stdout);
+		EXPECT_EQ(n10, n1) << id << " seed " << seed;
+		EXPECT_EQ(at10.timescale.block_s, at1.timescale.block_s) << id;
+		++seed;
+	}
 }

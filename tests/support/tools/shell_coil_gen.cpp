@@ -13,37 +13,6 @@
 
 #include "ShellCoilGenerator.h"
 
-namespace
-{
-/** Rows of `avg_s` seconds, each the mean of its samples (what a logger averaging the gyro's
- * increments writes): time, rate, thermistors; power, table rate and field of the block's first
- * sample (the generator never changes them inside a block of whole seconds). */
-mrpt_fog::FogSeries averaged(const mrpt_fog::FogSeries& run, double dt_s, double avg_s)
-{
-	const std::size_t K = static_cast<std::size_t>(std::llround(avg_s / dt_s));
-	if (K <= 1) return run;
-	mrpt_fog::FogSeries out = run;
-	out.resize(0);
-	for (std::size_t b = 0; (b + 1) * K <= run.size(); ++b)
-	{
-		const std::size_t k0 = b * K;
-		out.appendSampleFrom(run, k0);
-		double t = 0, r = 0;
-		std::vector<double> T(run.thermistorCount(), 0.0);
-		for (std::size_t k = k0; k < k0 + K; ++k)
-		{
-			t += run.time_s[k];
-			r += run.rate_dph[2][k];
-			for (std::size_t i = 0; i < T.size(); ++i) T[i] += run.temp_C[i][k];
-		}
-		out.time_s.back() = t / double(K);
-		out.rate_dph[2].back() = r / double(K);  // NaN on gyro-off rows, as in the samples
-		for (std::size_t i = 0; i < T.size(); ++i) out.temp_C[i].back() = T[i] / double(K);
-	}
-	return out;
-}
-}  // namespace
-
 int main(int argc, char** argv)
 {
 	try
@@ -83,7 +52,7 @@ int main(int argc, char** argv)
 		}
 		if (out.empty()) throw std::invalid_argument("-o OUT.csv is required");
 		const auto run = fogtest::makeShellCoilRun(opt);
-		mrpt_fog::writeFogCsv(out, average_s > 0 ? averaged(run.series, opt.dt_s, average_s) : run.series);
+		mrpt_fog::writeFogCsv(out, average_s > 0 ? fogtest::averagedShellCoilSeries(run.series, opt.dt_s, average_s) : run.series);
 		return 0;
 	}
 	catch (const std::exception& e)

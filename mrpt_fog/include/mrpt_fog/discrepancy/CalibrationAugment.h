@@ -19,7 +19,8 @@
  *   hysteresis       hyst(S,play,wC)^1 or hyst(S,branch,wC)^1: the named shape and width
  *                    (CandidateEffect.h hysteresisShapeOf) as the compensator's operator on S's
  *                    reading (model/HysteresisFilter.h; the branch behind its 0.05 C dead band);
- *                    the calibration file is then version 3
+ *                    the calibration file is then version 3; a rate shape (tanh or sign of
+ *                    the rate) is not written (no compensator operator): listed in not_written
  *   warmup           the calibration's (v2) warm-up term: amplitude and tau as named, when the
  *                    analysed run starts with the gyro off; when it starts powered (its first
  *                    turn-on unknown) but holds turn-ons, amplitude and tau fitted on those

@@ -94,6 +94,11 @@ struct NamedEffect
 	double group_confidence = 0.0;  //!< BIC weight of the alias group
 	double coefficient = 0.0;
 	double ci_low = 0.0, ci_high = 0.0;  //!< 95 %
+	/** p-value of "the effect's columns are all zero" (Wald test, one degree of freedom per
+	 * column) in the fit that set coefficient and interval. With one column p < 0.05 exactly when
+	 * the 95 % interval excludes zero; with several it is the test of the effect (an interval on
+	 * the RMS of its terms, which cannot be below zero, is not one). */
+	double zero_p = 1.0;
 	std::string coefficient_unit;
 	std::string theta_name;
 	double theta = 0.0;

@@ -58,6 +58,9 @@ struct CandidateEffect
 	 * best grid value's neighbours of the same sign (golden section on log |theta|). The grid
 	 * values must then be of one or two signs, each sign one shape family. */
 	bool theta_continuous = false;
+	/** With theta_continuous: the shape family of a grid value (refinement stays within one
+	 * family); unset: the sign of theta. */
+	std::function<int(double theta)> theta_family;
 	/** Columns (n x q) for a nonlinear parameter value. */
 	std::function<Eigen::MatrixXd(const CandidateContext&, double theta)> build;
 	/** Reported coefficient = scale * fitted coefficient of the first column. Multi-column
@@ -101,26 +104,58 @@ std::vector<double> hysteresisBranch(const RunSignals& sig, double span_C);
  * constant through soaks; h = 0 at the run start. Throws for half_width_C <= 0. */
 std::vector<double> hysteresisPlay(const RunSignals& sig, double half_width_C);
 
-/** The hysteresis candidate's nonlinear parameter carries its branch shape and width: theta > 0
- * is an exponential branch of span theta, theta < 0 a play operator of half-width -theta. */
+/** Moving threshold of the coil temperature [C/min]: below it a run is at a soak (heating /
+ * cooling coverage, the dead band of the rate-sign hysteresis shape). */
+inline constexpr double kMovingRate_Cpm = 0.05;
+
+/** Rate-dependent saturation (no memory): h = tanh(dTc/dt / width_Cpm), dTc/dt the smoothed coil
+ * temperature rate (RunSignals::dtemp_coil_dt_Cpm, a non-finite rate counts as 0): an offset of
+ * opposite sign while heating and while cooling that returns to 0 at soaks and saturates once the
+ * rate is well above the width. Throws for width_Cpm <= 0. */
+std::vector<double> hysteresisRateSaturation(const RunSignals& sig, double width_Cpm);
+
+/** The sign of the coil temperature rate outside a dead band: +1 at dTc/dt >= dead_band_Cpm, -1 at
+ * <= -dead_band_Cpm, 0 between (soaks). Throws for dead_band_Cpm <= 0. */
+std::vector<double> hysteresisRateSign(const RunSignals& sig, double dead_band_Cpm);
+
+/** The hysteresis candidate's family of shapes, carried by its one nonlinear parameter theta.
+ * Encoding (the only place that knows it): exponential branch of span w C: theta = w; play of
+ * half-width w C: theta = -w (0 < w < kHysteresisMaxWidth_C); rate saturation of width r C/min:
+ * theta = kHysteresisRateThetaPerCpm r; rate sign with dead band r C/min: theta =
+ * -kHysteresisRateThetaPerCpm r (r >= kHysteresisMinRateWidth_Cpm). The memory shapes (branch,
+ * play) keep their value through soaks; the rate shapes return to 0 there. */
 struct HysteresisShape
 {
 	enum class Kind
 	{
 		ExponentialBranch,
-		Play
+		Play,
+		RateSaturation,
+		RateSign
 	};
 	Kind kind = Kind::ExponentialBranch;
-	double width_C = 1.0;  //!< span (exponential branch) or half-width (play) [degC]
+	/** span (branch) or half-width (play) [degC]; width or dead band (rate shapes) [degC/min] */
+	double width = 1.0;
+	bool ratesOnly() const { return kind == Kind::RateSaturation || kind == Kind::RateSign; }
 };
+inline constexpr double kHysteresisMaxWidth_C = 100.0;  //!< widest branch span / play half-width
+inline constexpr double kHysteresisRateThetaPerCpm = 1.0e4;  //!< theta per C/min of a rate shape
+inline constexpr double kHysteresisMinRateWidth_Cpm = kHysteresisMaxWidth_C / kHysteresisRateThetaPerCpm;
 HysteresisShape hysteresisShapeOf(double theta);  //!< throws for theta 0 or not finite
-double hysteresisTheta(HysteresisShape shape);  //!< throws for width_C <= 0 or not finite
-/** hysteresisBranch or hysteresisPlay, as theta says. */
+double hysteresisTheta(HysteresisShape shape);  //!< throws for a width out of its kind's range
+/** The column of the shape theta says (hysteresisBranch, hysteresisPlay,
+ * hysteresisRateSaturation or hysteresisRateSign). */
 std::vector<double> hysteresisColumn(const RunSignals& sig, double theta);
-/** The grid searched: both shapes at widths 0.5, 1, 2, 5, 10, 20 C (one 1-2-5 series for both;
- * the data choose shape and width by the profile search of EffectSelector). */
+/** The grid searched: branch and play at widths 0.5, 1, 2, 5, 10, 20 C, rate saturation at widths
+ * 0.02, 0.05, 0.1, 0.2, 0.5, 1 C/min (1-2-5 series), rate sign at the dead band kMovingRate_Cpm;
+ * the data choose shape and width by the profile search of EffectSelector (continuous within a
+ * shape: hysteresisFamily). */
 std::vector<double> hysteresisThetaGrid();
-/** "play operator, half-width 2 C" / "exponential branch, span 5 C". */
+/** The shape family of a theta (its Kind as an int): the profile search refines the width only
+ * between grid values of the same family. */
+int hysteresisFamily(double theta);
+/** "play operator, half-width 2 C" / "exponential branch, span 5 C" / "rate saturation,
+ * tanh(dT/dt / 0.2 C/min)" / "sign of the rate (dead band 0.05 C/min)". */
 std::string describeHysteresisTheta(double theta);
 
 /** Where a run heats and where it cools (usable samples, |d(mean T)/dt| >= moving_rate_Cpm). */
@@ -130,11 +165,12 @@ struct HeatingCoolingCoverage
 	std::pair<double, double> heating_C{NAN, NAN}, cooling_C{NAN, NAN};  //!< temperature ranges [degC]
 	double shared_span_C = 0;  //!< overlap of the two ranges [degC] (0 when one is missing)
 };
-HeatingCoolingCoverage heatingCoolingCoverage(const RunSignals& sig, double moving_rate_Cpm = 0.05);
+HeatingCoolingCoverage heatingCoolingCoverage(const RunSignals& sig, double moving_rate_Cpm = kMovingRate_Cpm);
 
 /** Why hysteresis cannot be identified on this run ("" when it can): it needs >= 600 s of both
  * heating and cooling over a shared temperature range of >= 1 C (a monotonic run, or heating and
- * cooling in disjoint bands, cannot tell a hysteresis from a static temperature term). */
+ * cooling in disjoint bands, cannot tell a hysteresis from a static temperature term). The same
+ * condition holds for every shape of the family. */
 std::string hysteresisUntestableReason(const RunSignals& sig);
 
 /** The advice (test profile) that would separate two candidates. */
