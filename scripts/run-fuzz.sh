@@ -16,7 +16,8 @@ build=${BUILD_DIR:-$here/build-fuzz}
 jobs=${JOBS:-2}
 
 source "$here/scripts/build-env.sh"  # unity build, ccache when installed
-CXX=clang++ cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMRPT_FOG_BUILD_FUZZ=ON "${FOG_BUILD_ARGS[@]}" \
+fog_generator "$build"
+CXX=clang++ cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMRPT_FOG_BUILD_FUZZ=ON "${FOG_GENERATOR[@]}" "${FOG_BUILD_ARGS[@]}" \
 	-DMRPT_FOG_BUILD_TESTS=OFF -DMRPT_FOG_BUILD_APPS=OFF -DMRPT_FOG_BUILD_BENCH=OFF >/dev/null
 cmake --build "$build" -j"$jobs" --target "${targets[@]}"
 

@@ -4,7 +4,7 @@
 set -euo pipefail
 
 PACKAGES=(
-  build-essential cmake pkg-config git
+  build-essential cmake ninja-build pkg-config git
   ccache               # compiler cache: CI and test builds reuse unchanged objects
   libmrpt-dev          # MRPT 2.5: obs, io, serialization, poses, containers (yaml), TCLAP
   mrpt-apps            # rawlog-edit, pf-localization: MRPT's own tools, used by the tests
