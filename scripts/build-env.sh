@@ -1,6 +1,6 @@
 # Sourced by run-tests.sh, run-sanitizers.sh and run-fuzz.sh: the build settings they share.
 # Sets FOG_BUILD_ARGS (cmake arguments); fog_generator and fog_seed_test_costs are below.
-#   FOG_UNITY=OFF   one object per source file (default ON: a CMake unity build, batches of up to 16
+#   FOG_UNITY=OFF   one object per source file (default ON: a CMake unity build, batches of 8
 #                   sources of a target compiled as one unit; the headers of MRPT, Eigen and
 #                   GoogleTest are parsed once per batch instead of once per file, which is most of
 #                   the compile time; docs/validation/ci-time.md). A unity build needs the file-local
@@ -8,7 +8,7 @@
 #   FOG_CCACHE=0    no compiler cache (default: ccache when installed)
 # With ccache, paths under the repository are hashed relative to it (CCACHE_BASEDIR) and the
 # build folder is not hashed (CCACHE_NOHASHDIR), so clones at different paths share the cache.
-FOG_BUILD_ARGS=("-DCMAKE_UNITY_BUILD=${FOG_UNITY:-ON}" -DCMAKE_UNITY_BUILD_BATCH_SIZE=16)
+FOG_BUILD_ARGS=("-DCMAKE_UNITY_BUILD=${FOG_UNITY:-ON}" -DCMAKE_UNITY_BUILD_BATCH_SIZE=8)
 if [ "${FOG_CCACHE:-1}" != 0 ] && command -v ccache >/dev/null; then
 	FOG_BUILD_ARGS+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 	export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}"
