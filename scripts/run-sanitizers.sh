@@ -10,9 +10,10 @@
 #   BUILD_DIR   build directory (default <repo>/build-asan)
 #   JOBS        parallel compile jobs and parallel tests (default: nproc)
 #   SAN_EXCLUDE_LABELS  ctest labels not run (regex, default "long|demo"; "long" to run the demo too)
-#   SAN_TESTS_PER_SUITE  ON (default): each GoogleTest suite runs its cases in one process, one
-#               ctest test per suite (an instrumented process costs ~0.3 s of CPU to start, and
-#               leak checking runs at each exit); OFF: one process per case, as in the normal run.
+#   SAN_TESTS_PER_SUITE  OFF (default): one process per GoogleTest case, as in the normal run; ON:
+#               each suite runs its cases in one process, one ctest test per suite (an instrumented
+#               process costs ~0.3 s of CPU to start, and leak checking runs at each exit). Not the
+#               default yet: the whole suite has not passed that way (docs/validation/ci-time.md).
 #   SAN_OPT     optimisation/debug flags (default "-O1 -g1": half the compile time of -O2 -g,
 #               line tables are enough for the sanitizers' stack traces; see docs/validation/hardening.md)
 #   FOG_TRIAL_SEEDS  exported (default 1) for the discrepancy room's proof trials: seeds per
@@ -37,7 +38,7 @@ source "$here/scripts/build-env.sh"  # unity build, ccache when installed, test 
 fog_generator "$build"
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMRPT_FOG_SANITIZE=ON "${FOG_GENERATOR[@]}" "${FOG_BUILD_ARGS[@]}" \
 	-DMRPT_FOG_BUILD_BENCH=OFF -DMRPT_FOG_BUILD_FUZZ=OFF -DMRPT_FOG_BUILD_TESTS=ON -DMRPT_FOG_BUILD_APPS=ON \
-	-DMRPT_FOG_TESTS_PER_SUITE=${SAN_TESTS_PER_SUITE:-ON} \
+	-DMRPT_FOG_TESTS_PER_SUITE=${SAN_TESTS_PER_SUITE:-OFF} \
 	-DMRPT_FOG_BUILD_LONG_TESTS=OFF \
 	"-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$san_opt -DNDEBUG" ${SAN_CMAKE_ARGS:-} >/dev/null
 cmake --build "$build" -j"$jobs"

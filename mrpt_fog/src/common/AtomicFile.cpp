@@ -104,15 +104,17 @@ void unregisterTemporary(int slot)
 	if (slot >= 0) g_slots[slot].state.store(Free);
 }
 
-/** The process umask, read without changing it for long (once). */
+/** The process umask now (a program may change it between two writes). Read from
+ * /proc/self/status, which leaves it alone; where that is missing, set and restored at once. */
 mode_t processUmask()
 {
-	static const mode_t mask = [] {
-		const mode_t m = ::umask(022);
-		::umask(m);
-		return m;
-	}();
-	return mask;
+	std::ifstream status("/proc/self/status");
+	std::string line;
+	while (std::getline(status, line))
+		if (line.rfind("Umask:", 0) == 0) return static_cast<mode_t>(std::stoul(line.substr(6), nullptr, 8));
+	const mode_t m = ::umask(022);
+	::umask(m);
+	return m;
 }
 
 std::string errnoText(int e) { return std::strerror(e); }
