@@ -1,6 +1,8 @@
 /* mrpt_fog_heading: the heading pipeline of a vehicle with a FOG. */
 #include <mrpt_fog_heading/DriveLog.h>
 
+#include "LatitudeMetadata.h"
+
 #include <mrpt/core/Clock.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CObservationRobotPose.h>
@@ -24,19 +26,11 @@ std::vector<double> absoluteTimes(const FogSeries& s)
 
 std::optional<double> driveLatitude(const FogSeries& s)
 {
-	for (const char* key : {"latitude_deg", "device.latitude_deg"})
+	for (const char* key : heading_detail::kLatitudeKeys)
 	{
 		const std::string v = s.metadataValue(key);
 		if (v.empty()) continue;
-		try
-		{
-			std::size_t pos = 0;
-			const double lat = std::stod(v, &pos);
-			if (pos == v.size() && std::abs(lat) <= 90) return lat;
-		}
-		catch (const std::exception&)
-		{
-		}
+		if (const auto lat = heading_detail::latitudeFromText(v)) return lat;
 		throw std::runtime_error(std::string("metadata ") + key + ": '" + v + "' is not a latitude in [-90, 90] deg");
 	}
 	return std::nullopt;

@@ -3,6 +3,8 @@
 #include <mrpt_fog/obs/GyroPower.h>
 #include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog_heading/HeadingPipeline.h>
+
+#include "LatitudeMetadata.h"
 #include <mrpt_fog_nav/DeadReckoning.h>
 #include <mrpt_fog_nav/EarthModel.h>
 #include <mrpt_fog_nav/Rotation.h>
@@ -40,19 +42,11 @@ nav::StrapdownOptions strapdownOptions(const PipelineOptions& o)
 
 std::optional<double> latitudeOf(const FogSeries& s)
 {
-	for (const char* key : {"latitude_deg", "device.latitude_deg"})
+	for (const char* key : heading_detail::kLatitudeKeys)
 	{
 		const std::string v = s.metadataValue(key);
 		if (v.empty()) continue;
-		try
-		{
-			std::size_t pos = 0;
-			const double lat = std::stod(v, &pos);
-			if (pos == v.size() && std::abs(lat) <= 90) return lat;
-		}
-		catch (const std::exception&)
-		{
-		}
+		if (const auto lat = heading_detail::latitudeFromText(v)) return lat;
 	}
 	return std::nullopt;
 }
