@@ -66,23 +66,34 @@ double armaVarianceRatio(const ArNoiseModel& ar)
 Eigen::MatrixXd whiten(const Eigen::MatrixXd& M, const ArNoiseModel& ar, const std::vector<std::size_t>& rows,
 					   const std::vector<int>* block)
 {
-	Eigen::MatrixXd W(static_cast<Eigen::Index>(rows.size()), M.cols());
+	const auto n = static_cast<Eigen::Index>(rows.size());
+	Eigen::MatrixXd W(n, M.cols());
 	const bool exact = block != nullptr && ar.order() == 1;
 	const double c = exact ? 1.0 / std::sqrt(armaVarianceRatio(ar)) : 1.0;
+	// Whether row i starts a new stretch (no predecessor in the same block), once for all columns.
+	std::vector<unsigned char> restart(rows.size());
 	for (std::size_t i = 0; i < rows.size(); ++i)
+		restart[i] = i == 0 || rows[i - 1] + 1 != rows[i] || (block && (*block)[rows[i] - 1] != (*block)[rows[i]]);
+	// Column by column (both matrices are column-major) and without a temporary per row: the
+	// operations on each element are those of the row form, in the same order.
+	const int order = ar.order();
+	for (Eigen::Index col = 0; col < M.cols(); ++col)
 	{
-		const auto k = static_cast<Eigen::Index>(rows[i]);
-		const bool restart = i == 0 || rows[i - 1] + 1 != rows[i] ||
-							 (block && (*block)[rows[i] - 1] != (*block)[rows[i]]);
-		if (exact && restart)
+		const double* m = M.col(col).data();
+		double* w = W.col(col).data();
+		for (Eigen::Index i = 0; i < n; ++i)
 		{
-			W.row(static_cast<Eigen::Index>(i)) = c * M.row(k);
-			continue;
+			const std::size_t k = rows[static_cast<std::size_t>(i)];
+			if (exact && restart[static_cast<std::size_t>(i)])
+			{
+				w[i] = c * m[k];
+				continue;
+			}
+			double r = m[k];
+			for (int j = 0; j < order; ++j) r -= ar.phi[static_cast<std::size_t>(j)] * m[k - static_cast<std::size_t>(j) - 1];
+			if (ar.theta != 0.0 && !restart[static_cast<std::size_t>(i)]) r += ar.theta * w[i - 1];
+			w[i] = r;
 		}
-		Eigen::RowVectorXd r = M.row(k);
-		for (int j = 0; j < ar.order(); ++j) r -= ar.phi[static_cast<std::size_t>(j)] * M.row(k - j - 1);
-		if (ar.theta != 0.0 && !restart) r += ar.theta * W.row(static_cast<Eigen::Index>(i - 1));
-		W.row(static_cast<Eigen::Index>(i)) = r;
 	}
 	return W;
 }
