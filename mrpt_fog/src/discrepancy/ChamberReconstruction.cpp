@@ -126,7 +126,10 @@ AirReconstruction reconstructChamberAir(const sim::FogDevice& device, const sim:
 		P(j, j - 1) -= 1;
 		P(j - 1, j) -= 1;
 	}
-	const Eigen::MatrixXd A = G.transpose() * G;
+	// G'G: only one triangle is computed (A is symmetric), then mirrored.
+	Eigen::MatrixXd A = Eigen::MatrixXd::Zero(p, p);
+	A.selfadjointView<Eigen::Lower>().rankUpdate(G.transpose());
+	A.triangularView<Eigen::StrictlyUpper>() = A.transpose();
 	const Eigen::VectorXd g = G.transpose() * y;
 	const double scale = A.diagonal().mean();
 	AirReconstruction best;
@@ -149,7 +152,8 @@ AirReconstruction reconstructChamberAir(const sim::FogDevice& device, const sim:
 		if (lambdas.size() > 1 || opt.uncertainty)
 		{
 			inv = ldlt.solve(Eigen::MatrixXd::Identity(p, p));
-			const double trH = (inv * A).trace();
+			// trace(inv A) = sum_ij inv_ij A_ji = sum_ij inv_ij A_ij (A symmetric): O(p^2), no product.
+			const double trH = inv.cwiseProduct(A).sum();
 			const double rss = (y - G * x).squaredNorm();
 			const double denom = static_cast<double>(n) - trH;
 			if (!(denom > 0)) continue;
@@ -189,17 +193,18 @@ AirReconstruction reconstructChamberAir(const sim::FogDevice& device, const sim:
 		best.mean_ci95_half_C = best.max_ci95_half_C = NAN;
 		return best;
 	}
-	const Eigen::MatrixXd C = s2 * bestInv;
+	// The air at knot m is L_m' x with L_m = (1, ..., 1 [m + 1 ones], 0, ...): variance
+	// L_m' C L_m = v_{m-1} + 2 sum_{i<m} C_im + C_mm, with C = s2 inv (symmetric). O(p^2).
 	double air = bestX(0);
-	Eigen::VectorXd L = Eigen::VectorXd::Zero(p);
+	double v = 0.0;
 	for (std::size_t m = 0; m <= K; ++m)
 	{
-		if (m > 0) air += bestX(static_cast<Eigen::Index>(m));
-		L(static_cast<Eigen::Index>(m)) = 1.0;
+		const auto mi = static_cast<Eigen::Index>(m);
+		if (m > 0) air += bestX(mi);
+		v += 2.0 * bestInv.col(mi).head(mi).sum() + bestInv(mi, mi);
 		best.knot_time_s.push_back(static_cast<double>(m * q) * dt);
 		best.knot_air_C.push_back(air);
-		const double v = L.dot(C * L);
-		best.knot_ci95_half_C.push_back(1.96 * std::sqrt(std::max(v, 0.0)));
+		best.knot_ci95_half_C.push_back(1.96 * std::sqrt(std::max(s2 * v, 0.0)));
 	}
 	double sum = 0;
 	for (double h : best.knot_ci95_half_C)
