@@ -6,7 +6,6 @@
 #include "ThermistorScreeningReport.h"
 
 #include <mrpt/core/Clock.h>
-#include <mrpt_fog/model/FieldOffset.h>
 #include <mrpt_fog_heading/StandstillCorrection.h>
 
 #include <cmath>
@@ -26,6 +25,24 @@ heading::PipelineOptions pipelineOptionsFor(const HeadingOptions& hopt)
 	return o;
 }
 
+heading::PipelineOptions compensatedOptionsFor(const DriveSettings& st, const HeadingOptions& hopt, bool refine,
+											   const std::optional<FieldOffset>& field_offset)
+{
+	heading::PipelineOptions o = pipelineOptionsFor(hopt);
+	o.screen_thermistors = st.screen_thermistors;
+	o.earth.calibration_latitude_deg = st.cal_latitude_deg;
+	o.earth.bias_without_earth_rate = st.cal_no_earth_rate;
+	o.field_offset = field_offset;
+	o.field_refinement = refine;
+	o.field.turn_on_repeatability_dph = st.refinement.turn_on_repeatability_dph;
+	o.field.noise = st.refinement.noise;
+	o.field.standstill = st.refinement.standstill;
+	o.field.min_still_s = st.refinement.min_still_s;
+	o.field.guard_s = st.refinement.guard_s;
+	o.field.significance_sigma = st.refinement.significance_sigma;
+	return o;
+}
+
 std::unique_ptr<heading::HeadingPipeline> compensatedPipeline(const FogSeries& header, const Calibration& zcal,
 															  const DriveSettings& st, const HeadingOptions& hopt,
 															  double t0_unix_s, bool refine, DriveEvaluation& e)
@@ -34,18 +51,7 @@ std::unique_ptr<heading::HeadingPipeline> compensatedPipeline(const FogSeries& h
 	e.refinement.calibration_offset = loadFieldOffset(st.cal_path);
 	if (e.refinement.calibration_offset)
 		e.refinement.calibration_offset_at_drive_dph = e.refinement.calibration_offset->offsetAt_dph(t0_unix_s);
-	heading::PipelineOptions o = pipelineOptionsFor(hopt);
-	o.screen_thermistors = st.screen_thermistors;
-	o.earth.calibration_latitude_deg = st.cal_latitude_deg;
-	o.earth.bias_without_earth_rate = st.cal_no_earth_rate;
-	o.field_offset = e.refinement.calibration_offset;
-	o.field_refinement = refine;
-	o.field.turn_on_repeatability_dph = st.refinement.turn_on_repeatability_dph;
-	o.field.noise = st.refinement.noise;
-	o.field.standstill = st.refinement.standstill;
-	o.field.min_still_s = st.refinement.min_still_s;
-	o.field.guard_s = st.refinement.guard_s;
-	o.field.significance_sigma = st.refinement.significance_sigma;
+	const heading::PipelineOptions o = compensatedOptionsFor(st, hopt, refine, e.refinement.calibration_offset);
 	try
 	{
 		return std::make_unique<heading::HeadingPipeline>(header, o, &zcal);

@@ -17,10 +17,12 @@
 #include "DriveEvaluation.h"
 
 #include <mrpt_fog/io/FogLogReader.h>
+#include <mrpt_fog/model/FieldOffset.h>
 #include <mrpt_fog/obs/CObservationFOG.h>
 #include <mrpt_fog_heading/HeadingPipeline.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,13 @@ namespace mrpt_fog::drift
 /** A variant's pipeline options without a calibration (raw, ideal): the drive's latitude and the
  * rate sampling from `hopt`, aligned by the caller. */
 heading::PipelineOptions pipelineOptionsFor(const HeadingOptions& hopt);
+
+/** The compensated variant's pipeline options (latitude and sampling as pipelineOptionsFor):
+ * the screening, the calibration's latitude options, the standstill updates (when `refine`:
+ * settings.refinement) and the calibration's field offset. Also those of the comparison without
+ * a truth (HeadingWithoutTruth.h). */
+heading::PipelineOptions compensatedOptionsFor(const DriveSettings& settings, const HeadingOptions& hopt, bool refine,
+											   const std::optional<FieldOffset>& field_offset);
 
 /** The compensated variant's pipeline for the vertical calibration `zcal` on a drive whose FOG
  * has `header`'s layout and metadata: the screening, the calibration's latitude options, the

@@ -4,7 +4,6 @@
 #include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog_heading/CalibrationEarthRate.h>
 #include <mrpt_fog_heading/HeadingPipeline.h>
-#include <mrpt_fog_heading/StandstillCorrection.h>
 #include <mrpt_fog_heading/TruthComparison.h>
 #include <mrpt_fog_nav/Rotation.h>
 
@@ -199,19 +198,6 @@ TEST(HeadingPipeline, RealignFromAnExternalHeading)
 	while (p.popPose(q)) check(q);
 	EXPECT_EQ(after, 61u);  // 30.0, 30.5, ..., 60.0
 	EXPECT_THROW(p.realign(epoch + 10.0, 0.0, 0.0, 0.0), std::runtime_error);  // before the last FOG sample
-}
-
-TEST(StandstillCorrection, ThermalModelSigmaIsTheHeldOutStability)
-{
-	Calibration cal;
-	cal.model.rms_held_out_dph = 0.19;  // per-sample residual: not a bias uncertainty
-	cal.held_out.stability_dph = 0.013;
-	cal.in_sample.stability_dph = 0.011;
-	EXPECT_EQ(thermalModelSigma_dph(cal), 0.013);
-	cal.held_out.stability_dph = NAN;
-	EXPECT_EQ(thermalModelSigma_dph(cal), 0.011);
-	cal.in_sample.stability_dph = 0.0;
-	EXPECT_EQ(thermalModelSigma_dph(cal), 0.0);
 }
 
 TEST(HeadingPipeline, BadInputThrows)
