@@ -8,8 +8,8 @@
  * per-sample interface. The correction of a sample at t uses only the standstill samples the
  * refiner has decided by then (all at or before t - guard): causal. Its prior: 0 +- the
  * calibration's uncertainty (RateCorrectionInput::compensation_sigma_dph: thermalModelSigma_dph,
- * with a field offset's) and the turn-on repeatability combined. HeadingPipeline installs one by default when it has a calibration
- * (PipelineOptions::field_refinement). */
+ * with a field offset's) and the turn-on repeatability combined. HeadingPipeline installs one by
+ * default when it has a calibration (PipelineOptions::field_refinement). */
 
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog_heading/RateCorrection.h>
