@@ -788,9 +788,10 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 	VariantStream* comp_var = nullptr;
 	if (zcal)
 	{
-		// the odometry goes to its pipeline too: the standstill updates read it
-		addVariant("compensated", scan.fog,
-				   compensatedPipeline(h, *zcal, st, hopt, scan.fog.first, st.refinement.enabled, e), true, st.cal_path);
+		// the odometry goes to its pipeline too when the standstill updates read it
+		auto pipe = compensatedPipeline(h, *zcal, st, hopt, scan.fog.first, st.refinement.enabled, e);
+		const bool reads_odometry = pipe->rateCorrection() != nullptr;
+		addVariant("compensated", scan.fog, std::move(pipe), reads_odometry, st.cal_path);
 		comp_var = vars.back().get();
 	}
 	VariantStream* ideal_var = nullptr;
