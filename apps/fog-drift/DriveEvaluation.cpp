@@ -2,8 +2,9 @@
 #include "DriveEvaluation.h"
 
 #include "DriveCompensation.h"
-#include "StreamingDrive.h"
 #include "Progress.h"
+#include "StreamingDrive.h"
+#include "VariantPipeline.h"
 
 #include <mrpt_fog/model/CalibrationYaml.h>
 #include <mrpt_fog/obs/Units.h>
@@ -232,11 +233,11 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 									 ": the bias holds the Earth rate of the calibration mount (earth_rate handling "
 									 "in_bias), which is unknown for the horizontal axes: calibrate a triad from runs "
 									 "that state it (metadata earth_rate_dph.<axis>, fog-sim --triad writes it)");
-		for (const GyroAxis a : {GyroAxis::X, GyroAxis::Y, GyroAxis::Z})
+		for (const GyroAxis a : {GyroAxis::X, GyroAxis::Y})  // a triad's horizontal axes: the thermal model alone
 		{
 			const Calibration* c = cals->forAxis(a);
 			const std::size_t i = static_cast<std::size_t>(a);
-			if (c && (e.three_axis || a == GyroAxis::Z))
+			if (c && e.three_axis)
 			{
 				comp[i] = app::compensatedDriveRate_dph(fog, *c, st.cal_path, st.screen_thermistors, &e.field_warning);
 				e.magnetic_term |= c->magnetic.has_value();
@@ -244,28 +245,16 @@ DriveEvaluation evaluateDrive(const std::string& path, const DriveSettings& st)
 			else
 				comp[i] = fog.rate_dph[i];  // not integrated (vertical gyro alone) or absent
 		}
-		// The compensated rate lacks the Earth rate the bias held; the strapdown removes the
-		// drive's own: add the first back so that it is not removed twice. Scale factor: the
-		// bias (hence its Earth rate) is removed before the division, so the Earth rate goes
-		// back unscaled.
-		for (double& r : comp[2]) r += e.calibration_earth_rate_dph;
-		// What the calibration learned in the field (fog-refine), at the drive's date
-		e.refinement.calibration_offset = loadFieldOffset(st.cal_path);
-		if (const auto& fo = e.refinement.calibration_offset; fo && !t_fog.empty())
-		{
-			e.refinement.calibration_offset_at_drive_dph = fo->offsetAt_dph(t_fog.front());
-			for (std::size_t k = 0; k < t_fog.size(); k++) comp[2][k] -= fo->offsetAt_dph(t_fog[k]);
-		}
-		// What the thermal model cannot hold (the turn-on offset): standstill updates
+		// The vertical gyro: the library's heading pipeline (VariantPipeline.h) gives the rate the
+		// strapdown integrates: screened, compensated, the calibration's field offset and the
+		// standstill updates' offset removed, the calibration's Earth rate added back (the
+		// strapdown removes the drive's own).
 		if (st.refinement.enabled && e.three_axis)
 			e.refinement.note = "not run: a triad FOG runs the 3-D strapdown, which is not refined";
-		else if (st.refinement.enabled)
-		{
-			std::vector<bool> on(fog.size());
-			for (std::size_t k = 0; k < on.size(); k++) on[k] = fog.gyroOn(k);
-			const auto o = refinementOptionsFor(st.refinement, *zcal, e.latitude_deg, t_fog.front(), e.refinement);
-			refineInMemory(t_fog, comp[2], on, e.drive.odometry, o, e.refinement);
-		}
+		const auto pipe = compensatedPipeline(fog, *zcal, st, hopt, t_fog.front(),
+											  st.refinement.enabled && !e.three_axis, e);
+		comp[2] = pipelineRate_dph(*pipe, fog, e.drive.odometry, st.cal_path);
+		reportCompensation(*pipe, *zcal, !fog.field_uT.empty(), st, e);
 		// The temperatures have served (compensation is the last to read them): released, 8 B per
 		// thermistor and sample. The drive's FOG keeps its times, rates and power.
 		e.drive.fog.thermistors.clear();

@@ -3,10 +3,10 @@
 
 /** \file FieldRefinement.h
  * fog-drift's use of the in-field bias refinement (mrpt_fog_nav/FieldBiasRefiner.h) on the
- * compensated vertical gyro: its options from the command line and the calibration, the
- * in-memory run over a drive's vectors, and what it reports. The streamed evaluation feeds the
- * same refiner sample by sample (StreamingDrive.cpp); the refiner's answer depends on the
- * samples' times only, so both give the same figures. */
+ * compensated vertical gyro: its settings from the command line and what it reports. It runs
+ * inside the library's heading pipeline (mrpt_fog_heading/StandstillCorrection.h; fog-drift's
+ * pipelines: VariantPipeline.h), which corrects each sample with what the standstills decided
+ * by its time (causal), in both of fog-drift's paths alike. */
 
 #include "DriveData.h"
 
@@ -52,19 +52,8 @@ struct FieldRefinementResult
 	double calibration_offset_at_drive_dph = 0;
 };
 
-/** The refiner's options for the z calibration `zcal` at the drive's latitude; fills the prior
- * and the expected rate into `result`. */
-nav::FieldRefinementOptions refinementOptionsFor(const FieldRefinementSettings& settings, const Calibration& zcal,
-												 double latitude_deg, double t0_unix_s, FieldRefinementResult& result);
-
 /** Copies the refiner's updates and final state into `result` (ran = true) and writes its note. */
 void noteRefinement(const nav::FieldBiasRefiner& refiner, FieldRefinementResult& result);
-
-/** The refinement over a drive held in memory: rate_dph (the compensated vertical rate with the
- * Earth rate, one per t_s, absolute times) is corrected in place; samples with on[k] false (gyro
- * off) are passed through unchanged and not used; a sample after an off one is a turn-on. */
-void refineInMemory(const std::vector<double>& t_s, std::vector<double>& rate_dph, const std::vector<bool>& on,
-					const OdometryPoses& odometry, const nav::FieldRefinementOptions& options, FieldRefinementResult& result);
 
 /** The text lines fog-drift prints ("" when the refinement did not run and has nothing to say). */
 std::string refinementText(const FieldRefinementResult& result, double epoch_s);

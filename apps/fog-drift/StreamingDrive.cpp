@@ -3,12 +3,9 @@
 
 #include "GyroOff.h"
 #include "StreamingFigures.h"
+#include "VariantPipeline.h"
 
-#include "PowerCycles.h"
 #include "Progress.h"
-#include "FieldWarning.h"
-#include "RangeWarning.h"
-#include "ThermistorScreeningReport.h"
 
 #include <mrpt/core/Clock.h>
 #include <mrpt/core/bits_math.h>
@@ -17,14 +14,11 @@
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/io/FogLogReader.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
-#include <mrpt_fog/model/Compensator.h>
-#include <mrpt_fog/model/ThermistorHealth.h>
 #include <mrpt_fog/obs/CObservationFOG.h>
 #include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog_nav/DeadReckoning.h>
 #include <mrpt_fog_nav/EarthModel.h>
 #include <mrpt_fog_nav/Rotation.h>
-#include <mrpt_fog_nav/StrapdownAttitude.h>
 
 #include <algorithm>
 #include <cmath>
@@ -75,6 +69,7 @@ struct DriveScan
 	Ends fog, ideal, odometry, truth;
 	bool ideal_has_z = true;
 	std::string ideal_label;
+	FogSeries ideal_header;  //!< the ideal FOG's layout (HeadingPipeline::headerOf its first observation)
 	double distance_m = 0;
 	nav::DriveSegments segments;
 	std::vector<TurnSpan> turns;
@@ -102,51 +97,60 @@ struct OdoPose
 	double t_s, x_m, y_m, phi_rad;
 };
 
-/** One gyro variant: attitude -> dead reckoning -> errors at the truth times -> figures. */
+/** One gyro variant: its heading pipeline (the library's, HeadingPipeline.h: compensation, rate
+ * correction, Earth rate, strapdown) fed in time order and aligned from the truth at the start of
+ * each window; its attitudes dead-reckoned with the odometry from the truth's position there and
+ * compared with the truth as the samples come -> figures. */
 class VariantStream
 {
    public:
 	/** windows: the time spans navigated, each aligned from the truth at its start (one
 	 * without gyro-off stretches; GyroOff.h); skip_short: a window with fewer than 2 odometry
-	 * samples is skipped (else an error). */
+	 * samples is skipped (else an error). pipe: the variant's pipeline (Alignment::ByCaller);
+	 * feeds_odometry: the odometry goes to it too (its rate correction reads it); fog_samples:
+	 * how many FOG samples the variant's gyro has (pass 1); cal_path: its calibration file, named
+	 * in a compensation error ("" without). */
 	VariantStream(std::string name, std::vector<std::pair<double, double>> windows, bool skip_short,
-				  const HeadingOptions& hopt, const DriveScan& scan)
-		: name_(std::move(name)), windows_(std::move(windows)), skip_short_(skip_short), hopt_(hopt),
-		  acc_(scan.segments, scan.turns)
+				  const DriveScan& scan, std::unique_ptr<heading::HeadingPipeline> pipe, bool feeds_odometry,
+				  std::size_t fog_samples, std::string cal_path)
+		: name_(std::move(name)), skip_short_(skip_short), acc_(scan.segments, scan.turns), pipe_(std::move(pipe)),
+		  feeds_odometry_(feeds_odometry), cal_path_(std::move(cal_path)), fog_total_(fog_samples),
+		  odo_total_(scan.odometry.n), odo_first_s_(scan.odometry.first)
 	{
-		nav::StrapdownOptions so;
-		so.latitude_rad = hopt.latitude_deg * units::kDegToRad;
-		so.use_transport_rate = false;
-		so.sampling = hopt.sampling;
-		att_ = std::make_unique<nav::StrapdownAttitude>(so, nav::StrapdownAttitude::Mode::VerticalOnly);
-		t0_ = windows_.front().first, t_end_ = windows_.front().second;
+		for (const auto& [t0, t1] : windows)
+		{
+			Window w;
+			w.t0 = t0, w.t1 = t1;
+			windows_.push_back(std::move(w));
+		}
 	}
 
-	/** Sample k of the variant's gyro: absolute time [s], vertical rate [deg/h]. */
-	void addGyro(double t, double rate_dph, std::size_t k)
+	heading::HeadingPipeline& pipeline() { return *pipe_; }
+
+	/** The variant's next FOG sample (time relative to the pipeline header's epoch). */
+	void addFog(const FogSample& x)
 	{
-		// a sample before the window being navigated (or, once it has stopped, before the next one) is
-		// never integrated: not held (a long gyro-off stretch does not fill the queue)
-		if (t < t0_) return;
-		if (gyro_stopped_ && (window_ + 1 >= windows_.size() || t < windows_[window_ + 1].first)) return;
-		gyro_.push_back({t, rate_dph, k});
+		fogq_.push_back(x);
+		fog_pushed_++;
 	}
-	void gyroDone() { gyro_done_ = true; }
+	/** The next odometry sample (readDrive's: a repeated or earlier time already skipped). */
+	void addOdometry(const OdoPose& p)
+	{
+		if (!feeds_odometry_) return;
+		odoq_.push_back(p);
+		odo_pushed_++;
+		last_odo_pushed_s_ = p.t_s;
+	}
+	/** The end of the file: every sample is in. */
+	void inputDone() { fog_total_ = fog_pushed_, odo_total_ = odo_pushed_; }
 
 	/** Advances as far as the data allow. */
 	void pump(const IndexedQueue<nav::TrajectoryPoint>& truth, const IndexedQueue<OdoPose>& odo)
 	{
+		feed(truth);
 		for (;;)
 		{
-			if (!initialised_)
-			{
-				if (!truthReady(truth, t0_)) return;
-				const nav::TrajectoryPoint start = interpolateTruth(truth, t0_);
-				att_->initialize(t0_, nav::quatFromYawPitchRoll(start.yaw_rad, 0, 0));
-				track_.push_back({t0_, att_->attitude()});
-				initialised_ = true;
-			}
-			integrate();
+			if (!cur().aligned) return;
 			deadReckon(truth, odo);
 			compare(truth);
 			if (!compared_all_ || window_ + 1 >= windows_.size()) return;
@@ -154,25 +158,26 @@ class VariantStream
 		}
 	}
 
-	bool done() const { return compared_all_ && window_ + 1 >= windows_.size(); }
 	/** Windows navigated (at least 2 odometry samples). */
 	std::size_t windowsNavigated() const { return navigated_; }
 	/** Truth and odometry indices this variant still needs (its lower bounds). Before the
-	 * dead reckoning of a later window starts: the last truth pose at or before its start. */
+	 * dead reckoning of a later window starts: the last truth pose at or before its start; before
+	 * the pipeline is aligned for a window: the last one at or before that window's start. */
 	std::size_t truthNeeded(const IndexedQueue<nav::TrajectoryPoint>& truth) const
 	{
-		if (initialised_ && dr_started_) return next_truth_;
-		if (window_ == 0) return 0;
-		std::size_t i = truth.base;
-		while (i + 1 < truth.end() && truth.at(i + 1).t_s <= t0_) i++;
-		return i;
+		std::size_t need;
+		if (cur().aligned && dr_started_) need = next_truth_;
+		else if (window_ == 0) need = 0;
+		else need = lastAtOrBefore(truth, cur().t0);
+		if (aligned_windows_ < windows_.size()) need = std::min(need, lastAtOrBefore(truth, windows_[aligned_windows_].t0));
+		return need;
 	}
 	std::size_t odoNeeded(const IndexedQueue<OdoPose>& odo) const
 	{
 		if (window_ > 0 && !dr_started_)  // a later window starts at the first odometry at or after its start
 		{
 			std::size_t i = std::max(next_odo_, odo.base);
-			while (i < odo.end() && odo.at(i).t_s < t0_) i++;
+			while (i < odo.end() && odo.at(i).t_s < cur().t0) i++;
 			return i;
 		}
 		return next_odo_ > 0 ? next_odo_ - 1 : 0;
@@ -194,8 +199,11 @@ class VariantStream
 	{
 		poses_ = poses, rates_ = rates, earth_up_ = earth_up_rad_s;
 		win_poses_ = std::make_unique<RowSpill>(4);
-		win_rates_ = std::make_unique<RowSpill>(2);
+		for (Window& w : windows_) w.rates = std::make_unique<RowSpill>(2);
 	}
+
+	/** Every error as it is compared (t, heading [deg], position [m]) also into `spill` (--csv). */
+	void spillSeriesTo(RowSpill* spill) { series_ = spill; }
 
    private:
 	struct Att
@@ -203,10 +211,130 @@ class VariantStream
 		double t;
 		Eigen::Quaterniond q;
 	};
+	/** A window: its span, the pipeline's attitudes inside it not yet passed by the dead
+	 * reckoning, and (--odometry-out) its integrated rates. */
+	struct Window
+	{
+		double t0 = 0, t1 = 0;
+		bool aligned = false;  //!< the pipeline was aligned at t0
+		bool final = false;  //!< no later attitude comes (a sample after t1 was given)
+		std::deque<Att> track;
+		std::unique_ptr<RowSpill> rates;
+	};
+	Window& cur() { return windows_[window_]; }
+	const Window& cur() const { return windows_[window_]; }
+
+	/** A FOG sample's absolute time, as the pipeline computes it. */
+	double fogTime(const FogSample& x) const { return pipe_->header().epoch_s + x.time_s; }
+
+	/** How far a FOG sample may be given ahead of the last odometry read when the odometry
+	 * between them has not been read yet [s] (a log interleaves them at most this far out of
+	 * time order; the pipeline's own limit, PipelineOptions::max_odometry_lag_s): beyond it the
+	 * odometry has a gap, and the FOG samples are not held for it (memory). */
+	static constexpr double kOrderLag_s = 10.0;
+
+	/** Gives the pipeline what can be given in time order: an odometry sample before the FOG
+	 * samples at or after its time (as the in-memory path merges them), each FOG sample once
+	 * the pipeline is aligned for the windows that start at or before it. */
+	void feed(const IndexedQueue<nav::TrajectoryPoint>& truth)
+	{
+		for (;;)
+		{
+			bool odo_first;
+			if (!fogq_.empty() && !odoq_.empty()) odo_first = odoq_.front().t_s <= fogTime(fogq_.front());
+			else if (!odoq_.empty())
+			{
+				// no FOG sample can come before it: all are in, or it is not after one already given
+				if (!(fog_pushed_ >= fog_total_ || (any_fog_fed_ && odoq_.front().t_s <= last_fog_fed_s_))) return;
+				odo_first = true;
+			}
+			else if (!fogq_.empty())
+			{
+				const double t = fogTime(fogq_.front());
+				if (!(!feeds_odometry_ || odo_pushed_ >= odo_total_ || (odo_pushed_ == 0 && t < odo_first_s_) ||
+					  (odo_pushed_ > 0 && t > last_odo_pushed_s_ + kOrderLag_s)))
+					return;
+				odo_first = false;
+			}
+			else
+				return;
+			if (odo_first)
+			{
+				const OdoPose o = odoq_.front();
+				odoq_.pop_front();
+				pipe_->addOdometry(o.t_s, o.x_m, o.y_m, o.phi_rad);
+				dropPoses();
+				continue;
+			}
+			const double t = fogTime(fogq_.front());
+			if (!alignFor(t, truth)) return;  // the truth at a window's start is not read yet
+			const heading::RateStep& s = addFogSample(*pipe_, fogq_.front(), cal_path_);
+			fogq_.pop_front();
+			any_fog_fed_ = true, last_fog_fed_s_ = t;
+			dropPoses();
+			keep(s);
+		}
+	}
+
+	/** The pipeline's own poses (dead-reckoned from its alignment) are not the figures': this
+	 * class dead-reckons from the truth's position. */
+	void dropPoses()
+	{
+		heading::DeadReckonedPose p;
+		while (pipe_->popPose(p))
+		{
+		}
+	}
+
+	/** Aligns the pipeline for the windows that start at or before t, from the truth's heading
+	 * at their start; false while that truth is not read yet. */
+	bool alignFor(double t, const IndexedQueue<nav::TrajectoryPoint>& truth)
+	{
+		while (aligned_windows_ < windows_.size() && t >= windows_[aligned_windows_].t0)
+		{
+			Window& w = windows_[aligned_windows_];
+			if (!truthReady(truth, w.t0)) return false;
+			const double yaw = interpolateTruth(truth, w.t0).yaw_rad;
+			if (aligned_windows_ > 0) windows_[aligned_windows_ - 1].final = true;
+			pipe_->realign(w.t0, yaw, 0.0, 0.0);  // the position: this class's dead reckoning
+			w.track.push_back({w.t0, pipe_->attitude()});
+			w.aligned = true;
+			aligned_windows_++;
+		}
+		return true;
+	}
+
+	/** The attitude after an integrated sample of the window being fed. */
+	void keep(const heading::RateStep& s)
+	{
+		if (aligned_windows_ == 0) return;
+		Window& w = windows_[aligned_windows_ - 1];
+		if (w.final) return;
+		if (s.t_s > w.t1)
+		{
+			w.final = true;
+			return;
+		}
+		if (!s.integrated) return;
+		if (s.t_s > w.track.back().t) w.track.push_back({s.t_s, pipe_->attitude()});
+		if (w.rates)
+		{
+			const double row[2] = {s.t_s, s.integrated_dph * units::kDegPerHourToRadPerSec - earth_up_};
+			w.rates->push(row);
+		}
+	}
 
 	static bool truthReady(const IndexedQueue<nav::TrajectoryPoint>& truth, double t)
 	{
 		return truth.done || (!truth.q.empty() && truth.q.back().t_s > t);
+	}
+
+	/** The index of the last truth pose held at or before t (the first held when none). */
+	static std::size_t lastAtOrBefore(const IndexedQueue<nav::TrajectoryPoint>& truth, double t)
+	{
+		std::size_t i = truth.base;
+		while (i + 1 < truth.end() && truth.at(i + 1).t_s <= t) i++;
+		return i;
 	}
 
 	/** nav::interpolate(truth, t) on the truth still held (the same bracket). */
@@ -231,55 +359,28 @@ class VariantStream
 		return nav::interpolate(pair_, t);
 	}
 
-	void integrate()
-	{
-		while (!gyro_.empty())
-		{
-			const auto [t, rate, k] = gyro_.front();
-			gyro_.pop_front();
-			if (t < t0_ || (t == t0_ && hopt_.sampling == nav::RateSampling::IntervalAverage)) continue;
-			if (t > t_end_)
-			{
-				gyro_stopped_ = true;
-				if (window_ + 1 < windows_.size()) gyro_.push_front({t, rate, k});  // a later window's
-				else gyro_.clear();
-				break;
-			}
-			if (!std::isfinite(rate))
-				throw std::runtime_error("gyro rate is not finite at sample " + std::to_string(k) + " (t = " +
-										 std::to_string(t) +
-										 " s; a heading cannot be integrated while the gyro is off)");
-			const double w = rate * units::kDegPerHourToRadPerSec;
-			att_->updateRateZ(t, w, Eigen::Vector3d::Zero());
-			if (t > track_.back().t) track_.push_back({t, att_->attitude()});
-			if (win_rates_)
-			{
-				const double row[2] = {t, w - earth_up_};
-				win_rates_->push(row);
-			}
-		}
-	}
-
-	bool trackFinal() const { return gyro_stopped_ || gyro_done_; }
+	/** Whether the window's attitudes are all in. */
+	bool trackFinal() const { return cur().final || (fog_pushed_ >= fog_total_ && fogq_.empty()); }
 
 	/** AttitudeTrack::yawAt(t) on the attitudes still held (the same bracket); drops the
 	 * attitudes before it. */
 	double yawAt(double t)
 	{
+		std::deque<Att>& track = cur().track;
 		std::size_t i1;
-		if (track_.size() == 1) return nav::yawOf(track_.front().q);
-		auto it = std::upper_bound(track_.begin(), track_.end(), t, [](double v, const Att& a) { return v < a.t; });
-		i1 = it == track_.end() ? track_.size() - 1 : static_cast<std::size_t>(it - track_.begin());
+		if (track.size() == 1) return nav::yawOf(track.front().q);
+		auto it = std::upper_bound(track.begin(), track.end(), t, [](double v, const Att& a) { return v < a.t; });
+		i1 = it == track.end() ? track.size() - 1 : static_cast<std::size_t>(it - track.begin());
 		if (i1 == 0) throw std::out_of_range("AttitudeTrack::at: time before the attitudes held");
 		const std::size_t i0 = i1 - 1;
-		const double f = (t - track_[i0].t) / (track_[i1].t - track_[i0].t);
-		const double yaw = nav::yawOf(track_[i0].q.slerp(f, track_[i1].q));
-		for (std::size_t k = 0; k < i0; k++) track_.pop_front();
+		const double f = (t - track[i0].t) / (track[i1].t - track[i0].t);
+		const double yaw = nav::yawOf(track[i0].q.slerp(f, track[i1].q));
+		for (std::size_t k = 0; k < i0; k++) track.pop_front();
 		return yaw;
 	}
 
 	/** Whether the attitude at t is final (a later attitude exists, or there will be none). */
-	bool attitudeReady(double t) const { return track_.back().t > t || trackFinal(); }
+	bool attitudeReady(double t) const { return cur().track.back().t > t || trackFinal(); }
 
 	void deadReckon(const IndexedQueue<nav::TrajectoryPoint>& truth, const IndexedQueue<OdoPose>& odo)
 	{
@@ -294,13 +395,13 @@ class VariantStream
 			const OdoPose& o = odo.at(next_odo_);
 			if (!dr_started_)
 			{
-				if (o.t_s < t0_)  // lower_bound(t0)
+				if (o.t_s < cur().t0)  // lower_bound(t0)
 				{
 					next_odo_++;
 					continue;
 				}
 				if (!truthReady(truth, o.t_s) || !attitudeReady(o.t_s)) return;
-				if (!(o.t_s <= track_.back().t))  // not inside the attitude track
+				if (!(o.t_s <= cur().track.back().t))  // not inside the attitude track
 				{
 					finishDeadReckoning();
 					return;
@@ -319,7 +420,7 @@ class VariantStream
 				continue;
 			}
 			if (!attitudeReady(o.t_s)) return;
-			if (!(o.t_s <= track_.back().t))
+			if (!(o.t_s <= cur().track.back().t))
 			{
 				finishDeadReckoning();
 				return;
@@ -363,12 +464,10 @@ class VariantStream
 	void nextWindow()
 	{
 		flushWindow();
+		cur().track.clear();
 		window_++;
-		t0_ = windows_[window_].first, t_end_ = windows_[window_].second;
-		initialised_ = gyro_stopped_ = false;
 		dr_started_ = dr_done_ = first_pending_ = compared_all_ = false;
 		dr_points_ = 0;
-		track_.clear();
 		traj_.clear();
 	}
 
@@ -412,11 +511,6 @@ class VariantStream
 		if (truth.done && dr_done_) compared_all_ = true;
 	}
 
-   public:
-	/** Every error as it is compared (t, heading [deg], position [m]) also into `spill` (--csv). */
-	void spillSeriesTo(RowSpill* spill) { series_ = spill; }
-
-   private:
 	void keepPose(const nav::TrajectoryPoint& p)
 	{
 		if (!win_poses_) return;
@@ -429,39 +523,43 @@ class VariantStream
 		if (!win_poses_) return;
 		const bool keep = dr_points_ >= 2 && (!skip_short_ || compared_in_window_ > 0);
 		if (keep)
-			for (auto [from, to] : {std::pair{win_poses_.get(), poses_}, {win_rates_.get(), rates_}})
+			for (auto [from, to] : {std::pair{win_poses_.get(), poses_}, {cur().rates.get(), rates_}})
 			{
 				RowSpill::Reader r(*from);
 				while (const double* row = r.next()) to->push(row);
 			}
 		win_poses_ = std::make_unique<RowSpill>(4);
-		win_rates_ = std::make_unique<RowSpill>(2);
+		cur().rates.reset();
 		compared_in_window_ = 0;
 	}
 
+
 	RowSpill* series_ = nullptr;
 	RowSpill *poses_ = nullptr, *rates_ = nullptr;
-	std::unique_ptr<RowSpill> win_poses_, win_rates_;
+	std::unique_ptr<RowSpill> win_poses_;
 	double earth_up_ = 0;
 	std::size_t compared_in_window_ = 0;
 	std::string name_;
-	std::vector<std::pair<double, double>> windows_;
 	bool skip_short_ = false;
 	std::size_t window_ = 0, navigated_ = 0;
-	double t0_ = 0, t_end_ = 0;
-	HeadingOptions hopt_;
 	FigureAccumulator acc_;
-	std::unique_ptr<nav::StrapdownAttitude> att_;
-	std::deque<std::tuple<double, double, std::size_t>> gyro_;
-	std::deque<Att> track_;
-	std::deque<nav::TrajectoryPoint> traj_;
+	std::unique_ptr<heading::HeadingPipeline> pipe_;
+	bool feeds_odometry_ = false;
+	std::string cal_path_;
+	std::vector<Window> windows_;
+	std::size_t aligned_windows_ = 0;  //!< windows the pipeline was aligned for
+	std::deque<FogSample> fogq_;  //!< FOG samples read, not yet given to the pipeline
+	std::deque<OdoPose> odoq_;  //!< odometry read, not yet given to the pipeline
+	std::size_t fog_total_, fog_pushed_ = 0, odo_total_, odo_pushed_ = 0;
+	double odo_first_s_, last_odo_pushed_s_ = 0, last_fog_fed_s_ = 0;
+	bool any_fog_fed_ = false;
 	nav::Trajectory pair_;
 	nav::TrajectoryPoint last_;
 	OdoPose prev_odo_{};
-	bool initialised_ = false, gyro_stopped_ = false, gyro_done_ = false;
 	bool dr_started_ = false, dr_done_ = false, first_pending_ = false, compared_all_ = false;
 	std::size_t next_odo_ = 0, next_truth_ = 0, dr_points_ = 0;
 	double traj_front_t_ = 0;  //!< the trajectory's first time (traj_ keeps its tail)
+	std::deque<nav::TrajectoryPoint> traj_;
 };
 
 /** readDrive()'s handling of the other observations (odometry and truth: a repeated or earlier
@@ -563,6 +661,7 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 		nav::TrajectoryPoint prev_truth;
 		OtherObservations others{labels, {}, {}, {}};
 		others.on_ideal = [&](const CObservationFOG& o) {
+			if (scan.ideal.n == 0) scan.ideal_header = heading::HeadingPipeline::headerOf(o);
 			scan.ideal.add(ideal.add(o));
 			scan.ideal_has_z = ideal.axes[2];
 			scan.ideal_label = ideal.label;
@@ -652,7 +751,7 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 		throw std::runtime_error(path + ": FOG '" + scan.ideal_label +
 								 "' has no z (vertical) axis; fog-drift integrates the vertical gyro");
 
-	// ---- pass 2: every variant at once
+	// ---- pass 2: every variant at once, each on its heading pipeline (VariantPipeline.h)
 	const auto overlap = [&](const Ends& g) {
 		if (g.n < 2) throw std::runtime_error("gyro series: sizes differ or fewer than 2 samples");
 		const double t0 = std::max({g.first, scan.odometry.first, scan.truth.first});
@@ -663,7 +762,7 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 	std::vector<std::unique_ptr<VariantStream>> vars;
 	std::vector<std::string> names;
 	const bool gyro_off = !scan.gyro_off.empty();
-	const auto addVariant = [&](const std::string& name, const Ends& g) {
+	const auto windowsOf = [&](const Ends& g) {
 		std::vector<std::pair<double, double>> windows;
 		if (!gyro_off) windows.push_back(overlap(g));
 		else
@@ -676,21 +775,30 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 				throw std::runtime_error("no powered span of the gyro overlaps the odometry and the truth long enough "
 										 "to navigate");
 		}
-		vars.push_back(std::make_unique<VariantStream>(name, std::move(windows), gyro_off, hopt, scan));
+		return windows;
+	};
+	const auto addVariant = [&](const std::string& name, const Ends& g, std::unique_ptr<heading::HeadingPipeline> pipe,
+								bool feeds_odometry, std::string cal_path) {
+		vars.push_back(std::make_unique<VariantStream>(name, windowsOf(g), gyro_off, scan, std::move(pipe), feeds_odometry,
+													   g.n, std::move(cal_path)));
 		names.push_back(name);
 	};
-	addVariant("raw", scan.fog);
+	addVariant("raw", scan.fog, std::make_unique<heading::HeadingPipeline>(h, pipelineOptionsFor(hopt)), false, "");
 	VariantStream* raw = vars.back().get();
 	VariantStream* comp_var = nullptr;
 	if (zcal)
 	{
-		addVariant("compensated", scan.fog);
+		// the odometry goes to its pipeline too when the standstill updates read it
+		auto pipe = compensatedPipeline(h, *zcal, st, hopt, scan.fog.first, st.refinement.enabled, e);
+		const bool reads_odometry = pipe->rateCorrection() != nullptr;
+		addVariant("compensated", scan.fog, std::move(pipe), reads_odometry, st.cal_path);
 		comp_var = vars.back().get();
 	}
 	VariantStream* ideal_var = nullptr;
 	if (scan.ideal.n > 0)
 	{
-		addVariant("ideal", scan.ideal);
+		addVariant("ideal", scan.ideal,
+				   std::make_unique<heading::HeadingPipeline>(scan.ideal_header, pipelineOptionsFor(hopt)), false, "");
 		ideal_var = vars.back().get();
 	}
 
@@ -713,56 +821,6 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 	IndexedQueue<nav::TrajectoryPoint> truth;
 	IndexedQueue<OdoPose> odo;
 	IdealTimes ideal_times;
-	// the compensator, as compensateRun() drives it (screening first: screenedForCompensation)
-	std::unique_ptr<Compensator> compensator;
-	std::unique_ptr<ThermistorHealth> health;
-	const bool screen = st.screen_thermistors;
-	double prev_power = 1.0;
-	std::vector<double> temps;
-	if (zcal)
-	{
-		try
-		{
-			compensator = std::make_unique<Compensator>(*zcal, h.thermistors);
-			if (zcal->warmup) compensator->notePowerOnFromMetadata(h);
-		}
-		catch (const std::exception& ex)
-		{
-			throw std::runtime_error(st.cal_path + ": cannot compensate the drive's FOG: " + ex.what());
-		}
-		if (screen) health = std::make_unique<ThermistorHealth>(h.thermistors.size());
-	}
-	// the in-field refinement of the compensated rate (as evaluateDrive: refineInMemory); its
-	// output waits for the odometry that covers each sample
-	std::unique_ptr<nav::FieldBiasRefiner> refiner;
-	struct PendingComp
-	{
-		std::size_t k;
-		double rate_dph;
-		bool on;
-	};
-	std::deque<PendingComp> comp_pending;
-	bool prev_on = true;
-	if (zcal)
-	{
-		e.refinement.calibration_offset = loadFieldOffset(st.cal_path);
-		if (e.refinement.calibration_offset)
-			e.refinement.calibration_offset_at_drive_dph = e.refinement.calibration_offset->offsetAt_dph(scan.fog.first);
-	}
-	const FieldOffset* field_offset = e.refinement.calibration_offset ? &*e.refinement.calibration_offset : nullptr;
-	if (zcal && st.refinement.enabled)
-		refiner = std::make_unique<nav::FieldBiasRefiner>(
-			refinementOptionsFor(st.refinement, *zcal, e.latitude_deg, scan.fog.first, e.refinement), scan.fog.first);
-	const auto drainRefiner = [&] {
-		nav::RefinedRate x;
-		while (refiner->next(x))
-		{
-			if (comp_pending.empty()) throw std::logic_error("field refinement: output out of step");
-			const PendingComp p = comp_pending.front();
-			comp_pending.pop_front();
-			comp_var->addGyro(x.t_s, p.on ? x.rate_dph : p.rate_dph, p.k);
-		}
-	};
 	const auto pumpAll = [&] {
 		for (auto& v : vars) v->pump(truth, odo);
 		std::size_t tn = truth.end(), on = odo.end();
@@ -776,16 +834,12 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 	};
 	OtherObservations others{labels, {}, {}, {}};
 	others.on_ideal = [&](const CObservationFOG& o) {
-		const double t = ideal_times.add(o);
-		if (ideal_var) ideal_var->addGyro(t, o.rate_dph[2], ideal_times.n - 1);
+		(void)ideal_times.add(o);  // its layout checked
+		if (ideal_var) ideal_var->addFog(fogSampleOf(o, scan.ideal_header.epoch_s));
 	};
 	others.on_odometry = [&](const OdoPose& p) {
 		odo.q.push_back(p);
-		if (refiner)
-		{
-			refiner->addOdometry(p.t_s, p.x_m, p.y_m, p.phi_rad);
-			drainRefiner();
-		}
+		for (auto& v : vars) v->addOdometry(p);
 	};
 	TruthYawAt off_yaw(stretchQueryTimes(scan.gyro_off));
 	others.on_truth = [&](const nav::TrajectoryPoint& p) {
@@ -810,78 +864,18 @@ std::optional<DriveEvaluation> evaluateDriveStreaming(const std::string& path, c
 			},
 			st.read_options);
 		reading = &reader;
-		const bool has_power = reader.hasPower();
 		FogSample x;
-		for (std::size_t k = 0; reader.next(x); k++)
+		while (reader.next(x))
 		{
-			const double t = h.epoch_s + x.time_s;
-			raw->addGyro(t, x.rate_dph[2], k);
-			if (comp_var)
-			{
-				temps = x.temp_C;
-				if (health) health->step(x.time_s, temps.data());
-				const double power = has_power ? x.power : NAN;
-				if (zcal->warmup && app::isTurnOn(prev_power, power)) compensator->notePowerOn(x.time_s);
-				prev_power = power;
-				if (compensator->readsField()) compensator->noteField(x.field_uT);  // NaN when the log has none
-				double r;
-				try
-				{
-					r = compensator->step(x.time_s, x.rate_dph[2], temps.data()).compensated_dph;
-				}
-				catch (const std::exception& ex)
-				{
-					throw std::runtime_error(st.cal_path + ": cannot compensate the drive's FOG: " + ex.what());
-				}
-				// the calibration's field offset at this date (as evaluateDrive)
-				const double v = field_offset ? r + e.calibration_earth_rate_dph - field_offset->offsetAt_dph(t)
-											  : r + e.calibration_earth_rate_dph;
-				if (refiner)
-				{
-					const bool on = !has_power || x.power != 0.0;
-					comp_pending.push_back({k, v, on});
-					refiner->addRate(t, on ? v : NAN, k > 0 && on && !prev_on);
-					prev_on = on;
-					drainRefiner();
-				}
-				else
-					comp_var->addGyro(t, v, k);
-			}
+			raw->addFog(x);
+			if (comp_var) comp_var->addFog(x);
 			if (++since_pump >= 64) pumpAll(), since_pump = 0;
 		}
-		if (refiner)
-		{
-			refiner->finish();
-			drainRefiner();
-			if (!comp_pending.empty()) throw std::runtime_error(path + ": field refinement: FOG samples lost (times not increasing)");
-			noteRefinement(*refiner, e.refinement);
-		}
 		truth.done = odo.done = true;
-		for (auto& v : vars) v->gyroDone();
+		for (auto& v : vars) v->inputDone();
 		pumpAll();
 	}
-	if (comp_var)
-	{
-		ThermistorScreening screening;
-		if (health)
-			for (std::size_t i = 0; i < h.thermistors.size(); i++)
-			{
-				screening.names.push_back(h.thermistors[i].name);
-				const ThermistorHealthCounters c = health->counters(i);
-				screening.counters.push_back(c);
-				screening.rejected_readings += c.out_of_range + c.spike + c.stuck;
-			}
-		if (!screen || screening.rejected_readings) std::fputs(app::screeningText(screening, screen).c_str(), stdout);
-		const CompensationCounters& c = compensator->counters();
-		if (c.fallback_samples || c.no_model_samples || c.clamped_samples)
-			std::printf("  compensation: %zu samples, %zu on a fallback model, %zu without model, %zu clamped to the "
-						"calibrated range\n",
-						c.samples, c.fallback_samples, c.no_model_samples, c.clamped_samples);
-		std::fputs(app::outOfRangeWarning(c, zcal->extrapolation).c_str(), stdout);
-		e.magnetic_term = zcal->magnetic.has_value();
-		e.field_warning = app::fieldWarning(*zcal, c, !h.field_uT.empty());
-		std::fputs(e.field_warning.c_str(), stderr);
-	}
+	if (comp_var) reportCompensation(comp_var->pipeline(), *zcal, !h.field_uT.empty(), st, e);
 
 	off_yaw.finish();
 	setTruthHeadingChanges(scan.gyro_off, off_yaw);

@@ -6,13 +6,17 @@
  * memory that does not grow with the drive, from two reads of the file.
  *  - Pass 1: the ends of every series (FOG, FOG_IDEAL, odometry, truth), the truth's path length
  *    and its turns and straights (nav::segmentDrive's rules, with a window of +-smooth_s / 2).
- *  - Pass 2: each gyro variant (raw, compensated, ideal) is integrated, dead-reckoned with the
- *    odometry and compared with the truth as the samples come, keeping only the attitudes,
- *    poses and truth points not yet bracketed by a later one; the heading figures are summed
- *    as they go (nav::HeadingFigures: the samples of the current straight are kept for its
+ *  - Pass 2: each gyro variant (raw, compensated, ideal) runs through its own library heading
+ *    pipeline (VariantPipeline.h: compensation, standstill updates, Earth rate, strapdown),
+ *    given the odometry before the FOG samples at or after its time and re-aligned from the
+ *    truth at the start of each powered span; its attitudes are dead-reckoned with the odometry
+ *    from the truth's position and compared with the truth as the samples come, keeping only the
+ *    attitudes, poses and truth points not yet bracketed by a later one; the heading figures are
+ *    summed as they go (nav::HeadingFigures: the samples of the current straight are kept for its
  *    centred least squares: memory bounded by the longest straight, not the drive).
- * The arithmetic is the in-memory evaluation's, step for step (same interpolation brackets,
- * same summation order), so the figures are the same (ctest io_drift_streaming_equals_in_memory:
+ * The in-memory evaluation takes the same pipeline's rate into the library's truth-aligned dead
+ * reckoning; the arithmetic is the same step for step (same interpolation brackets, same
+ * summation order), so the figures are the same (ctest io_drift_streaming_equals_in_memory:
  * JSON and text equal to --in-memory's).
  * The per-sample series (DriftSeries::t_s ..., trajectories, truth) are left empty; with
  * DriveSettings::keep_series (--csv) the truth and each variant's errors, with

@@ -13,6 +13,7 @@
 #include "DriftOutputs.h"
 #include "DriveData.h"
 #include "DriveEvaluation.h"
+#include "VariantPipeline.h"
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt_fog/common/OutputSafety.h>
@@ -20,6 +21,7 @@
 #include <mrpt_fog_nav/DriftReport.h>
 #include <mrpt_fog/common/AtomicFile.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
+#include <mrpt_fog/model/FieldOffset.h>
 #include <mrpt_fog_heading/CalibrationEarthRate.h>
 #include <mrpt_fog_heading/HeadingWithoutTruth.h>
 #include <mrpt_fog_nav/StandstillDetector.h>
@@ -261,11 +263,10 @@ int main(int argc, char** argv)
 											 "give one drive and --cal, without --plots, --csv or --odometry-out)");
 				heading::NoTruthOptions nt;
 				nt.fog_label = st.labels.fog;
-				nt.pipeline.latitude_deg = st.latitude_deg ? *st.latitude_deg : NAN;
-				nt.pipeline.sampling = st.heading.sampling;
-				nt.pipeline.screen_thermistors = st.screen_thermistors;
-				nt.pipeline.earth.calibration_latitude_deg = st.cal_latitude_deg;
-				nt.pipeline.earth.bias_without_earth_rate = st.cal_no_earth_rate;
+				// the compensated variant's rules, as with a truth (VariantPipeline.h)
+				heading::HeadingOptions h = st.heading;
+				h.latitude_deg = st.latitude_deg ? *st.latitude_deg : NAN;  // NaN: the FOG's metadata
+				nt.pipeline = drift::compensatedOptionsFor(st, h, st.refinement.enabled, loadFieldOffset(st.cal_path));
 				nt.gps_min_speed_mps = gps_speed.getValue();
 				const CalibrationSet cals = loadCalibrationSet(st.cal_path);
 				const Calibration* zcal = cals.forAxis(GyroAxis::Z);

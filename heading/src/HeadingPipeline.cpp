@@ -82,7 +82,7 @@ HeadingPipeline::HeadingPipeline(const FogSeries& header, const PipelineOptions&
 		compensator_ = std::make_unique<Compensator>(*cal_, header_.thermistors);
 		if (cal_->warmup) compensator_->notePowerOnFromMetadata(header);
 		if (options.screen_thermistors) health_ = std::make_unique<ThermistorHealth>(header_.thermistors.size());
-		sigma_dph_ = cal_->model.rms_held_out_dph;
+		thermal_sigma_dph_ = thermalModelSigma_dph(*cal_);
 		if (options.field_refinement) correction_ = std::make_shared<StandstillCorrection>(options.field);
 	}
 	temps_.resize(header_.thermistors.size());
@@ -172,6 +172,10 @@ const RateStep& HeadingPipeline::step(double t, double time_s, double raw, const
 		const Compensator::Output out = compensator_->step(time_s, raw, temps_.data());
 		s.compensated_dph = out.compensated_dph;
 		s.compensation_flags = out.flags;
+		const FieldOffset* fo = options_.field_offset ? &*options_.field_offset : nullptr;
+		if (fo) s.compensated_dph -= fo->offsetAt_dph(t);
+		// the prior's uncertainty: the thermal model's, and the field offset's at the drive's start
+		if (counters_.fog_samples == 1) sigma_dph_ = fo ? std::hypot(thermal_sigma_dph_, fo->sigmaAt_dph(t)) : thermal_sigma_dph_;
 	}
 	s.corrected_dph = s.compensated_dph;
 	if (correction_)
@@ -262,6 +266,22 @@ void HeadingPipeline::addOdometry(double t, double x, double y, double phi)
 	if (!aligned_ || t < t0_) return;  // before the alignment: no pose
 	pending_.push_back(w);
 	resolve();
+}
+
+void HeadingPipeline::realign(double t, double yaw, double x, double y)
+{
+	if (!aligned_) return align(t, yaw, x, y);
+	if (any_fog_ && t < last_fog_t_)
+		throw std::runtime_error("heading pipeline: a new alignment at t = " + timeText(t) +
+								 " s, before the last FOG sample's time " + timeText(last_fog_t_));
+	const bool finished = finished_;
+	finished_ = true;  // the poses still waiting: final, as finish() makes them
+	resolve();
+	finished_ = finished;
+	last_pose_.reset();
+	gyro_off_ = restarted_ = false;  // this alignment replaces the turn-on rule
+	aligned_ = false;
+	align(t, yaw, x, y);
 }
 
 void HeadingPipeline::align(double t, double yaw, double x, double y)

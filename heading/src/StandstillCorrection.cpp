@@ -5,6 +5,12 @@
 
 namespace mrpt_fog::heading
 {
+double thermalModelSigma_dph(const Calibration& cal)
+{
+	const double held = cal.held_out.stability_dph, in = cal.in_sample.stability_dph;
+	return std::isfinite(held) && held > 0 ? held : (std::isfinite(in) && in > 0 ? in : 0.0);
+}
+
 void StandstillCorrection::drain()
 {
 	nav::RefinedRate x;

@@ -156,6 +156,50 @@ TEST(HeadingPipeline, RateCorrectionStageIsCalledPerSample)
 	EXPECT_EQ(corr->odometry, 121u);
 }
 
+TEST(HeadingPipeline, RealignFromAnExternalHeading)
+{
+	// The gyro is off from 20 s to 30 s; at the turn-on (30.0 s) the caller re-aligns from the
+	// circle's own heading and position (as fog-drift does from its truth): from there the poses
+	// are on the circle again to the closed form's precision (the turn-on rule alone leaves up to
+	// one odometry interval of rotation unseen: GyroOffStretchUsesTheWheels).
+	const Circle c;
+	PipelineOptions o = options();
+	o.alignment = Alignment::ByCaller;
+	HeadingPipeline p(header(true), o);
+	const double epoch = 1000.0;
+	p.align(epoch, c.yaw(0), c.x(0), c.y(0));
+	std::size_t after = 0;
+	const auto check = [&](const DeadReckonedPose& q) {
+		const double t = q.t_s - epoch;
+		if (t < 30.0 - 1e-9) return;
+		after++;
+		EXPECT_EQ(q.source, HeadingSource::Gyro) << t;
+		EXPECT_NEAR(mrpt_fog::nav::wrapToPi(q.heading_rad - c.yaw(t)), 0.0, 1e-9) << t;
+		EXPECT_NEAR(q.x_m, c.x(t), 1e-6) << t;
+		EXPECT_NEAR(q.y_m, c.y(t), 1e-6) << t;
+	};
+	for (int k = 0; k <= 600; k++)
+	{
+		const double t = k * 0.1;
+		const bool off = k >= 200 && k < 300;
+		if (k == 300) p.realign(epoch + t, c.yaw(t), c.x(t), c.y(t));
+		if (k % 5 == 0) p.addOdometry(epoch + t, c.x(t), c.y(t), mrpt_fog::nav::wrapToPi(c.yaw(t)));
+		FogSample s;
+		s.time_s = t;
+		s.power = off ? 0.0 : 1.0;
+		s.rate_dph[2] = off ? NAN : c.w * units::kRadPerSecToDegPerHour + earthUp_dph();
+		const RateStep& r = p.addFog(s);
+		if (!off) EXPECT_NEAR(mrpt_fog::nav::wrapToPi(mrpt_fog::nav::yawOf(p.attitude()) - r.heading_rad), 0.0, 1e-12);
+		DeadReckonedPose q;
+		while (p.popPose(q)) check(q);
+	}
+	p.finish();
+	DeadReckonedPose q;
+	while (p.popPose(q)) check(q);
+	EXPECT_EQ(after, 61u);  // 30.0, 30.5, ..., 60.0
+	EXPECT_THROW(p.realign(epoch + 10.0, 0.0, 0.0, 0.0), std::runtime_error);  // before the last FOG sample
+}
+
 TEST(HeadingPipeline, BadInputThrows)
 {
 	HeadingPipeline p(header(), options());

@@ -54,3 +54,17 @@ TEST(StandstillCorrection, NoStandstillChangesNothing)
 	EXPECT_EQ(run(0.3, 0, 300, c), 0.0);
 	EXPECT_TRUE(c.refiner()->updates().empty());
 }
+
+// The prior's thermal share: what a bias offset is uncertain by, not the per-sample residual.
+TEST(StandstillCorrection, ThermalModelSigmaIsTheHeldOutStability)
+{
+	mrpt_fog::Calibration cal;
+	cal.model.rms_held_out_dph = 0.19;  // per-sample residual: not a bias uncertainty
+	cal.held_out.stability_dph = 0.013;
+	cal.in_sample.stability_dph = 0.011;
+	EXPECT_EQ(thermalModelSigma_dph(cal), 0.013);
+	cal.held_out.stability_dph = NAN;
+	EXPECT_EQ(thermalModelSigma_dph(cal), 0.011);
+	cal.in_sample.stability_dph = 0.0;
+	EXPECT_EQ(thermalModelSigma_dph(cal), 0.0);
+}

@@ -17,8 +17,9 @@
  *
  * Alignment: by default at the first odometry sample, to the wheel odometry's own pose (the
  * output is in the odometry's frame: what MRPT's localization expects of an odometry); or at a
- * time of the caller's choice (align(), e.g. from a truth or a GNSS fix). FOG samples before the
- * alignment are compensated (the compensator needs their history) but not integrated.
+ * time of the caller's choice (align(), e.g. from a truth or a GNSS fix), and again later
+ * (realign(), e.g. from the truth at a turn-on). FOG samples before the alignment are
+ * compensated (the compensator needs their history) but not integrated.
  *
  * Gyro off (obs/GyroPower.h: power 0): no rate to integrate. The poses inside a gyro-off
  * stretch take the wheels' heading change (HeadingSource::Wheels); at the turn-on the heading
@@ -43,6 +44,7 @@
 #include <mrpt_fog/io/FogLogReader.h>
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/model/Compensator.h>
+#include <mrpt_fog/model/FieldOffset.h>
 #include <mrpt_fog/model/ThermistorHealth.h>
 #include <mrpt_fog/obs/CObservationFOG.h>
 #include <mrpt_fog_heading/CalibrationEarthRate.h>
@@ -81,6 +83,11 @@ struct PipelineOptions
 	 * rate correction when there is a calibration; false: none. setRateCorrection() replaces it. */
 	bool field_refinement = true;
 	StandstillCorrectionOptions field;
+	/** What the calibration learned in the field (FieldOffset.h, fog-refine's section of the
+	 * calibration file, loadFieldOffset()): its offset at each sample's date is subtracted from
+	 * the compensated rate (with a calibration only), and its 1-sigma at the first sample adds to
+	 * the thermal model's in the standstill updates' prior. */
+	std::optional<FieldOffset> field_offset;
 };
 
 /** One FOG sample through the pipeline. */
@@ -88,7 +95,9 @@ struct RateStep
 {
 	double t_s = 0.0;  //!< absolute [s]
 	double raw_dph = std::numeric_limits<double>::quiet_NaN();  //!< the gyro's output (NaN while off)
-	double compensated_dph = std::numeric_limits<double>::quiet_NaN();  //!< thermal model applied (= raw without a calibration)
+	/** thermal model applied, and the calibration's field offset (PipelineOptions::field_offset)
+	 * removed (= raw without a calibration) */
+	double compensated_dph = std::numeric_limits<double>::quiet_NaN();
 	double corrected_dph = std::numeric_limits<double>::quiet_NaN();  //!< after the RateCorrection (= compensated without one)
 	double integrated_dph = std::numeric_limits<double>::quiet_NaN();  //!< corrected + the calibration's Earth rate: what the strapdown takes
 	/** the yaw rate against the local-level frame [rad/s]: integrated minus the drive's vertical
@@ -161,6 +170,14 @@ class HeadingPipeline
 	 * any odometry). Throws when already aligned. */
 	void align(double t_s, double heading_rad, double x_m, double y_m);
 
+	/** A new alignment at t_s [s] from an external reference (e.g. the truth or a GNSS heading at
+	 * the turn-on after a gyro-off stretch), in place of the turn-on rule: the poses still waiting
+	 * are made final first, as finish() makes them; then, as align(), the heading restarts at t_s
+	 * from heading_rad and the dead reckoning from (x_m, y_m) at the first odometry sample given
+	 * after this call at or after t_s. Before any alignment it is align(). Throws when t_s is
+	 * before the last FOG sample's time. */
+	void realign(double t_s, double heading_rad, double x_m, double y_m);
+
 	/** The next final pose, in time order; false when none is ready. */
 	bool popPose(DeadReckonedPose& pose);
 	/** The end of the stream: the poses still waiting are made final (with the wheels' heading
@@ -169,6 +186,10 @@ class HeadingPipeline
 
 	bool aligned() const { return aligned_; }
 	double heading_rad() const;  //!< the strapdown heading now (NaN before the alignment)
+	/** The strapdown attitude now (body to local level; after the last integrated sample, or the
+	 * alignment's; meaningless before the alignment): for a caller that interpolates the heading
+	 * between samples itself (e.g. a comparison with a truth at the truth's times). */
+	Eigen::Quaterniond attitude() const { return att_.attitude(); }
 	const RateStep& lastStep() const { return step_; }
 	const PipelineCounters& counters() const { return counters_; }
 	/** The compensator's counters (null without a calibration). */
@@ -200,7 +221,7 @@ class HeadingPipeline
 	std::unique_ptr<ThermistorHealth> health_;
 	std::shared_ptr<RateCorrection> correction_;
 	CalibrationEarthRate earth_;
-	double drive_earth_dph_ = 0.0, sigma_dph_ = std::numeric_limits<double>::quiet_NaN();
+	double drive_earth_dph_ = 0.0, thermal_sigma_dph_ = 0.0, sigma_dph_ = std::numeric_limits<double>::quiet_NaN();
 	nav::StrapdownAttitude att_;
 	std::deque<Att> track_;
 	std::vector<double> temps_;

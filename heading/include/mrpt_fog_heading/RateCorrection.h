@@ -30,8 +30,9 @@ struct RateCorrectionInput
 	double t_s = 0.0;  //!< absolute time [s]
 	double raw_dph = std::numeric_limits<double>::quiet_NaN();  //!< gyro output (NaN while off)
 	double compensated_dph = std::numeric_limits<double>::quiet_NaN();  //!< after the thermal model
-	/** 1-sigma uncertainty of the thermal model's bias [deg/h] (the calibration's held-out
-	 * residual RMS; NaN without a calibration) */
+	/** 1-sigma uncertainty of the compensated rate's bias [deg/h]: the thermal model's
+	 * (thermalModelSigma_dph, StandstillCorrection.h) and the calibration's field offset's
+	 * (PipelineOptions::field_offset) combined; NaN without a calibration */
 	double compensation_sigma_dph = std::numeric_limits<double>::quiet_NaN();
 	/** what the compensated rate reads on a still, level vehicle [deg/h]: the drive's vertical
 	 * Earth rate minus the calibration's add-back (CalibrationEarthRate.h) */

@@ -7,10 +7,11 @@
  * and the gyro, the Kalman filter of the offset, the significance rule) behind the pipeline's
  * per-sample interface. The correction of a sample at t uses only the standstill samples the
  * refiner has decided by then (all at or before t - guard): causal. Its prior: 0 +- the
- * calibration's uncertainty (RateCorrectionInput::compensation_sigma_dph) and the turn-on
- * repeatability combined. HeadingPipeline installs one by default when it has a calibration
- * (PipelineOptions::field_refinement). */
+ * calibration's uncertainty (RateCorrectionInput::compensation_sigma_dph: thermalModelSigma_dph,
+ * with a field offset's) and the turn-on repeatability combined. HeadingPipeline installs one by
+ * default when it has a calibration (PipelineOptions::field_refinement). */
 
+#include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog_heading/RateCorrection.h>
 #include <mrpt_fog_nav/FieldBiasRefiner.h>
 
@@ -27,6 +28,12 @@ struct StandstillCorrectionOptions
 	double min_still_s = 10.0, guard_s = 1.0;
 	double significance_sigma = 3.0;  //!< see nav::FieldRefinementOptions
 };
+
+/** The thermal model's uncertainty, the part of the prior the calibration gives [deg/h]: its
+ * held-out 100 s stability (the std of 100 s averages of its compensated output on runs it was
+ * not fitted to: what a bias offset is uncertain by, without the per-sample noise), else the
+ * in-sample one, else 0. */
+double thermalModelSigma_dph(const Calibration& cal);
 
 class StandstillCorrection : public RateCorrection
 {

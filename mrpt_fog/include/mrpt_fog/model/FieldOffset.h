@@ -17,9 +17,11 @@
  *     logs: ["field1.rawlog", "field2.rawlog"]
  *
  * The bias of a log taken at UNIX time t is the thermal bias + offset_dph + aging_dph_per_day x
- * (t - reference_unix_s) / 86400. Who applies it: fog-drift's compensated variant (before its
- * standstill updates, whose prior it then is). fog-compensate and the Compensator do not:
- * their output is the thermal model's alone. A build that predates the section ignores it. */
+ * (t - reference_unix_s) / 86400. Who applies it: the heading pipeline it is given to
+ * (mrpt_fog_heading/HeadingPipeline.h, PipelineOptions::field_offset: before its standstill
+ * updates, whose prior it then is), as fog-drift's compensated variant does. fog-compensate and
+ * the Compensator do not: their output is the thermal model's alone. A build that predates the
+ * section ignores it. */
 
 #include <optional>
 #include <string>
