@@ -6,6 +6,7 @@
  */
 #include "support/DiscrepancyTrials.h"
 #include "support/SimEffectTrial.h"
+#include "TrialSubset.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -17,16 +18,7 @@ namespace trial_suite
 {
 using namespace mrpt_fog::discrepancy;
 
-/** Seeds to run of a cell whose full count is `full` (10 or 100): all of them, unless
- * FOG_TRIAL_SEEDS = n (1..9) is set -- only scripts/run-sanitizers.sh sets it, where the trials
- * run 20-35x slower and the point is memory/UB checking, not the success table. The first
- * full * n / 10 seeds of the same list are run, and the table line says it is a subset. */
-inline int trialSeeds(int full)
-{
-	const char* e = std::getenv("FOG_TRIAL_SEEDS");
-	const int n = e ? std::atoi(e) : 0;
-	return (n >= 1 && n < 10) ? std::max(1, full * n / 10) : full;
-}
+using trial_subset::trialSeeds;
 
 struct Tally
 {
