@@ -10,13 +10,13 @@
 #include "AppMain.h"
 #include "CalibrationChoice.h"
 #include "CommandLine.h"
-#include "DriveCompensation.h"
 #include "LogInput.h"
 #include "GyroOffOdometry.h"
 #include "Localization.h"
 #include "LocalizationErrors.h"
 #include "LocalizeOutputs.h"
 #include "Options.h"
+#include "PipelineRate.h"
 #include "Sensors.h"
 #include "World.h"
 
@@ -25,9 +25,11 @@
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
+#include <mrpt_fog/model/FieldOffset.h>
 #include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog_heading/CalibrationEarthRate.h>
 #include <mrpt_fog_heading/DriveLog.h>
+#include <mrpt_fog_heading/HeadingPipeline.h>
 #include <mrpt_fog_heading/PowerSpans.h>
 #include <mrpt_fog_heading/TruthAlignedDeadReckoning.h>
 #include <mrpt_fog_nav/Rotation.h>
@@ -36,6 +38,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
 using namespace mrpt_fog;
 using namespace mrpt_fog::localize;
@@ -209,16 +212,41 @@ int main(int argc, char** argv)
 		if (!drive.latitude_deg) throw std::runtime_error(drive_path + ": no latitude_deg in the FOG metadata");
 		heading::HeadingOptions hopt;
 		hopt.latitude_deg = *drive.latitude_deg;
-		// The Earth rate the calibration's bias absorbed, at the latitude the file records (a file
-		// without one is taken as made at the drive's latitude).
-		// (The Earth-rate rule: heading/CalibrationEarthRate.h.)
-		const heading::CalibrationEarthRate earth = heading::calibrationEarthRate(calib.cal, hopt.latitude_deg);
-		if (earth.bias_holds_earth_rate && earth.source == heading::LatitudeSource::Drive)
-			std::printf("fog-localize: %s records no latitude: assuming the drive's %.4f deg\n", cal_path.c_str(),
-						hopt.latitude_deg);
-		const double cal_earth_dph = earth.add_back_dph;
-		std::vector<double> comp = app::compensatedDriveRate_dph(drive.fog, calib.cal, cal_path, true);
-		for (double& r : comp) r += cal_earth_dph;  // the static calibration absorbed it: removed once, by the strapdown
+		// Each gyro variant through the library's heading pipeline (HeadingPipeline.h, aligned by
+		// the caller: the truth-aligned dead reckoning below takes its rate). The compensated one:
+		// thermistor screening, the causal compensator, the calibration's field offset (fog-refine)
+		// and the calibration's Earth rate added back (the Earth-rate rule, CalibrationEarthRate.h:
+		// the static calibration absorbed it; removed once, by the strapdown). No standstill
+		// updates: the filter is judged on the thermal model.
+		heading::PipelineOptions popt;
+		popt.latitude_deg = hopt.latitude_deg;
+		popt.sampling = hopt.sampling;
+		popt.alignment = heading::Alignment::ByCaller;
+		popt.field_refinement = false;
+		const auto variantRate_dph = [&](const FogSeries& s, const Calibration* cal, const std::string& path) {
+			heading::HeadingPipeline pipe(s, popt, cal);
+			return app::pipelineRate_dph(pipe, s, drive.odometry, path);
+		};
+		popt.field_offset = loadFieldOffset(cal_path);
+		std::vector<double> comp;
+		{
+			std::unique_ptr<heading::HeadingPipeline> pipe;
+			try
+			{
+				pipe = std::make_unique<heading::HeadingPipeline>(drive.fog, popt, &calib.cal);
+			}
+			catch (const std::exception& ex)
+			{
+				throw std::runtime_error(cal_path + ": cannot compensate the drive's FOG: " + ex.what());
+			}
+			const heading::CalibrationEarthRate& earth = pipe->earthRate();
+			if (earth.bias_holds_earth_rate && earth.source == heading::LatitudeSource::Drive)
+				std::printf("fog-localize: %s records no latitude: assuming the drive's %.4f deg\n", cal_path.c_str(),
+							hopt.latitude_deg);
+			comp = app::pipelineRate_dph(*pipe, drive.fog, drive.odometry, cal_path);
+			app::reportPipelineCompensation(*pipe, calib.cal, popt.screen_thermistors, !drive.fog.field_uT.empty());
+		}
+		popt.field_offset.reset();
 		const std::vector<double> t_fog = heading::absoluteTimes(drive.fog);
 		// Gyro-off stretches (power 0: no gyro sample; GyroOffOdometry.h): each powered span is
 		// dead-reckoned alone, and the filter steps on the wheel odometry where the gyro is off.
@@ -257,9 +285,9 @@ int main(int argc, char** argv)
 			return out;
 		};
 		const std::vector<std::pair<std::string, std::vector<nav::Trajectory>>> gyros = {
-			{"raw", deadReckonSpans(t_fog, drive.fog.rate_dph[2], fog_power)},
+			{"raw", deadReckonSpans(t_fog, variantRate_dph(drive.fog, nullptr, ""), fog_power)},
 			{"compensated", deadReckonSpans(t_fog, comp, fog_power)},
-			{"ideal", deadReckonSpans(heading::absoluteTimes(*drive.fog_ideal), drive.fog_ideal->rate_dph[2],
+			{"ideal", deadReckonSpans(heading::absoluteTimes(*drive.fog_ideal), variantRate_dph(*drive.fog_ideal, nullptr, ""),
 									  powerOf(*drive.fog_ideal))}};
 
 		// World and scans.
