@@ -3,9 +3,9 @@
 
 /** \file PipelineRate.h
  * A drive held in memory through the library's heading pipeline (mrpt_fog_heading/HeadingPipeline.h),
- * for the programs that dead-reckon it against its truth (fog-drift's in-memory path,
- * fog-localize): the rate the strapdown integrates at each FOG sample, and the compensation's
- * reports printed after the drive's last sample. */
+ * for the programs that dead-reckon it against its truth (fog-drift, fog-localize): a sample
+ * through a pipeline, the rate the strapdown integrates at each FOG sample (fog-drift's
+ * in-memory path), and the compensation's reports printed after the drive's last sample. */
 
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/obs/FogSeries.h>

@@ -18,6 +18,7 @@
 #include "Options.h"
 #include "PipelineRate.h"
 #include "Sensors.h"
+#include "VariantOdometry.h"
 #include "World.h"
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -31,7 +32,6 @@
 #include <mrpt_fog_heading/DriveLog.h>
 #include <mrpt_fog_heading/HeadingPipeline.h>
 #include <mrpt_fog_heading/PowerSpans.h>
-#include <mrpt_fog_heading/TruthAlignedDeadReckoning.h>
 #include <mrpt_fog_nav/Rotation.h>
 
 #include <chrono>
@@ -210,46 +210,20 @@ int main(int argc, char** argv)
 		const heading::DriveData drive = heading::readDrive(drive_path, {}, {}, log_input.options());
 		if (!drive.fog_ideal) throw std::runtime_error(drive_path + ": no FOG_IDEAL stream (the ideal gyro is needed)");
 		if (!drive.latitude_deg) throw std::runtime_error(drive_path + ": no latitude_deg in the FOG metadata");
-		heading::HeadingOptions hopt;
-		hopt.latitude_deg = *drive.latitude_deg;
-		// Each gyro variant through the library's heading pipeline (HeadingPipeline.h, aligned by
-		// the caller: the truth-aligned dead reckoning below takes its rate). The compensated one:
-		// thermistor screening, the causal compensator, the calibration's field offset (fog-refine)
-		// and the calibration's Earth rate added back (the Earth-rate rule, CalibrationEarthRate.h:
-		// the static calibration absorbed it; removed once, by the strapdown). No standstill
-		// updates: the filter is judged on the thermal model.
+		// Each gyro variant through its own heading pipeline (HeadingPipeline.h; VariantOdometry.h:
+		// aligned from the truth at each powered span's start, its attitude dead-reckoned with the
+		// wheel distances from the truth's position). The compensated one: thermistor screening,
+		// the causal compensator, the calibration's field offset (fog-refine) and the calibration's
+		// Earth rate added back (the Earth-rate rule, CalibrationEarthRate.h: the static
+		// calibration absorbed it; the strapdown removes the drive's own). No standstill updates:
+		// the filter is judged on the thermal model. Gyro-off stretches (power 0: no gyro sample;
+		// GyroOffOdometry.h): each powered span is dead-reckoned alone, and the filter steps on the
+		// wheel odometry where the gyro is off.
 		heading::PipelineOptions popt;
-		popt.latitude_deg = hopt.latitude_deg;
-		popt.sampling = hopt.sampling;
+		popt.latitude_deg = *drive.latitude_deg;
+		popt.sampling = nav::RateSampling::IntervalAverage;  // fog-sim: mean over (t - dt, t]
 		popt.alignment = heading::Alignment::ByCaller;
 		popt.field_refinement = false;
-		const auto variantRate_dph = [&](const FogSeries& s, const Calibration* cal, const std::string& path) {
-			heading::HeadingPipeline pipe(s, popt, cal);
-			return app::pipelineRate_dph(pipe, s, drive.odometry, path);
-		};
-		popt.field_offset = loadFieldOffset(cal_path);
-		std::vector<double> comp;
-		{
-			std::unique_ptr<heading::HeadingPipeline> pipe;
-			try
-			{
-				pipe = std::make_unique<heading::HeadingPipeline>(drive.fog, popt, &calib.cal);
-			}
-			catch (const std::exception& ex)
-			{
-				throw std::runtime_error(cal_path + ": cannot compensate the drive's FOG: " + ex.what());
-			}
-			const heading::CalibrationEarthRate& earth = pipe->earthRate();
-			if (earth.bias_holds_earth_rate && earth.source == heading::LatitudeSource::Drive)
-				std::printf("fog-localize: %s records no latitude: assuming the drive's %.4f deg\n", cal_path.c_str(),
-							hopt.latitude_deg);
-			comp = app::pipelineRate_dph(*pipe, drive.fog, drive.odometry, cal_path);
-			app::reportPipelineCompensation(*pipe, calib.cal, popt.screen_thermistors, !drive.fog.field_uT.empty());
-		}
-		popt.field_offset.reset();
-		const std::vector<double> t_fog = heading::absoluteTimes(drive.fog);
-		// Gyro-off stretches (power 0: no gyro sample; GyroOffOdometry.h): each powered span is
-		// dead-reckoned alone, and the filter steps on the wheel odometry where the gyro is off.
 		const auto powerOf = [&](const FogSeries& s) {
 			heading::PowerSpanBuilder b;
 			for (std::size_t k = 0; k < s.size(); k++) b.add(s.epoch_s + s.time_s[k], s.power.empty() ? NAN : s.power[k]);
@@ -259,36 +233,35 @@ int main(int argc, char** argv)
 			return b;
 		};
 		const heading::PowerSpanBuilder fog_power = powerOf(drive.fog);
-		const auto deadReckonSpans = [&](const std::vector<double>& t, const std::vector<double>& rate,
-										 const heading::PowerSpanBuilder& power) {
-			std::vector<nav::Trajectory> out;
-			if (power.stretches().empty())  // powered throughout: the drive as one
-			{
-				out.push_back(heading::deadReckonVariant(t, rate, drive, hopt).trajectory);
-				return out;
-			}
-			heading::HeadingOptions o = hopt;
-			o.empty_if_no_odometry = true;
-			for (const heading::PoweredSpan& span : power.powered())
-			{
-				const auto w = heading::navigationWindow(span, t.front(), t.back(), drive.odometry.t_s.front(),
-													   drive.odometry.t_s.back(), drive.truth.front().t_s,
-													   drive.truth.back().t_s);
-				if (!w) continue;
-				o.window_t0_s = w->first, o.window_t1_s = w->second;
-				nav::Trajectory part = heading::deadReckonVariant(t, rate, drive, o).trajectory;
-				if (part.size() >= 2) out.push_back(std::move(part));
-			}
-			if (out.empty())
-				throw std::runtime_error(drive_path + ": no powered span of the gyro overlaps the odometry and the truth "
-													  "long enough to navigate");
-			return out;
+		const auto uncalibrated = [&](const FogSeries& s, const heading::PowerSpanBuilder& power) {
+			heading::HeadingPipeline pipe(s, popt, nullptr);
+			return deadReckonPoweredSpans(pipe, s, power, drive, "", drive_path);
 		};
+		const auto compensated = [&]() {
+			heading::PipelineOptions o = popt;
+			o.field_offset = loadFieldOffset(cal_path);
+			std::unique_ptr<heading::HeadingPipeline> pipe;
+			try
+			{
+				pipe = std::make_unique<heading::HeadingPipeline>(drive.fog, o, &calib.cal);
+			}
+			catch (const std::exception& ex)
+			{
+				throw std::runtime_error(cal_path + ": cannot compensate the drive's FOG: " + ex.what());
+			}
+			const heading::CalibrationEarthRate& earth = pipe->earthRate();
+			if (earth.bias_holds_earth_rate && earth.source == heading::LatitudeSource::Drive)
+				std::printf("fog-localize: %s records no latitude: assuming the drive's %.4f deg\n", cal_path.c_str(),
+							popt.latitude_deg);
+			std::vector<nav::Trajectory> spans = deadReckonPoweredSpans(*pipe, drive.fog, fog_power, drive, cal_path, drive_path);
+			app::reportPipelineCompensation(*pipe, calib.cal, o.screen_thermistors, !drive.fog.field_uT.empty());
+			return spans;
+		};
+		std::vector<nav::Trajectory> comp_spans = compensated();  // its reports first, as before
 		const std::vector<std::pair<std::string, std::vector<nav::Trajectory>>> gyros = {
-			{"raw", deadReckonSpans(t_fog, variantRate_dph(drive.fog, nullptr, ""), fog_power)},
-			{"compensated", deadReckonSpans(t_fog, comp, fog_power)},
-			{"ideal", deadReckonSpans(heading::absoluteTimes(*drive.fog_ideal), variantRate_dph(*drive.fog_ideal, nullptr, ""),
-									  powerOf(*drive.fog_ideal))}};
+			{"raw", uncalibrated(drive.fog, fog_power)},
+			{"compensated", std::move(comp_spans)},
+			{"ideal", uncalibrated(*drive.fog_ideal, powerOf(*drive.fog_ideal))}};
 
 		// World and scans.
 		LaserOptions lopt;
