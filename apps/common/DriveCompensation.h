@@ -2,7 +2,8 @@
 #pragma once
 
 /** \file DriveCompensation.h
- * The compensated FOG rate of a drive held in memory (fog-drift, fog-localize), with the
+ * The compensated FOG rate of a drive held in memory (fog-drift's triad horizontal axes; the
+ * vertical gyro goes through the heading pipeline, PipelineRate.h), with the
  * programs' reports printed: the calibration file loaded and run through the causal
  * Compensator (mrpt_fog/model/Compensator.h), sample by sample as in real time, after the
  * thermistor screening that a real-time implementation would run. */

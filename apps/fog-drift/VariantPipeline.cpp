@@ -1,9 +1,6 @@
 /* fog-drift: heading and position drift of raw, compensated and ideal FOG on a drive. */
 #include "VariantPipeline.h"
 
-#include "FieldWarning.h"
-#include "RangeWarning.h"
-#include "ThermistorScreeningReport.h"
 
 #include <mrpt/core/Clock.h>
 #include <mrpt_fog_heading/StandstillCorrection.h>
@@ -62,19 +59,6 @@ std::unique_ptr<heading::HeadingPipeline> compensatedPipeline(const FogSeries& h
 	}
 }
 
-const heading::RateStep& addFogSample(heading::HeadingPipeline& pipe, const FogSample& x, const std::string& cal_path)
-{
-	if (cal_path.empty()) return pipe.addFog(x);
-	try
-	{
-		return pipe.addFog(x);
-	}
-	catch (const std::exception& ex)
-	{
-		throw std::runtime_error(cal_path + ": cannot compensate the drive's FOG: " + ex.what());
-	}
-}
-
 FogSample fogSampleOf(const CObservationFOG& o, double epoch_s)
 {
 	constexpr double nan = std::numeric_limits<double>::quiet_NaN();
@@ -89,54 +73,11 @@ FogSample fogSampleOf(const CObservationFOG& o, double epoch_s)
 	return x;
 }
 
-std::vector<double> pipelineRate_dph(heading::HeadingPipeline& pipe, const FogSeries& fog, const OdometryPoses& odo,
-									 const std::string& cal_path)
-{
-	constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-	std::vector<double> rate(fog.size());
-	FogSample x;
-	x.temp_C.resize(fog.thermistors.size());
-	std::size_t j = 0;
-	const auto odometryUpTo = [&](double t) {
-		for (; j < odo.t_s.size() && odo.t_s[j] <= t; j++) pipe.addOdometry(odo.t_s[j], odo.x_m[j], odo.y_m[j], odo.phi_rad[j]);
-	};
-	for (std::size_t k = 0; k < fog.size(); k++)
-	{
-		odometryUpTo(fog.epoch_s + fog.time_s[k]);
-		x.time_s = fog.time_s[k];
-		for (std::size_t a = 0; a < 3; a++) x.rate_dph[a] = fog.has_axis[a] ? fog.rate_dph[a][k] : nan;
-		for (std::size_t i = 0; i < x.temp_C.size(); i++) x.temp_C[i] = fog.temp_C[i][k];
-		x.field_uT = fog.field_uT.empty() ? nan : fog.field_uT[k];
-		x.power = fog.power.empty() ? nan : fog.power[k];
-		rate[k] = addFogSample(pipe, x, cal_path).integrated_dph;
-	}
-	odometryUpTo(std::numeric_limits<double>::infinity());  // the rest: the last standstill's updates
-	return rate;
-}
-
 void reportCompensation(heading::HeadingPipeline& pipe, const Calibration& zcal, bool log_has_field,
 						const DriveSettings& st, DriveEvaluation& e)
 {
-	ThermistorScreening screening;
-	const std::vector<ThermistorHealthCounters> health = pipe.screeningCounters();
-	for (std::size_t i = 0; i < health.size(); i++)
-	{
-		screening.names.push_back(pipe.header().thermistors[i].name);
-		screening.counters.push_back(health[i]);
-		screening.rejected_readings += health[i].out_of_range + health[i].spike + health[i].stuck;
-	}
-	if (!st.screen_thermistors || screening.rejected_readings)
-		std::fputs(app::screeningText(screening, st.screen_thermistors).c_str(), stdout);
-	const CompensationCounters& c = *pipe.compensationCounters();
-	if (c.fallback_samples || c.no_model_samples || c.clamped_samples)
-		std::printf("  compensation: %zu samples, %zu on a fallback model, %zu without model, %zu clamped to the "
-					"calibrated range\n",
-					c.samples, c.fallback_samples, c.no_model_samples, c.clamped_samples);
-	std::fputs(app::outOfRangeWarning(c, zcal.extrapolation).c_str(), stdout);
 	e.magnetic_term |= zcal.magnetic.has_value();
-	const std::string w = app::fieldWarning(zcal, c, log_has_field);
-	std::fputs(w.c_str(), stderr);
-	e.field_warning += w;
+	e.field_warning += app::reportPipelineCompensation(pipe, zcal, st.screen_thermistors, log_has_field);
 
 	auto* standstill = dynamic_cast<heading::StandstillCorrection*>(pipe.rateCorrection());
 	if (!standstill) return;

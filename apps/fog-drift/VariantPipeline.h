@@ -10,11 +10,12 @@
  *  - the streamed one (StreamingDrive.cpp) integrates with it, one pipeline per variant, aligned
  *    from the truth at the start of each powered span;
  *  - the in-memory one (DriveEvaluation.cpp) takes the compensated variant's rate from it
- *    (pipelineRate_dph) into the truth-aligned dead reckoning (TruthAlignedDeadReckoning.h),
+ *    (PipelineRate.h: pipelineRate_dph) into the truth-aligned dead reckoning (TruthAlignedDeadReckoning.h),
  *    which also runs a triad's 3-D strapdown and the transport rate.
  * The pipeline's own dead-reckoned poses are not used: fog-drift dead-reckons from the truth. */
 
 #include "DriveEvaluation.h"
+#include "PipelineRate.h"
 
 #include <mrpt_fog/io/FogLogReader.h>
 #include <mrpt_fog/model/FieldOffset.h>
@@ -48,18 +49,11 @@ std::unique_ptr<heading::HeadingPipeline> compensatedPipeline(const FogSeries& h
 															  const DriveSettings& settings, const HeadingOptions& hopt,
 															  double t0_unix_s, bool refine, DriveEvaluation& e);
 
-/** One FOG sample through a pipeline; an error of the compensator names `cal_path` ("" for
- * none: as it comes). */
-const heading::RateStep& addFogSample(heading::HeadingPipeline& pipe, const FogSample& x, const std::string& cal_path);
+using app::addFogSample;  // PipelineRate.h
+using app::pipelineRate_dph;
 
 /** A FOG observation as a sample, its time relative to epoch_s (the pipeline header's). */
 FogSample fogSampleOf(const CObservationFOG& o, double epoch_s);
-
-/** The rate the strapdown integrates [deg/h] at each sample of a drive held in memory (NaN while
- * the gyro is off): the FOG samples through `pipe` (not aligned: no heading) with the odometry
- * given before the samples at or after its time. */
-std::vector<double> pipelineRate_dph(heading::HeadingPipeline& pipe, const FogSeries& fog, const OdometryPoses& odometry,
-									 const std::string& cal_path);
 
 /** After the drive's last sample: the screening and compensation lines (stdout), the field
  * warning (stderr, appended to e.field_warning), the magnetic term, and the standstill updates

@@ -10,14 +10,15 @@
 #include "AppMain.h"
 #include "CalibrationChoice.h"
 #include "CommandLine.h"
-#include "DriveCompensation.h"
 #include "LogInput.h"
 #include "GyroOffOdometry.h"
 #include "Localization.h"
 #include "LocalizationErrors.h"
 #include "LocalizeOutputs.h"
 #include "Options.h"
+#include "PipelineRate.h"
 #include "Sensors.h"
+#include "VariantOdometry.h"
 #include "World.h"
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -25,17 +26,19 @@
 #include <mrpt_fog/io/FogLogIO.h>
 #include <mrpt_fog/model/Calibration.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
+#include <mrpt_fog/model/FieldOffset.h>
 #include <mrpt_fog/obs/Units.h>
 #include <mrpt_fog_heading/CalibrationEarthRate.h>
 #include <mrpt_fog_heading/DriveLog.h>
+#include <mrpt_fog_heading/HeadingPipeline.h>
 #include <mrpt_fog_heading/PowerSpans.h>
-#include <mrpt_fog_heading/TruthAlignedDeadReckoning.h>
 #include <mrpt_fog_nav/Rotation.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
 using namespace mrpt_fog;
 using namespace mrpt_fog::localize;
@@ -207,21 +210,20 @@ int main(int argc, char** argv)
 		const heading::DriveData drive = heading::readDrive(drive_path, {}, {}, log_input.options());
 		if (!drive.fog_ideal) throw std::runtime_error(drive_path + ": no FOG_IDEAL stream (the ideal gyro is needed)");
 		if (!drive.latitude_deg) throw std::runtime_error(drive_path + ": no latitude_deg in the FOG metadata");
-		heading::HeadingOptions hopt;
-		hopt.latitude_deg = *drive.latitude_deg;
-		// The Earth rate the calibration's bias absorbed, at the latitude the file records (a file
-		// without one is taken as made at the drive's latitude).
-		// (The Earth-rate rule: heading/CalibrationEarthRate.h.)
-		const heading::CalibrationEarthRate earth = heading::calibrationEarthRate(calib.cal, hopt.latitude_deg);
-		if (earth.bias_holds_earth_rate && earth.source == heading::LatitudeSource::Drive)
-			std::printf("fog-localize: %s records no latitude: assuming the drive's %.4f deg\n", cal_path.c_str(),
-						hopt.latitude_deg);
-		const double cal_earth_dph = earth.add_back_dph;
-		std::vector<double> comp = app::compensatedDriveRate_dph(drive.fog, calib.cal, cal_path, true);
-		for (double& r : comp) r += cal_earth_dph;  // the static calibration absorbed it: removed once, by the strapdown
-		const std::vector<double> t_fog = heading::absoluteTimes(drive.fog);
-		// Gyro-off stretches (power 0: no gyro sample; GyroOffOdometry.h): each powered span is
-		// dead-reckoned alone, and the filter steps on the wheel odometry where the gyro is off.
+		// Each gyro variant through its own heading pipeline (HeadingPipeline.h; VariantOdometry.h:
+		// aligned from the truth at each powered span's start, its attitude dead-reckoned with the
+		// wheel distances from the truth's position). The compensated one: thermistor screening,
+		// the causal compensator, the calibration's field offset (fog-refine) and the calibration's
+		// Earth rate added back (the Earth-rate rule, CalibrationEarthRate.h: the static
+		// calibration absorbed it; the strapdown removes the drive's own). No standstill updates:
+		// the filter is judged on the thermal model. Gyro-off stretches (power 0: no gyro sample;
+		// GyroOffOdometry.h): each powered span is dead-reckoned alone, and the filter steps on the
+		// wheel odometry where the gyro is off.
+		heading::PipelineOptions popt;
+		popt.latitude_deg = *drive.latitude_deg;
+		popt.sampling = nav::RateSampling::IntervalAverage;  // fog-sim: mean over (t - dt, t]
+		popt.alignment = heading::Alignment::ByCaller;
+		popt.field_refinement = false;
 		const auto powerOf = [&](const FogSeries& s) {
 			heading::PowerSpanBuilder b;
 			for (std::size_t k = 0; k < s.size(); k++) b.add(s.epoch_s + s.time_s[k], s.power.empty() ? NAN : s.power[k]);
@@ -231,36 +233,35 @@ int main(int argc, char** argv)
 			return b;
 		};
 		const heading::PowerSpanBuilder fog_power = powerOf(drive.fog);
-		const auto deadReckonSpans = [&](const std::vector<double>& t, const std::vector<double>& rate,
-										 const heading::PowerSpanBuilder& power) {
-			std::vector<nav::Trajectory> out;
-			if (power.stretches().empty())  // powered throughout: the drive as one
-			{
-				out.push_back(heading::deadReckonVariant(t, rate, drive, hopt).trajectory);
-				return out;
-			}
-			heading::HeadingOptions o = hopt;
-			o.empty_if_no_odometry = true;
-			for (const heading::PoweredSpan& span : power.powered())
-			{
-				const auto w = heading::navigationWindow(span, t.front(), t.back(), drive.odometry.t_s.front(),
-													   drive.odometry.t_s.back(), drive.truth.front().t_s,
-													   drive.truth.back().t_s);
-				if (!w) continue;
-				o.window_t0_s = w->first, o.window_t1_s = w->second;
-				nav::Trajectory part = heading::deadReckonVariant(t, rate, drive, o).trajectory;
-				if (part.size() >= 2) out.push_back(std::move(part));
-			}
-			if (out.empty())
-				throw std::runtime_error(drive_path + ": no powered span of the gyro overlaps the odometry and the truth "
-													  "long enough to navigate");
-			return out;
+		const auto uncalibrated = [&](const FogSeries& s, const heading::PowerSpanBuilder& power) {
+			heading::HeadingPipeline pipe(s, popt, nullptr);
+			return deadReckonPoweredSpans(pipe, s, power, drive, "", drive_path);
 		};
+		const auto compensated = [&]() {
+			heading::PipelineOptions o = popt;
+			o.field_offset = loadFieldOffset(cal_path);
+			std::unique_ptr<heading::HeadingPipeline> pipe;
+			try
+			{
+				pipe = std::make_unique<heading::HeadingPipeline>(drive.fog, o, &calib.cal);
+			}
+			catch (const std::exception& ex)
+			{
+				throw std::runtime_error(cal_path + ": cannot compensate the drive's FOG: " + ex.what());
+			}
+			const heading::CalibrationEarthRate& earth = pipe->earthRate();
+			if (earth.bias_holds_earth_rate && earth.source == heading::LatitudeSource::Drive)
+				std::printf("fog-localize: %s records no latitude: assuming the drive's %.4f deg\n", cal_path.c_str(),
+							popt.latitude_deg);
+			std::vector<nav::Trajectory> spans = deadReckonPoweredSpans(*pipe, drive.fog, fog_power, drive, cal_path, drive_path);
+			app::reportPipelineCompensation(*pipe, calib.cal, o.screen_thermistors, !drive.fog.field_uT.empty());
+			return spans;
+		};
+		std::vector<nav::Trajectory> comp_spans = compensated();  // its reports first, as before
 		const std::vector<std::pair<std::string, std::vector<nav::Trajectory>>> gyros = {
-			{"raw", deadReckonSpans(t_fog, drive.fog.rate_dph[2], fog_power)},
-			{"compensated", deadReckonSpans(t_fog, comp, fog_power)},
-			{"ideal", deadReckonSpans(heading::absoluteTimes(*drive.fog_ideal), drive.fog_ideal->rate_dph[2],
-									  powerOf(*drive.fog_ideal))}};
+			{"raw", uncalibrated(drive.fog, fog_power)},
+			{"compensated", std::move(comp_spans)},
+			{"ideal", uncalibrated(*drive.fog_ideal, powerOf(*drive.fog_ideal))}};
 
 		// World and scans.
 		LaserOptions lopt;

@@ -15,6 +15,7 @@
 #include <mrpt_fog/common/JsonWriter.h>
 #include <mrpt_fog/common/OutputSafety.h>
 #include <mrpt_fog/model/CalibrationYaml.h>
+#include <mrpt_fog/model/FieldOffset.h>
 #include <mrpt_fog_heading/FogOdometryRawlog.h>
 
 #include <cmath>
@@ -39,7 +40,8 @@ WHAT IT DOES
                           --distance-frac, minStdXY = --min-std-xy-m; docs/guide/localization.md). A step
                           with the gyro off keeps MRPT's default wheel model.
   The FOG: CObservationFOG '--fog-label', compensated sample by sample with the calibration's
-  z axis (thermistor screening first), the calibration's Earth rate added back once, integrated
+  z axis (thermistor screening first), the calibration's field offset removed (fog-refine's
+  field_offset section, if any), the calibration's Earth rate added back once, integrated
   with the drive's vertical Earth rate removed (latitude from the FOG's metadata, or
   --latitude-deg). The output is in the wheel odometry's frame: it starts at the first odometry
   pose. While the gyro is off (power 0) the wheels' heading change is used and counted.
@@ -126,6 +128,7 @@ int main(int argc, char** argv)
 		o.pipeline.latitude_deg = arg_lat.getValue();
 		o.pipeline.screen_thermistors = !arg_no_screen.getValue();
 		o.pipeline.field_refinement = !arg_no_refine.getValue();
+		o.pipeline.field_offset = loadFieldOffset(arg_cal.getValue());  // what fog-refine learned, if any
 		o.motion.heading_bias_dph = arg_bias.getValue();
 		o.motion.horizon_s = arg_horizon.getValue();
 		o.motion.scale_factor_ppm = arg_sf.getValue();

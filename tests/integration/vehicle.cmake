@@ -14,6 +14,14 @@ if(TARGET fog-odometry AND TARGET vehicle-rawlog-gen)
     -DWORK=${CMAKE_CURRENT_BINARY_DIR}/vehicle_600 -DDURATION=600 -DTARGETS=ON -P ${FOG_SOURCE_DIR}/tests/heading/vehicle_check.cmake)
   set_tests_properties(heading.vehicle_rawlog_600s PROPERTIES LABELS "heading;integration;long" TIMEOUT 900)
 endif()
+# fog-odometry applies a calibration's field offset, in closed form (tests/heading/field_offset_check.cmake;
+# two runs on the bundled drive, ~5 s: "long").
+if(TARGET fog-odometry)
+  add_test(NAME heading.fog_odometry_field_offset COMMAND ${CMAKE_COMMAND} -DODO=$<TARGET_FILE:fog-odometry>
+    -DDRIVE=${FOG_SOURCE_DIR}/datasets/drive.rawlog -DCAL=${FOG_SOURCE_DIR}/tests/data/heading/cal_full.yaml
+    -DWORK=${CMAKE_CURRENT_BINARY_DIR}/odometry_field_offset -P ${FOG_SOURCE_DIR}/tests/heading/field_offset_check.cmake)
+  set_tests_properties(heading.fog_odometry_field_offset PROPERTIES LABELS "heading;integration;long" TIMEOUT 300)
+endif()
 # MRPT's stock pf-localization on fog-odometry's output, on fog-localize's map (the localize
 # fixture writes it), against the held-back truth: the compensated FOG's position RMS below the
 # wheels' (tests/heading/pf_localization_check.cmake). Whole drive, two filter runs: about a

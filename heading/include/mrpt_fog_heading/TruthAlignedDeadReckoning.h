@@ -3,7 +3,7 @@
 
 /** \file TruthAlignedDeadReckoning.h
  * A whole drive in memory (DriveLog.h) dead-reckoned against its truth, for the evaluations
- * (fog-drift's in-memory path, fog-localize); HeadingPipeline.h is the streaming form without a
+ * (fog-drift's in-memory path); HeadingPipeline.h is the streaming form without a
  * truth. One gyro variant through the navigation chain: vertical FOG rate [deg/h] ->
  * StrapdownAttitude (VerticalOnly, Earth rate at the drive's latitude removed) -> heading ->
  * DeadReckoning2D with the wheel odometry distances. Starts from the truth pose (position and
