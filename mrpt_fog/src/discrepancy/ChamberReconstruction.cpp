@@ -141,6 +141,28 @@ AirReconstruction reconstructChamberAir(const sim::FogDevice& device, const sim:
 		lambdas.push_back(opt.lambda);
 	else
 		for (int e = -8; e <= 2; ++e) lambdas.push_back(scale * std::pow(10.0, e));
+	// GCV's trace(H) = trace(inv A) with inv = (A + lambda P)^-1: inv A = I - lambda inv P, and
+	// P = Dd' Dd (Dd: the knot differences), so trace(inv A) = p - lambda sum_c b_c' inv b_c over
+	// the columns b_c of Dd', each b' inv b = |D^-1/2 L^-1 Pm b|^2 from the factorisation
+	// A + lambda P = Pm' L D L' Pm: one triangular solve with p - 2 right-hand sides instead of
+	// the whole inverse. The inverse itself is formed once, for the chosen weight (uncertainty).
+	auto traceH = [&](const Eigen::LDLT<Eigen::MatrixXd>& ldlt, double lambda) -> double
+	{
+		const Eigen::VectorXd d = ldlt.vectorD();
+		if (!(d.minCoeff() > 0)) return ldlt.solve(Eigen::MatrixXd::Identity(p, p)).cwiseProduct(A).sum();
+		if (p < 3) return static_cast<double>(p);
+		Eigen::MatrixXd B = Eigen::MatrixXd::Zero(p, p - 2);
+		for (Eigen::Index j = 2; j < p; ++j)
+		{
+			B(j, j - 2) = 1.0;
+			B(j - 1, j - 2) = -1.0;
+		}
+		B = ldlt.transpositionsP() * B;
+		ldlt.matrixL().solveInPlace(B);
+		double tr_invP = 0.0;
+		for (Eigen::Index i = 0; i < p; ++i) tr_invP += B.row(i).squaredNorm() / d(i);
+		return static_cast<double>(p) - lambda * tr_invP;
+	};
 	for (double lambda : lambdas)
 	{
 		const Eigen::LDLT<Eigen::MatrixXd> ldlt(A + lambda * P);
@@ -148,12 +170,9 @@ AirReconstruction reconstructChamberAir(const sim::FogDevice& device, const sim:
 		const Eigen::VectorXd x = ldlt.solve(g);
 		if (!x.allFinite()) continue;
 		double gcv = 0;
-		Eigen::MatrixXd inv;
-		if (lambdas.size() > 1 || opt.uncertainty)
+		if (lambdas.size() > 1)
 		{
-			inv = ldlt.solve(Eigen::MatrixXd::Identity(p, p));
-			// trace(inv A) = sum_ij inv_ij A_ji = sum_ij inv_ij A_ij (A symmetric): O(p^2), no product.
-			const double trH = inv.cwiseProduct(A).sum();
+			const double trH = traceH(ldlt, lambda);
 			const double rss = (y - G * x).squaredNorm();
 			const double denom = static_cast<double>(n) - trH;
 			if (!(denom > 0)) continue;
@@ -164,8 +183,12 @@ AirReconstruction reconstructChamberAir(const sim::FogDevice& device, const sim:
 			bestGcv = gcv;
 			best.lambda = lambda;
 			bestX = x;
-			bestInv = inv;
 		}
+	}
+	if (bestX.size() != 0 && opt.uncertainty)
+	{
+		const Eigen::LDLT<Eigen::MatrixXd> ldlt(A + best.lambda * P);
+		bestInv = ldlt.solve(Eigen::MatrixXd::Identity(p, p));
 	}
 	if (bestX.size() == 0) throw std::invalid_argument("air reconstruction: the thermal inverse is singular for every regularisation weight");
 	const Eigen::VectorXd res = y - G * bestX;
