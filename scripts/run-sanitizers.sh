@@ -18,9 +18,11 @@
 #               line tables are enough for the sanitizers' stack traces; see docs/validation/hardening.md)
 #   FOG_TRIAL_SEEDS  exported (default 1) for the discrepancy room's proof trials: seeds per
 #               10-seed cell under the sanitizers, where the trials run ~20x slower than in Release
-#               (every cell, i.e. every effect, ratio and trial kind, still runs: the memory and UB
+#               (every effect and trial kind still runs: the memory and UB
 #               checks cover the same code; the success rates are checked at full count by the
-#               Release run). Only tests that read it are affected (tests/discrepancy/TrialSuite.h).
+#               Release run); in that subset the cells of effect-to-noise ratios 1 and 3 run ratio 3
+#               only (same code, the effect scaled). Only tests that read it are affected
+#               (tests/discrepancy/TrialSubset.h: the proof trials and SimulatorGapRatioTrials).
 #               The two heaviest, ProofTrialsConfounders and ProofTrialsNull, take 71 s and 54 s of
 #               CPU in Release at full count (docs/validation/ci-time.md).
 # MRPT's shared libraries are not instrumented (their bugs are out of reach; calls into them are
