@@ -126,9 +126,19 @@ AirReconstruction reconstructChamberAir(const sim::FogDevice& device, const sim:
 		P(j, j - 1) -= 1;
 		P(j - 1, j) -= 1;
 	}
-	// G'G: only one triangle is computed (A is symmetric), then mirrored.
+	// G'G: only one triangle is computed (A is symmetric), then mirrored. A row at simulator step
+	// s has no response to the knots after s (zeros from column s / q + 2 on), and the rows of a
+	// thermistor are in time order: each chunk of rows updates only the columns its rows reach.
 	Eigen::MatrixXd A = Eigen::MatrixXd::Zero(p, p);
-	A.selfadjointView<Eigen::Lower>().rankUpdate(G.transpose());
+	constexpr Eigen::Index kChunkRows = 256;
+	for (Eigen::Index r0 = 0; r0 < n; r0 += kChunkRows)
+	{
+		const Eigen::Index len = std::min(kChunkRows, n - r0);
+		Eigen::Index cols = 1;
+		for (Eigen::Index r = r0; r < r0 + len; ++r)
+			cols = std::max(cols, std::min<Eigen::Index>(p, static_cast<Eigen::Index>(rows[static_cast<std::size_t>(r)].step / q) + 2));
+		A.topLeftCorner(cols, cols).selfadjointView<Eigen::Lower>().rankUpdate(G.block(r0, 0, len, cols).transpose());
+	}
 	A.triangularView<Eigen::StrictlyUpper>() = A.transpose();
 	const Eigen::VectorXd g = G.transpose() * y;
 	const double scale = A.diagonal().mean();
