@@ -117,10 +117,14 @@ AirReconstruction reconstructChamberAir(const sim::FogDevice& device, const sim:
 			G(r, static_cast<Eigen::Index>(j)) = U[row.step - start][devIndex[row.therm]] - U[0][devIndex[row.therm]];
 		}
 	}
-	// Penalty on d_j - d_{j-1}.
+	// Penalty on d_j - d_{j-1} (j >= 2): P = Dd' Dd, Dd the knot differences (column j - 2 of Dd'
+	// is e_j - e_{j-1}); both are filled here, P directly (tridiagonal; no p x p product).
+	Eigen::MatrixXd differencesT = Eigen::MatrixXd::Zero(p, std::max<Eigen::Index>(p - 2, 0));
 	Eigen::MatrixXd P = Eigen::MatrixXd::Zero(p, p);
 	for (Eigen::Index j = 2; j < p; ++j)
 	{
+		differencesT(j, j - 2) = 1.0;
+		differencesT(j - 1, j - 2) = -1.0;
 		P(j, j) += 1;
 		P(j - 1, j - 1) += 1;
 		P(j, j - 1) -= 1;
@@ -158,16 +162,10 @@ AirReconstruction reconstructChamberAir(const sim::FogDevice& device, const sim:
 	// the whole inverse. The inverse itself is formed once, for the chosen weight (uncertainty).
 	auto traceH = [&](const Eigen::LDLT<Eigen::MatrixXd>& ldlt, double lambda) -> double
 	{
-		const Eigen::VectorXd d = ldlt.vectorD();
+		const Eigen::VectorXd& d = ldlt.vectorD();
 		if (!(d.minCoeff() > 0)) return ldlt.solve(Eigen::MatrixXd::Identity(p, p)).cwiseProduct(A).sum();
 		if (p < 3) return static_cast<double>(p);
-		Eigen::MatrixXd B = Eigen::MatrixXd::Zero(p, p - 2);
-		for (Eigen::Index j = 2; j < p; ++j)
-		{
-			B(j, j - 2) = 1.0;
-			B(j - 1, j - 2) = -1.0;
-		}
-		B = ldlt.transpositionsP() * B;
+		Eigen::MatrixXd B = ldlt.transpositionsP() * differencesT;
 		ldlt.matrixL().solveInPlace(B);
 		double tr_invP = 0.0;
 		for (Eigen::Index i = 0; i < p; ++i) tr_invP += B.row(i).squaredNorm() / d(i);
