@@ -24,18 +24,28 @@ cmake --build "$build" -j"$jobs" --target "${targets[@]}"
 # MRPT's own libraries are not instrumented; their one-time allocations at exit are not ours.
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=0:abort_on_error=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
-status=0
-for t in "${targets[@]}"; do
-	corpus="$build/corpus/$t"
-	art="$build/artifacts/$t"
+# One target per core at a time (JOBS): each still runs its full time, its own corpus and log.
+run_one() {
+	local t=$1 corpus="$build/corpus/$1" art="$build/artifacts/$1"
 	mkdir -p "$corpus" "$art"
+	"$build/fuzz/$t" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+		-artifact_prefix="$art/" "$corpus" "$here/tests/fuzz_corpus/$t" 2>"$build/$t.log"
+}
+status=0
+declare -A pid_of
+for t in "${targets[@]}"; do
+	while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n || true; done
 	echo "== $t: ${secs} s"
-	if ! "$build/fuzz/$t" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
-		-artifact_prefix="$art/" "$corpus" "$here/tests/fuzz_corpus/$t" 2>"$build/$t.log"; then
-		echo "!! $t FAILED: see $build/$t.log and $art/"
+	run_one "$t" &
+	pid_of[$t]=$!
+done
+for t in "${targets[@]}"; do
+	if ! wait "${pid_of[$t]}"; then
+		echo "!! $t FAILED: see $build/$t.log and $build/artifacts/$t/"
 		tail -30 "$build/$t.log"
 		status=1
 	fi
+	echo "== $t done"
 	grep -E "stat::number_of_executed_units|stat::peak_rss_mb|#[0-9]+.*DONE" "$build/$t.log" | sed 's/^/   /' || true
 done
 exit $status

@@ -218,6 +218,37 @@ TEST(CandidateEffect, ShupeRateHoldsTheMeanRateAndTheRadialRateDifference)
 	}
 }
 
+TEST(CandidateEffect, GradientRateThroughAFirstOrderLag)
+{
+	// the radial-difference rate steps from 0 to 0.4 C/min at sample 10 and back at 50 (10 s
+	// samples): through a first-order lag of tau the column is the step response
+	// 0.4 (1 - exp(-(t - t_on)/tau)), then decays as exp(-(t - t_off)/tau); lag 0 is the rate
+	// itself; a new block (dropout) restarts the filter at its input
+	RunSignals s;
+	for (int k = 0; k < 80; ++k)
+	{
+		s.time_s.push_back(10.0 * k);
+		s.dgradient_dt_Cpm.push_back(k >= 10 && k < 50 ? 0.4 : 0.0);
+		s.block.push_back(k < 70 ? 0 : 1);
+	}
+	CandidateContext ctx;
+	ctx.sig = &s;
+	const auto& cand = candidateById("gradient_rate");
+	EXPECT_EQ(cand.theta_name, "lag_s");
+	EXPECT_EQ(cand.theta_grid.front(), 0.0);
+	const auto c0 = cand.build(ctx, 0.0);
+	for (int k = 0; k < 80; ++k) EXPECT_DOUBLE_EQ(c0(k, 0), s.dgradient_dt_Cpm[k]);
+	const double tau = 240.0;
+	const auto c = cand.build(ctx, tau);
+	ASSERT_EQ(c.cols(), 1);
+	for (int k = 0; k < 10; ++k) EXPECT_NEAR(c(k, 0), 0.0, 1e-15) << k;
+	for (int k = 10; k < 50; ++k) EXPECT_NEAR(c(k, 0), 0.4 * (1 - std::exp(-10.0 * (k - 9) / tau)), 1e-12) << k;
+	const double top = 0.4 * (1 - std::exp(-400.0 / tau));
+	for (int k = 50; k < 70; ++k) EXPECT_NEAR(c(k, 0), top * std::exp(-10.0 * (k - 49) / tau), 1e-12) << k;
+	EXPECT_NEAR(c(70, 0), 0.0, 1e-15);  // new block: the filter restarts at its input
+	EXPECT_NE(cand.describe_theta(tau).find("240 s"), std::string::npos);
+}
+
 TEST(CandidateEffect, UntestableWithoutTheExcitingColumns)
 {
 	const auto sig = syntheticSignals(SyntheticProfile::Ramp);  // no table rate, no field

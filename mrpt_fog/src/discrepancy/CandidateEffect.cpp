@@ -440,9 +440,26 @@ std::vector<CandidateEffect> handWrittenCandidates()
 		"a sine sweep near the coil's radial time constant and soaks right after fast steps", "deg/h per degC",
 		radialGradientColumns, needInnerOuter));
 	lib.push_back(candidateOf(
-		Effect::GradientRate, "rate of the radial gradient d(Tin - Tout)/dt (radial heat-flow transients)",
+		Effect::GradientRate,
+		"rate of the radial gradient d(Tin - Tout)/dt (radial heat-flow transients), as the thermistors see it "
+		"or through a first-order lag (the gradient inside the winding follows the surface difference late)",
 		"temperature steps and a sine sweep near the coil's radial time constant", "deg/h per degC/min",
-		[](const CandidateContext& ctx, double) { return column(ctx.sig->dgradient_dt_Cpm); }, needInnerOuter));
+		[](const CandidateContext& ctx, double lag_s) {
+			return lag_s > 0 ? column(firstOrderLag(*ctx.sig, ctx.sig->dgradient_dt_Cpm, lag_s))
+							 : column(ctx.sig->dgradient_dt_Cpm);
+		},
+		needInnerOuter));
+	// the gradient inside the winding follows the surface thermistors' difference through the
+	// fibre pack's own heat diffusion: a first-order lag of lag_s (0: none), on a doubling grid
+	lib.back().theta_name = "lag_s";
+	lib.back().theta_grid = {0, 60, 120, 240, 480, 960};
+	lib.back().describe_theta = [](double lag_s) {
+		if (!(lag_s > 0)) return std::string("no lag: the rate of the thermistors' difference itself");
+		char buf[160];
+		std::snprintf(buf, sizeof buf, "the rate of the thermistors' difference through a first-order lag of %.0f s",
+					  lag_s);
+		return std::string(buf);
+	};
 	lib.push_back(candidateOf(
 		Effect::ThermistorLag,
 		"thermistor lag: the thermistors read the coil temperature late by tau, so the static model "

@@ -83,6 +83,10 @@ struct AugmentedCalibration
 	/** The magnetic sensitivity was refitted and added (augmented.magnetic). */
 	bool magnetic_added = false;
 	std::vector<std::pair<std::string, std::string>> not_written;  //!< effect id, why
+	/** Effects written in a simpler form than the one named: effect id, what was written
+	 * instead (e.g. gradient_rate named through a first-order lag: the compensator has no lag
+	 * operator, the unlagged rate term is written and the rate window chosen as below). */
+	std::vector<std::pair<std::string, std::string>> approximated;
 	RateWindowChoice rate_window;
 	bool has_confirm = false;
 	FitFigures before, after;  //!< confirmation run through the compensator (base / augmented)
