@@ -303,6 +303,51 @@ std::vector<DiscrepancyReport::Unexplained> unexplainedStructure(const Discrepan
 	}
 	return out;
 }
+
+/** The selected effects whose fitted contribution on the analysed run spans more than the raw
+ * bias range there (a fit that cancels against the base model's own terms): id, reason. */
+std::vector<std::pair<std::string, std::string>> implausibleFits(const SelectionResult& sel, const RunSignals& sig1,
+																  const BaseDesign& base1)
+{
+	std::vector<std::pair<std::string, std::string>> out;
+	double lo = INFINITY, hi = -INFINITY;
+	for (std::size_t k = 0; k < sig1.size(); ++k)
+		if (sel.fit_rows[k] && std::isfinite(sig1.bias_dph[k]))
+		{
+			lo = std::min(lo, sig1.bias_dph[k]);
+			hi = std::max(hi, sig1.bias_dph[k]);
+		}
+	const double raw_range = hi - lo;
+	const Eigen::MatrixXd X = sel.model.design(base1, sig1);
+	const auto ctx = makeCandidateContext(sig1, base1, sel.model.lag_base_coef);
+	Eigen::Index col = base1.X.cols();
+	for (const auto& term : sel.model.effects)
+	{
+		const Eigen::Index q = candidateById(term.id).build(ctx, term.theta).cols();
+		if (col + q <= X.cols() && col + q <= sel.coef_after.size())
+		{
+			const Eigen::VectorXd part = X.middleCols(col, q) * sel.coef_after.segment(col, q);
+			double plo = INFINITY, phi = -INFINITY;
+			for (std::size_t k = 0; k < sig1.size(); ++k)
+				if (sel.fit_rows[k])
+				{
+					plo = std::min(plo, part(static_cast<Eigen::Index>(k)));
+					phi = std::max(phi, part(static_cast<Eigen::Index>(k)));
+				}
+			if (phi - plo > raw_range)
+			{
+				char buf[200];
+				std::snprintf(buf, sizeof buf,
+							  "implausible: its fitted contribution spans %.4g deg/h, more than the raw bias range "
+							  "%.4g deg/h",
+							  phi - plo, raw_range);
+				out.emplace_back(term.id, buf);
+			}
+		}
+		col += q;
+	}
+	return out;
+}
 }  // namespace
 
 DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& given_runs, const std::vector<std::string>& labels,
@@ -416,6 +461,25 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& given_runs, c
 	rep.base_terms = base1.names;
 	rep.selection = aboutRun(rep.run_labels[0], [&] { return selectMissingEffects(sig1, base1, opt.selection); });
 	rep.cannot_tell = informationShortfall(sig1, runs[0], optRows);
+	// An implausible fit (the rail below) is never named, and while it is in the model its
+	// columns take part of what the other candidates would explain: the selection is redone
+	// without it (at most twice), and it is reported with its reason.
+	if (rep.cannot_tell.empty())
+	{
+		SelectionOptions without = opt.selection;
+		for (int again = 0; again < 2; ++again)
+		{
+			const auto implausible = implausibleFits(rep.selection, sig1, base1);
+			if (implausible.empty()) break;
+			for (const auto& [id, why] : implausible)
+			{
+				without.left_out.push_back(id);
+				rep.rejected.push_back({id, why});
+			}
+			rep.selection =
+				aboutRun(rep.run_labels[0], [&] { return selectMissingEffects(sig1, base1, without); });
+		}
+	}
 	// slow wander: with one run it ends in "cannot tell"; with a confirmation run an effect that
 	// the other run (its own, independent wander) confirms and that passes the held-out rail
 	// there is not a drift of the analysed run: only the effects the other run cannot show are
@@ -463,17 +527,8 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& given_runs, c
 	// interval includes zero; it is then refitted away like an unconfirmed one.
 	{
 		auto& sel = rep.selection;
-		double lo = INFINITY, hi = -INFINITY;
-		for (std::size_t k = 0; k < sig1.size(); ++k)
-			if (sel.fit_rows[k] && std::isfinite(sig1.bias_dph[k]))
-			{
-				lo = std::min(lo, sig1.bias_dph[k]);
-				hi = std::max(hi, sig1.bias_dph[k]);
-			}
-		const double raw_range = hi - lo;
-		const Eigen::MatrixXd X = sel.model.design(base1, sig1);
+		const auto implausible = implausibleFits(sel, sig1, base1);
 		const auto ctx = makeCandidateContext(sig1, base1, sel.model.lag_base_coef);
-		Eigen::Index col = base1.X.cols();
 		std::vector<std::pair<std::string, std::string>> reasons;
 		for (const auto& term : sel.model.effects)
 		{
@@ -486,31 +541,17 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& given_runs, c
 					if (ne.id == term.id && !(ne.confirm_tested && ne.confirmed))
 						reason = "cannot tell: " + wander + ", and the confirmation run cannot show it";
 			}
-			else if (col + q <= X.cols() && col + q <= sel.coef_after.size())
+			else
 			{
-				const Eigen::VectorXd part = X.middleCols(col, q) * sel.coef_after.segment(col, q);
-				double plo = INFINITY, phi = -INFINITY;
-				for (std::size_t k = 0; k < sig1.size(); ++k)
-					if (sel.fit_rows[k])
-					{
-						plo = std::min(plo, part(static_cast<Eigen::Index>(k)));
-						phi = std::max(phi, part(static_cast<Eigen::Index>(k)));
-					}
-				if (phi - plo > raw_range)
-				{
-					char buf[200];
-					std::snprintf(buf, sizeof buf,
-								  "implausible: its fitted contribution spans %.4g deg/h, more than the raw bias range "
-								  "%.4g deg/h",
-								  phi - plo, raw_range);
-					reason = buf;
-				}
+				for (const auto& [id, why] : implausible)
+					if (id == term.id) reason = why;
 			}
-			col += q;
 			// zero not excluded at 95 %: one column, its interval; several, their joint test (an
 			// interval on the RMS of the terms is bounded by zero and is no test of it)
 			if (reason.empty())
+			{
 				for (const auto& ne : sel.named)
+				{
 					if (ne.id == term.id && q == 1 && ne.ci_low <= 0 && ne.ci_high >= 0)
 						reason = "its 95 % interval includes zero";
 					else if (ne.id == term.id && q > 1 && !(ne.zero_p < 0.05))
@@ -521,6 +562,8 @@ DiscrepancyReport analyseDiscrepancy(const std::vector<FogSeries>& given_runs, c
 									  static_cast<int>(q), ne.zero_p);
 						reason = buf;
 					}
+				}
+			}
 			if (!reason.empty()) reasons.emplace_back(term.id, reason);
 		}
 		if (!reasons.empty())

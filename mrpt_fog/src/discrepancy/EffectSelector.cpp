@@ -490,6 +490,11 @@ std::vector<std::string> candidateIdsToTry(const SelectionOptions& opt)
 	if (ids.empty())
 		for (const auto& c : candidateLibrary())
 			if (c.channel == ResidualChannel::Bias) ids.push_back(c.id);
+	ids.erase(std::remove_if(ids.begin(), ids.end(),
+							 [&](const std::string& id) {
+								 return std::find(opt.left_out.begin(), opt.left_out.end(), id) != opt.left_out.end();
+							 }),
+			  ids.end());
 	return ids;
 }
 

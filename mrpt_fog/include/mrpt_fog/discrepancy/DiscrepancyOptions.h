@@ -49,6 +49,9 @@ struct SelectionOptions
 	int lrv_max_lag = 30;  //!< Bartlett window of the long-run variance factor [samples]
 	/** Candidate ids to consider (empty = every bias-channel candidate). */
 	std::vector<std::string> candidates;
+	/** Candidate ids left out of the selection (the analysis leaves out a candidate whose fit
+	 * was implausible, so that it does not hide the others). */
+	std::vector<std::string> left_out;
 };
 
 
