@@ -269,6 +269,36 @@ TEST(CalibrationAugment, HysteresisBecomesTheCompensatorsPlayOperatorAndClosesTh
 	EXPECT_EQ(none.not_written[0].first, "hysteresis");
 }
 
+TEST(CalibrationAugment, GradientRateThroughALagBecomesTheCompensatorsLagTerms)
+{
+	// gradient_rate named with a lag of 240 s (CandidateEffect.h): a first-order lag is linear,
+	// so the lagged rate of Ca - Cb is written as the lagged rates of Ca and of Cb (LagFilter.h,
+	// calibration version 3); named without a lag it is the rate of the difference as before
+	fogtest::LumpedCoilOptions o1, o2;
+	o1.dt_s = o2.dt_s = 5.0;
+	o1.seed = 2;
+	o2.seed = 3;
+	o1.hidden["gradient_rate"] = o2.hidden["gradient_rate"] = 3.0;
+	const auto r1 = fogtest::makeLumpedCoilRun(o1), r2 = fogtest::makeLumpedCoilRun(o2);
+	NamedEffect rate;
+	rate.id = "gradient_rate";
+	rate.theta = 240.0;
+	const auto lagged = augmentCalibration("M2:Ca@3/1", {rate}, r1.series, &r2.series, "run2", ScaleFactorFitting::Off);
+	EXPECT_EQ(lagged.added_terms, (std::vector<std::string>{"dTlag/dt(Ca,240)^1", "dTlag/dt(Cb,240)^1"}));
+	EXPECT_TRUE(lagged.not_written.empty());
+	const std::string yaml = calibrationToYaml(lagged.augmented);
+	EXPECT_NE(yaml.find("\nversion: 3\n"), std::string::npos);
+	EXPECT_NE(yaml.find("lag_filter:"), std::string::npos);
+	ASSERT_TRUE(lagged.has_confirm);
+	EXPECT_TRUE(std::isfinite(lagged.after.rms_dph));
+	// the written file is what a user's compensator reads: the same terms after a reload
+	const auto reloaded = calibrationFromYaml(yaml);
+	EXPECT_EQ(reloaded.model.features.termNames(), lagged.augmented.model.features.termNames());
+	rate.theta = 0.0;
+	const auto plain = augmentCalibration("M2:Ca@3/1", {rate}, r1.series, nullptr, "", ScaleFactorFitting::Off);
+	EXPECT_EQ(plain.added_terms, (std::vector<std::string>{"d/dt dT(Ca-Cb)^1"}));
+}
+
 TEST(CalibrationAugment, HysteresisNamedOnTheSyntheticChamberIsWrittenAndTheGapShrinks)
 {
 	// the workflow of fog-discrepancy --write-cal on the first generator (an exponential-branch

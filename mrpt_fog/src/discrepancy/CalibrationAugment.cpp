@@ -121,15 +121,16 @@ AugmentedCalibration augmentCalibration(const std::string& text, const std::vect
 			const std::string other = firstOnSide(run, CoilSide::Other);
 			if (!other.empty()) add("dT(" + outer + "-" + other + ")^1");
 		}
-		else if (effect == sim::Effect::GradientRate && pair)
+		else if (effect == sim::Effect::GradientRate && pair && std::isfinite(ne.theta) && ne.theta > 0)
 		{
-			add("d/dt dT(" + in + "-" + outer + ")^1");
-			if (std::isfinite(ne.theta) && ne.theta > 0)
-				out.approximated.emplace_back(
-					ne.id, "named through a first-order lag of " + std::to_string(static_cast<int>(std::lround(ne.theta))) +
-							   " s; the compensator has no lag operator: the rate term is written without it (the causal "
-							   "rate window chosen for the added terms lags it in part)");
+			// named through a first-order lag: the lag is linear, so the lagged rate of Tin - Tout
+			// is the lagged rate of Tin minus that of Tout, which the compensator runs as lag
+			// terms (calibration version 3, LagFilter.h); one coefficient each
+			add(ThermalTerm::lagRate(in, ne.theta, 1).name());
+			add(ThermalTerm::lagRate(outer, ne.theta, 1).name());
 		}
+		else if (effect == sim::Effect::GradientRate && pair)
+			add("d/dt dT(" + in + "-" + outer + ")^1");
 		else if (effect == sim::Effect::ShupeRate)
 		{
 			add("dT/dt(" + (in.empty() ? S : in) + ")^1");

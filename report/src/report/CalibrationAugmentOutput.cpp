@@ -56,7 +56,6 @@ std::string augmentedCalibrationText(const AugmentedCalibration& aug, const std:
 	}
 	if (aug.rate_window.changed) t += "  " + rateWindowNote(aug) + "\n";
 	for (const auto& [id, why] : aug.not_written) t += "  not written: " + id + " (" + why + ")\n";
-	for (const auto& [id, how] : aug.approximated) t += "  written in part: " + id + " (" + how + ")\n";
 	if (aug.has_confirm)
 		t += "  through the compensator on the confirmation run: RMS " + formatValue("%.4g", aug.before.rms_dph) + " -> " +
 			 formatValue("%.4g", aug.after.rms_dph) + " deg/h, " + formatValue("%.4g", aug.before.tau_s) + " s stability " +
@@ -81,10 +80,6 @@ JsonValue augmentedCalibrationJson(const AugmentedCalibration& aug, const std::s
 	}
 	j["not_written"] = JsonValue::arrayOf(
 		aug.not_written, [](const auto& nw) { return JsonValue::object({{"id", nw.first}, {"reason", nw.second}}); });
-	if (!aug.approximated.empty())
-		j["written_in_part"] = JsonValue::arrayOf(aug.approximated, [](const auto& a) {
-			return JsonValue::object({{"id", a.first}, {"how", a.second}});
-		});
 	if (aug.has_confirm)
 		j["confirm_through_compensator"] =
 			JsonValue::object({{"before", figures(aug.before)}, {"after", figures(aug.after)}});

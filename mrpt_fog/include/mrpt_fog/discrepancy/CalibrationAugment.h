@@ -13,7 +13,7 @@
  * temperature polynomial of order p):
  *   radial_gradient  dT(IN-OUT)^1, and dT(OUT-OTHER)^1 when a thermistor is on neither side
  *                    (OTHER = the first such; the candidate's second column)
- *   gradient_rate    d/dt dT(IN-OUT)^1
+ *   gradient_rate    d/dt dT(IN-OUT)^1; named through a lag tau: dTlag/dt(IN,tau)^1 and dTlag/dt(OUT,tau)^1
  *   shupe_rate       dT/dt(IN)^1 and d/dt dT(IN-OUT)^1 (without an OUT: dT/dt(S)^1)
  *   temp_poly_order  T(S)^(p+1), T(S)^(p+2) (at most 5)
  *   hysteresis       hyst(S,play,wC)^1 or hyst(S,branch,wC)^1: the named shape and width
@@ -83,10 +83,6 @@ struct AugmentedCalibration
 	/** The magnetic sensitivity was refitted and added (augmented.magnetic). */
 	bool magnetic_added = false;
 	std::vector<std::pair<std::string, std::string>> not_written;  //!< effect id, why
-	/** Effects written in a simpler form than the one named: effect id, what was written
-	 * instead (e.g. gradient_rate named through a first-order lag: the compensator has no lag
-	 * operator, the unlagged rate term is written and the rate window chosen as below). */
-	std::vector<std::pair<std::string, std::string>> approximated;
 	RateWindowChoice rate_window;
 	bool has_confirm = false;
 	FitFigures before, after;  //!< confirmation run through the compensator (base / augmented)
