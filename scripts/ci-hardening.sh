@@ -21,6 +21,6 @@ t0=$(date +%s)
 t1=$(date +%s)
 "$here/run-fuzz.sh" "$fuzz_s" || { status=1; echo "ci-hardening: fuzzing FAILED"; }
 t2=$(date +%s)
-echo "ci-hardening: sanitizer build + tests $((t1 - t0)) s, fuzzing (build + 5 targets x ${fuzz_s} s, two at a time) $((t2 - t1)) s," \
+echo "ci-hardening: sanitizer build + tests $((t1 - t0)) s, fuzzing (build + 5 targets x ${fuzz_s} s, ${JOBS:-2} at a time) $((t2 - t1)) s," \
 	"total $((t2 - t0)) s, load $(cut -d' ' -f1-3 /proc/loadavg), status $status"
 exit $status

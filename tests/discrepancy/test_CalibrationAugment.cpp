@@ -241,12 +241,7 @@ TEST(CalibrationAugment, HysteresisBecomesTheCompensatorsPlayOperatorAndClosesTh
 	// base keeps T(Ca)^2 there (on seeds 1 and 2 its selection keeps T(Ca)^1 only, the play alone
 	// then leaves the static curvature: 0.0572 -> 0.0559 deg/h; the workflow names
 	// temp_poly_order beside it, ForeignTrials)
-	fogtest::LumpedCoilOptions o1, o2;
-	o1.dt_s = o2.dt_s = 5.0;
-	o1.seed = 2;
-	o2.seed = 3;
-	o1.hidden["hysteresis"] = o2.hidden["hysteresis"] = 3.0;
-	const auto r1 = fogtest::makeLumpedCoilRun(o1), r2 = fogtest::makeLumpedCoilRun(o2);
+	const auto [r1, r2] = fogtest::makeLumpedCoilRunPair("hysteresis", 3.0, 2, 5.0);
 	NamedEffect hyst;
 	hyst.id = "hysteresis";
 	hyst.theta = -2.0;
@@ -274,12 +269,7 @@ TEST(CalibrationAugment, GradientRateThroughALagBecomesTheCompensatorsLagTerms)
 	// gradient_rate named with a lag of 240 s (CandidateEffect.h): a first-order lag is linear,
 	// so the lagged rate of Ca - Cb is written as the lagged rates of Ca and of Cb (LagFilter.h,
 	// calibration version 3); named without a lag it is the rate of the difference as before
-	fogtest::LumpedCoilOptions o1, o2;
-	o1.dt_s = o2.dt_s = 5.0;
-	o1.seed = 2;
-	o2.seed = 3;
-	o1.hidden["gradient_rate"] = o2.hidden["gradient_rate"] = 3.0;
-	const auto r1 = fogtest::makeLumpedCoilRun(o1), r2 = fogtest::makeLumpedCoilRun(o2);
+	const auto [r1, r2] = fogtest::makeLumpedCoilRunPair("gradient_rate", 3.0, 2, 5.0);
 	NamedEffect rate;
 	rate.id = "gradient_rate";
 	rate.theta = 240.0;

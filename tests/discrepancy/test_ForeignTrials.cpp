@@ -103,19 +103,14 @@ TEST(ForeignTrials, HeldOutAliasGroupTakesTheRankOfItsFirstNamedMember)
 	// so it is listed before gradient_rate (named before radial_gradient). The case first used
 	// here (gradient_rate x3, seed 9072) no longer exercises the rule since gradient_rate has a
 	// lag: it is told apart on the other run; the preconditions below keep the case honest.
-	fogtest::LumpedCoilOptions o1, o2;
-	o1.dt_s = o2.dt_s = 5.0;
-	o1.seed = 2 * 9075;
-	o2.seed = 2 * 9075 + 1;
-	o1.hidden["radial_gradient"] = o2.hidden["radial_gradient"] = 3.0;
+	const auto [r1, r2] = fogtest::makeLumpedCoilRunPair("radial_gradient", 3.0, 2 * 9075, 5.0);
 	// the case was found with the rail on the per-row RMS of the 5 s rows as given; at the
 	// default (100 s stability, rows from the data's timescale) the held-out alias is not
 	// exercised: the rail is judged here at the rows' own 5 s
 	auto opt = trialOptions();
 	opt.analysis_block_s = -1.0;
 	opt.tau_s = 5.0;
-	const auto rep = analyseDiscrepancy({makeLumpedCoilRun(o1).series, makeLumpedCoilRun(o2).series}, {"a", "b"},
-										kBaseModel, opt);
+	const auto rep = analyseDiscrepancy({r1.series, r2.series}, {"a", "b"}, kBaseModel, opt);
 	std::string moved;
 	for (const auto& rj : rep.rejected)
 		if (rj.reason.find("alias group") != std::string::npos) moved = rj.id;
@@ -181,13 +176,8 @@ TEST(ForeignTrials, RateEstimatorGapIsReportedApart)
 	// causal order-2 rate (12 samples per 60 s window) is noisy and that term leaves a large
 	// residual, which the centred rate does not: reported as the rate estimator's gap, apart
 	// from the named effects (tuning seeds 2/3: causal 0.221, centred 0.035 deg/h)
-	fogtest::LumpedCoilOptions o1, o2;
-	o1.dt_s = o2.dt_s = 5.0;
-	o1.seed = 2;
-	o2.seed = 3;
-	o1.hidden["radial_gradient"] = o2.hidden["radial_gradient"] = 3.0;
-	const auto rep = analyseDiscrepancy({makeLumpedCoilRun(o1).series, makeLumpedCoilRun(o2).series}, {"a", "b"},
-										kBaseModel, trialOptions());
+	const auto [r1, r2] = fogtest::makeLumpedCoilRunPair("radial_gradient", 3.0, 2, 5.0);
+	const auto rep = analyseDiscrepancy({r1.series, r2.series}, {"a", "b"}, kBaseModel, trialOptions());
 	const auto& g = rep.rate_estimator_gap;
 	ASSERT_TRUE(g.tested);
 	EXPECT_EQ(g.run_label, "b");

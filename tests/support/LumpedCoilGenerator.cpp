@@ -305,4 +305,15 @@ LumpedCoilRun makeLumpedCoilRun(const LumpedCoilOptions& opt)
 	return run;
 }
 
+std::pair<LumpedCoilRun, LumpedCoilRun> makeLumpedCoilRunPair(const std::string& hidden, double ratio,
+															   std::uint64_t seed, double dt_s)
+{
+	LumpedCoilOptions o1, o2;
+	o1.dt_s = o2.dt_s = dt_s;
+	o1.seed = seed;
+	o2.seed = seed + 1;
+	o1.hidden[hidden] = o2.hidden[hidden] = ratio;
+	return {makeLumpedCoilRun(o1), makeLumpedCoilRun(o2)};
+}
+
 }  // namespace fogtest

@@ -63,6 +63,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fogtest
@@ -102,5 +103,10 @@ const std::vector<std::string>& lumpedCoilEffects();
  * < 0, a dt_s outside [0.1, 60] s, or an effect the profile cannot excite (e.g. magnetic on
  * "cooling", which has no field change). */
 LumpedCoilRun makeLumpedCoilRun(const LumpedCoilOptions& opt);
+
+/** An analysed run and its confirmation run: generator seeds `seed` and `seed + 1`, one hidden
+ * effect at effect-to-noise `ratio`, sample period dt_s, the "lab" profile. */
+std::pair<LumpedCoilRun, LumpedCoilRun> makeLumpedCoilRunPair(const std::string& hidden, double ratio,
+															   std::uint64_t seed, double dt_s);
 
 }  // namespace fogtest
